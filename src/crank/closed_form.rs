@@ -1,0 +1,187 @@
+//! The closed forms of the slider-crank, written as the books write them: the crank angle φ
+//! counted from the dead centre where the stroke begins, and the double sign ± for outstroke
+//! (*Hingang*, +) and return stroke (*Rückgang*, −). They are computed independently of the
+//! construction, so a check compares two different routes to one number.
+//!
+//! Conventions of the engine (see [`super`]): the full crank angle θ ∈ [0°, 360°) counts from
+//! the inner dead centre; θ < 180° is the outstroke with φ = θ, θ ≥ 180° the return stroke with
+//! φ = θ − 180°. `lambda` is R/L, 0 for an infinitely long rod.
+
+use serde::Serialize;
+
+/// Outstroke or return stroke.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Stroke {
+    /// *Hingang*: from the inner to the outer dead centre, the upper sign.
+    Out,
+    /// *Rückgang*: back to the inner dead centre, the lower sign.
+    Return,
+}
+
+impl Stroke {
+    /// The double sign ±: +1 for the outstroke, −1 for the return stroke.
+    pub fn sign(self) -> f64 {
+        match self {
+            Stroke::Out => 1.0,
+            Stroke::Return => -1.0,
+        }
+    }
+}
+
+/// Splits the full crank angle θ (degrees) into the book's stroke and φ (degrees).
+///
+/// ```
+/// use graphostatik::crank::closed_form::{book_angle, Stroke};
+/// assert_eq!(book_angle(30.0), (Stroke::Out, 30.0));
+/// assert_eq!(book_angle(210.0), (Stroke::Return, 30.0));
+/// ```
+pub fn book_angle(theta_deg: f64) -> (Stroke, f64) {
+    let t = theta_deg.rem_euclid(360.0);
+    if t < 180.0 {
+        (Stroke::Out, t)
+    } else {
+        (Stroke::Return, t - 180.0)
+    }
+}
+
+fn sc(phi_deg: f64) -> (f64, f64) {
+    crate::kernel::angle::sin_cos_deg(phi_deg)
+}
+
+/// sin ψ and cos ψ of the rod's inclination: `L sin ψ = R sin φ` (KG, LH Abb. 46).
+pub fn rod_angle(lambda: f64, phi_deg: f64) -> (f64, f64) {
+    let s = lambda * sc(phi_deg).0;
+    (s, ((1.0 - s) * (1.0 + s)).sqrt())
+}
+
+/// Piston path from the dead centre where the stroke began (mm, in the unit of `r`):
+/// `x = R(1 − cos φ) ± L(1 − √(1 − (R/L · sin φ)²))` (KG 285, LH Gl. 20; Gl. 23 for L = ∞).
+/// `l = None` is the infinitely long rod.
+///
+/// ```
+/// use graphostatik::crank::closed_form::{piston_path_book, Stroke};
+/// // LH: the difference of outstroke and return stroke at φ = 90° is 2·L(1 − cos ψ) ≈ 2·u.
+/// let out = piston_path_book(300.0, Some(1500.0), 90.0, Stroke::Out);
+/// let ret = piston_path_book(300.0, Some(1500.0), 90.0, Stroke::Return);
+/// assert!((out - ret - 2.0 * 1500.0 * (1.0 - (1.0f64 - 0.04).sqrt())).abs() < 1e-9);
+/// ```
+pub fn piston_path_book(r: f64, l: Option<f64>, phi_deg: f64, stroke: Stroke) -> f64 {
+    let (_, c) = sc(phi_deg);
+    let base = r * (1.0 - c);
+    match l {
+        None => base,
+        Some(l) => {
+            let (_, cos_psi) = rod_angle(r / l, phi_deg);
+            base + stroke.sign() * l * (1.0 - cos_psi)
+        }
+    }
+}
+
+/// Piston position measured from the inner dead centre for the full angle θ (the engine's
+/// single coordinate): the outstroke path, or the stroke `2R` less the return-stroke path.
+pub fn piston_position(r: f64, l: Option<f64>, theta_deg: f64) -> f64 {
+    match book_angle(theta_deg) {
+        (Stroke::Out, phi) => piston_path_book(r, l, phi, Stroke::Out),
+        (Stroke::Return, phi) => 2.0 * r - piston_path_book(r, l, phi, Stroke::Return),
+    }
+}
+
+/// The factor `sin(φ ± ψ)/cos ψ` of KG (288, 303), LH Gl. 48 (Zusammenstellung 112, lower row).
+pub fn sin_factor(lambda: f64, phi_deg: f64, stroke: Stroke) -> f64 {
+    let (s, c) = sc(phi_deg);
+    let (sp, cp) = rod_angle(lambda, phi_deg);
+    // sin(φ ± ψ) = sin φ cos ψ ± cos φ sin ψ
+    (s * cp + stroke.sign() * c * sp) / cp
+}
+
+/// The factor `cos(φ ± ψ)/cos ψ` of KG (302), LH Gl. 49.
+pub fn cos_factor(lambda: f64, phi_deg: f64, stroke: Stroke) -> f64 {
+    let (s, c) = sc(phi_deg);
+    let (sp, cp) = rod_angle(lambda, phi_deg);
+    (c * cp - stroke.sign() * s * sp) / cp
+}
+
+/// The acceleration factor `cos φ ± R/L cos 2φ` of KG (291), LH Gl. 29
+/// (Zusammenstellung 112, upper row). Approximate: it neglects cos ψ ≈ 1, as the book says.
+pub fn accel_factor(lambda: f64, phi_deg: f64, stroke: Stroke) -> f64 {
+    sc(phi_deg).1 + stroke.sign() * lambda * sc(2.0 * phi_deg).1
+}
+
+/// Piston velocity, signed in the direction of the outstroke:
+/// `c = ± v sin(φ ± ψ)/cos ψ` (KG 288, LH Abb. 53 / Gl. 28).
+pub fn piston_velocity(v: f64, lambda: f64, theta_deg: f64) -> f64 {
+    let (stroke, phi) = book_angle(theta_deg);
+    stroke.sign() * v * sin_factor(lambda, phi, stroke)
+}
+
+/// Rod force `S = P / cos ψ` (KG 300, LH Gl. 43), positive in compression. `p` is the driving
+/// piston force (positive when it pushes the piston the way it moves); on the return stroke a
+/// driving force pulls the rod, so S is negative (tension) there.
+pub fn rod_force(p: f64, lambda: f64, theta_deg: f64) -> f64 {
+    let (stroke, phi) = book_angle(theta_deg);
+    stroke.sign() * p / rod_angle(lambda, phi).1
+}
+
+/// Guide force `N = P tg ψ` (KG 301, LH Gl. 44): the guide's reaction on the crosshead,
+/// positive when the crosshead bears on the lower guide (the book's sense of rotation).
+pub fn guide_force(p: f64, lambda: f64, theta_deg: f64) -> f64 {
+    let (_, phi) = book_angle(theta_deg);
+    let (s, c) = rod_angle(lambda, phi);
+    p * s / c
+}
+
+/// Tangential force `T = P sin(φ ± ψ)/cos ψ` (KG 303, LH Gl. 48), positive when it drives.
+pub fn tangential_force(p: f64, lambda: f64, theta_deg: f64) -> f64 {
+    let (stroke, phi) = book_angle(theta_deg);
+    p * sin_factor(lambda, phi, stroke)
+}
+
+/// Radial crank-pin force `K = P cos(φ ± ψ)/cos ψ` (KG 302 "D'", LH Gl. 49), positive
+/// towards the shaft.
+pub fn radial_force(p: f64, lambda: f64, theta_deg: f64) -> f64 {
+    let (stroke, phi) = book_angle(theta_deg);
+    p * cos_factor(lambda, phi, stroke)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn forces_satisfy_their_vector_identities() {
+        // T² + K² = S² and S² = P² + N²: the two parallelograms of LH Abb. 61.
+        for &lambda in &[0.0, 1.0 / 6.0, 0.2, 0.5, 0.99] {
+            for k in 0..72 {
+                let th = k as f64 * 5.0;
+                let p = 1000.0;
+                let (s, n, t, kk) = (
+                    rod_force(p, lambda, th),
+                    guide_force(p, lambda, th),
+                    tangential_force(p, lambda, th),
+                    radial_force(p, lambda, th),
+                );
+                assert!((t * t + kk * kk - s * s).abs() < 1e-6 * s * s);
+                assert!((p * p + n * n - s * s).abs() < 1e-6 * s * s);
+            }
+        }
+    }
+
+    #[test]
+    fn velocity_is_the_derivative_of_the_position() {
+        let (r, l) = (0.4, 2.0);
+        let v = 1.0; // ω = v / r
+        for k in 1..71 {
+            let th = k as f64 * 5.0 + 0.5;
+            let h = 1e-4;
+            let dx = (piston_position(r, Some(l), th + h) - piston_position(r, Some(l), th - h))
+                / (2.0 * h.to_radians());
+            let c = piston_velocity(v, r / l, th);
+            assert!(
+                (dx * v / r - c).abs() < 1e-7,
+                "θ={th}: {} vs {c}",
+                dx * v / r
+            );
+        }
+    }
+}

@@ -1,0 +1,1084 @@
+//! The demand-driven construction of the slider-crank figures.
+
+use super::closed_form as cf;
+use super::{Angles, CrankDrive, Drawing, Request};
+use crate::kernel::{Branch, Circle, Line, Point, Vector};
+use crate::protocol::{Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};
+use serde::Serialize;
+
+const fn note(
+    caption: &'static str,
+    de: Option<&'static str>,
+    book: &'static str,
+    topic: Topic,
+) -> Note {
+    Note {
+        caption,
+        term_de: de,
+        book,
+        topic,
+    }
+}
+
+const N_CENTRE: Note = note(
+    "crank shaft centre O",
+    Some("Kurbelwellenmitte"),
+    "KG Abb. 1044",
+    Topic::Setup,
+);
+const N_PISTON_LINE: Note = note(
+    "piston line through O",
+    Some("Kolbenweglinie"),
+    "KG Abb. 1047",
+    Topic::Setup,
+);
+const N_VERTICAL: Note = note(
+    "vertical centre line through O",
+    Some("senkrechte Mittellinie"),
+    "KG Abb. 1049; LH Abb. 53",
+    Topic::Setup,
+);
+const N_CRANK_CIRCLE: Note = note(
+    "crank circle of radius R",
+    Some("Kurbelkreis"),
+    "KG Abb. 1047; LH Abb. 49",
+    Topic::Setup,
+);
+const N_DEAD_CENTRE: Note = note(
+    "inner dead centre: crank circle cuts the piston line",
+    Some("innerer Totpunkt"),
+    "KG Abb. 1044",
+    Topic::Setup,
+);
+const N_DEAD_ARC: Note = note(
+    "arc with the rod length about the dead centre",
+    Some("Schubstangenkreisbogen"),
+    "LH Abb. 49",
+    Topic::Setup,
+);
+const N_DEAD_CROSSHEAD: Note = note(
+    "crosshead dead centre: the arc cuts the piston line",
+    Some("Kreuzkopftotpunkt"),
+    "LH Abb. 49",
+    Topic::Setup,
+);
+const N_DIVIDE: Note = note(
+    "divide the crank circle into equal parts",
+    Some("Teilung des Kurbelkreises"),
+    "KG B.4a; LH Abb. 59",
+    Topic::PistonPath,
+);
+const N_CRANK_AT: Note = note(
+    "crank position at the crank angle",
+    Some("Kurbelstellung"),
+    "KG Abb. 1047",
+    Topic::PistonPath,
+);
+const N_ROD_ARC: Note = note(
+    "arc with the rod length L about the crank pin",
+    Some("Schubstangenkreisbogen"),
+    "KG Abb. 1047; LH Abb. 46, 49",
+    Topic::PistonPath,
+);
+const N_CROSSHEAD: Note = note(
+    "the arc cuts the piston line: crosshead position",
+    Some("Kreuzkopfstellung"),
+    "KG Abb. 1047; LH Abb. 49",
+    Topic::PistonPath,
+);
+const N_PIN_VERTICAL: Note = note(
+    "infinite rod: perpendicular from the crank pin to the piston line",
+    Some("unendlich lange Schubstange"),
+    "LH Abb. 48, Gl. 23",
+    Topic::PistonPath,
+);
+const N_ROD: Note = note(
+    "connecting rod from crosshead to crank pin",
+    Some("Schubstange"),
+    "KG Abb. 1044",
+    Topic::PistonPath,
+);
+const N_MEASURE_X: Note = note(
+    "piston path x measured from the dead centre",
+    Some("Kolbenweg"),
+    "KG (285); LH Gl. 20, 23",
+    Topic::PistonPath,
+);
+const N_ROD_LINE: Note = note(
+    "rod direction extended",
+    Some("Schubstangenrichtung"),
+    "KG Abb. 1049; LH Abb. 53",
+    Topic::Velocity,
+);
+const N_ROD_LINE_INF: Note = note(
+    "infinite rod: rod direction parallel to the piston line",
+    Some("Schubstangenrichtung"),
+    "LH Abb. 54",
+    Topic::Velocity,
+);
+const N_CRANK_RAY: Note = note(
+    "crank ray through O and the crank pin",
+    Some("Kurbelstrahl"),
+    "KG Abb. 1049",
+    Topic::Velocity,
+);
+const N_V_ON_RAY: Note = note(
+    "lay off v on the crank ray",
+    Some("Kurbelzapfengeschwindigkeit v"),
+    "KG Abb. 1049",
+    Topic::Velocity,
+);
+const N_V_PARALLEL: Note = note(
+    "parallel to the rod through the end of v",
+    Some("Parallele zur Schubstange"),
+    "KG Abb. 1049",
+    Topic::Velocity,
+);
+const N_V_CUT: Note = note(
+    "the parallel cuts the vertical centre line",
+    Some("Schnitt mit der Mittelsenkrechten"),
+    "KG Abb. 1049",
+    Topic::Velocity,
+);
+const N_V_MEASURE: Note = note(
+    "piston velocity c = MF",
+    Some("Kolbengeschwindigkeit"),
+    "KG (288)",
+    Topic::Velocity,
+);
+const N_IC_CUT: Note = note(
+    "rod line cuts the vertical through O: y = OD",
+    Some("Abschnitt y"),
+    "LH Abb. 53, Gl. 27",
+    Topic::Velocity,
+);
+const N_IC_MEASURE: Note = note(
+    "piston velocity c = ω·y",
+    Some("Kolbengeschwindigkeit"),
+    "LH Gl. 28",
+    Topic::Velocity,
+);
+const N_IC_NORMAL: Note = note(
+    "normal to the guide through the crosshead",
+    Some("Senkrechte auf c"),
+    "LH Abb. 53",
+    Topic::Velocity,
+);
+const N_IC_POINT: Note = note(
+    "instantaneous centre of the rod: crank ray cuts the normal",
+    Some("Momentanpol C"),
+    "LH Abb. 53",
+    Topic::Velocity,
+);
+const N_C_NORMAL: Note = note(
+    "ordinate line over the crosshead position",
+    Some("Ordinate"),
+    "KG Abb. 1049",
+    Topic::Velocity,
+);
+const N_C_ORDINATE: Note = note(
+    "transfer c as ordinate over the piston position",
+    Some("Geschwindigkeitsordinate"),
+    "KG Abb. 1049; LH Abb. 53",
+    Topic::Velocity,
+);
+const N_C_CURVE: Note = note(
+    "velocity curve over the piston path",
+    Some("Geschwindigkeitskurve"),
+    "KG Abb. 1049; LH Abb. 53",
+    Topic::Velocity,
+);
+const N_P_AT_CROSSHEAD: Note = note(
+    "lay off the piston force P at the crosshead",
+    Some("Kolbenkraft P"),
+    "LH Abb. 30, 61; KG Abb. 1061",
+    Topic::Forces,
+);
+const N_P_NORMAL: Note = note(
+    "normal to the guide through the end of P",
+    Some("Senkrechte zur Gleitbahn"),
+    "LH Abb. 30, 61",
+    Topic::Forces,
+);
+const N_S_CUT: Note = note(
+    "rod line cuts the normal: parallelogram of P into S and N",
+    Some("Kräfteparallelogramm"),
+    "LH Abb. 30, 61; KG Abb. 1061",
+    Topic::Forces,
+);
+const N_S_MEASURE: Note = note(
+    "rod force S",
+    Some("Schubstangenkraft"),
+    "KG (300); LH Gl. 43",
+    Topic::Forces,
+);
+const N_N_MEASURE: Note = note(
+    "guide force N",
+    Some("Druck auf die Kreuzkopfbahn"),
+    "KG (301); LH Gl. 44",
+    Topic::Forces,
+);
+const N_S_VEC: Note = note(
+    "rod force S drawn",
+    Some("Schubstangenkraft"),
+    "LH Abb. 61",
+    Topic::Forces,
+);
+const N_N_VEC: Note = note(
+    "guide force N drawn",
+    Some("Normaldruck"),
+    "LH Abb. 61",
+    Topic::Forces,
+);
+const N_CRANK_LINE_F: Note = note(
+    "crank line from the pin through O",
+    Some("Kurbelradius"),
+    "LH Abb. 61",
+    Topic::Forces,
+);
+const N_S_AT_PIN: Note = note(
+    "lay off S at the crank pin along the rod",
+    Some("Schubstangenkraft am Kurbelzapfen"),
+    "LH Abb. 61",
+    Topic::Forces,
+);
+const N_TANGENT: Note = note(
+    "tangent to the crank circle at the pin",
+    Some("Tangente"),
+    "LH Abb. 61",
+    Topic::Forces,
+);
+const N_PAR_CRANK: Note = note(
+    "parallel to the crank through the end of S",
+    Some("Parallele zum Kurbelradius"),
+    "LH Abb. 61",
+    Topic::Forces,
+);
+const N_PAR_TANGENT: Note = note(
+    "parallel to the tangent through the end of S",
+    Some("Parallele zur Tangente"),
+    "LH Abb. 61",
+    Topic::Forces,
+);
+const N_T_CUT: Note = note(
+    "cut on the tangent: tangential component",
+    Some("Tangentialdruck"),
+    "LH Abb. 61",
+    Topic::Forces,
+);
+const N_K_CUT: Note = note(
+    "cut on the crank line: radial component",
+    Some("Kurbeldruck"),
+    "LH Abb. 61",
+    Topic::Forces,
+);
+const N_T_RES_MEASURE: Note = note(
+    "tangential force T from the parallelogram at the pin",
+    Some("Tangentialdruck"),
+    "LH Gl. 48",
+    Topic::Forces,
+);
+const N_K_MEASURE: Note = note(
+    "radial force K",
+    Some("Kurbeldruck"),
+    "LH Gl. 49; KG (302)",
+    Topic::Forces,
+);
+const N_T_VEC: Note = note(
+    "tangential force T drawn",
+    Some("Tangentialdruck"),
+    "LH Abb. 61",
+    Topic::Forces,
+);
+const N_K_VEC: Note = note(
+    "radial force K drawn",
+    Some("Kurbeldruck"),
+    "LH Abb. 61",
+    Topic::Forces,
+);
+const N_POLAR_CENTRE: Note = note(
+    "centre of the polar force figure",
+    Some("verkleinerter Kurbelkreis"),
+    "KG Abb. 1063",
+    Topic::Forces,
+);
+const N_POLAR_VERTICAL: Note = note(
+    "vertical axis of the polar force figure",
+    Some("Vertikalachse"),
+    "LH Abb. 65",
+    Topic::Forces,
+);
+const N_POLAR_RAY: Note = note(
+    "crank ray carried over parallel",
+    Some("Kurbelstrahl"),
+    "LH Abb. 65; KG Abb. 1063",
+    Topic::Forces,
+);
+const N_POLAR_P: Note = note(
+    "lay off P on the crank ray",
+    Some("Überdruck P auf dem Kurbelstrahl"),
+    "LH Abb. 65; KG Abb. 1063",
+    Topic::Forces,
+);
+const N_POLAR_PAR: Note = note(
+    "parallel to the rod through the end of P",
+    Some("Parallele zur Schubstangenrichtung"),
+    "LH Abb. 65; KG Abb. 1063",
+    Topic::Forces,
+);
+const N_POLAR_CUT: Note = note(
+    "the parallel cuts the vertical axis: T = OC",
+    Some("Tangentialdruck"),
+    "LH Abb. 65; KG Abb. 1063",
+    Topic::Forces,
+);
+const N_POLAR_MEASURE: Note = note(
+    "tangential force T read off the vertical axis",
+    Some("Tangentialdruck"),
+    "KG (303); LH Gl. 48",
+    Topic::Forces,
+);
+
+/// The constructed values at one crank angle; `None` where not requested.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct AngleRow {
+    /// Full crank angle θ from the inner dead centre (degrees).
+    pub theta: f64,
+    /// Outstroke or return stroke.
+    pub stroke: cf::Stroke,
+    /// The book's φ, counted from the dead centre where the stroke began (degrees).
+    pub phi: f64,
+    /// Driving piston force P at this angle (kg).
+    pub piston_force: f64,
+    /// Piston position from the inner dead centre (mm).
+    pub x: Option<f64>,
+    /// Piston velocity by the parallel to the rod (m/s).
+    pub c_parallel: Option<f64>,
+    /// Piston velocity by the instantaneous centre (m/s).
+    pub c_instant_centre: Option<f64>,
+    /// Rod force S (kg).
+    pub rod_force: Option<f64>,
+    /// Guide force N (kg).
+    pub guide_force: Option<f64>,
+    /// Tangential force T by the polar construction (kg).
+    pub tangential_force: Option<f64>,
+    /// Tangential force T from the parallelogram at the pin (kg).
+    pub tangential_force_at_pin: Option<f64>,
+    /// Radial force K (kg).
+    pub radial_force: Option<f64>,
+}
+
+/// The results of [`construct`]: one row per crank angle.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CrankResults {
+    /// One row per requested crank angle, in the order given.
+    pub rows: Vec<AngleRow>,
+}
+
+struct Frame {
+    o: H<Point>,
+    piston_line: H<Line>,
+    vertical: H<Line>,
+    crank_circle: H<Circle>,
+    /// Reference for the piston path: the crosshead at the inner dead centre (finite rod)
+    /// or the foot of the crank pin there (infinite rod).
+    x0: H<Point>,
+}
+
+struct PolarFrame {
+    o: H<Point>,
+    vertical: H<Line>,
+}
+
+#[derive(Default)]
+struct Cache {
+    pin: Option<H<Point>>,
+    crosshead: Option<H<Point>>,
+    x: Option<H<f64>>,
+    rod_line: Option<H<Line>>,
+    crank_ray: Option<H<Line>>,
+    c_parallel: Option<H<f64>>,
+    c_ic: Option<H<f64>>,
+    c_point: Option<H<Point>>,
+    s: Option<(H<f64>, H<f64>)>,
+    k: Option<H<f64>>,
+    t_res: Option<H<f64>>,
+    t_polar: Option<H<f64>>,
+}
+
+struct Builder<'a> {
+    b: &'a mut Board,
+    d: &'a CrankDrive,
+    scales: &'a Drawing,
+    thetas: Vec<f64>,
+    divisions: Option<usize>,
+    r: f64,
+    l: f64,
+    frame: Option<Frame>,
+    polar: Option<PolarFrame>,
+    divided: Option<Vec<H<Point>>>,
+    cache: Vec<Cache>,
+}
+
+/// Constructs the requested slider-crank quantities at every crank angle on `board`.
+///
+/// Every constructed value is read off at its scale and checked against the closed form
+/// (see [`closed_form`](super::closed_form)); intersections carry their conditioning.
+///
+/// # Errors
+/// A [`ConstructionError`] if a step has no solution (a rod that cannot reach the piston line,
+/// a zero scale); a validated scene never produces one.
+pub fn construct(
+    board: &mut Board,
+    drive: &CrankDrive,
+    drawing: &Drawing,
+    angles: &Angles,
+    request: &Request,
+) -> Result<CrankResults, ConstructionError> {
+    let thetas = angles.thetas();
+    let n = thetas.len();
+    let mut bl = Builder {
+        b: board,
+        d: drive,
+        scales: drawing,
+        divisions: match angles {
+            Angles::Divisions(n) => Some(*n),
+            Angles::Degrees(_) => None,
+        },
+        thetas,
+        r: drive.crank_radius / drawing.length_scale,
+        l: drive.rod_length / drawing.length_scale,
+        frame: None,
+        polar: None,
+        divided: None,
+        cache: (0..n).map(|_| Cache::default()).collect(),
+    };
+    let want_c = request.velocity_parallel || request.velocity_instant_centre;
+    for i in 0..n {
+        let theta = bl.thetas[i];
+        bl.b.set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+        if request.piston_path {
+            bl.x(i)?;
+        }
+        if request.velocity_parallel {
+            bl.c_parallel(i)?;
+        }
+        if request.velocity_instant_centre {
+            bl.c_instant_centre(i)?;
+        }
+        if want_c {
+            bl.c_point(i)?;
+        }
+        if request.rod_force || request.guide_force {
+            bl.s_n(i)?;
+        }
+        if request.radial_force {
+            bl.k_t(i)?;
+        }
+        if request.tangential_force {
+            bl.t_polar(i)?;
+        }
+    }
+    bl.b.clear_context();
+    if want_c && bl.b.is_recording() {
+        bl.velocity_curve()?;
+    }
+    let rows = (0..n).map(|i| bl.row(i)).collect();
+    Ok(CrankResults { rows })
+}
+
+impl Builder<'_> {
+    fn row(&self, i: usize) -> AngleRow {
+        let c = &self.cache[i];
+        let theta = self.thetas[i];
+        let (stroke, phi) = cf::book_angle(theta);
+        AngleRow {
+            theta,
+            stroke,
+            phi,
+            piston_force: self.d.piston_force.at(i),
+            x: c.x.map(|h| h.g),
+            c_parallel: c.c_parallel.map(|h| h.g),
+            c_instant_centre: c.c_ic.map(|h| h.g),
+            rod_force: c.s.map(|(s, _)| s.g),
+            guide_force: c.s.map(|(_, n)| n.g),
+            tangential_force: c.t_polar.map(|h| h.g),
+            tangential_force_at_pin: c.t_res.map(|h| h.g),
+            radial_force: c.k.map(|h| h.g),
+        }
+    }
+
+    fn lambda(&self) -> f64 {
+        self.d.lambda()
+    }
+
+    /// The driving force at angle i, signed along +x (the way a driving force pushes the piston).
+    fn p_x(&self, i: usize) -> f64 {
+        cf::book_angle(self.thetas[i]).0.sign() * self.d.piston_force.at(i)
+    }
+
+    fn frame(&mut self) -> Result<&Frame, ConstructionError> {
+        if self.frame.is_none() {
+            let b = &mut *self.b;
+            let o = b.point(Point::origin(), Label::plain("O"), Role::Given, N_CENTRE);
+            let piston_line = b.line_dir(
+                &o,
+                Vector::new(1.0, 0.0),
+                Label::NONE,
+                Role::Axis,
+                N_PISTON_LINE,
+            )?;
+            let vertical = b.line_dir(
+                &o,
+                Vector::new(0.0, 1.0),
+                Label::NONE,
+                Role::Axis,
+                N_VERTICAL,
+            )?;
+            let crank_circle =
+                b.circle(&o, self.r, true, Label::NONE, Role::Given, N_CRANK_CIRCLE)?;
+            let dead = b.cut_line_circle(
+                &piston_line,
+                &crank_circle,
+                Branch::First,
+                Label::plain("A"),
+                N_DEAD_CENTRE,
+            )?;
+            let x0 = if self.d.finite_rod {
+                let arc = b.circle(
+                    &dead,
+                    self.l,
+                    false,
+                    Label::NONE,
+                    Role::Construction,
+                    N_DEAD_ARC,
+                )?;
+                b.cut_line_circle(
+                    &piston_line,
+                    &arc,
+                    Branch::First,
+                    Label::plain("T"),
+                    N_DEAD_CROSSHEAD,
+                )?
+            } else {
+                dead
+            };
+            self.frame = Some(Frame {
+                o,
+                piston_line,
+                vertical,
+                crank_circle,
+                x0,
+            });
+        }
+        Ok(self.frame.as_ref().expect("set above"))
+    }
+
+    fn pin(&mut self, i: usize) -> Result<H<Point>, ConstructionError> {
+        if let Some(p) = self.cache[i].pin {
+            return Ok(p);
+        }
+        self.frame()?;
+        let f = self.frame.as_ref().expect("frame built");
+        let (circle, o) = (f.crank_circle, f.o);
+        let p = if let Some(n) = self.divisions {
+            if self.divided.is_none() {
+                // Clockwise from the inner dead centre (180° on the sheet): the pin runs over
+                // the upper half on the outstroke.
+                self.b.clear_context();
+                let pts = self.b.divide_circle(&circle, 180.0, n, true, "A", N_DIVIDE);
+                self.divided = Some(pts);
+                let theta = self.thetas[i];
+                self.b
+                    .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+            }
+            let pin = self.divided.as_ref().expect("divided above")[i];
+            self.b
+                .segment(&o, &pin, Label::NONE, Role::Result, N_CRANK_AT);
+            pin
+        } else {
+            let theta = self.thetas[i];
+            self.b.point_on_circle(
+                &circle,
+                180.0 - theta,
+                Label::indexed("A", i as u32),
+                Role::Result,
+                N_CRANK_AT,
+            )
+        };
+        self.cache[i].pin = Some(p);
+        Ok(p)
+    }
+
+    fn crosshead(&mut self, i: usize) -> Result<H<Point>, ConstructionError> {
+        if let Some(p) = self.cache[i].crosshead {
+            return Ok(p);
+        }
+        let pin = self.pin(i)?;
+        let piston_line = self.frame()?.piston_line;
+        let b = if self.d.finite_rod {
+            let arc = self.b.circle(
+                &pin,
+                self.l,
+                false,
+                Label::NONE,
+                Role::Construction,
+                N_ROD_ARC,
+            )?;
+            let b = self.b.cut_line_circle(
+                &piston_line,
+                &arc,
+                Branch::First,
+                Label::quiet("B", i as u32),
+                N_CROSSHEAD,
+            )?;
+            self.b.segment(&b, &pin, Label::NONE, Role::Result, N_ROD);
+            b
+        } else {
+            self.b.foot(
+                &piston_line,
+                &pin,
+                Label::quiet("B", i as u32),
+                Role::Construction,
+                N_PIN_VERTICAL,
+            )
+        };
+        self.cache[i].crosshead = Some(b);
+        Ok(b)
+    }
+
+    fn x(&mut self, i: usize) -> Result<H<f64>, ConstructionError> {
+        if let Some(x) = self.cache[i].x {
+            return Ok(x);
+        }
+        let bpt = self.crosshead(i)?;
+        let f = self.frame()?;
+        let (x0, axis) = (f.x0, f.piston_line);
+        let scale = Scale {
+            per_mm: self.scales.length_scale,
+            unit: "mm",
+        };
+        let x = self.b.measure(
+            &x0,
+            &bpt,
+            &axis,
+            scale,
+            Label::quiet("x", i as u32),
+            N_MEASURE_X,
+        );
+        let (r, rod, theta) = (self.d.crank_radius, self.d.rod(), self.thetas[i]);
+        self.b.check(
+            &x,
+            "piston path x",
+            "mm",
+            "KG (285); LH Gl. 20, 23",
+            r,
+            || cf::piston_position(r, rod, theta),
+        );
+        self.cache[i].x = Some(x);
+        Ok(x)
+    }
+
+    fn rod_line(&mut self, i: usize) -> Result<H<Line>, ConstructionError> {
+        if let Some(l) = self.cache[i].rod_line {
+            return Ok(l);
+        }
+        let pin = self.pin(i)?;
+        let line = if self.d.finite_rod {
+            let b = self.crosshead(i)?;
+            self.b
+                .line_through(&b, &pin, Label::NONE, Role::Construction, N_ROD_LINE)?
+        } else {
+            let axis = self.frame()?.piston_line;
+            self.b
+                .parallel(&axis, &pin, Label::NONE, Role::Construction, N_ROD_LINE_INF)
+        };
+        self.cache[i].rod_line = Some(line);
+        Ok(line)
+    }
+
+    fn crank_ray(&mut self, i: usize) -> Result<H<Line>, ConstructionError> {
+        if let Some(l) = self.cache[i].crank_ray {
+            return Ok(l);
+        }
+        let pin = self.pin(i)?;
+        let o = self.frame()?.o;
+        let line = self
+            .b
+            .line_through(&o, &pin, Label::NONE, Role::Construction, N_CRANK_RAY)?;
+        self.cache[i].crank_ray = Some(line);
+        Ok(line)
+    }
+
+    fn c_parallel(&mut self, i: usize) -> Result<H<f64>, ConstructionError> {
+        if let Some(c) = self.cache[i].c_parallel {
+            return Ok(c);
+        }
+        let rod = self.rod_line(i)?;
+        let ray = self.crank_ray(i)?;
+        let f = self.frame()?;
+        let (o, vertical) = (f.o, f.vertical);
+        let v_mm = self.d.crank_pin_speed / self.scales.velocity_scale;
+        let e = self.b.lay_off(
+            &o,
+            &ray,
+            v_mm,
+            Label::quiet("V", i as u32),
+            Role::Velocity,
+            N_V_ON_RAY,
+        )?;
+        let par = self
+            .b
+            .parallel(&rod, &e, Label::NONE, Role::Auxiliary, N_V_PARALLEL);
+        let fpt = self
+            .b
+            .meet_point(&par, &vertical, Label::quiet("F", i as u32), N_V_CUT)?;
+        let scale = Scale {
+            per_mm: self.scales.velocity_scale,
+            unit: "m/s",
+        };
+        let c = self.b.measure(
+            &o,
+            &fpt,
+            &vertical,
+            scale,
+            Label::quiet("c", i as u32),
+            N_V_MEASURE,
+        );
+        let (v, lam, theta) = (self.d.crank_pin_speed, self.lambda(), self.thetas[i]);
+        self.b.check(
+            &c,
+            "piston velocity c (parallel)",
+            "m/s",
+            "KG (288)",
+            v,
+            || cf::piston_velocity(v, lam, theta),
+        );
+        self.cache[i].c_parallel = Some(c);
+        Ok(c)
+    }
+
+    fn c_instant_centre(&mut self, i: usize) -> Result<H<f64>, ConstructionError> {
+        if let Some(c) = self.cache[i].c_ic {
+            return Ok(c);
+        }
+        let rod = self.rod_line(i)?;
+        let f = self.frame()?;
+        let (o, vertical, piston_line) = (f.o, f.vertical, f.piston_line);
+        if self.d.finite_rod {
+            // The instantaneous centre itself (LH Abb. 53): at θ = 90°, 270° the crank ray is
+            // parallel to the normal and the centre lies at infinity (the rod translates).
+            let ray = self.crank_ray(i)?;
+            let b = self.crosshead(i)?;
+            let normal =
+                self.b
+                    .perpendicular(&piston_line, &b, Label::NONE, Role::Auxiliary, N_IC_NORMAL);
+            match self
+                .b
+                .meet(&ray, &normal, Label::quiet("C", i as u32), N_IC_POINT)
+            {
+                Cut::Point(..) | Cut::Parallel { .. } => {}
+                Cut::Coincident => {
+                    // Only if the crosshead sat on the shaft: excluded by L > R.
+                }
+            }
+        }
+        let dpt = self
+            .b
+            .meet_point(&rod, &vertical, Label::quiet("D", i as u32), N_IC_CUT)?;
+        let omega = self.d.omega();
+        let scale = Scale {
+            per_mm: omega * self.scales.length_scale / 1000.0,
+            unit: "m/s",
+        };
+        let c = self.b.measure(
+            &o,
+            &dpt,
+            &vertical,
+            scale,
+            Label::quiet("c", i as u32),
+            N_IC_MEASURE,
+        );
+        let (v, lam, theta) = (self.d.crank_pin_speed, self.lambda(), self.thetas[i]);
+        self.b.check(
+            &c,
+            "piston velocity c = ω·y",
+            "m/s",
+            "LH Gl. 28; KG (288)",
+            v,
+            || cf::piston_velocity(v, lam, theta),
+        );
+        self.cache[i].c_ic = Some(c);
+        Ok(c)
+    }
+
+    /// The point of the velocity curve over the crosshead position (KG Abb. 1049).
+    fn c_point(&mut self, i: usize) -> Result<H<Point>, ConstructionError> {
+        if let Some(p) = self.cache[i].c_point {
+            return Ok(p);
+        }
+        let c = match (self.cache[i].c_parallel, self.cache[i].c_ic) {
+            (Some(c), _) | (None, Some(c)) => c,
+            (None, None) => self.c_parallel(i)?,
+        };
+        let b = self.crosshead(i)?;
+        let axis = self.frame()?.piston_line;
+        let normal = self
+            .b
+            .perpendicular(&axis, &b, Label::NONE, Role::Auxiliary, N_C_NORMAL);
+        let q = self.b.lay_off(
+            &b,
+            &normal,
+            c.g / self.scales.velocity_scale,
+            Label::quiet("Q", i as u32),
+            Role::Construction,
+            N_C_ORDINATE,
+        )?;
+        self.cache[i].c_point = Some(q);
+        Ok(q)
+    }
+
+    fn velocity_curve(&mut self) -> Result<(), ConstructionError> {
+        // Order the points by crank angle; close the loop over a full revolution.
+        let mut idx: Vec<usize> = (0..self.thetas.len()).collect();
+        idx.sort_by(|a, b| self.thetas[*a].total_cmp(&self.thetas[*b]));
+        let mut pts: Vec<H<Point>> = idx.iter().filter_map(|&i| self.cache[i].c_point).collect();
+        if self.divisions.is_some() && pts.len() > 2 {
+            pts.push(pts[0]);
+        }
+        if pts.len() >= 2 {
+            self.b
+                .curve(&pts, Label::plain("c"), Role::Result, N_C_CURVE);
+        }
+        Ok(())
+    }
+
+    /// The parallelogram of P at the crosshead: S along the rod, N normal to the guide.
+    fn s_n(&mut self, i: usize) -> Result<(H<f64>, H<f64>), ConstructionError> {
+        if let Some(sn) = self.cache[i].s {
+            return Ok(sn);
+        }
+        let rod = self.rod_line(i)?;
+        let b = self.crosshead(i)?;
+        let axis = self.frame()?.piston_line;
+        let p_mm = self.p_x(i) / self.scales.force_scale;
+        let e = self.b.lay_off(
+            &b,
+            &axis,
+            p_mm,
+            Label::quiet("P", i as u32),
+            Role::Force,
+            N_P_AT_CROSSHEAD,
+        )?;
+        let normal = self
+            .b
+            .perpendicular(&axis, &e, Label::NONE, Role::Auxiliary, N_P_NORMAL);
+        let fpt = self
+            .b
+            .meet_point(&rod, &normal, Label::quiet("S", i as u32), N_S_CUT)?;
+        let scale = Scale {
+            per_mm: self.scales.force_scale,
+            unit: "kg",
+        };
+        let s = self.b.measure(
+            &b,
+            &fpt,
+            &rod,
+            scale,
+            Label::quiet("S", i as u32),
+            N_S_MEASURE,
+        );
+        let n = self.b.measure(
+            &e,
+            &fpt,
+            &normal,
+            scale,
+            Label::quiet("N", i as u32),
+            N_N_MEASURE,
+        );
+        self.b.segment(&b, &fpt, Label::NONE, Role::Force, N_S_VEC);
+        self.b.segment(&e, &fpt, Label::NONE, Role::Force, N_N_VEC);
+        let (p, lam, theta) = (self.d.piston_force.at(i), self.lambda(), self.thetas[i]);
+        let pref = p.abs();
+        self.b
+            .check(&s, "rod force S", "kg", "KG (300); LH Gl. 43", pref, || {
+                cf::rod_force(p, lam, theta)
+            });
+        self.b.check(
+            &n,
+            "guide force N",
+            "kg",
+            "KG (301); LH Gl. 44",
+            pref,
+            || cf::guide_force(p, lam, theta),
+        );
+        self.cache[i].s = Some((s, n));
+        Ok((s, n))
+    }
+
+    /// S resolved at the crank pin into K along the crank and T along the tangent.
+    fn k_t(&mut self, i: usize) -> Result<(H<f64>, H<f64>), ConstructionError> {
+        if let (Some(k), Some(t)) = (self.cache[i].k, self.cache[i].t_res) {
+            return Ok((k, t));
+        }
+        let (s, _) = self.s_n(i)?;
+        let rod = self.rod_line(i)?;
+        let pin = self.pin(i)?;
+        let o = self.frame()?.o;
+        // The crank line directed from the pin to O: its left normal is the sense of rotation.
+        let crank =
+            self.b
+                .line_through(&pin, &o, Label::NONE, Role::Construction, N_CRANK_LINE_F)?;
+        let g = self.b.lay_off(
+            &pin,
+            &rod,
+            s.g / self.scales.force_scale,
+            Label::quiet("G", i as u32),
+            Role::Force,
+            N_S_AT_PIN,
+        )?;
+        let tangent =
+            self.b
+                .perpendicular(&crank, &pin, Label::NONE, Role::Construction, N_TANGENT);
+        let par_crank = self
+            .b
+            .parallel(&crank, &g, Label::NONE, Role::Auxiliary, N_PAR_CRANK);
+        let par_tan = self
+            .b
+            .parallel(&tangent, &g, Label::NONE, Role::Auxiliary, N_PAR_TANGENT);
+        let tp = self
+            .b
+            .meet_point(&par_crank, &tangent, Label::quiet("T", i as u32), N_T_CUT)?;
+        let kp = self
+            .b
+            .meet_point(&par_tan, &crank, Label::quiet("K", i as u32), N_K_CUT)?;
+        let scale = Scale {
+            per_mm: self.scales.force_scale,
+            unit: "kg",
+        };
+        let t = self.b.measure(
+            &pin,
+            &tp,
+            &tangent,
+            scale,
+            Label::quiet("T", i as u32),
+            N_T_RES_MEASURE,
+        );
+        let k = self.b.measure(
+            &pin,
+            &kp,
+            &crank,
+            scale,
+            Label::quiet("K", i as u32),
+            N_K_MEASURE,
+        );
+        self.b.segment(&pin, &tp, Label::NONE, Role::Force, N_T_VEC);
+        self.b.segment(&pin, &kp, Label::NONE, Role::Force, N_K_VEC);
+        let (p, lam, theta) = (self.d.piston_force.at(i), self.lambda(), self.thetas[i]);
+        let pref = p.abs();
+        self.b.check(
+            &t,
+            "tangential force T (at the pin)",
+            "kg",
+            "LH Gl. 48; KG (303)",
+            pref,
+            || cf::tangential_force(p, lam, theta),
+        );
+        self.b.check(
+            &k,
+            "radial force K",
+            "kg",
+            "LH Gl. 49; KG (302)",
+            pref,
+            || cf::radial_force(p, lam, theta),
+        );
+        self.cache[i].k = Some(k);
+        self.cache[i].t_res = Some(t);
+        Ok((k, t))
+    }
+
+    fn polar_frame(&mut self) -> Result<&PolarFrame, ConstructionError> {
+        if self.polar.is_none() {
+            // Beside the mechanism, clear of the crank circle by the largest force.
+            let pmax = (0..self.thetas.len())
+                .map(|i| self.d.piston_force.at(i).abs())
+                .fold(0.0, f64::max)
+                / self.scales.force_scale;
+            let gap = 0.15 * (self.r + self.l);
+            let centre = Point::new(self.r + gap + pmax * 1.05, 0.0);
+            self.b.clear_context();
+            let o = self
+                .b
+                .point(centre, Label::plain("O'"), Role::Given, N_POLAR_CENTRE);
+            let vertical = self.b.line_dir(
+                &o,
+                Vector::new(0.0, 1.0),
+                Label::NONE,
+                Role::Axis,
+                N_POLAR_VERTICAL,
+            )?;
+            self.polar = Some(PolarFrame { o, vertical });
+        }
+        Ok(self.polar.as_ref().expect("set above"))
+    }
+
+    /// LH Abb. 65 / KG Abb. 1063: P on the crank ray, parallel to the rod through its end.
+    fn t_polar(&mut self, i: usize) -> Result<H<f64>, ConstructionError> {
+        if let Some(t) = self.cache[i].t_polar {
+            return Ok(t);
+        }
+        let rod = self.rod_line(i)?;
+        let ray = self.crank_ray(i)?;
+        let first = self.polar.is_none();
+        let pf = self.polar_frame()?;
+        let (o, vertical) = (pf.o, pf.vertical);
+        if first {
+            let theta = self.thetas[i];
+            self.b
+                .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+        }
+        let ray_f = self
+            .b
+            .parallel(&ray, &o, Label::NONE, Role::Auxiliary, N_POLAR_RAY);
+        let p_mm = self.p_x(i) / self.scales.force_scale;
+        let bp = self.b.lay_off(
+            &o,
+            &ray_f,
+            p_mm,
+            Label::quiet("P", i as u32),
+            Role::Force,
+            N_POLAR_P,
+        )?;
+        let par = self
+            .b
+            .parallel(&rod, &bp, Label::NONE, Role::Auxiliary, N_POLAR_PAR);
+        let cpt = self
+            .b
+            .meet_point(&par, &vertical, Label::quiet("C", i as u32), N_POLAR_CUT)?;
+        let scale = Scale {
+            per_mm: self.scales.force_scale,
+            unit: "kg",
+        };
+        let t = self.b.measure(
+            &o,
+            &cpt,
+            &vertical,
+            scale,
+            Label::quiet("T", i as u32),
+            N_POLAR_MEASURE,
+        );
+        self.b
+            .segment(&o, &cpt, Label::NONE, Role::Force, N_POLAR_MEASURE);
+        let (p, lam, theta) = (self.d.piston_force.at(i), self.lambda(), self.thetas[i]);
+        self.b.check(
+            &t,
+            "tangential force T (polar)",
+            "kg",
+            "KG (303); LH Gl. 48",
+            p.abs(),
+            || cf::tangential_force(p, lam, theta),
+        );
+        self.cache[i].t_polar = Some(t);
+        Ok(t)
+    }
+}

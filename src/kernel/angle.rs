@@ -1,0 +1,37 @@
+//! Angles given in degrees, with exact sines and cosines at the quadrant angles.
+//!
+//! `f64::sin(PI)` is 1.2e-16, not 0: a crank at its dead centre would leave the piston line by
+//! a hair, and T = 0 at the dead centre would become T = 1e-13 kg. Reducing the angle to its
+//! quadrant first makes 0°, 90°, 180°, 270° exact and makes sin(180° − φ) bit-identical to
+//! sin φ, so outstroke and return stroke are exact mirror images.
+
+/// Sine and cosine of an angle in degrees, exact at multiples of 90°.
+///
+/// ```
+/// use graphostatik::kernel::angle::sin_cos_deg;
+/// assert_eq!(sin_cos_deg(180.0), (0.0, -1.0));
+/// assert_eq!(sin_cos_deg(270.0), (-1.0, 0.0));
+/// let (s, c) = sin_cos_deg(30.0);
+/// assert!((s - 0.5).abs() < 1e-15 && (c - 0.75f64.sqrt()).abs() < 1e-15);
+/// assert_eq!(sin_cos_deg(150.0).0, sin_cos_deg(30.0).0);
+/// ```
+pub fn sin_cos_deg(deg: f64) -> (f64, f64) {
+    let r = deg.rem_euclid(360.0);
+    let quadrant = (r / 90.0).floor();
+    let rem = r - 90.0 * quadrant;
+    // Within the quadrant, fold to [0, 45°] so that complementary angles are symmetric.
+    let (s, c) = if rem == 0.0 {
+        (0.0, 1.0)
+    } else if rem <= 45.0 {
+        rem.to_radians().sin_cos()
+    } else {
+        let (s2, c2) = (90.0 - rem).to_radians().sin_cos();
+        (c2, s2)
+    };
+    match quadrant as i32 {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    }
+}

@@ -1,0 +1,181 @@
+//! Circle ∩ circle: two compass arcs.
+
+use crate::kernel::conditioning::Conditioning;
+use crate::kernel::primitives::{Circle, Point, Vector};
+use crate::kernel::tolerance::Tolerance;
+use serde::Serialize;
+
+/// The outcome of intersecting two circles.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub enum CircleCircle {
+    /// Two points: `[right, left]` of the direction from the first centre to the second.
+    Two {
+        /// `[right, left]` of the centre line.
+        points: [Point; 2],
+        /// Meeting angle (same at both points) and error amplification.
+        conditioning: Conditioning,
+    },
+    /// The circles touch from outside (distance of centres = r₁ + r₂).
+    TangentExternal {
+        /// The point of contact.
+        point: Point,
+    },
+    /// One circle touches the other from inside (distance of centres = |r₁ − r₂|).
+    TangentInternal {
+        /// The point of contact.
+        point: Point,
+    },
+    /// The circles lie apart, `gap` mm between them.
+    Separate {
+        /// Gap between the circles (mm).
+        gap: f64,
+    },
+    /// One circle lies inside the other without touching, `gap` mm between them.
+    Contained {
+        /// Gap between the circles (mm).
+        gap: f64,
+    },
+    /// Same centre, different radii.
+    Concentric,
+    /// The same circle.
+    Coincident,
+}
+
+/// Intersects two circles.
+///
+/// With `d` the distance of the centres, the common chord lies at `a = (d² + r₁² − r₂²)/(2d)`
+/// from the first centre, half chord `h = √((r₁ − a)(r₁ + a))`. The circles meet at the angle
+/// between their radii to the common point, `sin θ = d·h/(r₁·r₂)`.
+///
+/// ```
+/// use graphostatik::kernel::{intersect_circle_circle, Circle, CircleCircle, Point, Tolerance};
+/// let tol = Tolerance::for_figure(10.0);
+/// let a = Circle::new(Point::new(0.0, 0.0), 5.0).unwrap();
+/// let b = Circle::new(Point::new(8.0, 0.0), 5.0).unwrap();
+/// match intersect_circle_circle(&a, &b, &tol) {
+///     CircleCircle::Two { points, .. } => {
+///         assert_eq!(points, [Point::new(4.0, -3.0), Point::new(4.0, 3.0)]);
+///     }
+///     o => panic!("{o:?}"),
+/// }
+/// ```
+pub fn intersect_circle_circle(c1: &Circle, c2: &Circle, tol: &Tolerance) -> CircleCircle {
+    let w = c2.center - c1.center;
+    let d = w.norm();
+    let (r1, r2) = (c1.radius, c2.radius);
+    if d <= tol.length {
+        return if (r1 - r2).abs() <= tol.length {
+            CircleCircle::Coincident
+        } else {
+            CircleCircle::Concentric
+        };
+    }
+    let e = w / d;
+    if (d - (r1 + r2)).abs() <= tol.length {
+        return CircleCircle::TangentExternal {
+            point: c1.center + e * r1,
+        };
+    }
+    if (d - (r1 - r2).abs()).abs() <= tol.length {
+        // Contact on the side of the smaller circle, away from the larger one's centre.
+        let point = if r1 >= r2 {
+            c1.center + e * r1
+        } else {
+            c1.center - e * r1
+        };
+        return CircleCircle::TangentInternal { point };
+    }
+    if d > r1 + r2 {
+        return CircleCircle::Separate { gap: d - r1 - r2 };
+    }
+    if d < (r1 - r2).abs() {
+        return CircleCircle::Contained {
+            gap: (r1 - r2).abs() - d,
+        };
+    }
+    let a = (d * d + r1 * r1 - r2 * r2) / (2.0 * d);
+    let h = ((r1 - a) * (r1 + a)).max(0.0).sqrt();
+    let m = c1.center + e * a;
+    let n = Vector::new(-e.y, e.x);
+    // The radii to the common point are (a, h) and (a − d, h) in the frame of the centre
+    // line: their cross product is d·h, their dot product a(a − d) + h². The angle between
+    // them may be obtuse; the curves' meeting angle is its acute fold.
+    let angle = (d * h).atan2((a * (a - d) + h * h).abs());
+    CircleCircle::Two {
+        points: [m - n * h, m + n * h],
+        conditioning: Conditioning::from_angle(angle),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn tol() -> Tolerance {
+        Tolerance::for_figure(10.0)
+    }
+    fn c(x: f64, y: f64, r: f64) -> Circle {
+        Circle::new(Point::new(x, y), r).unwrap()
+    }
+
+    #[test]
+    fn orthogonal_circles_meet_at_right_angles() {
+        match intersect_circle_circle(&c(0.0, 0.0, 3.0), &c(5.0, 0.0, 4.0), &tol()) {
+            CircleCircle::Two {
+                points,
+                conditioning,
+            } => {
+                assert!((points[1] - Point::new(1.8, 2.4)).norm() < 1e-15);
+                assert!((conditioning.angle_deg() - 90.0).abs() < 1e-9);
+            }
+            o => panic!("{o:?}"),
+        }
+    }
+
+    #[test]
+    fn every_degenerate_case_is_typed() {
+        let t = tol();
+        assert_eq!(
+            intersect_circle_circle(&c(0.0, 0.0, 1.0), &c(2.0, 0.0, 1.0), &t),
+            CircleCircle::TangentExternal {
+                point: Point::new(1.0, 0.0)
+            }
+        );
+        assert_eq!(
+            intersect_circle_circle(&c(0.0, 0.0, 2.0), &c(1.0, 0.0, 1.0), &t),
+            CircleCircle::TangentInternal {
+                point: Point::new(2.0, 0.0)
+            }
+        );
+        assert_eq!(
+            intersect_circle_circle(&c(1.0, 0.0, 1.0), &c(0.0, 0.0, 2.0), &t),
+            CircleCircle::TangentInternal {
+                point: Point::new(2.0, 0.0)
+            }
+        );
+        assert_eq!(
+            intersect_circle_circle(&c(0.0, 0.0, 1.0), &c(5.0, 0.0, 1.0), &t),
+            CircleCircle::Separate { gap: 3.0 }
+        );
+        assert_eq!(
+            intersect_circle_circle(&c(0.0, 0.0, 5.0), &c(1.0, 0.0, 1.0), &t),
+            CircleCircle::Contained { gap: 3.0 }
+        );
+        assert_eq!(
+            intersect_circle_circle(&c(0.0, 0.0, 5.0), &c(0.0, 0.0, 1.0), &t),
+            CircleCircle::Concentric
+        );
+        assert_eq!(
+            intersect_circle_circle(&c(0.0, 0.0, 5.0), &c(0.0, 0.0, 5.0), &t),
+            CircleCircle::Coincident
+        );
+    }
+
+    #[test]
+    fn nearly_tangent_circles_are_glancing() {
+        match intersect_circle_circle(&c(0.0, 0.0, 1.0), &c(2.0 - 1e-8, 0.0, 1.0), &tol()) {
+            CircleCircle::Two { conditioning, .. } => assert!(conditioning.glancing),
+            o => panic!("{o:?}"),
+        }
+    }
+}

@@ -1,0 +1,65 @@
+//! Every tolerance of the engine, in one place.
+//!
+//! Geometry is constructed on the *drawing sheet*: lengths are millimetres of paper, as the
+//! drafter's ruler measures them. Tolerances that decide a geometric case (parallel, tangent,
+//! coincident) are relative to the size of the figure, so a construction behaves the same at
+//! 1 : 1 and at 1 : 50. No other module writes a numeric literal tolerance.
+
+/// Relative length tolerance: two lengths on the sheet that differ by less than
+/// `REL_LENGTH_EPS × figure size` are the same length. Used to decide tangency and coincidence.
+///
+/// 1e-12 leaves three decimal digits of headroom above f64's 2.2e-16 for the few operations
+/// (a normalisation, a product, a square root) that feed such a decision.
+pub const REL_LENGTH_EPS: f64 = 1e-12;
+
+/// Two unit directions whose cross product (the sine of the angle between them) is below this
+/// are parallel. Dimensionless (radians for small angles); at 1e-12 rad two lines 1 km long on
+/// the sheet would drift apart by a nanometre.
+pub const PARALLEL_SIN_EPS: f64 = 1e-12;
+
+/// Meeting angle below which an intersection is a *schleifender Schnitt* (glancing
+/// intersection), in radians (15°). Drafting practice: below about 15° a pencil line of 0.2 mm
+/// width smears the intersection along the line by more than 0.2 mm / sin 15° ≈ 0.8 mm.
+/// The intersection is still computed exactly; the step is flagged.
+pub const GLANCING_ANGLE: f64 = 15.0 * std::f64::consts::PI / 180.0;
+
+/// Relative tolerance of a check of a constructed value against its closed form:
+/// `|constructed − closed| ≤ CHECK_REL × max(|closed|, reference)`, where `reference` is the
+/// natural magnitude of the quantity (the crank radius for a piston path, the crank-pin speed
+/// for a piston velocity, the piston force for a force). The reference makes the check absolute
+/// at figure scale where the value itself passes through zero (dead centres).
+pub const CHECK_REL: f64 = 1e-9;
+
+/// Largest number of equal divisions of a segment, arc or crank circle a scene may ask for.
+/// A drafter divides into 8 to 36 parts; 3,600 is a benchmark size, 100,000 is absurd for a
+/// figure and would write a figure of hundreds of megabytes.
+pub const MAX_DIVISIONS: usize = 3600;
+
+/// The length tolerance of a figure: `REL_LENGTH_EPS` times its size.
+///
+/// ```
+/// use graphostatik::kernel::Tolerance;
+/// let tol = Tolerance::for_figure(250.0);
+/// assert_eq!(tol.length, 250.0 * graphostatik::kernel::tolerance::REL_LENGTH_EPS);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Tolerance {
+    /// Absolute length tolerance on the sheet, in mm.
+    pub length: f64,
+}
+
+impl Tolerance {
+    /// The tolerance for a figure whose largest extent is `size` mm on the sheet.
+    /// A non-finite or non-positive size falls back to 1 mm (the figure is then degenerate
+    /// anyway, and a scene validator has rejected it before).
+    pub fn for_figure(size: f64) -> Self {
+        let size = if size.is_finite() && size > 0.0 {
+            size
+        } else {
+            1.0
+        };
+        Tolerance {
+            length: size * REL_LENGTH_EPS,
+        }
+    }
+}

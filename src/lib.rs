@@ -1,0 +1,23 @@
+//! # graphostatik
+//!
+//! Digital *Graphostatik*: the ruler-and-compass procedures of classic German engineering
+//! textbooks, replayed on a geometric kernel, recorded step by step, drawn as SVG layers and
+//! checked against the closed form each step stands for.
+//!
+//! Layers, each using only the ones before it:
+//!
+//! 1. [`kernel`] — geometry (points, lines, circles, intersections with conditioning);
+//! 2. [`protocol`] — the board on which every kernel operation is recorded as a step;
+//! 3. [`crank`] — the slider-crank procedures (LH II, KG XIV B);
+//! 4. [`scene`] — the JSON scene format, its validation and its mapping to procedures;
+//! 5. [`render`] — textbook-style SVG, one layer per step, walk-through pages;
+//! 6. the `graphostatik` command line.
+#![warn(missing_docs)]
+
+pub mod crank;
+pub mod fmt;
+pub mod io;
+pub mod kernel;
+pub mod protocol;
+pub mod render;
+pub mod scene;

@@ -1,0 +1,696 @@
+//! The board: every kernel operation, recorded as a step.
+
+use super::step::*;
+use crate::kernel::construct;
+use crate::kernel::tolerance::CHECK_REL;
+use crate::kernel::{
+    intersect_circle_circle, intersect_line_circle, intersect_line_line, Branch, Circle,
+    CircleCircle, Conditioning, Line, LineCircle, LineLine, Point, PrimitiveError, Segment,
+    Tolerance, Vector,
+};
+use serde::Serialize;
+
+/// A handle to an object on the board: its id and its geometry.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct H<T> {
+    /// The object id ([`ObjId::NONE`] on a board that does not record).
+    pub id: ObjId,
+    /// The geometry or value.
+    pub g: T,
+}
+
+/// Why a step could not be made: the geometric case that stopped it, named.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ConstructionError {
+    /// A primitive could not be formed (coincident points, zero radius, non-finite value).
+    #[error("step {step} ({caption}): {source}")]
+    Primitive {
+        /// The step number it would have had.
+        step: StepId,
+        /// Its caption.
+        caption: &'static str,
+        /// The cause.
+        source: PrimitiveError,
+    },
+    /// An intersection has no point where the construction needs one.
+    #[error("step {step} ({caption}): {outcome}")]
+    NoIntersection {
+        /// The step number it would have had.
+        step: StepId,
+        /// Its caption.
+        caption: &'static str,
+        /// The geometric case found instead.
+        outcome: String,
+    },
+}
+
+/// The outcome of a line–line intersection on the board: a point, or the named degenerate case.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Cut {
+    /// The lines meet.
+    Point(H<Point>, Conditioning),
+    /// The lines are parallel: they meet at infinity.
+    Parallel {
+        /// Their distance (mm).
+        distance: f64,
+    },
+    /// The lines coincide.
+    Coincident,
+}
+
+/// How a measured length is converted to a quantity: `value = mm on the sheet × per_mm`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Scale {
+    /// Quantity units per mm of the sheet (e.g. 200 kg per mm, or 10 mm of machine per mm).
+    pub per_mm: f64,
+    /// The unit of the quantity.
+    pub unit: &'static str,
+}
+
+/// The board of a construction: objects and steps, in the order made.
+///
+/// A board either records (objects and steps kept, captions, checks) or only computes: the
+/// same procedure code runs on both, so the benchmark can show what recording costs.
+///
+/// ```
+/// use graphostatik::protocol::{Board, Label, Note, Role, Topic};
+/// use graphostatik::kernel::{Point, Vector};
+/// const N: Note = Note { caption: "given", term_de: None, book: "", topic: Topic::Setup };
+/// let mut b = Board::new(100.0, true);
+/// let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, N);
+/// let axis = b.line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, N).unwrap();
+/// assert_eq!(b.steps().len(), 2);
+/// assert_eq!(b.steps()[1].inputs, vec![o.id]);
+/// assert_eq!(axis.g.dir, Vector::new(1.0, 0.0));
+/// ```
+#[derive(Debug, Clone, Serialize)]
+pub struct Board {
+    tolerance: Tolerance,
+    #[serde(skip)]
+    recording: bool,
+    #[serde(skip)]
+    context: Option<String>,
+    #[serde(skip)]
+    next_step: u32,
+    objects: Vec<Object>,
+    steps: Vec<Step>,
+}
+
+impl Board {
+    /// A board for a figure of the given size (mm); `recording` keeps steps and checks.
+    pub fn new(figure_size: f64, recording: bool) -> Board {
+        Board {
+            tolerance: Tolerance::for_figure(figure_size),
+            recording,
+            context: None,
+            next_step: 0,
+            objects: Vec::new(),
+            steps: Vec::new(),
+        }
+    }
+
+    /// The length tolerance of the figure.
+    pub fn tolerance(&self) -> Tolerance {
+        self.tolerance
+    }
+
+    /// Whether steps are recorded.
+    pub fn is_recording(&self) -> bool {
+        self.recording
+    }
+
+    /// The recorded steps.
+    pub fn steps(&self) -> &[Step] {
+        &self.steps
+    }
+
+    /// The recorded objects.
+    pub fn objects(&self) -> &[Object] {
+        &self.objects
+    }
+
+    /// The object with this id.
+    pub fn object(&self, id: ObjId) -> Option<&Object> {
+        // Ids are dense and start at 1.
+        self.objects.get((id.0 as usize).wrapping_sub(1))
+    }
+
+    /// Sets the situation in which the following steps are made ("φ = 30°"); recorded only.
+    pub fn set_context(&mut self, f: impl FnOnce() -> String) {
+        if self.recording {
+            self.context = Some(f());
+        }
+    }
+
+    /// Clears the context.
+    pub fn clear_context(&mut self) {
+        self.context = None;
+    }
+
+    fn step_id_next(&self) -> StepId {
+        StepId(self.next_step + 1)
+    }
+
+    fn begin(&mut self, kind: StepKind, note: Note, inputs: &[ObjId]) {
+        self.next_step += 1;
+        if self.recording {
+            self.steps.push(Step {
+                id: StepId(self.next_step),
+                kind,
+                topic: note.topic,
+                caption: note.caption,
+                term_de: note.term_de,
+                book: note.book,
+                context: self.context.clone(),
+                inputs: inputs.to_vec(),
+                outputs: Vec::new(),
+                conditioning: None,
+                branch: None,
+                outcome: None,
+                checks: Vec::new(),
+            });
+        }
+    }
+
+    fn add(&mut self, label: Label, role: Role, geom: impl FnOnce() -> Geom) -> ObjId {
+        if !self.recording {
+            return ObjId::NONE;
+        }
+        let id = ObjId(self.objects.len() as u32 + 1);
+        let step = StepId(self.next_step);
+        self.objects.push(Object {
+            id,
+            step,
+            label,
+            role,
+            geom: geom(),
+        });
+        if let Some(s) = self.steps.last_mut() {
+            s.outputs.push(id);
+        }
+        id
+    }
+
+    fn last_step(&mut self) -> Option<&mut Step> {
+        if self.recording {
+            self.steps.last_mut()
+        } else {
+            None
+        }
+    }
+
+    /// Grows the drawn extent of a line, or adds a compass mark on a circle, so that the
+    /// figure shows the line up to the point constructed on it.
+    fn touch(&mut self, on: ObjId, p: &Point) {
+        if !self.recording || on == ObjId::NONE {
+            return;
+        }
+        let idx = on.0 as usize - 1;
+        if let Some(obj) = self.objects.get_mut(idx) {
+            match &mut obj.geom {
+                Geom::Line { line, extent } => {
+                    let t = line.param_of(p);
+                    extent[0] = extent[0].min(t);
+                    extent[1] = extent[1].max(t);
+                }
+                Geom::Circle { circle, marks, .. } => {
+                    let v = p - circle.center;
+                    marks.push(v.y.atan2(v.x).to_degrees());
+                }
+                _ => {}
+            }
+        }
+    }
+
+    fn prim<T>(&self, r: Result<T, PrimitiveError>, note: Note) -> Result<T, ConstructionError> {
+        r.map_err(|source| ConstructionError::Primitive {
+            step: self.step_id_next(),
+            caption: note.caption,
+            source,
+        })
+    }
+
+    /// A given point.
+    pub fn point(&mut self, p: Point, label: Label, role: Role, note: Note) -> H<Point> {
+        self.begin(StepKind::Given, note, &[]);
+        let id = self.add(label, role, || Geom::Point { at: p });
+        H { id, g: p }
+    }
+
+    /// The line through a point in a given direction (a given axis, or a ray laid off with
+    /// the protractor).
+    pub fn line_dir(
+        &mut self,
+        p: &H<Point>,
+        dir: Vector,
+        label: Label,
+        role: Role,
+        note: Note,
+    ) -> Result<H<Line>, ConstructionError> {
+        let line = self.prim(Line::new(p.g, dir), note)?;
+        let kind = if p.id == ObjId::NONE || note.topic == Topic::Setup {
+            StepKind::Given
+        } else {
+            StepKind::Line
+        };
+        self.begin(kind, note, &[p.id]);
+        let id = self.add(label, role, || Geom::Line {
+            line,
+            extent: [0.0, 0.0],
+        });
+        Ok(H { id, g: line })
+    }
+
+    /// The line through two points (the ruler).
+    pub fn line_through(
+        &mut self,
+        a: &H<Point>,
+        b: &H<Point>,
+        label: Label,
+        role: Role,
+        note: Note,
+    ) -> Result<H<Line>, ConstructionError> {
+        let line = self.prim(Line::through(a.g, b.g, self.tolerance.length), note)?;
+        self.begin(StepKind::Line, note, &[a.id, b.id]);
+        let tb = line.param_of(&b.g);
+        let id = self.add(label, role, || Geom::Line {
+            line,
+            extent: [tb.min(0.0), tb.max(0.0)],
+        });
+        Ok(H { id, g: line })
+    }
+
+    /// The parallel to `line` through `p`.
+    pub fn parallel(
+        &mut self,
+        line: &H<Line>,
+        p: &H<Point>,
+        label: Label,
+        role: Role,
+        note: Note,
+    ) -> H<Line> {
+        let g = construct::parallel_through(&line.g, p.g);
+        self.begin(StepKind::Parallel, note, &[line.id, p.id]);
+        let id = self.add(label, role, || Geom::Line {
+            line: g,
+            extent: [0.0, 0.0],
+        });
+        H { id, g }
+    }
+
+    /// The perpendicular to `line` through `p`.
+    pub fn perpendicular(
+        &mut self,
+        line: &H<Line>,
+        p: &H<Point>,
+        label: Label,
+        role: Role,
+        note: Note,
+    ) -> H<Line> {
+        let g = construct::perpendicular_through(&line.g, p.g);
+        self.begin(StepKind::Perpendicular, note, &[line.id, p.id]);
+        let id = self.add(label, role, || Geom::Line {
+            line: g,
+            extent: [0.0, 0.0],
+        });
+        H { id, g }
+    }
+
+    /// The circle about `center` with `radius` mm (the compass). `full` draws it whole;
+    /// otherwise only the short arcs where points are constructed on it.
+    #[allow(clippy::too_many_arguments)]
+    pub fn circle(
+        &mut self,
+        center: &H<Point>,
+        radius: f64,
+        full: bool,
+        label: Label,
+        role: Role,
+        note: Note,
+    ) -> Result<H<Circle>, ConstructionError> {
+        let c = self.prim(Circle::new(center.g, radius), note)?;
+        let kind = if note.topic == Topic::Setup {
+            StepKind::Given
+        } else {
+            StepKind::Circle
+        };
+        self.begin(kind, note, &[center.id]);
+        let id = self.add(label, role, || Geom::Circle {
+            circle: c,
+            full,
+            marks: Vec::new(),
+        });
+        Ok(H { id, g: c })
+    }
+
+    /// The point of a circle at the angle `deg` (laid off with the protractor), with the ray
+    /// from the centre drawn as a segment of the given role.
+    pub fn point_on_circle(
+        &mut self,
+        circle: &H<Circle>,
+        deg: f64,
+        label: Label,
+        role: Role,
+        note: Note,
+    ) -> H<Point> {
+        let p = circle.g.point_at_deg(deg);
+        self.begin(StepKind::Divide, note, &[circle.id]);
+        let id = self.add(label, Role::Given, || Geom::Point { at: p });
+        let c = circle.g.center;
+        self.add(Label::NONE, role, || Geom::Segment {
+            segment: Segment { a: c, b: p },
+        });
+        self.touch(circle.id, &p);
+        H { id, g: p }
+    }
+
+    /// Divides a circle into `n` equal parts from `start_deg` (one step, `n` points).
+    pub fn divide_circle(
+        &mut self,
+        circle: &H<Circle>,
+        start_deg: f64,
+        n: usize,
+        clockwise: bool,
+        label: &'static str,
+        note: Note,
+    ) -> Vec<H<Point>> {
+        let pts = construct::divide_circle(&circle.g, start_deg, n, clockwise);
+        self.begin(StepKind::Divide, note, &[circle.id]);
+        let mut out = Vec::with_capacity(pts.len());
+        for (k, p) in pts.into_iter().enumerate() {
+            let id = self.add(Label::indexed(label, k as u32), Role::Given, || {
+                Geom::Point { at: p }
+            });
+            self.touch(circle.id, &p);
+            out.push(H { id, g: p });
+        }
+        out
+    }
+
+    /// A segment drawn between two points (a crank, a rod).
+    pub fn segment(
+        &mut self,
+        a: &H<Point>,
+        b: &H<Point>,
+        label: Label,
+        role: Role,
+        note: Note,
+    ) -> H<Segment> {
+        let s = Segment { a: a.g, b: b.g };
+        self.begin(StepKind::LayOff, note, &[a.id, b.id]);
+        let id = self.add(label, role, || match role {
+            Role::Force | Role::Velocity => Geom::Vector { segment: s },
+            _ => Geom::Segment { segment: s },
+        });
+        H { id, g: s }
+    }
+
+    /// Lays off `length` mm from `from` along the direction of `along` (negative: backwards),
+    /// drawing the laid-off length as a vector of the given role (force, velocity) or a segment.
+    #[allow(clippy::too_many_arguments)]
+    pub fn lay_off(
+        &mut self,
+        from: &H<Point>,
+        along: &H<Line>,
+        length: f64,
+        label: Label,
+        role: Role,
+        note: Note,
+    ) -> Result<H<Point>, ConstructionError> {
+        let p = self.prim(construct::lay_off(from.g, along.g.dir, length), note)?;
+        self.begin(StepKind::LayOff, note, &[from.id, along.id]);
+        let a = from.g;
+        let id = self.add(label, Role::Given, || Geom::Point { at: p });
+        self.add(Label::NONE, role, || match role {
+            Role::Force | Role::Velocity => Geom::Vector {
+                segment: Segment { a, b: p },
+            },
+            _ => Geom::Segment {
+                segment: Segment { a, b: p },
+            },
+        });
+        self.touch(along.id, &p);
+        Ok(H { id, g: p })
+    }
+
+    /// The foot of the perpendicular from `p` on `line`, with the perpendicular drawn.
+    pub fn foot(
+        &mut self,
+        line: &H<Line>,
+        p: &H<Point>,
+        label: Label,
+        role: Role,
+        note: Note,
+    ) -> H<Point> {
+        let f = construct::foot_on_line(&line.g, &p.g);
+        self.begin(StepKind::Foot, note, &[line.id, p.id]);
+        let id = self.add(label, Role::Given, || Geom::Point { at: f });
+        let a = p.g;
+        self.add(Label::NONE, role, || Geom::Segment {
+            segment: Segment { a, b: f },
+        });
+        self.touch(line.id, &f);
+        H { id, g: f }
+    }
+
+    /// Intersects two lines; a parallel or coincident pair is recorded as its named case.
+    pub fn meet(&mut self, a: &H<Line>, b: &H<Line>, label: Label, note: Note) -> Cut {
+        let r = intersect_line_line(&a.g, &b.g, &self.tolerance);
+        self.begin(StepKind::IntersectLineLine, note, &[a.id, b.id]);
+        match r {
+            LineLine::Point {
+                point,
+                conditioning,
+                ..
+            } => {
+                if let Some(s) = self.last_step() {
+                    s.conditioning = Some(conditioning);
+                }
+                let id = self.add(label, Role::Given, || Geom::Point { at: point });
+                self.touch(a.id, &point);
+                self.touch(b.id, &point);
+                Cut::Point(H { id, g: point }, conditioning)
+            }
+            LineLine::Parallel { distance } => {
+                if let Some(s) = self.last_step() {
+                    s.outcome = Some(format!(
+                        "parallel, {} mm apart: they meet at infinity",
+                        crate::fmt::num(distance, 3)
+                    ));
+                }
+                Cut::Parallel { distance }
+            }
+            LineLine::Coincident => {
+                if let Some(s) = self.last_step() {
+                    s.outcome = Some("the lines coincide".into());
+                }
+                Cut::Coincident
+            }
+        }
+    }
+
+    /// Intersects two lines where the construction needs a point: a degenerate case is an error.
+    pub fn meet_point(
+        &mut self,
+        a: &H<Line>,
+        b: &H<Line>,
+        label: Label,
+        note: Note,
+    ) -> Result<H<Point>, ConstructionError> {
+        let step = self.step_id_next();
+        match self.meet(a, b, label, note) {
+            Cut::Point(p, _) => Ok(p),
+            Cut::Parallel { distance } => Err(ConstructionError::NoIntersection {
+                step,
+                caption: note.caption,
+                outcome: format!(
+                    "the lines are parallel ({} mm apart) and do not meet",
+                    crate::fmt::num(distance, 6)
+                ),
+            }),
+            Cut::Coincident => Err(ConstructionError::NoIntersection {
+                step,
+                caption: note.caption,
+                outcome: "the lines coincide: the intersection is undetermined".into(),
+            }),
+        }
+    }
+
+    /// Cuts a line with a circle and takes the branch given.
+    pub fn cut_line_circle(
+        &mut self,
+        line: &H<Line>,
+        circle: &H<Circle>,
+        branch: Branch,
+        label: Label,
+        note: Note,
+    ) -> Result<H<Point>, ConstructionError> {
+        let r = intersect_line_circle(&line.g, &circle.g, &self.tolerance);
+        let step = self.step_id_next();
+        self.begin(StepKind::IntersectLineCircle, note, &[line.id, circle.id]);
+        let (p, cond, br) = match r {
+            LineCircle::Two {
+                points,
+                conditioning,
+            } => {
+                let (p, _) = branch.pick(points);
+                (p, conditioning, Some(branch))
+            }
+            LineCircle::Tangent { point } => (point, Conditioning::from_angle(0.0), None),
+            LineCircle::Disjoint { gap } => {
+                let outcome = format!(
+                    "the circle misses the line by {} mm",
+                    crate::fmt::num(gap, 6)
+                );
+                if let Some(s) = self.last_step() {
+                    s.outcome = Some(outcome.clone());
+                }
+                return Err(ConstructionError::NoIntersection {
+                    step,
+                    caption: note.caption,
+                    outcome,
+                });
+            }
+        };
+        if let Some(s) = self.last_step() {
+            s.conditioning = Some(cond);
+            s.branch = br.map(|b| b.describe());
+            if br.is_none() {
+                s.outcome = Some("tangent: one double point".into());
+            }
+        }
+        let id = self.add(label, Role::Given, || Geom::Point { at: p });
+        self.touch(line.id, &p);
+        self.touch(circle.id, &p);
+        Ok(H { id, g: p })
+    }
+
+    /// Cuts two circles and takes the branch given (`First`/`Second` mean right/left of the
+    /// line from the first centre to the second).
+    pub fn cut_circle_circle(
+        &mut self,
+        a: &H<Circle>,
+        b: &H<Circle>,
+        branch: Branch,
+        label: Label,
+        note: Note,
+    ) -> Result<H<Point>, ConstructionError> {
+        let r = intersect_circle_circle(&a.g, &b.g, &self.tolerance);
+        let step = self.step_id_next();
+        self.begin(StepKind::IntersectCircleCircle, note, &[a.id, b.id]);
+        let (p, cond, br) = match r {
+            CircleCircle::Two {
+                points,
+                conditioning,
+            } => (branch.pick(points).0, conditioning, Some(branch)),
+            CircleCircle::TangentExternal { point } | CircleCircle::TangentInternal { point } => {
+                (point, Conditioning::from_angle(0.0), None)
+            }
+            other => {
+                let outcome = match other {
+                    CircleCircle::Separate { gap } => {
+                        format!("the circles lie {} mm apart", crate::fmt::num(gap, 6))
+                    }
+                    CircleCircle::Contained { gap } => format!(
+                        "one circle lies inside the other, {} mm clear",
+                        crate::fmt::num(gap, 6)
+                    ),
+                    CircleCircle::Concentric => "the circles are concentric".into(),
+                    _ => "the circles coincide".into(),
+                };
+                if let Some(s) = self.last_step() {
+                    s.outcome = Some(outcome.clone());
+                }
+                return Err(ConstructionError::NoIntersection {
+                    step,
+                    caption: note.caption,
+                    outcome,
+                });
+            }
+        };
+        if let Some(s) = self.last_step() {
+            s.conditioning = Some(cond);
+            s.branch = br.map(|b| b.describe());
+        }
+        let id = self.add(label, Role::Given, || Geom::Point { at: p });
+        self.touch(a.id, &p);
+        self.touch(b.id, &p);
+        Ok(H { id, g: p })
+    }
+
+    /// Measures the signed distance from `from` to `to` along the direction of `axis` and
+    /// reads it off at `scale`: the drafter's dividers on the scale rule.
+    pub fn measure(
+        &mut self,
+        from: &H<Point>,
+        to: &H<Point>,
+        axis: &H<Line>,
+        scale: Scale,
+        label: Label,
+        note: Note,
+    ) -> H<f64> {
+        let mm = (to.g - from.g).dot(&axis.g.dir);
+        let value = mm * scale.per_mm;
+        self.begin(StepKind::Measure, note, &[from.id, to.id, axis.id]);
+        let unit = scale.unit;
+        let id = self.add(label, Role::Result, || Geom::Scalar { value, unit });
+        H { id, g: value }
+    }
+
+    /// Draws a curve through points.
+    pub fn curve(&mut self, points: &[H<Point>], label: Label, role: Role, note: Note) -> H<ObjId> {
+        if !self.recording {
+            return H {
+                id: ObjId::NONE,
+                g: ObjId::NONE,
+            };
+        }
+        let ids: Vec<ObjId> = points.iter().map(|p| p.id).collect();
+        self.begin(StepKind::Curve, note, &ids);
+        let pts: Vec<Point> = points.iter().map(|p| p.g).collect();
+        let id = self.add(label, role, || Geom::Curve { points: pts });
+        H { id, g: id }
+    }
+
+    /// Attaches an analytic check to the step that made `value`. The closed form is evaluated
+    /// only on a recording board. The tolerance is [`CHECK_REL`] × max(|closed form|, `reference`).
+    pub fn check(
+        &mut self,
+        value: &H<f64>,
+        quantity: &'static str,
+        unit: &'static str,
+        formula: &'static str,
+        reference: f64,
+        closed_form: impl FnOnce() -> f64,
+    ) {
+        if !self.recording {
+            return;
+        }
+        let closed = closed_form();
+        let error = (value.g - closed).abs();
+        let tolerance = CHECK_REL * closed.abs().max(reference.abs());
+        let step = self.object(value.id).map(|o| o.step);
+        if let Some(step) = step {
+            let idx = step.0 as usize - 1;
+            if let Some(s) = self.steps.get_mut(idx) {
+                s.checks.push(Check {
+                    quantity,
+                    unit,
+                    constructed: value.g,
+                    closed_form: closed,
+                    formula,
+                    error,
+                    tolerance,
+                    reference,
+                    passed: error <= tolerance,
+                });
+            }
+        }
+    }
+
+    /// The protocol as pretty JSON (deterministic: objects and steps in the order made).
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).expect("the board holds only serialisable data")
+    }
+}

@@ -1,0 +1,10 @@
+//! The construction protocol: a board on which each kernel operation is recorded as a step
+//! (number, kind, inputs, outputs, caption, German term, book reference, conditioning, checks),
+//! after GeoGebra's construction protocol. The protocol is data: it serialises to JSON, and
+//! every view (figure, check table, walk-through, benchmark) reads it.
+
+mod board;
+mod step;
+
+pub use board::{Board, ConstructionError, Cut, Scale, H};
+pub use step::{Check, Geom, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Topic};

@@ -1,0 +1,316 @@
+//! The data of the construction protocol: objects, steps, checks.
+
+use crate::kernel::{Arc, Circle, Conditioning, Line, Point, Segment};
+use serde::{Serialize, Serializer};
+
+/// The id of an object on the board (`o1`, `o2`, …); `NONE` when nothing is recorded.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct ObjId(pub u32);
+
+impl ObjId {
+    /// The id handed out by a board that does not record.
+    pub const NONE: ObjId = ObjId(0);
+}
+
+impl Serialize for ObjId {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&format!("o{}", self.0))
+    }
+}
+
+/// The number of a step, written `001`, `002`, … as in a construction protocol.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct StepId(pub u32);
+
+impl std::fmt::Display for StepId {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{:03}", self.0)
+    }
+}
+
+impl Serialize for StepId {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&self.to_string())
+    }
+}
+
+/// What kind of ruler-and-compass operation a step is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum StepKind {
+    /// A given element (centre, axis, guide).
+    Given,
+    /// A circle drawn with the compass.
+    Circle,
+    /// A ray or line at a given angle (protractor) or through two points (ruler).
+    Line,
+    /// A parallel through a point (set squares).
+    Parallel,
+    /// A perpendicular through a point.
+    Perpendicular,
+    /// Line ∩ line.
+    IntersectLineLine,
+    /// Line ∩ circle.
+    IntersectLineCircle,
+    /// Circle ∩ circle.
+    IntersectCircleCircle,
+    /// Foot of a perpendicular.
+    Foot,
+    /// A length laid off at a scale, or a segment drawn between points.
+    LayOff,
+    /// Equal division of a segment, arc or circle.
+    Divide,
+    /// A length measured and read off at a scale.
+    Measure,
+    /// A curve drawn through constructed points.
+    Curve,
+}
+
+/// Which part of a procedure a step belongs to; the unit of lazy evaluation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum Topic {
+    /// Frame of the figure: centre, axes, crank circle, dead centres.
+    Setup,
+    /// Crank positions and the piston path (KG Abb. 1047, LH Abb. 49).
+    PistonPath,
+    /// Piston velocity (KG Abb. 1049, LH Abb. 53).
+    Velocity,
+    /// Forces in the crank drive (LH Abb. 61, 65; KG Abb. 1061, 1063).
+    Forces,
+}
+
+/// How an object is drawn: the textbook's hierarchy of lines.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Role {
+    /// Given elements: full lines of medium weight.
+    Given,
+    /// Axes and centre lines: dash-dot.
+    Axis,
+    /// Construction lines: thin.
+    Construction,
+    /// Auxiliary transfers (parallels carried across): thin dashed.
+    Auxiliary,
+    /// Results: heavy.
+    Result,
+    /// Force vectors: medium with an arrowhead.
+    Force,
+    /// Velocity vectors: medium with an open arrowhead.
+    Velocity,
+    /// A guide or support: heavy with hatching.
+    Guide,
+}
+
+/// The name written at an object: `base` with an optional index (`B₃`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct Label {
+    /// The letter(s).
+    pub base: &'static str,
+    /// The index, written as a subscript.
+    pub index: Option<u32>,
+    /// Whether the figure writes it (construction points keep their name in the protocol
+    /// but stay unlettered in the figure, as in the books).
+    pub shown: bool,
+}
+
+impl Label {
+    /// A label without index.
+    pub const fn plain(base: &'static str) -> Label {
+        Label {
+            base,
+            index: None,
+            shown: true,
+        }
+    }
+    /// A label with an index.
+    pub const fn indexed(base: &'static str, index: u32) -> Label {
+        Label {
+            base,
+            index: Some(index),
+            shown: true,
+        }
+    }
+    /// A name kept in the protocol but not written in the figure.
+    pub const fn quiet(base: &'static str, index: u32) -> Label {
+        Label {
+            base,
+            index: Some(index),
+            shown: false,
+        }
+    }
+    /// No label.
+    pub const NONE: Label = Label {
+        base: "",
+        index: None,
+        shown: false,
+    };
+    /// True if nothing is written.
+    pub fn is_empty(&self) -> bool {
+        self.base.is_empty() || !self.shown
+    }
+}
+
+impl std::fmt::Display for Label {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.index {
+            Some(i) => write!(f, "{}{}", self.base, i),
+            None => write!(f, "{}", self.base),
+        }
+    }
+}
+
+/// The words of a step: an English caption, the German book term, the book reference, and the
+/// topic it belongs to. Static, so that a board that does not record allocates nothing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Note {
+    /// Short English caption ("arc with the rod length about the crank pin").
+    pub caption: &'static str,
+    /// The German book term, where the books have one ("Schubstangenkreisbogen").
+    pub term_de: Option<&'static str>,
+    /// Book reference ("KG Abb. 1047; LH Abb. 49").
+    pub book: &'static str,
+    /// The part of the procedure.
+    pub topic: Topic,
+}
+
+/// The geometry of an object.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "type")]
+pub enum Geom {
+    /// A point.
+    Point {
+        /// Position (mm on the sheet).
+        at: Point,
+    },
+    /// A line, drawn over the parameter interval `extent` (mm along its direction).
+    Line {
+        /// The infinite line.
+        line: Line,
+        /// Drawn part, grown to cover every point constructed on it.
+        extent: [f64; 2],
+    },
+    /// A segment.
+    Segment {
+        /// The segment.
+        segment: Segment,
+    },
+    /// A vector drawn with an arrowhead (a force or velocity at its scale).
+    Vector {
+        /// Tail and head.
+        segment: Segment,
+    },
+    /// A circle; `full` draws it whole, otherwise only short compass arcs at `marks` (degrees).
+    Circle {
+        /// The circle.
+        circle: Circle,
+        /// Whether the whole circle is drawn.
+        full: bool,
+        /// Angles (degrees) of the points constructed on it, where compass arcs are drawn.
+        marks: Vec<f64>,
+    },
+    /// An arc.
+    Arc {
+        /// The arc.
+        arc: Arc,
+    },
+    /// A curve through points (drawn as a polyline through many points, or smooth).
+    Curve {
+        /// The points, in order.
+        points: Vec<Point>,
+    },
+    /// A measured number.
+    Scalar {
+        /// The value in the quantity's unit.
+        value: f64,
+        /// The unit.
+        unit: &'static str,
+    },
+}
+
+/// An object on the board.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Object {
+    /// Its id.
+    pub id: ObjId,
+    /// The step that made it.
+    pub step: StepId,
+    /// Its name in the figure.
+    pub label: Label,
+    /// How it is drawn.
+    pub role: Role,
+    /// Its geometry.
+    pub geom: Geom,
+}
+
+/// An analytic check: a constructed value against the closed form it stands for.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Check {
+    /// The quantity ("piston path x").
+    pub quantity: &'static str,
+    /// Its unit.
+    pub unit: &'static str,
+    /// The value read off the construction at its scale.
+    pub constructed: f64,
+    /// The closed-form value.
+    pub closed_form: f64,
+    /// The formula it comes from ("KG (285), LH Gl. 20").
+    pub formula: &'static str,
+    /// |constructed − closed form|.
+    pub error: f64,
+    /// The tolerance: `CHECK_REL × max(|closed form|, reference)`.
+    pub tolerance: f64,
+    /// The natural magnitude the tolerance is relative to.
+    pub reference: f64,
+    /// Whether the error is within the tolerance.
+    pub passed: bool,
+}
+
+/// One step of the construction protocol.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Step {
+    /// Its number.
+    pub id: StepId,
+    /// The operation.
+    pub kind: StepKind,
+    /// The part of the procedure.
+    pub topic: Topic,
+    /// English caption.
+    pub caption: &'static str,
+    /// German book term.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub term_de: Option<&'static str>,
+    /// Book reference.
+    pub book: &'static str,
+    /// The situation the step is made in ("φ = 30°").
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub context: Option<String>,
+    /// Ids of the objects it uses.
+    pub inputs: Vec<ObjId>,
+    /// Ids of the objects it makes.
+    pub outputs: Vec<ObjId>,
+    /// For an intersection: how well it was conditioned.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub conditioning: Option<Conditioning>,
+    /// For a two-point intersection: which branch was taken.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub branch: Option<String>,
+    /// For a degenerate outcome: what happened instead ("parallel: meets at infinity").
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub outcome: Option<String>,
+    /// Analytic checks attached to this step.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub checks: Vec<Check>,
+}
+
+impl Step {
+    /// `NNN caption (context)`, the layer name.
+    pub fn title(&self) -> String {
+        match &self.context {
+            Some(c) => format!("{} {} ({})", self.id, self.caption, c),
+            None => format!("{} {}", self.id, self.caption),
+        }
+    }
+}
