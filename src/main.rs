@@ -1,1 +1,179 @@
-fn main() {}
+//! The `graphostatik` command line: render, check, steps, schema.
+
+use clap::{Parser, Subcommand};
+use graphostatik::io::write_atomic;
+use graphostatik::render;
+use graphostatik::scene::{Problem, Scene};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// Digital Graphostatik: replay the ruler-and-compass constructions of the classic textbooks.
+#[derive(Parser)]
+#[command(name = "graphostatik", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Render scenes to SVG, one file per scene (a folder renders every *.json in it).
+    Render {
+        /// Scene files or folders.
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+        /// Output folder (created if missing).
+        #[arg(long, default_value = "figures")]
+        out: PathBuf,
+    },
+    /// Print the table of every analytic check; exit status 1 if any fails.
+    Check {
+        /// The scene file.
+        scene: PathBuf,
+        /// Print JSON instead of a text table.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Write one cumulative SVG per construction step and an index.html that pages through them.
+    Steps {
+        /// The scene file.
+        scene: PathBuf,
+        /// Output folder (created if missing).
+        #[arg(long)]
+        out: PathBuf,
+    },
+    /// Print the construction protocol (every step, object and check) as JSON.
+    Protocol {
+        /// The scene file.
+        scene: PathBuf,
+    },
+    /// Print the JSON Schema of the scene format.
+    Schema,
+}
+
+/// Input errors: exit status 2, one line naming the place.
+struct Fail(String);
+
+fn scene_files(args: &[PathBuf]) -> Result<Vec<PathBuf>, Fail> {
+    let mut files = Vec::new();
+    for a in args {
+        if a.is_dir() {
+            let rd = std::fs::read_dir(a)
+                .map_err(|e| Fail(format!("{}: cannot read the folder: {e}", a.display())))?;
+            let mut v: Vec<PathBuf> = rd
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.extension().is_some_and(|x| x == "json"))
+                .collect();
+            v.sort();
+            if v.is_empty() {
+                return Err(Fail(format!(
+                    "{}: no *.json scene in this folder",
+                    a.display()
+                )));
+            }
+            files.extend(v);
+        } else {
+            files.push(a.clone());
+        }
+    }
+    Ok(files)
+}
+
+fn load(path: &Path) -> Result<Problem, Fail> {
+    let scene = Scene::load(path).map_err(|e| Fail(e.to_string()))?;
+    Ok(scene.problem())
+}
+
+fn construct(path: &Path, p: &Problem) -> Result<graphostatik::protocol::Board, Fail> {
+    p.construct(true)
+        .map(|(b, _)| b)
+        .map_err(|e| Fail(format!("{}: {e}", path.display())))
+}
+
+fn ensure_dir(dir: &Path) -> Result<(), Fail> {
+    std::fs::create_dir_all(dir).map_err(|e| {
+        Fail(format!(
+            "{}: cannot create the output folder: {e}",
+            dir.display()
+        ))
+    })
+}
+
+fn write(path: &Path, contents: &str) -> Result<(), Fail> {
+    write_atomic(path, contents).map_err(|e| Fail(format!("{}: cannot write: {e}", path.display())))
+}
+
+fn run(cli: Cli) -> Result<ExitCode, Fail> {
+    match cli.command {
+        Command::Render { scenes, out } => {
+            // Everything is loaded and constructed before the first file is written.
+            let files = scene_files(&scenes)?;
+            let mut outputs = Vec::new();
+            for f in &files {
+                let p = load(f)?;
+                let board = construct(f, &p)?;
+                let stem = f
+                    .file_stem()
+                    .map(|s| s.to_string_lossy().into_owned())
+                    .unwrap_or_default();
+                outputs.push((
+                    out.join(format!("{stem}.svg")),
+                    render::figure(&p.figure_meta(), &board, None),
+                ));
+            }
+            ensure_dir(&out)?;
+            for (path, svg) in outputs {
+                write(&path, &svg)?;
+                println!("{}", path.display());
+            }
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Check { scene, json } => {
+            let p = load(&scene)?;
+            let board = construct(&scene, &p)?;
+            if json {
+                println!("{}", render::check_table_json(&board));
+            } else {
+                print!("{}", render::check_table_text(&board));
+            }
+            let failed = render::check_rows(&board).iter().any(|r| !r.passed);
+            Ok(if failed {
+                ExitCode::from(1)
+            } else {
+                ExitCode::SUCCESS
+            })
+        }
+        Command::Steps { scene, out } => {
+            let p = load(&scene)?;
+            let board = construct(&scene, &p)?;
+            let pages = render::walkthrough(&p.figure_meta(), &board);
+            ensure_dir(&out)?;
+            for page in &pages {
+                write(&out.join(&page.name), &page.contents)?;
+            }
+            println!("{} pages in {}", pages.len(), out.display());
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Protocol { scene } => {
+            let p = load(&scene)?;
+            let board = construct(&scene, &p)?;
+            println!("{}", board.to_json());
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Schema => {
+            println!("{}", graphostatik::scene::schema_json());
+            Ok(ExitCode::SUCCESS)
+        }
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(code) => code,
+        Err(Fail(msg)) => {
+            eprintln!("error: {msg}");
+            ExitCode::from(2)
+        }
+    }
+}

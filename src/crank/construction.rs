@@ -62,6 +62,12 @@ const N_DEAD_CROSSHEAD: Note = note(
     "LH Abb. 49",
     Topic::Setup,
 );
+const N_GUIDE: Note = note(
+    "crosshead guide: the stroke s = 2R laid off from the dead centre",
+    Some("Gleitbahn, Hub"),
+    "KG Abb. 1044",
+    Topic::Setup,
+);
 const N_DIVIDE: Note = note(
     "divide the crank circle into equal parts",
     Some("Teilung des Kurbelkreises"),
@@ -563,6 +569,14 @@ impl Builder<'_> {
             } else {
                 dead
             };
+            b.lay_off(
+                &x0,
+                &piston_line,
+                2.0 * self.r,
+                Label::NONE,
+                Role::Guide,
+                N_GUIDE,
+            )?;
             self.frame = Some(Frame {
                 o,
                 piston_line,
@@ -1000,10 +1014,7 @@ impl Builder<'_> {
     fn polar_frame(&mut self) -> Result<&PolarFrame, ConstructionError> {
         if self.polar.is_none() {
             // Beside the mechanism, clear of the crank circle by the largest force.
-            let pmax = (0..self.thetas.len())
-                .map(|i| self.d.piston_force.at(i).abs())
-                .fold(0.0, f64::max)
-                / self.scales.force_scale;
+            let pmax = self.d.piston_force.max_abs() / self.scales.force_scale;
             let gap = 0.15 * (self.r + self.l);
             let centre = Point::new(self.r + gap + pmax * 1.05, 0.0);
             self.b.clear_context();

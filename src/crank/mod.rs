@@ -94,6 +94,14 @@ impl PistonForce {
             PistonForce::PerAngle(v) => v.get(i).copied().unwrap_or(0.0),
         }
     }
+
+    /// The largest |P| (kg).
+    pub fn max_abs(&self) -> f64 {
+        match self {
+            PistonForce::Constant(p) => p.abs(),
+            PistonForce::PerAngle(v) => v.iter().fold(0.0f64, |m, p| m.max(p.abs())),
+        }
+    }
 }
 
 /// The scales of the drawing.

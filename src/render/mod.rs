@@ -1,1 +1,12 @@
-//! x
+//! Rendering: textbook-style SVG with one Inkscape layer per construction step, walk-through
+//! pages, and the check table. The renderer reads a recorded [`Board`](crate::protocol::Board)
+//! and computes no mechanics: the scales and title it writes come in a [`FigureMeta`].
+
+mod figure;
+mod style;
+mod table;
+mod walkthrough;
+
+pub use figure::{figure, FigureMeta, ScaleBar};
+pub use table::{check_rows, check_table_json, check_table_text, CheckRow};
+pub use walkthrough::{walkthrough, Page};

@@ -1,0 +1,60 @@
+//! The textbook's hierarchy of lines and its lettering, as one stylesheet.
+
+use crate::protocol::Role;
+
+/// Margin around the figure (mm).
+pub const MARGIN: f64 = 10.0;
+/// Height of the title block above the figure (mm).
+pub const TITLE_BLOCK: f64 = 22.0;
+/// Height of the scale-bar block below the figure (mm).
+pub const SCALE_BLOCK: f64 = 14.0;
+/// How far a construction line runs past the last point constructed on it (mm).
+pub const LINE_OVERSHOOT: f64 = 3.0;
+/// Length of the short compass arc drawn through a point cut on a circle (mm of arc).
+pub const COMPASS_ARC: f64 = 9.0;
+/// Spacing and length of the hatching under a guide (mm).
+pub const HATCH: f64 = 2.0;
+/// Radius of the dot at a constructed point (mm).
+pub const DOT: f64 = 0.3;
+/// Offset of a label from its point (mm).
+pub const LABEL_OFFSET: f64 = 1.6;
+/// Colour of the step shown last in a walk-through page.
+pub const CURRENT: &str = "#b0362a";
+
+/// The CSS class of a role.
+pub fn class(role: Role) -> &'static str {
+    match role {
+        Role::Given => "given",
+        Role::Axis => "axis",
+        Role::Construction => "construction",
+        Role::Auxiliary => "auxiliary",
+        Role::Result => "result",
+        Role::Force => "force",
+        Role::Velocity => "velocity",
+        Role::Guide => "guide",
+    }
+}
+
+/// The stylesheet. Stroke widths in mm of paper: 0.18 thin, 0.35 medium, 0.6 heavy, as a
+/// drafter's pens; axes dash-dot, transfers dashed.
+pub fn css() -> String {
+    format!(
+        "path,line,circle{{fill:none;stroke:#000;stroke-linecap:round}}\
+.given{{stroke-width:0.35}}\
+.axis{{stroke-width:0.18;stroke-dasharray:6 1.2 0.8 1.2}}\
+.construction{{stroke-width:0.18}}\
+.auxiliary{{stroke-width:0.18;stroke-dasharray:1.6 1}}\
+.result{{stroke-width:0.6}}\
+.force{{stroke-width:0.35;marker-end:url(#arrow)}}\
+.velocity{{stroke-width:0.35;marker-end:url(#arrow-open)}}\
+.guide{{stroke-width:0.6}}\
+.hatch{{stroke-width:0.18}}\
+circle.pt{{fill:#000;stroke:none}}\
+text{{font-family:'Times New Roman',Times,'Liberation Serif',serif;font-style:italic;font-size:3.5px;fill:#000;stroke:none}}\
+text.title{{font-style:normal;font-size:6px}}\
+text.small{{font-style:normal;font-size:2.8px}}\
+.current path,.current line,.current circle{{stroke:{c}}}\
+.current circle.pt,.current text{{fill:{c}}}",
+        c = CURRENT
+    )
+}
