@@ -872,9 +872,14 @@ impl Builder<'_> {
         if let Some(sn) = self.cache[i].s {
             return Ok(sn);
         }
-        let rod = self.rod_line(i)?;
         let b = self.crosshead(i)?;
         let axis = self.frame()?.piston_line;
+        // The rod's line through the crosshead; for the infinitely long rod the piston line.
+        let rod = if self.d.finite_rod {
+            self.rod_line(i)?
+        } else {
+            axis
+        };
         let p_mm = self.p_x(i) / self.scales.force_scale;
         let e = self.b.lay_off(
             &b,

@@ -1,0 +1,241 @@
+//! Bad input: one clear error naming the field, exit status 2, no panic, no output file.
+
+use graphostatik::scene::{Scene, SceneError};
+use std::path::PathBuf;
+use std::process::Command;
+
+const GOOD: &str = r#"{
+  "title": "t",
+  "mechanism": { "crank_radius_mm": 300, "rod": { "length_mm": 1500 } },
+  "speed": { "rpm": 100 },
+  "piston_force": { "kg": 1000 },
+  "angles": { "divisions": 12 },
+  "outputs": ["piston_path", "tangential_force"]
+}"#;
+
+fn err(text: &str) -> String {
+    match Scene::from_json(text, "s.json") {
+        Ok(_) => panic!("accepted: {text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+#[test]
+fn the_good_scene_is_accepted() {
+    Scene::from_json(GOOD, "s.json").unwrap();
+}
+
+#[test]
+fn malformed_json_gives_line_and_column() {
+    let e = err("{\n  \"title\": \"t\",\n  \"mechanism\": { ,\n}");
+    assert!(e.starts_with("s.json:3:"), "{e}");
+    match Scene::from_json("{\n \"title\" 1}", "x") {
+        Err(SceneError::Json { line, column, .. }) => assert_eq!((line, column), (2, 10)),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn unknown_and_missing_fields_are_named() {
+    let e = err(&GOOD.replace("\"speed\"", "\"sped\""));
+    assert!(e.contains("unknown field `sped`"), "{e}");
+    let e = err(&GOOD.replace(
+        "\"rod\": { \"length_mm\": 1500 }",
+        "\"rod\": { \"length_mm\": 1500, \"mass_kg\": 3 }",
+    ));
+    assert!(e.contains("mechanism.rod") || e.contains("mass_kg"), "{e}");
+    let e = err(&GOOD.replace("\"speed\": { \"rpm\": 100 },", ""));
+    assert!(e.contains("missing field `speed`"), "{e}");
+    let e = err(&GOOD.replace("\"crank_radius_mm\": 300", "\"crank_radius_mm\": \"300\""));
+    assert!(e.contains("mechanism.crank_radius_mm"), "{e}");
+    let e = err(&GOOD.replace("\"tangential_force\"", "\"tangential_forse\""));
+    assert!(
+        e.contains("outputs[1]") && e.contains("tangential_forse"),
+        "{e}"
+    );
+}
+
+#[test]
+fn non_positive_lengths_are_named() {
+    let e = err(&GOOD.replace("\"crank_radius_mm\": 300", "\"crank_radius_mm\": -300"));
+    assert!(
+        e.contains("mechanism.crank_radius_mm") && e.contains("positive"),
+        "{e}"
+    );
+    let e = err(&GOOD.replace("\"length_mm\": 1500", "\"length_mm\": 0"));
+    assert!(e.contains("mechanism.rod.length_mm"), "{e}");
+    let e = err(&GOOD.replace("\"rpm\": 100", "\"rpm\": 0"));
+    assert!(e.contains("speed.rpm"), "{e}");
+}
+
+#[test]
+fn a_rod_not_longer_than_the_crank_locks_the_mechanism() {
+    let e = err(&GOOD.replace("\"length_mm\": 1500", "\"length_mm\": 300"));
+    assert!(
+        e.contains("mechanism.rod.length_mm") && e.contains("locks"),
+        "{e}"
+    );
+    let e = err(&GOOD.replace("{ \"length_mm\": 1500 }", "{ \"l_over_r\": 0.5 }"));
+    assert!(
+        e.contains("mechanism.rod.l_over_r") && e.contains("locks"),
+        "{e}"
+    );
+}
+
+#[test]
+fn crank_angles_out_of_range_and_absurd_division_counts() {
+    let e = err(&GOOD.replace("{ \"divisions\": 12 }", "{ \"degrees\": [0, 90, 360] }"));
+    assert!(
+        e.contains("angles.degrees[2]") && e.contains("out of range"),
+        "{e}"
+    );
+    let e = err(&GOOD.replace("{ \"divisions\": 12 }", "{ \"degrees\": [-5] }"));
+    assert!(e.contains("angles.degrees[0]"), "{e}");
+    let e = err(&GOOD.replace("\"divisions\": 12", "\"divisions\": 1000000"));
+    assert!(e.contains("angles.divisions") && e.contains("3600"), "{e}");
+    let e = err(&GOOD.replace("\"divisions\": 12", "\"divisions\": 1"));
+    assert!(e.contains("angles.divisions"), "{e}");
+    let e = err(&GOOD.replace("\"divisions\": 12", "\"divisions\": -3"));
+    assert!(e.contains("angles.divisions"), "{e}");
+}
+
+#[test]
+fn forces_need_a_piston_force() {
+    let e = err(&GOOD.replace("\"piston_force\": { \"kg\": 1000 },", ""));
+    assert!(e.contains("piston_force") && e.contains("missing"), "{e}");
+    let e = err(&GOOD.replace("{ \"kg\": 1000 }", "{ \"per_angle_kg\": [1, 2] }"));
+    assert!(
+        e.contains("piston_force.per_angle_kg") && e.contains("12 crank angles"),
+        "{e}"
+    );
+}
+
+fn bin() -> PathBuf {
+    PathBuf::from(env!("CARGO_BIN_EXE_graphostatik"))
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("gs-bad-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[test]
+fn cli_exits_2_with_one_clear_line_and_writes_nothing() {
+    let d = tmp("cli");
+    let good = d.join("good.json");
+    std::fs::write(&good, GOOD).unwrap();
+    let bad = d.join("bad.json");
+    std::fs::write(
+        &bad,
+        GOOD.replace("\"length_mm\": 1500", "\"length_mm\": 100"),
+    )
+    .unwrap();
+    let out = d.join("out");
+    // The good scene first: still nothing may be written, because the second one fails.
+    let o = Command::new(bin())
+        .args(["render"])
+        .arg(&good)
+        .arg(&bad)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        stderr.contains("bad.json") && stderr.contains("mechanism.rod.length_mm"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("panicked"));
+    assert!(!out.exists());
+    for cmd in ["check", "protocol"] {
+        let o = Command::new(bin()).arg(cmd).arg(&bad).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{cmd}");
+    }
+    let o = Command::new(bin())
+        .arg("check")
+        .arg(d.join("missing.json"))
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("missing.json"));
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+#[test]
+fn cli_unwritable_output_folder() {
+    let d = tmp("unwritable");
+    let good = d.join("good.json");
+    std::fs::write(&good, GOOD).unwrap();
+    // A regular file where the output folder should be.
+    let blocker = d.join("blocker");
+    std::fs::write(&blocker, "x").unwrap();
+    let o = Command::new(bin())
+        .arg("render")
+        .arg(&good)
+        .arg("--out")
+        .arg(blocker.join("figs"))
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("cannot create the output folder"));
+    // Nothing but the two inputs in the folder: no temporary file left behind.
+    let mut names: Vec<_> = std::fs::read_dir(&d)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["blocker", "good.json"]);
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+#[test]
+fn cli_check_exit_status_and_schema() {
+    let o = Command::new(bin())
+        .args([
+            "check",
+            concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/kg_tafel1.json"),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("36 checks, 36 passed, 0 failed"));
+    let o = Command::new(bin()).arg("schema").output().unwrap();
+    assert_eq!(o.status.code(), Some(0));
+    let schema: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(schema["properties"]["mechanism"].is_object());
+    assert_eq!(
+        schema["additionalProperties"],
+        serde_json::Value::Bool(false)
+    );
+}
+
+#[test]
+fn cli_steps_writes_a_walkthrough() {
+    let d = tmp("steps");
+    let o = Command::new(bin())
+        .args([
+            "steps",
+            concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/kg_tafel1.json"),
+            "--out",
+        ])
+        .arg(&d)
+        .output()
+        .unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let index = std::fs::read_to_string(d.join("index.html")).unwrap();
+    // Offline: the pages refer to nothing outside the folder.
+    assert!(index.contains("step-001.svg"));
+    assert!(!index.contains("http://") && !index.contains("https://"));
+    assert!(!index.contains("<script src") && !index.contains("<link"));
+    let first = std::fs::read_to_string(d.join("step-001.svg")).unwrap();
+    assert_eq!(first.matches("inkscape:groupmode=\"layer\"").count(), 2); // sheet + step 1
+    std::fs::remove_dir_all(&d).unwrap();
+}

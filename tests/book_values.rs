@@ -1,0 +1,272 @@
+//! The numbers the books print, against the engine. Book numbers are rounded to three decimals
+//! or carry drawing error; where a printed value disagrees beyond that, the test names it
+//! (the OCR and the books have misprints: they are reported, the engine is not bent to them).
+
+use graphostatik::crank::closed_form::{accel_factor, sin_factor, Stroke};
+use graphostatik::crank::*;
+use graphostatik::protocol::Board;
+use graphostatik::scene::Scene;
+
+/// Half a unit of the third decimal: the rounding of the printed table.
+const TABLE_ROUNDING: f64 = 0.0005;
+
+/// KG Zusammenstellung 112 (S. 602), as printed (seeds/000, lines 32-34): for R/L = 1/5,
+/// 1/4.5, 1/4 and φ = 0°, 10°, …, 80°, the pairs (cos φ + R/L cos 2φ, sin(φ + ψ)/cos ψ).
+const TABLE_112: [(f64, [(f64, f64); 9]); 3] = [
+    (
+        5.0,
+        [
+            (1.200, 0.0),
+            (1.173, 0.206),
+            (1.093, 0.405),
+            (0.966, 0.585),
+            (0.801, 0.740),
+            (0.608, 0.865),
+            (0.400, 0.953),
+            (0.189, 1.005),
+            (0.014, 1.021),
+        ],
+    ),
+    (
+        4.5,
+        [
+            (1.222, 0.0),
+            (1.194, 0.212),
+            (1.110, 0.413),
+            (0.977, 0.597),
+            (0.805, 0.753),
+            (0.604, 0.877),
+            (0.389, 0.984),
+            (0.172, 1.012),
+            (-0.025, 1.024),
+        ],
+    ),
+    (
+        4.0,
+        [
+            (1.250, 0.0),
+            (1.220, 0.216),
+            (1.131, 0.423),
+            (0.981, 0.609),
+            (0.809, 0.768),
+            (0.599, 0.891),
+            (0.375, 0.977),
+            (0.151, 1.022),
+            (-0.034, 1.029),
+        ],
+    ),
+];
+
+/// Every printed value that differs from the closed form by more than the rounding, as
+/// (L/R, φ, which row, printed, closed form rounded to 4 decimals). What they are:
+/// - L/R = 5, lower row, 10°-60° and 80°: systematically 0.0005-0.002 low (the whole row;
+///   looks computed with a slightly different ψ, a drawing, or the approximation of Gl. 25);
+/// - L/R = 5, 80°, upper row: the sign is lost (0.014 printed, −0.0143 exact);
+/// - L/R = 4.5, 60°, lower row: 0.984 printed, 0.9641 exact: a misprint (0.964);
+/// - L/R = 4.5, 80°, and L/R = 4, 80°, upper row: −0.025 and −0.034 printed, −0.0352 and
+///   −0.0613 exact;
+/// - L/R = 4, 30°, upper row: 0.981 printed, 0.991 exact: a misprint;
+/// - L/R = 4.5, 20° and 70°, lower row: off by 0.0006 and 0.0007, one unit in the last place.
+const TABLE_112_DISAGREEMENTS: [(f64, u32, &str, f64, f64); 13] = [
+    (5.0, 10, "sin", 0.206, 0.2079),
+    (5.0, 20, "sin", 0.405, 0.4064),
+    (5.0, 30, "sin", 0.585, 0.587),
+    (5.0, 40, "sin", 0.740, 0.7421),
+    (5.0, 50, "sin", 0.865, 0.8657),
+    (5.0, 60, "sin", 0.953, 0.954),
+    (5.0, 80, "cos", 0.014, -0.0143),
+    (5.0, 80, "sin", 1.021, 1.0197),
+    (4.5, 20, "sin", 0.413, 0.4136),
+    (4.5, 60, "sin", 0.984, 0.9641),
+    (4.5, 70, "sin", 1.012, 1.0127),
+    (4.5, 80, "cos", -0.025, -0.0352),
+    (4.0, 30, "cos", 0.981, 0.991),
+];
+
+#[test]
+fn kg_zusammenstellung_112_reproduced_and_its_misprints_named() {
+    let mut found = Vec::new();
+    let mut agree = 0;
+    for (k, row) in TABLE_112 {
+        let lambda = 1.0 / k;
+        for (i, (a_book, s_book)) in row.iter().enumerate() {
+            let phi = 10.0 * i as f64;
+            let a = accel_factor(lambda, phi, Stroke::Out);
+            let s = sin_factor(lambda, phi, Stroke::Out);
+            for (which, book, exact) in [("cos", *a_book, a), ("sin", *s_book, s)] {
+                if (book - exact).abs() > TABLE_ROUNDING + 1e-12 {
+                    found.push((k, phi as u32, which, book, (exact * 1e4).round() / 1e4));
+                } else {
+                    agree += 1;
+                }
+            }
+        }
+    }
+    // L/R = 4, 80°, upper row is the thirteenth disagreement beyond the list's twelve
+    // plus the one below; keep the list exact.
+    let mut expected: Vec<_> = TABLE_112_DISAGREEMENTS.to_vec();
+    expected.push((4.0, 80, "cos", -0.034, -0.0613));
+    expected.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    found.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    assert_eq!(found, expected);
+    assert_eq!(agree, 54 - expected.len());
+}
+
+#[test]
+fn kg_table_values_are_what_the_construction_draws() {
+    // The lower row is c/v: construct c at φ = 0..80° and compare with the closed form that
+    // the table stands for (tight), then with the printed values (table rounding, except the
+    // named disagreements).
+    for (k, row) in TABLE_112 {
+        let lambda = 1.0 / k;
+        let d = CrankDrive {
+            crank_radius: 400.0,
+            rod_length: 400.0 * k,
+            finite_rod: true,
+            crank_pin_speed: 1.0,
+            piston_force: PistonForce::Constant(1.0),
+        };
+        let angles: Vec<f64> = (0..9).map(|i| 10.0 * i as f64).collect();
+        let mut board = Board::new(300.0, true);
+        let res = construct(
+            &mut board,
+            &d,
+            &Drawing {
+                length_scale: 20.0,
+                force_scale: 0.02,
+                velocity_scale: 0.05,
+            },
+            &Angles::Degrees(angles),
+            &Request {
+                velocity_parallel: true,
+                tangential_force: true,
+                ..Request::default()
+            },
+        )
+        .unwrap();
+        for (i, r) in res.rows.iter().enumerate() {
+            let exact = sin_factor(lambda, r.phi, Stroke::Out);
+            assert!((r.c_parallel.unwrap() - exact).abs() < 1e-12);
+            assert!((r.tangential_force.unwrap() - exact).abs() < 1e-12);
+            let listed = TABLE_112_DISAGREEMENTS
+                .iter()
+                .any(|&(kk, phi, w, _, _)| kk == k && phi == 10 * i as u32 && w == "sin");
+            if !listed {
+                assert!((r.c_parallel.unwrap() - row[i].1).abs() <= TABLE_ROUNDING + 1e-12);
+            }
+        }
+    }
+}
+
+/// Golden-section search for the largest constructed piston velocity on the outstroke.
+fn constructed_c_max(lambda: f64) -> (f64, f64) {
+    let d = CrankDrive {
+        crank_radius: 400.0,
+        rod_length: 400.0 / lambda,
+        finite_rod: true,
+        crank_pin_speed: 1.0,
+        piston_force: PistonForce::Constant(0.0),
+    };
+    let c_at = |theta: f64| -> f64 {
+        let mut b = Board::new(300.0, false);
+        construct(
+            &mut b,
+            &d,
+            &Drawing {
+                length_scale: 20.0,
+                force_scale: 1.0,
+                velocity_scale: 0.05,
+            },
+            &Angles::Degrees(vec![theta]),
+            &Request {
+                velocity_parallel: true,
+                ..Request::default()
+            },
+        )
+        .unwrap()
+        .rows[0]
+            .c_parallel
+            .unwrap()
+    };
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut a, mut b) = (60.0, 100.0);
+    while b - a > 1e-7 {
+        let (x1, x2) = (b - g * (b - a), a + g * (b - a));
+        if c_at(x1) < c_at(x2) {
+            a = x1;
+        } else {
+            b = x2;
+        }
+    }
+    let t = 0.5 * (a + b);
+    (c_at(t), t)
+}
+
+#[test]
+fn kg_c_max_1_02_1_025_1_031_v() {
+    // KG B.2: c_max = 1.02 v, 1.025 v, 1.031 v for R/L = 1/5, 1/4.5, 1/4. Constructed:
+    // 1.0198, 1.0244, 1.0309. The middle value is printed one unit high in the last place
+    // (1.0244 rounds to 1.024); it is within the books' drawing tolerance of 1 %.
+    let expected = [
+        (5.0, 1.02, 1.019833),
+        (4.5, 1.025, 1.024448),
+        (4.0, 1.031, 1.030883),
+    ];
+    for (k, book, exact) in expected {
+        let (c, _) = constructed_c_max(1.0 / k);
+        assert!((c - exact).abs() < 1e-6, "L/R = {k}: {c}");
+        let tol = if k == 4.5 {
+            0.01 * book
+        } else {
+            TABLE_ROUNDING
+        };
+        assert!((c - book).abs() <= tol, "L/R = {k}: {c} vs book {book}");
+    }
+}
+
+#[test]
+fn lh_angle_of_c_max_79_16_and_the_rod_perpendicular_to_the_crank() {
+    // LH B.2: c_max at α = 79°16' for r/l = 1/5, "where the rod stands perpendicular to the
+    // crank". The constructed maximum lies at 79.10° (79°06'); the rod is perpendicular to the
+    // crank at atan(5) = 78.69° (78°41'). So the book's angle is 10' off, and the perpendicular
+    // rule is an approximation (KG says "annähernd"): c there is 0.03 % below c_max.
+    let (c, theta) = constructed_c_max(0.2);
+    assert!((theta - 79.10).abs() < 0.01, "{theta}");
+    let book = 79.0 + 16.0 / 60.0;
+    assert!((theta - book).abs() < 0.2);
+    let perp = 5f64.atan().to_degrees();
+    let c_perp = sin_factor(0.2, perp, Stroke::Out);
+    assert!((c_perp - (1.0f64 + 0.04).sqrt()).abs() < 1e-12); // = 1/cos ψ there
+    assert!(c - c_perp > 0.0 && (c - c_perp) / c < 4e-4);
+}
+
+fn scene(text: &str) -> graphostatik::scene::Problem {
+    Scene::from_json(text, "test").unwrap().problem()
+}
+
+#[test]
+fn lh_locomotive_speeds() {
+    // LH Abb. 43: v1 = 60000/3600 = 16.7 m/s, v = v1 · s/D1 = 7 m/s, v/r = 22.2.
+    let p = scene(include_str!("../scenes/lh_abb43_locomotive.json"));
+    assert!((p.drive.crank_pin_speed - 7.0).abs() < 1e-12);
+    assert!((p.drive.omega() - 22.2).abs() < 0.05);
+    assert!((p.drive.lambda() - 1.0 / 6.0).abs() < 1e-15);
+}
+
+#[test]
+fn kg_tafel_1_crank_pin_speed() {
+    // KG B.4b: v = 2.095 m/s for R = 0.4 m, n = 50/min (2π · 0.4 · 50/60 = 2.0944).
+    let p = scene(include_str!("../scenes/kg_tafel1.json"));
+    assert!((p.drive.crank_pin_speed - 2.095).abs() < 0.001);
+}
+
+#[test]
+fn lh_aufgabe_1_piston_force() {
+    // LH Aufgabe 1: K = π·43²/4 · 6 = 1450 · 6 ≈ 8700 kg (exact 8713 kg: the book rounds the
+    // area to 1450 cm², 0.15 %).
+    let p = scene(include_str!("../scenes/lh_aufgabe1_forces.json"));
+    let k = p.drive.piston_force.max_abs();
+    assert!((k - std::f64::consts::PI / 4.0 * 43.0 * 43.0 * 6.0).abs() < 1e-9);
+    assert!((k - 8700.0).abs() / 8700.0 < 0.0016);
+    assert_eq!(p.drawing.force_scale, 200.0);
+}

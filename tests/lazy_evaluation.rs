@@ -1,0 +1,184 @@
+//! "Simulate only the effects a scene calls for": a request constructs only the steps its
+//! outputs depend on. Counted by topic and by kind.
+
+use graphostatik::crank::*;
+use graphostatik::protocol::{Board, StepKind, Topic};
+use std::collections::BTreeMap;
+
+fn run(request: Request, finite_rod: bool) -> Board {
+    let d = CrankDrive {
+        crank_radius: 300.0,
+        rod_length: 1500.0,
+        finite_rod,
+        crank_pin_speed: 5.0,
+        piston_force: PistonForce::Constant(8700.0),
+    };
+    let mut b = Board::new(400.0, true);
+    construct(
+        &mut b,
+        &d,
+        &Drawing {
+            length_scale: 10.0,
+            force_scale: 200.0,
+            velocity_scale: 0.2,
+        },
+        &Angles::Divisions(12),
+        &request,
+    )
+    .unwrap();
+    b
+}
+
+fn by_topic(b: &Board) -> BTreeMap<Topic, usize> {
+    let mut m = BTreeMap::new();
+    for s in b.steps() {
+        *m.entry(s.topic).or_insert(0) += 1;
+    }
+    m
+}
+
+fn count(b: &Board, quantity: &str) -> usize {
+    b.steps()
+        .iter()
+        .flat_map(|s| &s.checks)
+        .filter(|c| c.quantity.starts_with(quantity))
+        .count()
+}
+
+#[test]
+fn piston_path_alone_constructs_no_velocity_and_no_force_step() {
+    let b = run(
+        Request {
+            piston_path: true,
+            ..Request::default()
+        },
+        true,
+    );
+    let t = by_topic(&b);
+    assert_eq!(t.get(&Topic::Velocity), None);
+    assert_eq!(t.get(&Topic::Forces), None);
+    // Setup: O, piston line, vertical, crank circle, dead centre, rod arc, crosshead dead
+    // centre, guide = 8. Division of the crank circle = 1. Per angle: crank, rod arc,
+    // crosshead, rod, measure = 5.
+    assert_eq!(t[&Topic::Setup], 8);
+    assert_eq!(t[&Topic::PistonPath], 1 + 12 * 5);
+    assert_eq!(count(&b, "piston path"), 12);
+    let measures = b
+        .steps()
+        .iter()
+        .filter(|s| s.kind == StepKind::Measure)
+        .count();
+    assert_eq!(measures, 12);
+}
+
+#[test]
+fn velocity_alone_reuses_the_crosshead_but_constructs_no_force_and_no_path_measure() {
+    let b = run(
+        Request {
+            velocity_parallel: true,
+            ..Request::default()
+        },
+        true,
+    );
+    let t = by_topic(&b);
+    assert_eq!(t.get(&Topic::Forces), None);
+    assert_eq!(count(&b, "piston path"), 0);
+    assert_eq!(count(&b, "piston velocity c (parallel)"), 12);
+    assert_eq!(count(&b, "piston velocity c = ω·y"), 0);
+    // The crosshead is constructed once per angle even though the rod line and the velocity
+    // ordinate both need it.
+    let crossheads = b
+        .steps()
+        .iter()
+        .filter(|s| s.kind == StepKind::IntersectLineCircle && s.topic == Topic::PistonPath)
+        .count();
+    assert_eq!(crossheads, 12);
+}
+
+#[test]
+fn tangential_force_alone_needs_no_parallelogram_at_the_crosshead() {
+    let b = run(
+        Request {
+            tangential_force: true,
+            ..Request::default()
+        },
+        true,
+    );
+    assert_eq!(count(&b, "tangential force T (polar)"), 12);
+    assert_eq!(count(&b, "rod force"), 0);
+    assert_eq!(count(&b, "guide force"), 0);
+    assert_eq!(count(&b, "radial force"), 0);
+    assert_eq!(count(&b, "piston path"), 0);
+    assert_eq!(count(&b, "piston velocity"), 0);
+}
+
+#[test]
+fn radial_force_pulls_in_the_rod_force_but_not_the_polar_figure() {
+    let b = run(
+        Request {
+            radial_force: true,
+            ..Request::default()
+        },
+        true,
+    );
+    assert_eq!(count(&b, "radial force"), 12);
+    assert_eq!(count(&b, "rod force"), 12);
+    assert_eq!(count(&b, "tangential force T (at the pin)"), 12);
+    assert_eq!(count(&b, "tangential force T (polar)"), 0);
+}
+
+#[test]
+fn infinite_rod_draws_no_rod_arcs() {
+    let b = run(
+        Request {
+            piston_path: true,
+            ..Request::default()
+        },
+        false,
+    );
+    assert_eq!(
+        b.steps()
+            .iter()
+            .filter(|s| s.kind == StepKind::Circle)
+            .count(),
+        0
+    );
+    assert_eq!(
+        b.steps()
+            .iter()
+            .filter(|s| s.kind == StepKind::Foot)
+            .count(),
+        12
+    );
+}
+
+#[test]
+fn a_board_that_does_not_record_keeps_nothing_and_gives_the_same_values() {
+    let full = Request {
+        piston_path: true,
+        velocity_parallel: true,
+        velocity_instant_centre: true,
+        rod_force: true,
+        guide_force: true,
+        tangential_force: true,
+        radial_force: true,
+    };
+    let d = CrankDrive {
+        crank_radius: 300.0,
+        rod_length: 1500.0,
+        finite_rod: true,
+        crank_pin_speed: 5.0,
+        piston_force: PistonForce::Constant(8700.0),
+    };
+    let dr = Drawing {
+        length_scale: 10.0,
+        force_scale: 200.0,
+        velocity_scale: 0.2,
+    };
+    let mut on = Board::new(400.0, true);
+    let mut off = Board::new(400.0, false);
+    let a = construct(&mut on, &d, &dr, &Angles::Divisions(24), &full).unwrap();
+    let b = construct(&mut off, &d, &dr, &Angles::Divisions(24), &full).unwrap();
+    assert_eq!(a, b);
+    assert!(off.steps().is_empty() && off.objects().is_empty());
+}

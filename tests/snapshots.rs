@@ -1,0 +1,117 @@
+//! insta snapshots (in `snapshots/`) of the SVG and the check table of every bundled scene,
+//! and the test that `figures/` is exactly what the renderer produces now.
+
+use graphostatik::render;
+use graphostatik::scene::Scene;
+use std::path::{Path, PathBuf};
+
+fn scenes() -> Vec<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    v.sort();
+    assert!(v.len() >= 3, "the bundled scenes are missing");
+    v
+}
+
+fn stem(p: &Path) -> String {
+    p.file_stem().unwrap().to_string_lossy().into_owned()
+}
+
+fn build(p: &Path) -> (String, String) {
+    let problem = Scene::load(p).unwrap().problem();
+    let (board, _) = problem.construct(true).unwrap();
+    (
+        render::figure(&problem.figure_meta(), &board, None),
+        render::check_table_text(&board),
+    )
+}
+
+fn settings() -> insta::Settings {
+    let mut s = insta::Settings::clone_current();
+    s.set_snapshot_path(concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"));
+    s.set_prepend_module_to_snapshot(false);
+    s
+}
+
+#[test]
+fn svg_and_check_table_of_every_bundled_scene() {
+    for p in scenes() {
+        let (svg, table) = build(&p);
+        let name = stem(&p);
+        settings().bind(|| {
+            insta::assert_snapshot!(format!("{name}.checks"), table);
+            insta::assert_snapshot!(format!("{name}.svg"), svg);
+        });
+    }
+}
+
+#[test]
+fn the_same_scene_gives_the_same_bytes() {
+    for p in scenes() {
+        assert_eq!(build(&p), build(&p));
+    }
+}
+
+#[test]
+fn figures_folder_is_what_the_renderer_produces_now() {
+    let figs = Path::new(env!("CARGO_MANIFEST_DIR")).join("figures");
+    let mut expected = Vec::new();
+    for p in scenes() {
+        let name = format!("{}.svg", stem(&p));
+        let (svg, _) = build(&p);
+        let on_disk = std::fs::read_to_string(figs.join(&name)).unwrap_or_else(|_| {
+            panic!("figures/{name} is missing: run `cargo run --release -- render scenes --out figures`")
+        });
+        assert!(
+            on_disk == svg,
+            "figures/{name} is stale: run `cargo run --release -- render scenes --out figures`"
+        );
+        expected.push(name);
+    }
+    let mut present: Vec<String> = std::fs::read_dir(&figs)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .filter(|n| n.ends_with(".svg"))
+        .collect();
+    present.sort();
+    expected.sort();
+    assert_eq!(
+        present, expected,
+        "figures/ holds a figure of no bundled scene"
+    );
+}
+
+#[test]
+fn every_layer_is_a_named_inkscape_layer() {
+    for p in scenes() {
+        let problem = Scene::load(&p).unwrap().problem();
+        let (board, _) = problem.construct(true).unwrap();
+        let svg = render::figure(&problem.figure_meta(), &board, None);
+        for s in board.steps() {
+            let id = s.id.to_string();
+            assert!(svg.contains(&format!("id=\"step-{id}\"")));
+            assert!(svg.contains(&format!("data-step=\"{id}\"")));
+            assert!(svg.contains(&format!("inkscape:label=\"{id} {}", s.caption)));
+        }
+        assert_eq!(
+            svg.matches("inkscape:groupmode=\"layer\"").count(),
+            board.steps().len() + 1
+        );
+        assert!(svg.contains("xmlns:inkscape="));
+        // No non-finite number anywhere ("infinite" in a caption is a word, not a number).
+        let bad = svg
+            .split(|c: char| !(c.is_ascii_alphanumeric() || c == '.' || c == '-'))
+            .filter(|t| {
+                matches!(
+                    t.trim_start_matches(['M', 'L', 'C', 'A']),
+                    "inf" | "-inf" | "NaN"
+                )
+            })
+            .count();
+        assert_eq!(bad, 0);
+    }
+}
