@@ -1,1 +1,117 @@
-fn main() {}
+//! What accuracy and bookkeeping cost: the crank diagram (piston path, piston velocity by the
+//! parallel of KG Abb. 1049, tangential force by LH Abb. 65) at 36 and 3,600 crank angles,
+//! (a) as the bare closed form, (b) as the kernel construction on a board that does not
+//! record, (c) on a recording board with every analytic check.
+//!
+//! `cargo bench --bench crank` runs criterion, then prints a Markdown table of ns per angle
+//! (median of repeated runs) and the ratios to (a), the targets being (b) ≤ 3x, (c) ≤ 20x.
+
+use criterion::{criterion_group, BenchmarkId, Criterion, Throughput};
+use graphostatik::crank::closed_form as cf;
+use graphostatik::crank::*;
+use graphostatik::protocol::Board;
+use std::hint::black_box;
+use std::time::Instant;
+
+fn drive() -> CrankDrive {
+    CrankDrive {
+        crank_radius: 315.0,
+        rod_length: 1890.0,
+        finite_rod: true,
+        crank_pin_speed: 7.0,
+        piston_force: PistonForce::Constant(8700.0),
+    }
+}
+
+const DRAWING: Drawing = Drawing {
+    length_scale: 10.0,
+    force_scale: 200.0,
+    velocity_scale: 0.25,
+};
+
+const REQUEST: Request = Request {
+    piston_path: true,
+    velocity_parallel: true,
+    velocity_instant_centre: false,
+    rod_force: false,
+    guide_force: false,
+    tangential_force: true,
+    radial_force: false,
+};
+
+fn closed_form(n: usize) -> f64 {
+    let d = drive();
+    let (lam, rod) = (d.lambda(), d.rod());
+    let mut acc = 0.0;
+    for k in 0..n {
+        let th = 360.0 * k as f64 / n as f64;
+        acc += cf::piston_position(d.crank_radius, rod, th)
+            + cf::piston_velocity(d.crank_pin_speed, lam, th)
+            + cf::tangential_force(8700.0, lam, th);
+    }
+    acc
+}
+
+fn constructed(n: usize, recording: bool) -> usize {
+    let mut b = Board::new(300.0, recording);
+    let r = construct(&mut b, &drive(), &DRAWING, &Angles::Divisions(n), &REQUEST).unwrap();
+    r.rows.len() + b.steps().len()
+}
+
+fn bench(c: &mut Criterion) {
+    let mut g = c.benchmark_group("crank_diagram");
+    for n in [36usize, 3600] {
+        g.throughput(Throughput::Elements(n as u64));
+        g.bench_with_input(BenchmarkId::new("a_closed_form", n), &n, |b, &n| {
+            b.iter(|| closed_form(black_box(n)))
+        });
+        g.bench_with_input(BenchmarkId::new("b_construction", n), &n, |b, &n| {
+            b.iter(|| constructed(black_box(n), false))
+        });
+        g.bench_with_input(BenchmarkId::new("c_recorded_checked", n), &n, |b, &n| {
+            b.iter(|| constructed(black_box(n), true))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+
+/// Median ns per angle over repeated runs of `f(n)`.
+fn ns_per_angle(n: usize, f: &dyn Fn(usize)) -> f64 {
+    let reps = (200_000 / n).max(3);
+    let mut samples = Vec::new();
+    for _ in 0..15 {
+        let t = Instant::now();
+        for _ in 0..reps {
+            f(black_box(n));
+        }
+        samples.push(t.elapsed().as_nanos() as f64 / (reps * n) as f64);
+    }
+    samples.sort_by(f64::total_cmp);
+    samples[samples.len() / 2]
+}
+
+fn main() {
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    println!();
+    println!("| angles | (a) closed form | (b) construction | (c) recorded + checked | (b)/(a) | (c)/(a) |");
+    println!("|---:|---:|---:|---:|---:|---:|");
+    for n in [36usize, 3600] {
+        let a = ns_per_angle(n, &|n| {
+            black_box(closed_form(n));
+        });
+        let b = ns_per_angle(n, &|n| {
+            black_box(constructed(n, false));
+        });
+        let c = ns_per_angle(n, &|n| {
+            black_box(constructed(n, true));
+        });
+        println!(
+            "| {n} | {a:.0} ns | {b:.0} ns | {c:.0} ns | {:.2}x | {:.1}x |",
+            b / a,
+            c / a
+        );
+    }
+}

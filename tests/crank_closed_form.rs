@@ -168,7 +168,7 @@ fn a_nearly_locking_rod_is_flagged_glancing_but_stays_exact() {
     let glancing: Vec<_> = board
         .steps()
         .iter()
-        .filter(|s| s.conditioning.is_some_and(|c| c.glancing))
+        .filter(|s| s.conditioning.is_some_and(|c| c.glancing()))
         .collect();
     assert!(!glancing.is_empty());
     let cut = glancing

@@ -52,10 +52,10 @@ proptest! {
         match intersect_line_circle(&l, &c, &tol) {
             LineCircle::Two { points, conditioning } => {
                 for p in points {
-                    prop_assert!(((p - c.center).norm() - rad).abs() < 1e-9 * conditioning.amplification.max(1.0) * 300.0 / rad.max(1.0) + 1e-10);
+                    prop_assert!(((p - c.center).norm() - rad).abs() < 1e-9 * conditioning.amplification().max(1.0) * 300.0 / rad.max(1.0) + 1e-10);
                     prop_assert!(l.signed_distance(&p).abs() < 1e-12 * 300.0);
                 }
-                prop_assert!(conditioning.angle >= 0.0 && conditioning.angle <= std::f64::consts::FRAC_PI_2);
+                prop_assert!(conditioning.angle() >= 0.0 && conditioning.angle() <= std::f64::consts::FRAC_PI_2);
             }
             LineCircle::Tangent { point } => {
                 prop_assert!(((point - c.center).norm() - rad).abs() <= tol.length * 2.0);
@@ -82,7 +82,7 @@ proptest! {
             CircleCircle::Two { points, conditioning } => {
                 prop_assert!(d < r1 + r2 && d > (r1 - r2).abs());
                 for p in points {
-                    let amp = conditioning.amplification.min(1e8);
+                    let amp = conditioning.amplification().min(1e8);
                     prop_assert!(((p - a.center).norm() - r1).abs() < 1e-11 * 200.0 * amp);
                     prop_assert!(((p - b.center).norm() - r2).abs() < 1e-11 * 200.0 * amp);
                 }
@@ -112,7 +112,7 @@ proptest! {
                 prop_assert!(point.x.is_finite() && point.y.is_finite());
                 let scale = 300.0 + point.coords.norm();
                 prop_assert!(l1.signed_distance(&point).abs() < 1e-12 * scale);
-                prop_assert!(l2.signed_distance(&point).abs() < 1e-12 * scale * conditioning.amplification.min(1e12));
+                prop_assert!(l2.signed_distance(&point).abs() < 1e-12 * scale * conditioning.amplification().min(1e12));
             }
             LineLine::Parallel { distance } => prop_assert!(distance > 0.0 && distance.is_finite()),
             LineLine::Coincident => {}

@@ -460,6 +460,15 @@ pub fn construct(
         cache: (0..n).map(|_| Cache::default()).collect(),
     };
     let want_c = request.velocity_parallel || request.velocity_instant_centre;
+    // Upper bounds of the steps per angle each output adds (objects: about twice as many).
+    let per_angle = 6
+        + 8 * (request.velocity_parallel as usize)
+        + 6 * (request.velocity_instant_centre as usize)
+        + 3 * (want_c as usize)
+        + 8 * ((request.rod_force || request.guide_force || request.radial_force) as usize)
+        + 12 * (request.radial_force as usize)
+        + 8 * (request.tangential_force as usize);
+    bl.b.reserve(16 + per_angle * n, 16 + 2 * per_angle * n);
     for i in 0..n {
         let theta = bl.thetas[i];
         bl.b.set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));

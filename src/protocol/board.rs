@@ -90,7 +90,7 @@ pub struct Board {
     #[serde(skip)]
     recording: bool,
     #[serde(skip)]
-    context: Option<String>,
+    context: Option<std::sync::Arc<str>>,
     #[serde(skip)]
     next_step: u32,
     objects: Vec<Object>,
@@ -139,7 +139,16 @@ impl Board {
     /// Sets the situation in which the following steps are made ("φ = 30°"); recorded only.
     pub fn set_context(&mut self, f: impl FnOnce() -> String) {
         if self.recording {
-            self.context = Some(f());
+            self.context = Some(f().into());
+        }
+    }
+
+    /// Reserves room for `steps` more steps and `objects` more objects, so that a long
+    /// construction does not spend its time moving a growing protocol around in memory.
+    pub fn reserve(&mut self, steps: usize, objects: usize) {
+        if self.recording {
+            self.steps.reserve(steps);
+            self.objects.reserve(objects);
         }
     }
 
@@ -163,8 +172,8 @@ impl Board {
                 term_de: note.term_de,
                 book: note.book,
                 context: self.context.clone(),
-                inputs: inputs.to_vec(),
-                outputs: Vec::new(),
+                inputs: Ids::from_slice(inputs),
+                outputs: Ids::new(),
                 conditioning: None,
                 branch: None,
                 outcome: None,
@@ -418,7 +427,15 @@ impl Board {
         role: Role,
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
-        let p = self.prim(construct::lay_off(from.g, along.g.dir, length), note)?;
+        // The line's direction is a unit vector already: no normalisation needed.
+        if !length.is_finite() {
+            return Err(ConstructionError::Primitive {
+                step: self.step_id_next(),
+                caption: note.caption,
+                source: PrimitiveError::NotFinite,
+            });
+        }
+        let p = from.g + along.g.dir * length;
         self.begin(StepKind::LayOff, note, &[from.id, along.id]);
         let a = from.g;
         let id = self.add(label, Role::Given, || Geom::Point { at: p });
@@ -555,7 +572,7 @@ impl Board {
         };
         if let Some(s) = self.last_step() {
             s.conditioning = Some(cond);
-            s.branch = br.map(|b| b.describe());
+            s.branch = br;
             if br.is_none() {
                 s.outcome = Some("tangent: one double point".into());
             }
@@ -611,7 +628,7 @@ impl Board {
         };
         if let Some(s) = self.last_step() {
             s.conditioning = Some(cond);
-            s.branch = br.map(|b| b.describe());
+            s.branch = br;
         }
         let id = self.add(label, Role::Given, || Geom::Point { at: p });
         self.touch(a.id, &p);

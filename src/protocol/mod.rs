@@ -7,4 +7,4 @@ mod board;
 mod step;
 
 pub use board::{Board, ConstructionError, Cut, Scale, H};
-pub use step::{Check, Geom, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Topic};
+pub use step::{Check, Geom, Ids, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Topic};

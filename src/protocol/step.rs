@@ -18,6 +18,9 @@ impl Serialize for ObjId {
     }
 }
 
+/// A short list of object ids, kept inline up to three.
+pub type Ids = smallvec::SmallVec<[ObjId; 3]>;
+
 /// The number of a step, written `001`, `002`, … as in a construction protocol.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct StepId(pub u32);
@@ -284,19 +287,19 @@ pub struct Step {
     pub term_de: Option<&'static str>,
     /// Book reference.
     pub book: &'static str,
-    /// The situation the step is made in ("φ = 30°").
+    /// The situation the step is made in ("θ = 30°"), shared by the steps made in it.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub context: Option<String>,
-    /// Ids of the objects it uses.
-    pub inputs: Vec<ObjId>,
-    /// Ids of the objects it makes.
-    pub outputs: Vec<ObjId>,
+    pub context: Option<std::sync::Arc<str>>,
+    /// Ids of the objects it uses (inline up to three: no allocation for a ruler step).
+    pub inputs: Ids,
+    /// Ids of the objects it makes (inline up to three).
+    pub outputs: Ids,
     /// For an intersection: how well it was conditioned.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub conditioning: Option<Conditioning>,
     /// For a two-point intersection: which branch was taken.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub branch: Option<String>,
+    pub branch: Option<crate::kernel::Branch>,
     /// For a degenerate outcome: what happened instead ("parallel: meets at infinity").
     #[serde(skip_serializing_if = "Option::is_none")]
     pub outcome: Option<String>,

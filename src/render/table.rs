@@ -50,7 +50,7 @@ pub fn check_rows(board: &Board) -> Vec<CheckRow> {
                     if let Some(c) = src.conditioning {
                         let a = c.angle_deg();
                         angle = Some(angle.map_or(a, |m: f64| m.min(a)));
-                        glancing |= c.glancing;
+                        glancing |= c.glancing();
                     }
                 }
             }
@@ -58,7 +58,7 @@ pub fn check_rows(board: &Board) -> Vec<CheckRow> {
         for c in &step.checks {
             rows.push(CheckRow {
                 step: step.id.to_string(),
-                context: step.context.clone().unwrap_or_default(),
+                context: step.context.as_deref().unwrap_or("").to_string(),
                 quantity: c.quantity.to_string(),
                 unit: c.unit.to_string(),
                 constructed: c.constructed,

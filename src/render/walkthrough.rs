@@ -45,7 +45,7 @@ pub fn walkthrough(meta: &FigureMeta, board: &Board) -> Vec<Page> {
         if let Some(c) = &step.conditioning {
             detail.push_str(&format!(
                 " <span class=\"cond{}\">cut at {}°</span>",
-                if c.glancing { " glancing" } else { "" },
+                if c.glancing() { " glancing" } else { "" },
                 crate::fmt::num(c.angle_deg(), 1)
             ));
         }
@@ -92,7 +92,7 @@ body {{ font-family: Georgia, 'Times New Roman', serif; margin: 0; display: flex
 ol {{ flex: 2; overflow-y: auto; margin: 0; padding: 1em 1em 1em 3em; border-left: 1px solid #ccc; font-size: 0.9em; }}
 li {{ cursor: pointer; padding: 0.15em 0; }}
 li.on {{ background: #f3e2df; }}
-.de, .book {{ color: #555; }} .cond.glancing, .fail {{ color: #b0362a; font-weight: bold; }}
+.de, .book {{ color: #555; }} .cond.glancing(), .fail {{ color: #b0362a; font-weight: bold; }}
 .ok {{ color: #2a6b2a; }} .outcome {{ color: #7a4d00; }}
 </style>
 </head>

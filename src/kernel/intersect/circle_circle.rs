@@ -100,10 +100,9 @@ pub fn intersect_circle_circle(c1: &Circle, c2: &Circle, tol: &Tolerance) -> Cir
     // The radii to the common point are (a, h) and (a − d, h) in the frame of the centre
     // line: their cross product is d·h, their dot product a(a − d) + h². The angle between
     // them may be obtuse; the curves' meeting angle is its acute fold.
-    let angle = (d * h).atan2((a * (a - d) + h * h).abs());
     CircleCircle::Two {
         points: [m - n * h, m + n * h],
-        conditioning: Conditioning::from_angle(angle),
+        conditioning: Conditioning::from_sin_cos(d * h, a * (a - d) + h * h),
     }
 }
 
@@ -174,7 +173,7 @@ mod tests {
     #[test]
     fn nearly_tangent_circles_are_glancing() {
         match intersect_circle_circle(&c(0.0, 0.0, 1.0), &c(2.0 - 1e-8, 0.0, 1.0), &tol()) {
-            CircleCircle::Two { conditioning, .. } => assert!(conditioning.glancing),
+            CircleCircle::Two { conditioning, .. } => assert!(conditioning.glancing()),
             o => panic!("{o:?}"),
         }
     }

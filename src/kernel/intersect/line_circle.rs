@@ -61,7 +61,7 @@ pub fn intersect_line_circle(line: &Line, circle: &Circle, tol: &Tolerance) -> L
     let s = ((r - h) * (r + h)).sqrt();
     LineCircle::Two {
         points: [line.point_at(t_foot - s), line.point_at(t_foot + s)],
-        conditioning: Conditioning::from_angle(s.atan2(h)),
+        conditioning: Conditioning::from_sin_cos(s, h),
     }
 }
 
@@ -86,7 +86,7 @@ mod tests {
                 conditioning,
             } => {
                 assert_eq!(points, [Point::new(1.0, 0.0), Point::new(3.0, 0.0)]);
-                assert_eq!(conditioning.amplification, 1.0);
+                assert_eq!(conditioning.amplification(), 1.0);
             }
             o => panic!("{o:?}"),
         }
@@ -125,7 +125,7 @@ mod tests {
                     assert!(((p - c.center).norm() - 1.0).abs() < 1e-15);
                 }
                 assert!((points[1].x - 2e-6f64.sqrt()).abs() < 1e-9);
-                assert!(conditioning.glancing);
+                assert!(conditioning.glancing());
             }
             o => panic!("{o:?}"),
         }

@@ -43,7 +43,7 @@ pub enum LineLine {
 /// match intersect_line_line(&a, &b, &tol) {
 ///     LineLine::Point { point, conditioning, .. } => {
 ///         assert_eq!(point, Point::new(3.0, 0.0));
-///         assert_eq!(conditioning.amplification, 1.0);
+///         assert_eq!(conditioning.amplification(), 1.0);
 ///     }
 ///     other => panic!("{other:?}"),
 /// }
@@ -69,7 +69,7 @@ pub fn intersect_line_line(a: &Line, b: &Line, tol: &Tolerance) -> LineLine {
         t_a,
         t_b,
         // atan2 of sine and cosine keeps its digits near 90°, where asin would not.
-        conditioning: Conditioning::from_angle(s.abs().atan2(a.dir.dot(&b.dir).abs())),
+        conditioning: Conditioning::from_sin_cos(s, a.dir.dot(&b.dir)),
     }
 }
 
@@ -94,7 +94,7 @@ mod tests {
             } => {
                 assert!((point - Point::new(1.0, 1.0)).norm() < 1e-15);
                 assert!((conditioning.angle_deg() - 90.0).abs() < 1e-12);
-                assert!(!conditioning.glancing);
+                assert!(!conditioning.glancing());
             }
             o => panic!("{o:?}"),
         }
@@ -132,8 +132,8 @@ mod tests {
                 ..
             } => {
                 assert!((point.x - 10.0).abs() < 1e-12 && point.y == 0.0);
-                assert!(conditioning.glancing);
-                assert!((conditioning.amplification - 1.0 / d.sin()).abs() < 1e-9);
+                assert!(conditioning.glancing());
+                assert!((conditioning.amplification() - 1.0 / d.sin()).abs() < 1e-9);
             }
             o => panic!("{o:?}"),
         }
@@ -150,7 +150,7 @@ mod tests {
                 ..
             } => {
                 assert!((point.x - 1e9).abs() / 1e9 < 1e-6);
-                assert!(conditioning.glancing && conditioning.amplification > 1e8);
+                assert!(conditioning.glancing() && conditioning.amplification() > 1e8);
             }
             o => panic!("{o:?}"),
         }
