@@ -81,7 +81,7 @@ pub struct Scale {
 /// let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, N);
 /// let axis = b.line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, N).unwrap();
 /// assert_eq!(b.steps().len(), 2);
-/// assert_eq!(b.steps()[1].inputs, vec![o.id]);
+/// assert_eq!(b.steps()[1].inputs.as_slice(), &[o.id]);
 /// assert_eq!(axis.g.dir, Vector::new(1.0, 0.0));
 /// ```
 #[derive(Debug, Clone, Serialize)]
