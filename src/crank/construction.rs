@@ -578,14 +578,17 @@ impl Builder<'_> {
             } else {
                 dead
             };
-            b.lay_off(
-                &x0,
-                &piston_line,
-                2.0 * self.r,
-                Label::NONE,
-                Role::Guide,
-                N_GUIDE,
-            )?;
+            // The crosshead guide over the stroke; an infinitely long rod has none to draw.
+            if self.d.finite_rod {
+                b.lay_off(
+                    &x0,
+                    &piston_line,
+                    2.0 * self.r,
+                    Label::NONE,
+                    Role::Guide,
+                    N_GUIDE,
+                )?;
+            }
             self.frame = Some(Frame {
                 o,
                 piston_line,

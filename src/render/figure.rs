@@ -163,7 +163,7 @@ fn bounds(pts: &[Point]) -> [f64; 4] {
     [min_x, min_y, max_x, max_y]
 }
 
-fn frame_of(board: &Board, scales: usize) -> Frame {
+fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
     // The solid parts (circles, segments, vectors, curves) span the figure; lines and points
     // are drawn within reach of them.
     let mut solid = Vec::new();
@@ -211,9 +211,21 @@ fn frame_of(board: &Board, scales: usize) -> Frame {
     max_x += 4.0;
     max_y += 4.0;
     min_y -= 4.0;
-    let width = (max_x - min_x).max(120.0) + 2.0 * MARGIN;
+    // Wide enough for the title, the source line and the scale rows as well.
+    let text_width = [
+        meta.title.chars().count() as f64 * TITLE_CHAR,
+        meta.source.chars().count() as f64 * TEXT_CHAR,
+    ]
+    .into_iter()
+    .chain(
+        meta.scales
+            .iter()
+            .map(|s| SCALE_BAR + 14.0 + s.name.chars().count() as f64 * SMALL_CHAR),
+    )
+    .fold(0.0, f64::max);
+    let width = (max_x - min_x).max(text_width) + 2.0 * MARGIN;
     let height =
-        (max_y - min_y) + 2.0 * MARGIN + TITLE_BLOCK + SCALE_BLOCK * scales.max(1) as f64 / 2.0;
+        (max_y - min_y) + 2.0 * MARGIN + TITLE_BLOCK + SCALE_ROW * meta.scales.len() as f64;
     Frame {
         min_x,
         max_y,
@@ -467,13 +479,12 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> Group {
                 .set("y", num(MARGIN + 12.0, 3)),
         );
     }
-    // Scale bars, two to a row, under the figure.
-    let y0 =
-        f.height - MARGIN - SCALE_BLOCK * meta.scales.len().max(1).div_ceil(2) as f64 / 2.0 + 4.0;
+    // Scale bars, one to a row, under the figure.
+    let y0 = f.height - MARGIN - SCALE_ROW * meta.scales.len() as f64 + 4.0;
     for (k, s) in meta.scales.iter().enumerate() {
-        let x = MARGIN + (k % 2) as f64 * (f.width - 2.0 * MARGIN) / 2.0;
-        let y = y0 + (k / 2) as f64 * 7.0;
-        let q = nice_below(40.0 * s.per_mm);
+        let x = MARGIN;
+        let y = y0 + k as f64 * SCALE_ROW;
+        let q = nice_below(SCALE_BAR * s.per_mm);
         let len = q / s.per_mm;
         let mut d = format!(
             "M{},{} L{},{}",
@@ -541,7 +552,7 @@ fn layer(board: &Board, f: &Frame, step: &Step, current: bool) -> Group {
 ///
 /// Deterministic: the same board gives the same bytes (numbers rounded to 0.001 mm).
 pub fn figure(meta: &FigureMeta, board: &Board, upto: Option<StepId>) -> String {
-    let f = frame_of(board, meta.scales.len());
+    let f = frame_of(board, meta);
     let mut doc = Document::new()
         .set(
             "xmlns:inkscape",

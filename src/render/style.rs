@@ -6,8 +6,17 @@ use crate::protocol::Role;
 pub const MARGIN: f64 = 10.0;
 /// Height of the title block above the figure (mm).
 pub const TITLE_BLOCK: f64 = 22.0;
-/// Height of the scale-bar block below the figure (mm).
-pub const SCALE_BLOCK: f64 = 14.0;
+/// Height of one scale-bar row below the figure (mm).
+pub const SCALE_ROW: f64 = 7.0;
+/// Longest scale bar (mm); the bar shows the largest round quantity that fits.
+pub const SCALE_BAR: f64 = 40.0;
+/// Estimated advance of one character of the title (mm): used only to make the sheet wide
+/// enough for its text.
+pub const TITLE_CHAR: f64 = 3.0;
+/// Estimated advance of one character of a text line (mm), see [`TITLE_CHAR`].
+pub const TEXT_CHAR: f64 = 1.75;
+/// Estimated advance of one character of small text (mm), see [`TITLE_CHAR`].
+pub const SMALL_CHAR: f64 = 1.45;
 /// How far a construction line runs past the last point constructed on it (mm).
 pub const LINE_OVERSHOOT: f64 = 3.0;
 /// Length of the short compass arc drawn through a point cut on a circle (mm of arc).
