@@ -560,16 +560,34 @@ impl Board {
                     "the circle misses the line by {} mm",
                     crate::fmt::num(gap, 6)
                 );
-                if let Some(s) = self.last_step() {
-                    s.outcome = Some(outcome.clone());
-                }
-                return Err(ConstructionError::NoIntersection {
-                    step,
-                    caption: note.caption,
-                    outcome,
-                });
+                return Err(self.fail_cut(step, note, outcome));
             }
         };
+        Ok(self.finish_cut(p, cond, br, [line.id, circle.id], label))
+    }
+
+    /// Records a cut that has no point and returns the error naming its case.
+    fn fail_cut(&mut self, step: StepId, note: Note, outcome: String) -> ConstructionError {
+        if let Some(s) = self.last_step() {
+            s.outcome = Some(outcome.clone());
+        }
+        ConstructionError::NoIntersection {
+            step,
+            caption: note.caption,
+            outcome,
+        }
+    }
+
+    /// Records the point of a cut: conditioning, branch (none for a tangency), the point, and
+    /// the marks on the two curves it lies on.
+    fn finish_cut(
+        &mut self,
+        p: Point,
+        cond: Conditioning,
+        br: Option<Branch>,
+        on: [ObjId; 2],
+        label: Label,
+    ) -> H<Point> {
         if let Some(s) = self.last_step() {
             s.conditioning = Some(cond);
             s.branch = br;
@@ -578,9 +596,9 @@ impl Board {
             }
         }
         let id = self.add(label, Role::Given, || Geom::Point { at: p });
-        self.touch(line.id, &p);
-        self.touch(circle.id, &p);
-        Ok(H { id, g: p })
+        self.touch(on[0], &p);
+        self.touch(on[1], &p);
+        H { id, g: p }
     }
 
     /// Cuts two circles and takes the branch given (`First`/`Second` mean right/left of the
@@ -616,24 +634,10 @@ impl Board {
                     CircleCircle::Concentric => "the circles are concentric".into(),
                     _ => "the circles coincide".into(),
                 };
-                if let Some(s) = self.last_step() {
-                    s.outcome = Some(outcome.clone());
-                }
-                return Err(ConstructionError::NoIntersection {
-                    step,
-                    caption: note.caption,
-                    outcome,
-                });
+                return Err(self.fail_cut(step, note, outcome));
             }
         };
-        if let Some(s) = self.last_step() {
-            s.conditioning = Some(cond);
-            s.branch = br;
-        }
-        let id = self.add(label, Role::Given, || Geom::Point { at: p });
-        self.touch(a.id, &p);
-        self.touch(b.id, &p);
-        Ok(H { id, g: p })
+        Ok(self.finish_cut(p, cond, br, [a.id, b.id], label))
     }
 
     /// Measures the signed distance from `from` to `to` along the direction of `axis` and

@@ -415,36 +415,33 @@ fn smooth_path(f: &Frame, pts: &[Point]) -> String {
     d
 }
 
+/// An arrowhead marker 3.2 × 1.3 mm, tip at the end of the line.
+fn arrow_marker(id: &str, d: &str, style: &str) -> Marker {
+    Marker::new()
+        .set("id", id)
+        .set("viewBox", "0 0 10 4")
+        .set("refX", "10")
+        .set("refY", "2")
+        .set("markerWidth", "3.2")
+        .set("markerHeight", "1.3")
+        .set("markerUnits", "userSpaceOnUse")
+        .set("orient", "auto")
+        .add(Path::new().set("d", d).set("style", style))
+}
+
+/// Filled arrowheads for forces, open ones for velocities.
 fn defs() -> Definitions {
-    let arrow = Marker::new()
-        .set("id", "arrow")
-        .set("viewBox", "0 0 10 4")
-        .set("refX", "10")
-        .set("refY", "2")
-        .set("markerWidth", "3.2")
-        .set("markerHeight", "1.3")
-        .set("markerUnits", "userSpaceOnUse")
-        .set("orient", "auto")
-        .add(
-            Path::new()
-                .set("d", "M0,0 L10,2 L0,4 z")
-                .set("style", "fill:#000;stroke:none"),
-        );
-    let open = Marker::new()
-        .set("id", "arrow-open")
-        .set("viewBox", "0 0 10 4")
-        .set("refX", "10")
-        .set("refY", "2")
-        .set("markerWidth", "3.2")
-        .set("markerHeight", "1.3")
-        .set("markerUnits", "userSpaceOnUse")
-        .set("orient", "auto")
-        .add(
-            Path::new()
-                .set("d", "M0,0 L10,2 L0,4")
-                .set("style", "fill:none;stroke:#000;stroke-width:0.8"),
-        );
-    Definitions::new().add(arrow).add(open)
+    Definitions::new()
+        .add(arrow_marker(
+            "arrow",
+            "M0,0 L10,2 L0,4 z",
+            "fill:#000;stroke:none",
+        ))
+        .add(arrow_marker(
+            "arrow-open",
+            "M0,0 L10,2 L0,4",
+            "fill:none;stroke:#000;stroke-width:0.8",
+        ))
 }
 
 /// The next "nice" length (1, 2, 2.5, 5 × 10ᵏ) at or below `x`.
