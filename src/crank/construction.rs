@@ -874,7 +874,7 @@ impl Builder<'_> {
         }
         if pts.len() >= 2 {
             self.b
-                .curve(&pts, Label::plain("c"), Role::Result, N_C_CURVE);
+                .curve(&pts, true, Label::plain("c"), Role::Result, N_C_CURVE);
         }
         Ok(())
     }

@@ -659,8 +659,15 @@ impl Board {
         H { id, g: value }
     }
 
-    /// Draws a curve through points.
-    pub fn curve(&mut self, points: &[H<Point>], label: Label, role: Role, note: Note) -> H<ObjId> {
+    /// Draws a curve through points (`smooth`) or the polygon through them.
+    pub fn curve(
+        &mut self,
+        points: &[H<Point>],
+        smooth: bool,
+        label: Label,
+        role: Role,
+        note: Note,
+    ) -> H<ObjId> {
         if !self.recording {
             return H {
                 id: ObjId::NONE,
@@ -670,8 +677,40 @@ impl Board {
         let ids: Vec<ObjId> = points.iter().map(|p| p.id).collect();
         self.begin(StepKind::Curve, note, &ids);
         let pts: Vec<Point> = points.iter().map(|p| p.g).collect();
-        let id = self.add(label, role, || Geom::Curve { points: pts });
+        let id = self.add(label, role, || Geom::Curve {
+            points: pts,
+            smooth,
+        });
         H { id, g: id }
+    }
+
+    /// Divides the segment from `a` to `b` into `n ≥ 1` equal parts: the `n + 1` division
+    /// points, ends included (the ends are the given points themselves).
+    pub fn divide_segment(
+        &mut self,
+        a: &H<Point>,
+        b: &H<Point>,
+        n: usize,
+        label: &'static str,
+        note: Note,
+    ) -> Vec<H<Point>> {
+        let pts = construct::divide_segment(&Segment { a: a.g, b: b.g }, n);
+        self.begin(StepKind::Divide, note, &[a.id, b.id]);
+        let last = pts.len() - 1;
+        let mut out = Vec::with_capacity(pts.len());
+        for (k, p) in pts.into_iter().enumerate() {
+            if k == 0 {
+                out.push(*a);
+            } else if k == last {
+                out.push(*b);
+            } else {
+                let id = self.add(Label::quiet(label, k as u32), Role::Given, || Geom::Point {
+                    at: p,
+                });
+                out.push(H { id, g: p });
+            }
+        }
+        out
     }
 
     /// Attaches an analytic check to the step that made `value`. The closed form is evaluated

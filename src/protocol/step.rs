@@ -83,6 +83,18 @@ pub enum Topic {
     Velocity,
     /// Forces in the crank drive (LH Abb. 61, 65; KG Abb. 1061, 1063).
     Forces,
+    /// Given loads and supports in the position plan (Lageplan).
+    Loads,
+    /// The force polygon and pole rays (Kräfteplan, Polstrahlen).
+    ForcePlan,
+    /// The funicular polygon and the resultant (Seilpolygon).
+    Funicular,
+    /// Support reactions by the closing line (Schlusslinie).
+    Reactions,
+    /// Moment ordinates M = y·H (Momentenfläche).
+    Moment,
+    /// The shear diagram (Querkraftdiagramm).
+    Shear,
 }
 
 /// How an object is drawn: the textbook's hierarchy of lines.
@@ -219,10 +231,13 @@ pub enum Geom {
         /// The arc.
         arc: Arc,
     },
-    /// A curve through points (drawn as a polyline through many points, or smooth).
+    /// A curve through points: a smooth curve through exact points (a velocity curve, a
+    /// parabola), or a polygon (`smooth: false`: a shear diagram, a load outline).
     Curve {
         /// The points, in order.
         points: Vec<Point>,
+        /// Smooth through the points, or straight between them.
+        smooth: bool,
     },
     /// A measured number.
     Scalar {

@@ -147,7 +147,7 @@ fn extent_points(obj: &Object, out: &mut Vec<Point>) {
                 out.push(arc.point_at_fraction(k as f64 / 8.0));
             }
         }
-        Geom::Curve { points } => out.extend(points.iter().copied()),
+        Geom::Curve { points, .. } => out.extend(points.iter().copied()),
         Geom::Scalar { .. } => {}
     }
 }
@@ -351,12 +351,13 @@ fn draw_object(board: &Board, f: &Frame, obj: &Object, g: Group) -> Group {
                 format!("M{} A{r},{r} 0 {large},{sweep} {}", f.xy(&a), f.xy(&b)),
             ));
         }
-        Geom::Curve { points } => {
-            g = g.add(
-                Path::new()
-                    .set("class", class)
-                    .set("d", smooth_path(f, points)),
-            );
+        Geom::Curve { points, smooth } => {
+            let d = if *smooth {
+                smooth_path(f, points)
+            } else {
+                polygon_path(f, points)
+            };
+            g = g.add(Path::new().set("class", class).set("d", d));
             if !obj.label.is_empty() {
                 if let Some(top) = points.iter().max_by(|a, b| a.y.total_cmp(&b.y)) {
                     g = g.add(label_text(f, &(top + Vector::new(1.0, 1.5)), &obj.label));
@@ -384,17 +385,22 @@ fn hatching(f: &Frame, a: Point, b: Point) -> Path {
     Path::new().set("class", "hatch").set("d", d.trim_end())
 }
 
+/// The polygon through the points (closed with `Z` if the last point repeats the first).
+fn polygon_path(f: &Frame, pts: &[Point]) -> String {
+    let mut d = String::new();
+    for (i, p) in pts.iter().enumerate() {
+        d.push_str(if i == 0 { "M" } else { " L" });
+        d.push_str(&f.xy(p));
+    }
+    d
+}
+
 /// A smooth curve through the points (Catmull–Rom as cubic Béziers); closed if the last point
 /// repeats the first.
 fn smooth_path(f: &Frame, pts: &[Point]) -> String {
     let n = pts.len();
     if n < 3 {
-        return pts
-            .iter()
-            .enumerate()
-            .map(|(i, p)| format!("{}{}", if i == 0 { "M" } else { "L" }, f.xy(p)))
-            .collect::<Vec<_>>()
-            .join(" ");
+        return polygon_path(f, pts);
     }
     let closed = (pts[0] - pts[n - 1]).norm() < 1e-9;
     let get = |i: isize| -> Point {
