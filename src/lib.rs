@@ -21,3 +21,4 @@ pub mod kernel;
 pub mod protocol;
 pub mod render;
 pub mod scene;
+pub mod statics;

@@ -3,7 +3,7 @@
 use clap::{Parser, Subcommand};
 use graphostatik::io::write_atomic;
 use graphostatik::render;
-use graphostatik::scene::{Problem, Scene};
+use graphostatik::scene::{AnyProblem, AnyScene};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -79,14 +79,13 @@ fn scene_files(args: &[PathBuf]) -> Result<Vec<PathBuf>, Fail> {
     Ok(files)
 }
 
-fn load(path: &Path) -> Result<Problem, Fail> {
-    let scene = Scene::load(path).map_err(|e| Fail(e.to_string()))?;
+fn load(path: &Path) -> Result<AnyProblem, Fail> {
+    let scene = AnyScene::load(path).map_err(|e| Fail(e.to_string()))?;
     Ok(scene.problem())
 }
 
-fn construct(path: &Path, p: &Problem) -> Result<graphostatik::protocol::Board, Fail> {
+fn construct(path: &Path, p: &AnyProblem) -> Result<graphostatik::protocol::Board, Fail> {
     p.construct(true)
-        .map(|(b, _)| b)
         .map_err(|e| Fail(format!("{}: {e}", path.display())))
 }
 

@@ -205,11 +205,16 @@ fn cli_check_exit_status_and_schema() {
     let o = Command::new(bin()).arg("schema").output().unwrap();
     assert_eq!(o.status.code(), Some(0));
     let schema: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert!(schema["properties"]["mechanism"].is_object());
-    assert_eq!(
-        schema["additionalProperties"],
-        serde_json::Value::Bool(false)
-    );
+    assert_eq!(schema["anyOf"].as_array().unwrap().len(), 2);
+    let defs = &schema["$defs"];
+    assert!(defs["Scene"]["properties"]["mechanism"].is_object());
+    assert!(defs["BeamScene"]["properties"]["beam"].is_object());
+    for s in ["Scene", "BeamScene"] {
+        assert_eq!(
+            defs[s]["additionalProperties"],
+            serde_json::Value::Bool(false)
+        );
+    }
 }
 
 #[test]

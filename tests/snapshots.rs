@@ -2,7 +2,7 @@
 //! and the test that `figures/` is exactly what the renderer produces now.
 
 use graphostatik::render;
-use graphostatik::scene::Scene;
+use graphostatik::scene::AnyScene;
 use std::path::{Path, PathBuf};
 
 fn scenes() -> Vec<PathBuf> {
@@ -22,8 +22,8 @@ fn stem(p: &Path) -> String {
 }
 
 fn build(p: &Path) -> (String, String) {
-    let problem = Scene::load(p).unwrap().problem();
-    let (board, _) = problem.construct(true).unwrap();
+    let problem = AnyScene::load(p).unwrap().problem();
+    let board = problem.construct(true).unwrap();
     (
         render::figure(&problem.figure_meta(), &board, None),
         render::check_table_text(&board),
@@ -88,8 +88,8 @@ fn figures_folder_is_what_the_renderer_produces_now() {
 #[test]
 fn every_layer_is_a_named_inkscape_layer() {
     for p in scenes() {
-        let problem = Scene::load(&p).unwrap().problem();
-        let (board, _) = problem.construct(true).unwrap();
+        let problem = AnyScene::load(&p).unwrap().problem();
+        let board = problem.construct(true).unwrap();
         let svg = render::figure(&problem.figure_meta(), &board, None);
         for s in board.steps() {
             let id = s.id.to_string();

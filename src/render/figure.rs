@@ -164,11 +164,16 @@ fn bounds(pts: &[Point]) -> [f64; 4] {
 }
 
 fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
-    // The solid parts (circles, segments, vectors, curves) span the figure; lines and points
-    // are drawn within reach of them.
+    // The solid parts (circles, segments, vectors, curves, given points such as a pole) span
+    // the figure; lines and constructed points are drawn within reach of them.
     let mut solid = Vec::new();
     for o in board.objects() {
-        if !matches!(o.geom, Geom::Line { .. } | Geom::Point { .. }) {
+        let given_point = matches!(o.geom, Geom::Point { .. })
+            && board
+                .steps()
+                .get(o.step.0 as usize - 1)
+                .is_some_and(|st| st.kind == crate::protocol::StepKind::Given);
+        if given_point || !matches!(o.geom, Geom::Line { .. } | Geom::Point { .. }) {
             extent_points(o, &mut solid);
         }
     }

@@ -18,10 +18,15 @@
 //! assert!(problem.request.piston_path && !problem.request.tangential_force);
 //! ```
 
+mod beam;
 mod defaults;
 mod error;
 mod types;
 
+pub use beam::{
+    BeamDrawingSpec, BeamOutput, BeamProblem, BeamScene, BeamSpec, PointLoadSpec, UniformLoadSpec,
+    MAX_LOADS,
+};
 pub use error::SceneError;
 pub use types::*;
 
@@ -50,17 +55,8 @@ impl Scene {
     /// Parses and validates a scene; `origin` (a file name) prefixes every error message.
     pub fn from_json(text: &str, origin: &str) -> Result<Scene, SceneError> {
         let de = &mut serde_json::Deserializer::from_str(text);
-        let scene: Scene = serde_path_to_error::deserialize(de).map_err(|e| {
-            let field = e.path().to_string();
-            let inner = e.into_inner();
-            SceneError::Json {
-                origin: origin.to_string(),
-                line: inner.line(),
-                column: inner.column(),
-                field: if field == "." { String::new() } else { field },
-                message: strip_position(&inner.to_string()),
-            }
-        })?;
+        let scene: Scene =
+            serde_path_to_error::deserialize(de).map_err(|e| json_error(e, origin))?;
         scene.validate(origin)?;
         Ok(scene)
     }
@@ -80,6 +76,11 @@ impl Scene {
             field: field.to_string(),
             message,
         };
+        if let Some(p) = &self.procedure {
+            if p != "slider_crank" {
+                return Err(bad("procedure", format!("unknown procedure `{p}`")));
+            }
+        }
         let positive = |field: &str, x: f64| {
             if x.is_finite() && x > 0.0 {
                 Ok(())
@@ -415,8 +416,109 @@ fn strip_position(msg: &str) -> String {
     }
 }
 
-/// The JSON Schema of the scene format, pretty-printed.
+/// The JSON Schema of the scene format, pretty-printed: one of the procedures' scenes.
 pub fn schema_json() -> String {
-    let schema = schemars::schema_for!(Scene);
+    let schema = schemars::schema_for!(AnySceneSchema);
     serde_json::to_string_pretty(&schema).expect("a schema is plain JSON")
+}
+
+/// The scene format as a whole: a slider-crank scene (`"procedure": "slider_crank"`, the
+/// default) or a beam scene (`"procedure": "beam"`).
+#[derive(schemars::JsonSchema)]
+#[serde(untagged)]
+#[allow(dead_code)]
+enum AnySceneSchema {
+    /// A slider-crank scene.
+    SliderCrank(Scene),
+    /// A beam scene.
+    Beam(BeamScene),
+}
+
+/// A scene of any procedure, validated.
+#[derive(Debug, Clone, PartialEq)]
+pub enum AnyScene {
+    /// Slider-crank (LH II, KG XIV B).
+    SliderCrank(Scene),
+    /// Beam (LH I C).
+    Beam(BeamScene),
+}
+
+/// A constructible problem of any procedure.
+#[derive(Debug, Clone, PartialEq)]
+pub enum AnyProblem {
+    /// Slider-crank.
+    SliderCrank(Problem),
+    /// Beam.
+    Beam(BeamProblem),
+}
+
+#[derive(serde::Deserialize)]
+struct ProcedureProbe {
+    #[serde(default)]
+    procedure: Option<String>,
+}
+
+impl AnyScene {
+    /// Parses and validates a scene of any procedure, by its `procedure` field.
+    pub fn from_json(text: &str, origin: &str) -> Result<AnyScene, SceneError> {
+        // A first look for the procedure only; the real parse keeps line and column.
+        let probe: Option<ProcedureProbe> = serde_json::from_str(text).ok();
+        match probe.and_then(|p| p.procedure).as_deref() {
+            Some("beam") => {
+                let de = &mut serde_json::Deserializer::from_str(text);
+                let scene: BeamScene =
+                    serde_path_to_error::deserialize(de).map_err(|e| json_error(e, origin))?;
+                scene.validate(origin)?;
+                Ok(AnyScene::Beam(scene))
+            }
+            _ => Scene::from_json(text, origin).map(AnyScene::SliderCrank),
+        }
+    }
+
+    /// Reads, parses and validates a scene file of any procedure.
+    pub fn load(path: &std::path::Path) -> Result<AnyScene, SceneError> {
+        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
+            path: path.display().to_string(),
+            message: e.to_string(),
+        })?;
+        AnyScene::from_json(&text, &path.display().to_string())
+    }
+
+    /// The problem the scene describes.
+    pub fn problem(&self) -> AnyProblem {
+        match self {
+            AnyScene::SliderCrank(s) => AnyProblem::SliderCrank(s.problem()),
+            AnyScene::Beam(s) => AnyProblem::Beam(s.problem()),
+        }
+    }
+}
+
+impl AnyProblem {
+    /// Constructs the problem on a fresh board (the results are in the protocol).
+    pub fn construct(&self, recording: bool) -> Result<Board, ConstructionError> {
+        match self {
+            AnyProblem::SliderCrank(p) => p.construct(recording).map(|(b, _)| b),
+            AnyProblem::Beam(p) => p.construct(recording).map(|(b, _)| b),
+        }
+    }
+
+    /// Title, source and scale bars of the figure.
+    pub fn figure_meta(&self) -> crate::render::FigureMeta {
+        match self {
+            AnyProblem::SliderCrank(p) => p.figure_meta(),
+            AnyProblem::Beam(p) => p.figure_meta(),
+        }
+    }
+}
+
+fn json_error(e: serde_path_to_error::Error<serde_json::Error>, origin: &str) -> SceneError {
+    let field = e.path().to_string();
+    let inner = e.into_inner();
+    SceneError::Json {
+        origin: origin.to_string(),
+        line: inner.line(),
+        column: inner.column(),
+        field: if field == "." { String::new() } else { field },
+        message: strip_position(&inner.to_string()),
+    }
 }

@@ -7,6 +7,9 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Scene {
+    /// `"slider_crank"` (the default when absent).
+    #[serde(default)]
+    pub procedure: Option<String>,
     /// Title written on the figure.
     pub title: String,
     /// Book reference written under the title, e.g. "LH Abb. 43, 49, 53, 65".

@@ -1,0 +1,348 @@
+//! The beam scene: a beam on two supports with point and uniform loads (LH C.4-6, Aufgabe 6).
+
+use super::defaults::nice_at_least;
+use super::SceneError;
+use crate::protocol::{Board, ConstructionError};
+use crate::statics::{self, Beam, BeamDrawing, BeamRequest, BeamResults, PointLoad, UniformLoad};
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+/// A beam scene: `"procedure": "beam"`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BeamScene {
+    /// Must be `"beam"`.
+    pub procedure: String,
+    /// Title written on the figure.
+    pub title: String,
+    /// Book reference written under the title.
+    #[serde(default)]
+    pub source: Option<String>,
+    /// Free notes on where the numbers come from (not drawn).
+    #[serde(default)]
+    pub notes: Option<String>,
+    /// The beam and its supports.
+    pub beam: BeamSpec,
+    /// Point loads.
+    #[serde(default)]
+    pub point_loads: Vec<PointLoadSpec>,
+    /// Uniformly distributed loads.
+    #[serde(default)]
+    pub uniform_loads: Vec<UniformLoadSpec>,
+    /// What to construct besides the reactions: `moment_area`, `shear_diagram`.
+    #[serde(default)]
+    pub outputs: Vec<BeamOutput>,
+    /// Scales and the pole; any left out are chosen.
+    #[serde(default)]
+    pub drawing: Option<BeamDrawingSpec>,
+}
+
+/// The beam: its supports and, if it overhangs them, its ends.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BeamSpec {
+    /// Positions of the supports A and B along the beam (m).
+    pub supports_m: [f64; 2],
+    /// Ends of the beam (m); default: the supports. Loads beyond a support need an overhang
+    /// declared here.
+    #[serde(default)]
+    pub ends_m: Option<[f64; 2]>,
+}
+
+/// A point load.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PointLoadSpec {
+    /// Position (m).
+    pub x_m: f64,
+    /// Load (kg), positive downwards.
+    pub kg: f64,
+}
+
+/// A uniformly distributed load.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct UniformLoadSpec {
+    /// Start (m).
+    pub from_m: f64,
+    /// End (m).
+    pub to_m: f64,
+    /// Intensity (kg/m), positive downwards.
+    pub kg_per_m: f64,
+}
+
+/// An output of a beam scene (the reactions are always constructed).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum BeamOutput {
+    /// Reactions by the closing line (always constructed).
+    Reactions,
+    /// The moment area M = y·H.
+    MomentArea,
+    /// The shear diagram and the largest moment.
+    ShearDiagram,
+}
+
+/// Scales and the pole.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BeamDrawingSpec {
+    /// Length scale 1 : n.
+    #[serde(default)]
+    pub length_scale: Option<f64>,
+    /// Force scale, kg per mm of sheet.
+    #[serde(default)]
+    pub force_scale_kg_per_mm: Option<f64>,
+    /// Pole distance H (kg): the moment is M = y·H.
+    #[serde(default)]
+    pub pole_distance_kg: Option<f64>,
+    /// Equal parts each tangent of a uniform load's parabola is divided into (2 to 64, default 8).
+    #[serde(default)]
+    pub parabola_divisions: Option<usize>,
+}
+
+/// A validated beam scene, ready to construct.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BeamProblem {
+    /// Title.
+    pub title: String,
+    /// Source.
+    pub source: String,
+    /// The beam.
+    pub beam: Beam,
+    /// Scales.
+    pub drawing: BeamDrawing,
+    /// What to construct.
+    pub request: BeamRequest,
+}
+
+/// Most loads a beam scene may carry: the figure stays readable, the benchmark goes further.
+pub const MAX_LOADS: usize = 2000;
+
+impl BeamScene {
+    pub(super) fn validate(&self, origin: &str) -> Result<(), SceneError> {
+        let bad = |field: &str, message: String| SceneError::Invalid {
+            origin: origin.to_string(),
+            field: field.to_string(),
+            message,
+        };
+        let finite = |field: &str, x: f64| {
+            if x.is_finite() {
+                Ok(())
+            } else {
+                Err(bad(field, format!("must be a finite number, got {x}")))
+            }
+        };
+        if self.procedure != "beam" {
+            return Err(bad(
+                "procedure",
+                format!("unknown procedure `{}`", self.procedure),
+            ));
+        }
+        let [a, b] = self.beam.supports_m;
+        finite("beam.supports_m[0]", a)?;
+        finite("beam.supports_m[1]", b)?;
+        if a == b {
+            return Err(bad(
+                "beam.supports_m",
+                format!(
+                    "both supports at one point ({a} m): the beam is not supported against turning"
+                ),
+            ));
+        }
+        if a > b {
+            return Err(bad(
+                "beam.supports_m",
+                format!("support A ({a} m) must lie left of support B ({b} m)"),
+            ));
+        }
+        let [e0, e1] = self.beam.ends_m.unwrap_or([a, b]);
+        finite("beam.ends_m[0]", e0)?;
+        finite("beam.ends_m[1]", e1)?;
+        if e0 > a || e1 < b {
+            return Err(bad(
+                "beam.ends_m",
+                format!("the beam [{e0}, {e1}] m must reach over both supports [{a}, {b}] m"),
+            ));
+        }
+        let on_beam = |field: &str, x: f64| {
+            if x < e0 || x > e1 {
+                Err(bad(field, format!("x = {x} m lies outside the beam [{e0}, {e1}] m: declare the overhang with beam.ends_m")))
+            } else {
+                Ok(())
+            }
+        };
+        if self.point_loads.len() + self.uniform_loads.len() > MAX_LOADS {
+            return Err(bad("point_loads", format!("more than {MAX_LOADS} loads")));
+        }
+        for (i, l) in self.point_loads.iter().enumerate() {
+            finite(&format!("point_loads[{i}].x_m"), l.x_m)?;
+            finite(&format!("point_loads[{i}].kg"), l.kg)?;
+            on_beam(&format!("point_loads[{i}].x_m"), l.x_m)?;
+        }
+        for (i, u) in self.uniform_loads.iter().enumerate() {
+            let f = |n: &str| format!("uniform_loads[{i}].{n}");
+            finite(&f("from_m"), u.from_m)?;
+            finite(&f("to_m"), u.to_m)?;
+            finite(&f("kg_per_m"), u.kg_per_m)?;
+            if u.to_m <= u.from_m {
+                return Err(bad(
+                    &f("to_m"),
+                    format!(
+                        "the load must end ({} m) after it starts ({} m)",
+                        u.to_m, u.from_m
+                    ),
+                ));
+            }
+            on_beam(&f("from_m"), u.from_m)?;
+            on_beam(&f("to_m"), u.to_m)?;
+            for (s, x) in [("A", a), ("B", b)] {
+                if x > u.from_m && x < u.to_m {
+                    return Err(bad(&f("to_m"), format!("the load straddles support {s} at {x} m: split it there into two uniform loads (the result is the same)")));
+                }
+            }
+            if let Some(k) = self
+                .point_loads
+                .iter()
+                .position(|l| l.x_m > u.from_m && l.x_m < u.to_m)
+            {
+                return Err(bad(&format!("point_loads[{k}].x_m"), format!("the point load lies inside uniform load {i}: split the uniform load there (the result is the same)")));
+            }
+            for (j, w) in self.uniform_loads.iter().enumerate().skip(i + 1) {
+                if w.from_m < u.to_m && w.to_m > u.from_m {
+                    return Err(bad(
+                        &format!("uniform_loads[{j}]"),
+                        format!("overlaps uniform load {i}: add their intensities instead"),
+                    ));
+                }
+            }
+        }
+        if let Some(d) = &self.drawing {
+            for (name, v) in [
+                ("drawing.length_scale", d.length_scale),
+                ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
+                ("drawing.pole_distance_kg", d.pole_distance_kg),
+            ] {
+                if let Some(v) = v {
+                    if !(v.is_finite() && v > 0.0) {
+                        return Err(bad(name, format!("must be positive, got {v}")));
+                    }
+                }
+            }
+            if let Some(m) = d.parabola_divisions {
+                if !(2..=64).contains(&m) {
+                    return Err(bad(
+                        "drawing.parabola_divisions",
+                        format!("{m}: give 2 to 64"),
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Maps the validated scene to the beam problem.
+    pub fn problem(&self) -> BeamProblem {
+        let [a, b] = self.beam.supports_m;
+        let beam = Beam {
+            supports: [a, b],
+            ends: self.beam.ends_m.unwrap_or([a, b]),
+            point_loads: self
+                .point_loads
+                .iter()
+                .map(|l| PointLoad { x: l.x_m, p: l.kg })
+                .collect(),
+            uniform_loads: self
+                .uniform_loads
+                .iter()
+                .map(|u| UniformLoad {
+                    from: u.from_m,
+                    to: u.to_m,
+                    q: u.kg_per_m,
+                })
+                .collect(),
+        };
+        let total: f64 = beam.point_loads.iter().map(|l| l.p.abs()).sum::<f64>()
+            + beam
+                .uniform_loads
+                .iter()
+                .map(|u| u.resultant().abs())
+                .sum::<f64>();
+        let d = self.drawing.unwrap_or(BeamDrawingSpec {
+            length_scale: None,
+            force_scale_kg_per_mm: None,
+            pole_distance_kg: None,
+            parabola_divisions: None,
+        });
+        let span = beam.ends[1] - beam.ends[0];
+        let drawing = BeamDrawing {
+            length_scale: d
+                .length_scale
+                .unwrap_or_else(|| nice_at_least(span * 1000.0 / 160.0)),
+            force_scale: d
+                .force_scale_kg_per_mm
+                .unwrap_or_else(|| nice_at_least(total / 80.0)),
+            pole_distance: d
+                .pole_distance_kg
+                .unwrap_or_else(|| nice_at_least(total / 2.0)),
+            parabola_divisions: d.parabola_divisions.unwrap_or(8),
+        };
+        let request = BeamRequest {
+            moment_area: self.outputs.contains(&BeamOutput::MomentArea),
+            shear_diagram: self.outputs.contains(&BeamOutput::ShearDiagram),
+        };
+        BeamProblem {
+            title: self.title.clone(),
+            source: self.source.clone().unwrap_or_default(),
+            beam,
+            drawing,
+            request,
+        }
+    }
+}
+
+impl BeamProblem {
+    /// Constructs the beam on a fresh board.
+    pub fn construct(&self, recording: bool) -> Result<(Board, BeamResults), ConstructionError> {
+        let span = (self.beam.ends[1] - self.beam.ends[0]) * 1000.0 / self.drawing.length_scale;
+        let mut board = Board::new(span.max(1.0) * 3.0, recording);
+        let r = statics::construct_beam(&mut board, &self.beam, &self.drawing, &self.request)?;
+        Ok((board, r))
+    }
+
+    /// Title, source and scale bars of the figure.
+    pub fn figure_meta(&self) -> crate::render::FigureMeta {
+        use crate::fmt::num;
+        use crate::render::ScaleBar;
+        let d = &self.drawing;
+        crate::render::FigureMeta {
+            title: self.title.clone(),
+            source: format!(
+                "{}{}pole distance H = {} kg",
+                self.source,
+                if self.source.is_empty() { "" } else { " — " },
+                num(d.pole_distance, 6)
+            ),
+            scales: vec![
+                ScaleBar {
+                    name: format!("Längenmaßstab 1 : {}", num(d.length_scale, 6)),
+                    per_mm: d.length_scale / 1000.0,
+                    unit: "m".into(),
+                },
+                ScaleBar {
+                    name: format!("Kräftemaßstab 1 mm = {} kg", num(d.force_scale, 6)),
+                    per_mm: d.force_scale,
+                    unit: "kg".into(),
+                },
+                ScaleBar {
+                    name: format!(
+                        "Momentenmaßstab 1 mm = {} kg·m",
+                        num(d.length_scale / 1000.0 * d.pole_distance, 6)
+                    ),
+                    per_mm: d.length_scale / 1000.0 * d.pole_distance,
+                    unit: "kg·m".into(),
+                },
+            ],
+        }
+    }
+}
