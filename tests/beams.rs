@@ -1,0 +1,295 @@
+//! Beams by the funicular polygon (LH C.4-6, Aufgabe 6): reactions, moments, shear and the
+//! largest moment against equilibrium and the method of sections, with the hard cases.
+
+use graphostatik::protocol::{Board, Topic};
+use graphostatik::scene::AnyScene;
+use graphostatik::statics::closed_form as cf;
+use graphostatik::statics::*;
+use proptest::prelude::*;
+
+fn drawing(h: f64) -> BeamDrawing {
+    BeamDrawing {
+        length_scale: 50.0,
+        force_scale: 40.0,
+        pole_distance: h,
+        parabola_divisions: 8,
+    }
+}
+
+const ALL: BeamRequest = BeamRequest {
+    moment_area: true,
+    shear_diagram: true,
+};
+
+fn run(beam: &Beam, h: f64) -> (Board, BeamResults) {
+    let mut b = Board::new(500.0, true);
+    let r = construct_beam(&mut b, beam, &drawing(h), &ALL).unwrap();
+    (b, r)
+}
+
+fn all_pass(b: &Board) {
+    for c in b.steps().iter().flat_map(|s| &s.checks) {
+        assert!(
+            c.passed,
+            "{}: {} vs {} (error {:e} > {:e})",
+            c.quantity, c.constructed, c.closed_form, c.error, c.tolerance
+        );
+    }
+}
+
+fn simple(loads: &[(f64, f64)]) -> Beam {
+    Beam {
+        supports: [0.0, 10.0],
+        ends: [0.0, 10.0],
+        point_loads: loads.iter().map(|&(x, p)| PointLoad { x, p }).collect(),
+        uniform_loads: vec![],
+    }
+}
+
+#[test]
+fn lh_gl_11_single_load() {
+    // A·a = y·h: M under a load P at a on a span l is P·a·b/l.
+    let (b, r) = run(&simple(&[(3.0, 1000.0)]), 800.0);
+    all_pass(&b);
+    assert!((r.reactions.0 - 700.0).abs() < 1e-9);
+    let (m, x) = r.max_moment.unwrap();
+    assert!((m - 1000.0 * 3.0 * 7.0 / 10.0).abs() < 1e-9 && (x - 3.0).abs() < 1e-12);
+}
+
+#[test]
+fn the_pole_distance_changes_the_drawing_not_the_results() {
+    let beam = simple(&[(1.0, 300.0), (4.5, 900.0), (8.0, 450.0)]);
+    let results: Vec<_> = [100.0, 650.0, 5000.0]
+        .iter()
+        .map(|&h| {
+            let (b, r) = run(&beam, h);
+            all_pass(&b);
+            r
+        })
+        .collect();
+    for r in &results[1..] {
+        assert!((r.reactions.0 - results[0].reactions.0).abs() < 1e-9);
+        assert!((r.max_moment.unwrap().0 - results[0].max_moment.unwrap().0).abs() < 1e-8);
+    }
+}
+
+#[test]
+fn load_at_a_support_goes_straight_into_it() {
+    let (b, r) = run(&simple(&[(0.0, 500.0), (10.0, 300.0), (5.0, 200.0)]), 500.0);
+    all_pass(&b);
+    assert!((r.reactions.0 - 600.0).abs() < 1e-9);
+    assert!((r.reactions.1 - 400.0).abs() < 1e-9);
+    assert!((r.max_moment.unwrap().0 - 500.0).abs() < 1e-9);
+}
+
+#[test]
+fn two_equal_maxima_of_a_symmetric_load() {
+    let (b, r) = run(&simple(&[(3.0, 1000.0), (7.0, 1000.0)]), 1000.0);
+    all_pass(&b);
+    let p3 = r.sections.iter().find(|s| s.what == "P1").unwrap().moment;
+    let p7 = r.sections.iter().find(|s| s.what == "P2").unwrap().moment;
+    assert!((p3 - 3000.0).abs() < 1e-9 && (p7 - 3000.0).abs() < 1e-9);
+    // The shear is zero between the loads: both are maxima; the first is reported.
+    assert!((r.max_moment.unwrap().0 - 3000.0).abs() < 1e-9);
+}
+
+#[test]
+fn a_single_load_at_mid_span() {
+    let (b, r) = run(&simple(&[(5.0, 800.0)]), 400.0);
+    all_pass(&b);
+    assert_eq!(r.reactions.0, r.reactions.1);
+    assert!((r.max_moment.unwrap().0 - 2000.0).abs() < 1e-9);
+}
+
+#[test]
+fn zero_loads_give_zero_everything_and_no_nan() {
+    let (b, r) = run(&simple(&[(2.0, 0.0), (6.0, 0.0)]), 100.0);
+    all_pass(&b);
+    assert_eq!(r.reactions, (0.0, 0.0));
+    assert!(r.sections.iter().all(|s| s.moment == 0.0));
+    assert!(r.shear.iter().all(|&(_, a, b)| a == 0.0 && b == 0.0));
+}
+
+#[test]
+fn overhang_of_lh_abb_34_is_undercut() {
+    let beam = Beam {
+        supports: [0.0, 6.0],
+        ends: [0.0, 8.0],
+        point_loads: vec![
+            PointLoad { x: 2.0, p: 1000.0 },
+            PointLoad { x: 8.0, p: 800.0 },
+        ],
+        uniform_loads: vec![],
+    };
+    let (b, r) = run(&beam, 1000.0);
+    all_pass(&b);
+    assert!((r.reactions.0 - 400.0).abs() < 1e-9 && (r.reactions.1 - 1400.0).abs() < 1e-9);
+    let mb = r.sections.iter().find(|s| s.what == "B").unwrap().moment;
+    assert!((mb + 1600.0).abs() < 1e-9);
+    assert_eq!(r.zero_moments.len(), 1);
+    assert!((r.zero_moments[0] - 10.0 / 3.0).abs() < 1e-9);
+    assert!((r.max_moment.unwrap().0 + 1600.0).abs() < 1e-9);
+}
+
+#[test]
+fn parabola_points_lie_on_the_exact_moment_curve() {
+    let beam = Beam {
+        supports: [0.0, 6.0],
+        ends: [0.0, 6.0],
+        point_loads: vec![],
+        uniform_loads: vec![UniformLoad {
+            from: 1.0,
+            to: 5.0,
+            q: 700.0,
+        }],
+    };
+    for m in [2usize, 5, 8, 64] {
+        let mut board = Board::new(500.0, true);
+        let mut d = drawing(900.0);
+        d.parabola_divisions = m;
+        let r = construct_beam(&mut board, &beam, &d, &ALL).unwrap();
+        all_pass(&board);
+        let on_parabola = r
+            .sections
+            .iter()
+            .filter(|s| s.what.starts_with("q1 "))
+            .count();
+        assert_eq!(on_parabola, m + 1 + 1); // m + 1 division points and the maximum
+        for s in &r.sections {
+            assert!((s.moment - cf::moment(&beam, s.x)).abs() < 1e-9 * 700.0 * 4.0 * 6.0);
+        }
+        let (mm, x) = r.max_moment.unwrap();
+        assert!((x - 3.0).abs() < 1e-12);
+        assert!((mm - cf::max_abs_moment(&beam).0).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn reactions_only_constructs_no_moment_and_no_shear_step() {
+    let mut b = Board::new(500.0, true);
+    construct_beam(
+        &mut b,
+        &simple(&[(2.0, 100.0), (7.0, 200.0)]),
+        &drawing(300.0),
+        &BeamRequest::default(),
+    )
+    .unwrap();
+    assert!(b
+        .steps()
+        .iter()
+        .all(|s| s.topic != Topic::Moment && s.topic != Topic::Shear));
+    assert_eq!(b.steps().iter().flat_map(|s| &s.checks).count(), 2);
+    all_pass(&b);
+}
+
+#[test]
+fn a_thousand_loads() {
+    let loads: Vec<(f64, f64)> = (0..1000)
+        .map(|i| (0.005 + i as f64 * 0.00999, 10.0 + (i % 7) as f64))
+        .collect();
+    let (b, r) = run(&simple(&loads), 5000.0);
+    all_pass(&b);
+    let (ra, rb) = cf::reactions(&simple(&loads));
+    assert!((r.reactions.0 - ra).abs() < 1e-9 * (ra + rb));
+}
+
+fn err(text: &str) -> String {
+    match AnyScene::from_json(text, "b.json") {
+        Ok(_) => panic!("accepted: {text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+const GOOD: &str = r#"{
+  "procedure": "beam",
+  "title": "t",
+  "beam": { "supports_m": [0, 6] },
+  "point_loads": [ { "x_m": 2, "kg": 100 } ],
+  "uniform_loads": [ { "from_m": 3, "to_m": 5, "kg_per_m": 50 } ],
+  "outputs": ["moment_area"],
+  "drawing": { "force_scale_kg_per_mm": 10 }
+}"#;
+
+#[test]
+fn bad_beam_scenes_are_named() {
+    AnyScene::from_json(GOOD, "b.json").unwrap();
+    let e = err(&GOOD.replace("[0, 6]", "[3, 3]"));
+    assert!(
+        e.contains("beam.supports_m") && e.contains("one point"),
+        "{e}"
+    );
+    let e = err(&GOOD.replace("\"x_m\": 2", "\"x_m\": 7"));
+    assert!(
+        e.contains("point_loads[0].x_m") && e.contains("overhang"),
+        "{e}"
+    );
+    let e = err(&GOOD.replace(
+        "\"force_scale_kg_per_mm\": 10",
+        "\"force_scale_kg_per_mm\": 0",
+    ));
+    assert!(e.contains("drawing.force_scale_kg_per_mm"), "{e}");
+    let e = err(&GOOD.replace("\"to_m\": 5", "\"to_m\": 3"));
+    assert!(e.contains("uniform_loads[0].to_m"), "{e}");
+    let e = err(&GOOD.replace("\"x_m\": 2", "\"x_m\": 4"));
+    assert!(
+        e.contains("point_loads[0].x_m") && e.contains("inside uniform load"),
+        "{e}"
+    );
+    let e = err(&GOOD.replace("\"from_m\": 3", "\"from_m\": -1"));
+    assert!(e.contains("uniform_loads[0].from_m"), "{e}");
+    let e = err(&GOOD.replace("\"kg\": 100", "\"kilo\": 100"));
+    assert!(e.contains("point_loads[0]") && e.contains("kilo"), "{e}");
+    let e = err(&GOOD.replace("\"moment_area\"", "\"moments\""));
+    assert!(e.contains("outputs[0]"), "{e}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(128))]
+
+    /// Random loads and any pole: the constructed reactions satisfy ΣV = 0 and ΣM = 0 to 1e-9
+    /// relative, and every moment and shear check passes.
+    #[test]
+    fn random_loads_any_pole_satisfy_equilibrium(
+        xa in -3.0f64..2.0,
+        span in 1.0f64..20.0,
+        over_l in 0.0f64..3.0,
+        over_r in 0.0f64..3.0,
+        loads in proptest::collection::vec((0.0f64..1.0, -500.0f64..3000.0), 0..12),
+        udl in proptest::option::of((0.0f64..1.0, 0.05f64..1.0, 1.0f64..800.0)),
+        h in 10.0f64..20000.0,
+    ) {
+        let xb = xa + span;
+        let ends = [xa - over_l, xb + over_r];
+        let len = ends[1] - ends[0];
+        let mut point_loads: Vec<PointLoad> = loads
+            .iter()
+            .map(|&(f, p)| PointLoad { x: ends[0] + f * len, p })
+            .collect();
+        let mut uniform_loads = vec![];
+        if let Some((f, w, q)) = udl {
+            // Between the supports, clear of the point loads.
+            let from = xa + f * span * 0.5;
+            let to = (from + w * span * 0.5).min(xb);
+            if to > from {
+                point_loads.retain(|l| !(l.x > from && l.x < to));
+                uniform_loads.push(UniformLoad { from, to, q });
+            }
+        }
+        let beam = Beam { supports: [xa, xb], ends, point_loads, uniform_loads };
+        let mut b = Board::new(500.0, true);
+        let r = construct_beam(&mut b, &beam, &drawing(h), &ALL).unwrap();
+        for c in b.steps().iter().flat_map(|s| &s.checks) {
+            prop_assert!(c.passed, "{}: {} vs {} ({:e} > {:e})", c.quantity, c.constructed, c.closed_form, c.error, c.tolerance);
+        }
+        let (ra, rb) = r.reactions;
+        let loads_total: f64 = beam.point_loads.iter().map(|l| l.p).sum::<f64>()
+            + beam.uniform_loads.iter().map(|u| u.resultant()).sum::<f64>();
+        let scale = beam.point_loads.iter().map(|l| l.p.abs()).sum::<f64>()
+            + beam.uniform_loads.iter().map(|u| u.resultant().abs()).sum::<f64>() + 1.0;
+        prop_assert!((ra + rb - loads_total).abs() <= 1e-9 * scale);
+        let moment_about_a: f64 = beam.point_loads.iter().map(|l| l.p * (l.x - xa)).sum::<f64>()
+            + beam.uniform_loads.iter().map(|u| u.resultant() * (u.centre() - xa)).sum::<f64>()
+            - rb * span;
+        prop_assert!(moment_about_a.abs() <= 1e-9 * scale * len);
+    }
+}
