@@ -33,6 +33,10 @@ pub enum ConstructionError {
         /// The cause.
         source: PrimitiveError,
     },
+    /// The input asks for a construction the procedure does not make (a point load inside a
+    /// uniform load, supports in the wrong order).
+    #[error("{0}")]
+    Unsupported(String),
     /// An intersection has no point where the construction needs one.
     #[error("step {step} ({caption}): {outcome}")]
     NoIntersection {

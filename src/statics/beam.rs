@@ -428,6 +428,7 @@ pub fn construct_beam(
     dr: &BeamDrawing,
     req: &BeamRequest,
 ) -> Result<BeamResults, ConstructionError> {
+    check_layout(beam)?;
     let k = 1000.0 / dr.length_scale;
     let sx = |x: f64| x * k;
     let fs = dr.force_scale;
@@ -960,20 +961,19 @@ pub fn construct_beam(
         // loads left of (or at) x to p0, C or pn, by where x lies.
         // How many forces of the load line lie left of the section (at it, too, for the value
         // just right of it); a uniform load counts once its end is passed (V is continuous).
+        // Those forces are a prefix of the load line, since no point load lies inside a
+        // uniform load; counted by binary search, so that long beams stay linear.
+        let mut point_xs: Vec<f64> = beam.point_loads.iter().map(|l| l.x).collect();
+        point_xs.sort_by(f64::total_cmp);
+        let mut uniform_ends: Vec<f64> = beam.uniform_loads.iter().map(|u| u.to).collect();
+        uniform_ends.sort_by(f64::total_cmp);
         let depth_index = |x: f64, right: bool| -> usize {
-            forces
-                .iter()
-                .filter(|f| match f.kind {
-                    Kind::Point(_) => {
-                        if right {
-                            f.x <= x
-                        } else {
-                            f.x < x
-                        }
-                    }
-                    Kind::Uniform(i) => beam.uniform_loads[i].to <= x,
-                })
-                .count()
+            let points = if right {
+                point_xs.partition_point(|&v| v <= x)
+            } else {
+                point_xs.partition_point(|&v| v < x)
+            };
+            points + uniform_ends.partition_point(|&v| v <= x)
         };
         let anchor = |x: f64, right: bool| -> H<Point> {
             let sa = beam.supports[0];
@@ -1081,13 +1081,15 @@ pub fn construct_beam(
                 *best = Some((m, x));
             }
         };
+        let tol_x = 1e-12 * span.max(1.0);
+        let event_at = |x: f64| -> Option<usize> {
+            let i = events.partition_point(|e| *e < x - tol_x);
+            (i < events.len() && (events[i] - x).abs() <= tol_x).then_some(i)
+        };
         for (s, h) in sections.iter().zip(&handles) {
             // At an event (support, load, end of a uniform load) where the shear changes sign.
-            if let Some((_, vl, vr)) = values
-                .iter()
-                .copied()
-                .find(|(x, _, _)| (*x - s.x).abs() <= 1e-12 * span.max(1.0))
-            {
+            if let Some(e) = event_at(s.x) {
+                let (_, vl, vr) = values[e];
                 if vl * vr <= 0.0 {
                     consider(&mut best, *h, s.x);
                 }
@@ -1098,14 +1100,9 @@ pub fn construct_beam(
                 continue;
             };
             let u = beam.uniform_loads[i];
-            let ea = events
-                .iter()
-                .position(|x| (*x - u.from).abs() <= 1e-12 * span.max(1.0))
-                .unwrap_or(0);
-            let eb = events
-                .iter()
-                .position(|x| (*x - u.to).abs() <= 1e-12 * span.max(1.0))
-                .unwrap_or(0);
+            let (Some(ea), Some(eb)) = (event_at(u.from), event_at(u.to)) else {
+                continue;
+            };
             let (va, vb) = (values[ea].2, values[eb].1);
             if va * vb < 0.0 {
                 let pa = diagram[2 * ea + 1];
@@ -1191,6 +1188,44 @@ pub fn construct_beam(
         shear,
         max_moment,
     })
+}
+
+/// The layouts the construction handles: A left of B, uniform loads that neither overlap nor
+/// straddle a support nor hold a point load (split them there: the result is the same).
+fn check_layout(beam: &Beam) -> Result<(), ConstructionError> {
+    let [a, b] = beam.supports;
+    if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
+        return Err(ConstructionError::Unsupported(format!(
+            "support A ({a} m) must lie left of support B ({b} m)"
+        )));
+    }
+    for (i, u) in beam.uniform_loads.iter().enumerate() {
+        let inside = |x: f64| x > u.from && x < u.to;
+        if u.from.partial_cmp(&u.to) != Some(std::cmp::Ordering::Less) {
+            return Err(ConstructionError::Unsupported(format!(
+                "uniform load {i} must end after it starts"
+            )));
+        }
+        if inside(a) || inside(b) {
+            return Err(ConstructionError::Unsupported(format!(
+                "uniform load {i} straddles a support: split it there"
+            )));
+        }
+        if beam.point_loads.iter().any(|l| inside(l.x)) {
+            return Err(ConstructionError::Unsupported(format!(
+                "a point load lies inside uniform load {i}: split the uniform load there"
+            )));
+        }
+        if beam.uniform_loads[i + 1..]
+            .iter()
+            .any(|w| w.from < u.to && w.to > u.from)
+        {
+            return Err(ConstructionError::Unsupported(format!(
+                "uniform load {i} overlaps another: add their intensities"
+            )));
+        }
+    }
+    Ok(())
 }
 
 fn b_point(b: &mut Board, x: f64, y: f64) -> H<Point> {
