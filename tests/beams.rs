@@ -246,6 +246,26 @@ fn bad_beam_scenes_are_named() {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(128))]
 
+    /// The prefix-sum method of sections agrees with the plain one everywhere.
+    #[test]
+    fn fast_sections_agree_with_the_plain_method(
+        loads in proptest::collection::vec((-2.0f64..12.0, -500.0f64..3000.0), 0..30),
+        probes in proptest::collection::vec(-2.0f64..12.0, 1..20),
+    ) {
+        let mut beam = simple(&[]);
+        beam.ends = [-2.0, 12.0];
+        beam.point_loads = loads.iter().map(|&(x, p)| PointLoad { x, p }).collect();
+        beam.uniform_loads = vec![UniformLoad { from: 10.0, to: 11.5, q: 300.0 }];
+        let fast = cf::Sections::new(&beam);
+        let scale = 1.0 + loads.iter().map(|l| l.1.abs()).sum::<f64>() * 14.0;
+        for x in probes.into_iter().chain(loads.iter().map(|l| l.0)) {
+            prop_assert!((fast.moment(x) - cf::moment(&beam, x)).abs() <= 1e-12 * scale);
+            for left in [false, true] {
+                prop_assert!((fast.shear(x, left) - cf::shear(&beam, x, left)).abs() <= 1e-12 * scale);
+            }
+        }
+    }
+
     /// Random loads and any pole: the constructed reactions satisfy ΣV = 0 and ΣM = 0 to 1e-9
     /// relative, and every moment and shear check passes.
     #[test]

@@ -21,6 +21,7 @@
 mod beam;
 mod defaults;
 mod error;
+mod force_system;
 mod types;
 
 pub use beam::{
@@ -28,6 +29,9 @@ pub use beam::{
     MAX_LOADS,
 };
 pub use error::SceneError;
+pub use force_system::{
+    ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,
+};
 pub use types::*;
 
 use crate::crank::{self, Angles, CrankDrive, CrankResults, Drawing, PistonForce, Request};
@@ -423,7 +427,8 @@ pub fn schema_json() -> String {
 }
 
 /// The scene format as a whole: a slider-crank scene (`"procedure": "slider_crank"`, the
-/// default) or a beam scene (`"procedure": "beam"`).
+/// default), a beam scene (`"procedure": "beam"`) or a force system
+/// (`"procedure": "force_system"`).
 #[derive(schemars::JsonSchema)]
 #[serde(untagged)]
 #[allow(dead_code)]
@@ -432,6 +437,8 @@ enum AnySceneSchema {
     SliderCrank(Scene),
     /// A beam scene.
     Beam(BeamScene),
+    /// A force-system scene.
+    ForceSystem(ForceSystemScene),
 }
 
 /// A scene of any procedure, validated.
@@ -441,6 +448,8 @@ pub enum AnyScene {
     SliderCrank(Scene),
     /// Beam (LH I C).
     Beam(BeamScene),
+    /// Forces in the plane (LH I A, C.2).
+    ForceSystem(ForceSystemScene),
 }
 
 /// A constructible problem of any procedure.
@@ -450,6 +459,8 @@ pub enum AnyProblem {
     SliderCrank(Problem),
     /// Beam.
     Beam(BeamProblem),
+    /// Forces in the plane.
+    ForceSystem(ForceSystemProblem),
 }
 
 #[derive(serde::Deserialize)]
@@ -471,6 +482,13 @@ impl AnyScene {
                 scene.validate(origin)?;
                 Ok(AnyScene::Beam(scene))
             }
+            Some("force_system") => {
+                let de = &mut serde_json::Deserializer::from_str(text);
+                let scene: ForceSystemScene =
+                    serde_path_to_error::deserialize(de).map_err(|e| json_error(e, origin))?;
+                scene.validate(origin)?;
+                Ok(AnyScene::ForceSystem(scene))
+            }
             _ => Scene::from_json(text, origin).map(AnyScene::SliderCrank),
         }
     }
@@ -489,6 +507,7 @@ impl AnyScene {
         match self {
             AnyScene::SliderCrank(s) => AnyProblem::SliderCrank(s.problem()),
             AnyScene::Beam(s) => AnyProblem::Beam(s.problem()),
+            AnyScene::ForceSystem(s) => AnyProblem::ForceSystem(s.problem()),
         }
     }
 }
@@ -499,6 +518,7 @@ impl AnyProblem {
         match self {
             AnyProblem::SliderCrank(p) => p.construct(recording).map(|(b, _)| b),
             AnyProblem::Beam(p) => p.construct(recording).map(|(b, _)| b),
+            AnyProblem::ForceSystem(p) => p.construct(recording).map(|(b, _)| b),
         }
     }
 
@@ -507,6 +527,7 @@ impl AnyProblem {
         match self {
             AnyProblem::SliderCrank(p) => p.figure_meta(),
             AnyProblem::Beam(p) => p.figure_meta(),
+            AnyProblem::ForceSystem(p) => p.figure_meta(),
         }
     }
 }

@@ -444,6 +444,8 @@ pub fn construct_beam(
         unit: "kg·m",
     };
     let (ra, rb) = cf::reactions(beam);
+    // The closed forms of the checks, prepared once: O(log n) a section.
+    let sections_cf = cf::Sections::new(beam);
     let total: f64 = beam.point_loads.iter().map(|l| l.p).sum::<f64>()
         + beam
             .uniform_loads
@@ -750,7 +752,7 @@ pub fn construct_beam(
             "kg·m",
             "LH Gl. 11; method of sections",
             mref,
-            || cf::moment(beam, x),
+            || sections_cf.moment(x),
         );
         Ok(m)
     };
@@ -906,7 +908,7 @@ pub fn construct_beam(
                         "method of sections",
                         span,
                         || {
-                            let (mlo, mhi) = (cf::moment(beam, lo), cf::moment(beam, hi));
+                            let (mlo, mhi) = (sections_cf.moment(lo), sections_cf.moment(hi));
                             lo - mlo * (hi - lo) / (mhi - mlo)
                         },
                     );
@@ -1020,7 +1022,7 @@ pub fn construct_beam(
                     "kg",
                     "method of sections",
                     pref,
-                    || cf::shear(beam, x, true),
+                    || sections_cf.shear(x, true),
                 );
                 Some(m.g)
             };
@@ -1042,7 +1044,7 @@ pub fn construct_beam(
                     "kg",
                     "method of sections",
                     pref,
-                    || cf::shear(beam, x, false),
+                    || sections_cf.shear(x, false),
                 );
                 Some(m.g)
             };

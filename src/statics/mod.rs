@@ -9,6 +9,7 @@
 
 pub mod beam;
 pub mod closed_form;
+pub mod funicular;
 
 pub use beam::{construct_beam, BeamDrawing, BeamRequest, BeamResults, SectionRow};
 

@@ -1,0 +1,271 @@
+//! The force-system scene: forces in the plane, their resultant by the funicular polygon, and
+//! resolutions along two lines (LH A.1-4, C.2, Aufgabe 2).
+
+use super::defaults::nice_at_least;
+use super::SceneError;
+use crate::protocol::{Board, ConstructionError};
+use crate::statics::funicular::{self, Force, Resolution, SystemDrawing, SystemResults};
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+/// A force-system scene: `"procedure": "force_system"`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ForceSystemScene {
+    /// Must be `"force_system"`.
+    pub procedure: String,
+    /// Title written on the figure.
+    pub title: String,
+    /// Book reference written under the title.
+    #[serde(default)]
+    pub source: Option<String>,
+    /// Free notes on where the numbers come from (not drawn).
+    #[serde(default)]
+    pub notes: Option<String>,
+    /// The forces, in the order they are laid off.
+    pub forces: Vec<ForceSpec>,
+    /// Forces to resolve along two given directions.
+    #[serde(default)]
+    pub resolve: Vec<ResolveSpec>,
+    /// Scales and the pole; any left out are chosen.
+    #[serde(default)]
+    pub drawing: Option<ForceDrawingSpec>,
+}
+
+/// A force: where it acts, and either its components or its magnitude and direction.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ForceSpec {
+    /// Point of application [x, y] (m).
+    pub at_m: [f64; 2],
+    /// Components [Fx, Fy] (kg), x to the right, y up.
+    #[serde(default)]
+    pub kg_xy: Option<[f64; 2]>,
+    /// Magnitude (kg), with `angle_deg`.
+    #[serde(default)]
+    pub kg: Option<f64>,
+    /// Direction, degrees counter-clockwise from +x (270 points down), with `kg`.
+    #[serde(default)]
+    pub angle_deg: Option<f64>,
+}
+
+/// A resolution of one force along two directions.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ResolveSpec {
+    /// Number of the force, from 1.
+    pub force: usize,
+    /// The two directions, degrees counter-clockwise from +x.
+    pub along_deg: [f64; 2],
+    /// Resolve the force that holds it in balance (rope tensions, support forces) instead.
+    #[serde(default)]
+    pub equilibrant: bool,
+}
+
+/// Scales and the pole.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ForceDrawingSpec {
+    /// Length scale 1 : n.
+    #[serde(default)]
+    pub length_scale: Option<f64>,
+    /// Force scale, kg per mm of sheet.
+    #[serde(default)]
+    pub force_scale_kg_per_mm: Option<f64>,
+    /// The pole relative to the start of the force polygon [x, y] (kg).
+    #[serde(default)]
+    pub pole_kg: Option<[f64; 2]>,
+}
+
+/// A validated force-system scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ForceSystemProblem {
+    /// Title.
+    pub title: String,
+    /// Source.
+    pub source: String,
+    /// The forces.
+    pub forces: Vec<Force>,
+    /// The resolutions.
+    pub resolutions: Vec<Resolution>,
+    /// Scales and pole.
+    pub drawing: SystemDrawing,
+}
+
+impl ForceSystemScene {
+    pub(super) fn validate(&self, origin: &str) -> Result<(), SceneError> {
+        let bad = |field: &str, message: String| SceneError::Invalid {
+            origin: origin.to_string(),
+            field: field.to_string(),
+            message,
+        };
+        if self.procedure != "force_system" {
+            return Err(bad(
+                "procedure",
+                format!("unknown procedure `{}`", self.procedure),
+            ));
+        }
+        if self.forces.is_empty() {
+            return Err(bad("forces", "give at least one force".into()));
+        }
+        if self.forces.len() > super::MAX_LOADS {
+            return Err(bad(
+                "forces",
+                format!("more than {} forces", super::MAX_LOADS),
+            ));
+        }
+        for (i, f) in self.forces.iter().enumerate() {
+            let field = |n: &str| format!("forces[{i}].{n}");
+            if !f.at_m.iter().all(|v| v.is_finite()) {
+                return Err(bad(&field("at_m"), "must be finite numbers".into()));
+            }
+            let v = match (f.kg_xy, f.kg, f.angle_deg) {
+                (Some(xy), None, None) => xy,
+                (None, Some(k), Some(a)) => {
+                    let (s, c) = crate::kernel::angle::sin_cos_deg(a);
+                    [k * c, k * s]
+                }
+                _ => {
+                    return Err(bad(
+                        &format!("forces[{i}]"),
+                        "give either kg_xy, or kg with angle_deg".into(),
+                    ))
+                }
+            };
+            if !v.iter().all(|x| x.is_finite()) {
+                return Err(bad(
+                    &format!("forces[{i}]"),
+                    "must be finite numbers".into(),
+                ));
+            }
+            if v[0] == 0.0 && v[1] == 0.0 {
+                return Err(bad(
+                    &format!("forces[{i}]"),
+                    "a zero force has no line of action: leave it out".into(),
+                ));
+            }
+        }
+        for (j, r) in self.resolve.iter().enumerate() {
+            if r.force == 0 || r.force > self.forces.len() {
+                return Err(bad(
+                    &format!("resolve[{j}].force"),
+                    format!(
+                        "names force {}, but there are {}",
+                        r.force,
+                        self.forces.len()
+                    ),
+                ));
+            }
+            let [a, b] = r.along_deg;
+            if !(a.is_finite() && b.is_finite()) || ((a - b).rem_euclid(180.0)).abs() < 1e-9 {
+                return Err(bad(
+                    &format!("resolve[{j}].along_deg"),
+                    "two different, non-parallel directions are needed".into(),
+                ));
+            }
+        }
+        if let Some(d) = &self.drawing {
+            for (name, v) in [
+                ("drawing.length_scale", d.length_scale),
+                ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
+            ] {
+                if let Some(v) = v {
+                    if !(v.is_finite() && v > 0.0) {
+                        return Err(bad(name, format!("must be positive, got {v}")));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The problem the scene describes.
+    pub fn problem(&self) -> ForceSystemProblem {
+        let forces: Vec<Force> = self
+            .forces
+            .iter()
+            .map(|f| {
+                let v = f.kg_xy.unwrap_or_else(|| {
+                    let (s, c) = crate::kernel::angle::sin_cos_deg(f.angle_deg.unwrap_or(0.0));
+                    let k = f.kg.unwrap_or(0.0);
+                    [k * c, k * s]
+                });
+                Force { at: f.at_m, f: v }
+            })
+            .collect();
+        let fmax = forces
+            .iter()
+            .map(|f| f.f[0].hypot(f.f[1]))
+            .fold(0.0, f64::max);
+        let reach = forces
+            .iter()
+            .map(|f| f.at[0].hypot(f.at[1]))
+            .fold(0.0, f64::max)
+            .max(1.0);
+        let d = self.drawing.unwrap_or(ForceDrawingSpec {
+            length_scale: None,
+            force_scale_kg_per_mm: None,
+            pole_kg: None,
+        });
+        ForceSystemProblem {
+            title: self.title.clone(),
+            source: self.source.clone().unwrap_or_default(),
+            resolutions: self
+                .resolve
+                .iter()
+                .map(|r| Resolution {
+                    force: r.force - 1,
+                    along: r.along_deg,
+                    equilibrant: r.equilibrant,
+                })
+                .collect(),
+            drawing: SystemDrawing {
+                length_scale: d
+                    .length_scale
+                    .unwrap_or_else(|| nice_at_least(reach * 1000.0 / 60.0)),
+                force_scale: d
+                    .force_scale_kg_per_mm
+                    .unwrap_or_else(|| nice_at_least(fmax / 40.0)),
+                pole: d.pole_kg,
+            },
+            forces,
+        }
+    }
+}
+
+impl ForceSystemProblem {
+    /// Constructs the system on a fresh board.
+    pub fn construct(&self, recording: bool) -> Result<(Board, SystemResults), ConstructionError> {
+        let mut board = Board::new(300.0, recording);
+        let r = funicular::construct_system(
+            &mut board,
+            &self.forces,
+            &self.drawing,
+            &self.resolutions,
+        )?;
+        Ok((board, r))
+    }
+
+    /// Title, source and scale bars.
+    pub fn figure_meta(&self) -> crate::render::FigureMeta {
+        use crate::fmt::num;
+        use crate::render::ScaleBar;
+        let d = &self.drawing;
+        crate::render::FigureMeta {
+            title: self.title.clone(),
+            source: self.source.clone(),
+            scales: vec![
+                ScaleBar {
+                    name: format!("Längenmaßstab 1 : {}", num(d.length_scale, 6)),
+                    per_mm: d.length_scale / 1000.0,
+                    unit: "m".into(),
+                },
+                ScaleBar {
+                    name: format!("Kräftemaßstab 1 mm = {} kg", num(d.force_scale, 6)),
+                    per_mm: d.force_scale,
+                    unit: "kg".into(),
+                },
+            ],
+        }
+    }
+}
