@@ -104,18 +104,27 @@ fn resolution_along_two_lines_lh_aufgabe_2() {
     let d1 = 90.0 + a1.to_degrees();
     let d2 = 90.0 - a2.to_degrees();
     let forces = [f(0.0, 0.0, 0.0, -q)];
+    let hold = Resolution {
+        force: 0,
+        along: [d1, d2],
+        equilibrant: true,
+    };
+    let (_, r) = run(&forces, &[hold]);
+    let [k1, k2] = r.components[0];
+    // The ropes pull towards their attachments: both tensions positive.
+    assert!(
+        (k1 - s1).abs() < 1e-9 && (k2 - s2).abs() < 1e-9,
+        "{k1} {k2}"
+    );
+    // Resolving Q itself gives the same components, reversed.
     let (_, r) = run(
         &forces,
         &[Resolution {
-            force: 0,
-            along: [d1 + 180.0, d2 + 180.0],
+            equilibrant: false,
+            ..hold
         }],
     );
-    let [k1, k2] = r.components[0];
-    assert!(
-        (k1.abs() - s1).abs() < 1e-9 && (k2.abs() - s2).abs() < 1e-9,
-        "{k1} {k2}"
-    );
+    assert!((r.components[0][0] + s1).abs() < 1e-9 && (r.components[0][1] + s2).abs() < 1e-9);
 }
 
 #[test]

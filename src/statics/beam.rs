@@ -429,6 +429,9 @@ pub fn construct_beam(
     req: &BeamRequest,
 ) -> Result<BeamResults, ConstructionError> {
     check_layout(beam)?;
+    // About 40 steps and 60 objects per load when everything is drawn.
+    let nloads = beam.point_loads.len() + beam.uniform_loads.len() * (dr.parabola_divisions + 4);
+    b.reserve(64 + 40 * nloads, 64 + 60 * nloads);
     let k = 1000.0 / dr.length_scale;
     let sx = |x: f64| x * k;
     let fs = dr.force_scale;
