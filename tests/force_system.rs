@@ -9,6 +9,8 @@ const D: SystemDrawing = SystemDrawing {
     length_scale: 50.0,
     force_scale: 10.0,
     pole: None,
+    plan_at: None,
+    unit: "kg",
 };
 
 fn run(forces: &[Force], res: &[Resolution]) -> (Board, SystemResults) {

@@ -227,6 +227,8 @@ impl ForceSystemScene {
                     .force_scale_kg_per_mm
                     .unwrap_or_else(|| nice_at_least(fmax / 40.0)),
                 pole: d.pole_kg,
+                plan_at: None,
+                unit: "kg",
             },
             forces,
         }

@@ -19,6 +19,7 @@
 //! ```
 
 mod beam;
+mod centroid;
 mod defaults;
 mod error;
 mod force_system;
@@ -28,6 +29,7 @@ pub use beam::{
     BeamDrawingSpec, BeamOutput, BeamProblem, BeamScene, BeamSpec, PointLoadSpec, UniformLoadSpec,
     MAX_LOADS,
 };
+pub use centroid::{CentroidDrawingSpec, CentroidProblem, CentroidScene};
 pub use error::SceneError;
 pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,
@@ -427,8 +429,8 @@ pub fn schema_json() -> String {
 }
 
 /// The scene format as a whole: a slider-crank scene (`"procedure": "slider_crank"`, the
-/// default), a beam scene (`"procedure": "beam"`) or a force system
-/// (`"procedure": "force_system"`).
+/// default), a beam scene (`"procedure": "beam"`), a force system
+/// (`"procedure": "force_system"`) or a centroid (`"procedure": "centroid"`).
 #[derive(schemars::JsonSchema)]
 #[serde(untagged)]
 #[allow(dead_code)]
@@ -439,6 +441,8 @@ enum AnySceneSchema {
     Beam(BeamScene),
     /// A force-system scene.
     ForceSystem(ForceSystemScene),
+    /// A centroid scene.
+    Centroid(CentroidScene),
 }
 
 /// A scene of any procedure, validated.
@@ -450,6 +454,8 @@ pub enum AnyScene {
     Beam(BeamScene),
     /// Forces in the plane (LH I A, C.2).
     ForceSystem(ForceSystemScene),
+    /// Centroid of a polygon (LH I C.3).
+    Centroid(CentroidScene),
 }
 
 /// A constructible problem of any procedure.
@@ -461,6 +467,8 @@ pub enum AnyProblem {
     Beam(BeamProblem),
     /// Forces in the plane.
     ForceSystem(ForceSystemProblem),
+    /// Centroid of a polygon.
+    Centroid(CentroidProblem),
 }
 
 #[derive(serde::Deserialize)]
@@ -489,6 +497,13 @@ impl AnyScene {
                 scene.validate(origin)?;
                 Ok(AnyScene::ForceSystem(scene))
             }
+            Some("centroid") => {
+                let de = &mut serde_json::Deserializer::from_str(text);
+                let scene: CentroidScene =
+                    serde_path_to_error::deserialize(de).map_err(|e| json_error(e, origin))?;
+                scene.validate(origin)?;
+                Ok(AnyScene::Centroid(scene))
+            }
             _ => Scene::from_json(text, origin).map(AnyScene::SliderCrank),
         }
     }
@@ -508,6 +523,7 @@ impl AnyScene {
             AnyScene::SliderCrank(s) => AnyProblem::SliderCrank(s.problem()),
             AnyScene::Beam(s) => AnyProblem::Beam(s.problem()),
             AnyScene::ForceSystem(s) => AnyProblem::ForceSystem(s.problem()),
+            AnyScene::Centroid(s) => AnyProblem::Centroid(s.problem()),
         }
     }
 }
@@ -519,6 +535,7 @@ impl AnyProblem {
             AnyProblem::SliderCrank(p) => p.construct(recording).map(|(b, _)| b),
             AnyProblem::Beam(p) => p.construct(recording).map(|(b, _)| b),
             AnyProblem::ForceSystem(p) => p.construct(recording).map(|(b, _)| b),
+            AnyProblem::Centroid(p) => p.construct(recording).map(|(b, _)| b),
         }
     }
 
@@ -528,6 +545,7 @@ impl AnyProblem {
             AnyProblem::SliderCrank(p) => p.figure_meta(),
             AnyProblem::Beam(p) => p.figure_meta(),
             AnyProblem::ForceSystem(p) => p.figure_meta(),
+            AnyProblem::Centroid(p) => p.figure_meta(),
         }
     }
 }

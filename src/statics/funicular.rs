@@ -216,6 +216,10 @@ pub struct SystemDrawing {
     pub force_scale: f64,
     /// The pole relative to the start of the force polygon (kg, x and y); `None` chooses one.
     pub pole: Option<[f64; 2]>,
+    /// Where the force polygon starts on the sheet (mm); `None` puts it right of the forces.
+    pub plan_at: Option<[f64; 2]>,
+    /// The unit of the "forces" ("kg"; "m²" when areas stand for weights, LH C.3).
+    pub unit: &'static str,
 }
 
 /// A force to resolve along two directions (degrees from +x).
@@ -235,6 +239,9 @@ pub struct Resolution {
 pub struct SystemResults {
     /// What the system reduces to.
     pub resultant: Resultant,
+    /// The resultant's line of action on the board, where there is one.
+    #[serde(skip)]
+    pub resultant_line: Option<H<Line>>,
     /// Components of the resolved forces along their two directions (kg).
     pub components: Vec<[f64; 2]>,
 }
@@ -276,7 +283,8 @@ pub fn resolve(f: [f64; 2], d1: [f64; 2], d2: [f64; 2]) -> Option<[f64; 2]> {
 /// use graphostatik::protocol::Board;
 /// // Two parallel downward forces: the resultant 300 kg lies at the lever rule a:b = K2:K1.
 /// let forces = [Force { at: [0.0, 0.0], f: [0.0, -100.0] }, Force { at: [3.0, 0.0], f: [0.0, -200.0] }];
-/// let d = SystemDrawing { length_scale: 50.0, force_scale: 10.0, pole: None };
+/// let d = SystemDrawing { length_scale: 50.0, force_scale: 10.0, pole: None,
+///     plan_at: None, unit: "kg" };
 /// let mut b = Board::new(200.0, true);
 /// let r = construct_system(&mut b, &forces, &d, &[]).unwrap();
 /// match r.resultant {
@@ -347,7 +355,10 @@ pub fn construct_system(
     }
 
     // --- Force polygon ----------------------------------------------------------------
-    let origin = Point::new(xmax + 30.0 + fmax / fs, 0.0);
+    let origin = match dr.plan_at {
+        Some([x, y]) => Point::new(x, y),
+        None => Point::new(xmax + 30.0 + fmax / fs, 0.0),
+    };
     let p0 = b.point(origin, Label::plain("0"), Role::Given, N_START);
     let mut pts = vec![p0];
     for (i, f) in forces.iter().enumerate() {
@@ -388,7 +399,7 @@ pub fn construct_system(
     b.check(
         &rx,
         "resultant, horizontal component",
-        "kg",
+        dr.unit,
         "ΣFx",
         fmax,
         || r_cf[0],
@@ -397,7 +408,7 @@ pub fn construct_system(
     b.check(
         &ry,
         "resultant, vertical component",
-        "kg",
+        dr.unit,
         "ΣFy",
         fmax,
         || r_cf[1],
@@ -446,6 +457,7 @@ pub fn construct_system(
         unit: "kg·m",
     };
     let mref = fmax * reach;
+    let mut resultant_line = None;
     let resultant = match b.meet(&strings[0], &strings[n], Label::plain("X"), N_FIRST_LAST) {
         Cut::Point(x, _) if r_len > tol => {
             let r_line = b.parallel(
@@ -461,6 +473,7 @@ pub fn construct_system(
                 Role::Result,
                 N_R_LINE,
             );
+            resultant_line = Some(r_line);
             // Moment of R about the origin: |R| times the signed distance of its line.
             let o = b.point(Point::origin(), Label::NONE, Role::Given, N_R_MOMENT);
             let foot = b.foot(&r_line, &o, Label::NONE, Role::Construction, N_R_MOMENT);
@@ -618,7 +631,7 @@ pub fn construct_system(
         b.check(
             &k1,
             "component along the first direction",
-            "kg",
+            dr.unit,
             "2×2 solve",
             fmax,
             || exact[0],
@@ -626,7 +639,7 @@ pub fn construct_system(
         b.check(
             &k2,
             "component along the second direction",
-            "kg",
+            dr.unit,
             "2×2 solve",
             fmax,
             || exact[1],
@@ -637,6 +650,7 @@ pub fn construct_system(
     }
     Ok(SystemResults {
         resultant,
+        resultant_line,
         components,
     })
 }

@@ -8,6 +8,7 @@
 //! sag the beam.
 
 pub mod beam;
+pub mod centroid;
 pub mod closed_form;
 pub mod funicular;
 

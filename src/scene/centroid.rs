@@ -1,0 +1,188 @@
+//! The centroid scene: a polygon whose centroid is found by two funicular polygons
+//! (LH C.3, Abb. 23).
+
+use super::defaults::nice_at_least;
+use super::SceneError;
+use crate::protocol::{Board, ConstructionError};
+use crate::statics::centroid::{self, CentroidDrawing, CentroidResults};
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+/// A centroid scene: `"procedure": "centroid"`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CentroidScene {
+    /// Must be `"centroid"`.
+    pub procedure: String,
+    /// Title written on the figure.
+    pub title: String,
+    /// Book reference written under the title.
+    #[serde(default)]
+    pub source: Option<String>,
+    /// Free notes (not drawn).
+    #[serde(default)]
+    pub notes: Option<String>,
+    /// The vertices [x, y] (m), in order round the polygon; it must not cross itself.
+    pub polygon_m: Vec<[f64; 2]>,
+    /// The vertex (from 0) the triangles fan out from; default 0.
+    #[serde(default)]
+    pub fan_from: usize,
+    /// Scales; any left out are chosen.
+    #[serde(default)]
+    pub drawing: Option<CentroidDrawingSpec>,
+}
+
+/// Scales of a centroid scene.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CentroidDrawingSpec {
+    /// Length scale 1 : n.
+    #[serde(default)]
+    pub length_scale: Option<f64>,
+    /// Area scale, m² per mm of sheet.
+    #[serde(default)]
+    pub area_scale_m2_per_mm: Option<f64>,
+}
+
+/// A validated centroid scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CentroidProblem {
+    /// Title.
+    pub title: String,
+    /// Source.
+    pub source: String,
+    /// Vertices (m).
+    pub polygon: Vec<[f64; 2]>,
+    /// Scales.
+    pub drawing: CentroidDrawing,
+}
+
+impl CentroidScene {
+    pub(super) fn validate(&self, origin: &str) -> Result<(), SceneError> {
+        let bad = |field: &str, message: String| SceneError::Invalid {
+            origin: origin.to_string(),
+            field: field.to_string(),
+            message,
+        };
+        if self.procedure != "centroid" {
+            return Err(bad(
+                "procedure",
+                format!("unknown procedure `{}`", self.procedure),
+            ));
+        }
+        let n = self.polygon_m.len();
+        if !(3..=1000).contains(&n) {
+            return Err(bad("polygon_m", format!("{n} vertices: give 3 to 1000")));
+        }
+        for (i, p) in self.polygon_m.iter().enumerate() {
+            if !p.iter().all(|v| v.is_finite()) {
+                return Err(bad(
+                    &format!("polygon_m[{i}]"),
+                    "must be finite numbers".into(),
+                ));
+            }
+            if *p == self.polygon_m[(i + 1) % n] {
+                return Err(bad(
+                    &format!("polygon_m[{i}]"),
+                    "repeats the next vertex".into(),
+                ));
+            }
+        }
+        if let Some((i, j)) = centroid::self_intersection(&self.polygon_m) {
+            return Err(bad(
+                "polygon_m",
+                format!(
+                    "the polygon crosses itself: edge {i}-{} meets edge {j}-{}",
+                    (i + 1) % n,
+                    (j + 1) % n
+                ),
+            ));
+        }
+        if centroid::polygon_centroid(&self.polygon_m).is_none() {
+            return Err(bad("polygon_m", "the polygon has zero area".into()));
+        }
+        if self.fan_from >= n {
+            return Err(bad("fan_from", format!("vertex {} of {n}", self.fan_from)));
+        }
+        if let Some(d) = &self.drawing {
+            for (name, v) in [
+                ("drawing.length_scale", d.length_scale),
+                ("drawing.area_scale_m2_per_mm", d.area_scale_m2_per_mm),
+            ] {
+                if let Some(v) = v {
+                    if !(v.is_finite() && v > 0.0) {
+                        return Err(bad(name, format!("must be positive, got {v}")));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The problem the scene describes.
+    pub fn problem(&self) -> CentroidProblem {
+        let (area, _) = centroid::polygon_centroid(&self.polygon_m).unwrap_or((1.0, [0.0, 0.0]));
+        let size = self
+            .polygon_m
+            .iter()
+            .flat_map(|p| {
+                self.polygon_m
+                    .iter()
+                    .map(move |q| (p[0] - q[0]).hypot(p[1] - q[1]))
+            })
+            .fold(0.0, f64::max);
+        let d = self.drawing.unwrap_or(CentroidDrawingSpec {
+            length_scale: None,
+            area_scale_m2_per_mm: None,
+        });
+        CentroidProblem {
+            title: self.title.clone(),
+            source: self.source.clone().unwrap_or_default(),
+            polygon: self.polygon_m.clone(),
+            drawing: CentroidDrawing {
+                length_scale: d
+                    .length_scale
+                    .unwrap_or_else(|| nice_at_least(size * 1000.0 / 100.0)),
+                area_scale: d
+                    .area_scale_m2_per_mm
+                    .unwrap_or_else(|| nice_at_least(area / 50.0)),
+                fan_from: self.fan_from,
+            },
+        }
+    }
+}
+
+impl CentroidProblem {
+    /// Constructs the centroid on a fresh board.
+    pub fn construct(
+        &self,
+        recording: bool,
+    ) -> Result<(Board, CentroidResults), ConstructionError> {
+        let mut board = Board::new(300.0, recording);
+        let r = centroid::construct_centroid(&mut board, &self.polygon, &self.drawing)?;
+        Ok((board, r))
+    }
+
+    /// Title, source and scale bars.
+    pub fn figure_meta(&self) -> crate::render::FigureMeta {
+        use crate::fmt::num;
+        use crate::render::ScaleBar;
+        let d = &self.drawing;
+        crate::render::FigureMeta {
+            title: self.title.clone(),
+            source: self.source.clone(),
+            scales: vec![
+                ScaleBar {
+                    name: format!("Längenmaßstab 1 : {}", num(d.length_scale, 6)),
+                    per_mm: d.length_scale / 1000.0,
+                    unit: "m".into(),
+                },
+                ScaleBar {
+                    name: format!("Flächenmaßstab 1 mm = {} m²", num(d.area_scale, 6)),
+                    per_mm: d.area_scale,
+                    unit: "m²".into(),
+                },
+            ],
+        }
+    }
+}

@@ -1,0 +1,315 @@
+//! The centroid of a polygon by two funicular polygons (LH C.3, Abb. 23): split the polygon
+//! into triangles, find each triangle's centroid where two medians cross, let the areas act
+//! as parallel forces at these centroids, and find their resultant twice — once for vertical
+//! forces, once with the forces turned through 90° (the book turns the figure). The two lines
+//! of action cross at the centroid.
+//!
+//! The split is a fan from one vertex (the book's diagonal BD is the fan from B). For a
+//! non-convex polygon some fan triangles run the other way round: their areas count negative,
+//! forces of the opposite sense, which the force polygon takes in its stride.
+
+use super::funicular::{construct_system, Force, SystemDrawing};
+use crate::kernel::{Point, Vector};
+use crate::protocol::{Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
+use serde::Serialize;
+
+const fn note(
+    caption: &'static str,
+    de: Option<&'static str>,
+    book: &'static str,
+    topic: Topic,
+) -> Note {
+    Note {
+        caption,
+        term_de: de,
+        book,
+        topic,
+    }
+}
+
+const N_VERTEX: Note = note(
+    "vertex of the polygon",
+    Some("Eckpunkt"),
+    "LH Abb. 23",
+    Topic::Loads,
+);
+const N_OUTLINE: Note = note("the polygon", Some("Fläche F"), "LH Abb. 23", Topic::Loads);
+const N_DIAGONAL: Note = note(
+    "diagonal splitting off a triangle",
+    Some("Diagonale"),
+    "LH Abb. 23",
+    Topic::Loads,
+);
+const N_MIDPOINT: Note = note(
+    "halve a side",
+    Some("Seitenmitte"),
+    "LH Abb. 23",
+    Topic::Loads,
+);
+const N_MEDIAN: Note = note("median", Some("Mittellinie"), "LH Abb. 23", Topic::Loads);
+const N_TRIANGLE_CENTROID: Note = note(
+    "two medians cross: centroid of the triangle",
+    Some("Dreiecksschwerpunkt"),
+    "LH Abb. 23",
+    Topic::Loads,
+);
+const N_ORIGIN: Note = note(
+    "origin of the coordinates",
+    Some("Ursprung"),
+    "LH Abb. 23",
+    Topic::Funicular,
+);
+const N_AXIS: Note = note(
+    "coordinate axis",
+    Some("Achse"),
+    "LH Abb. 23",
+    Topic::Funicular,
+);
+const N_CENTROID: Note = note(
+    "the two centroidal lines cross: centroid S",
+    Some("Schwerpunkt"),
+    "LH C.3, Abb. 23",
+    Topic::Funicular,
+);
+const N_COORD: Note = note(
+    "coordinate of the centroid",
+    Some("Schwerpunktsabstand"),
+    "LH C.3",
+    Topic::Funicular,
+);
+
+/// Scales of a centroid drawing.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CentroidDrawing {
+    /// Length scale 1 : n.
+    pub length_scale: f64,
+    /// Area scale: m² per mm of sheet in the force polygons.
+    pub area_scale: f64,
+    /// The vertex the fan of triangles starts from.
+    pub fan_from: usize,
+}
+
+/// Results of [`construct_centroid`].
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CentroidResults {
+    /// The centroid (m).
+    pub centroid: [f64; 2],
+    /// The area (m²).
+    pub area: f64,
+}
+
+/// The closed form: area and centroid by the shoelace formula; `None` for zero area.
+///
+/// ```
+/// use graphostatik::statics::centroid::polygon_centroid;
+/// let (a, c) = polygon_centroid(&[[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]).unwrap();
+/// assert_eq!((a, c), (8.0, [2.0, 1.0]));
+/// ```
+pub fn polygon_centroid(pts: &[[f64; 2]]) -> Option<(f64, [f64; 2])> {
+    let n = pts.len();
+    let (mut a2, mut cx, mut cy) = (0.0, 0.0, 0.0);
+    for i in 0..n {
+        let [x0, y0] = pts[i];
+        let [x1, y1] = pts[(i + 1) % n];
+        let c = x0 * y1 - x1 * y0;
+        a2 += c;
+        cx += (x0 + x1) * c;
+        cy += (y0 + y1) * c;
+    }
+    if a2 == 0.0 {
+        return None;
+    }
+    Some((0.5 * a2.abs(), [cx / (3.0 * a2), cy / (3.0 * a2)]))
+}
+
+fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+}
+
+fn on_segment(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> bool {
+    p[0] >= a[0].min(b[0])
+        && p[0] <= a[0].max(b[0])
+        && p[1] >= a[1].min(b[1])
+        && p[1] <= a[1].max(b[1])
+}
+
+fn segments_cross(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
+    let (o1, o2, o3, o4) = (
+        orient(a, b, c),
+        orient(a, b, d),
+        orient(c, d, a),
+        orient(c, d, b),
+    );
+    if ((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0))
+        && ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0))
+    {
+        return true;
+    }
+    (o1 == 0.0 && on_segment(a, b, c))
+        || (o2 == 0.0 && on_segment(a, b, d))
+        || (o3 == 0.0 && on_segment(c, d, a))
+        || (o4 == 0.0 && on_segment(c, d, b))
+}
+
+/// The first pair of edges (i, j) that cross or touch, if the polygon is not simple. Edge i
+/// runs from vertex i to vertex i + 1.
+pub fn self_intersection(pts: &[[f64; 2]]) -> Option<(usize, usize)> {
+    let n = pts.len();
+    for i in 0..n {
+        for j in i + 1..n {
+            // Neighbouring edges share a vertex; they may only meet there.
+            if j == i + 1 || (i == 0 && j == n - 1) {
+                continue;
+            }
+            if segments_cross(pts[i], pts[(i + 1) % n], pts[j], pts[(j + 1) % n]) {
+                return Some((i, j));
+            }
+        }
+    }
+    None
+}
+
+/// Constructs the centroid of a simple polygon (vertices in m, in order) by two funicular
+/// polygons, and checks it against the shoelace formula.
+///
+/// # Errors
+/// [`ConstructionError::Unsupported`] for fewer than three vertices, a self-intersecting
+/// polygon or one of zero area.
+///
+/// ```
+/// use graphostatik::statics::centroid::*;
+/// use graphostatik::protocol::Board;
+/// // The trapezoid of LH Abb. 23, split along the diagonal BD (the fan from B).
+/// let trapezoid = [[0.0, 0.0], [4.0, 0.0], [3.0, 2.0], [1.0, 2.0]];
+/// let d = CentroidDrawing { length_scale: 25.0, area_scale: 0.1, fan_from: 1 };
+/// let mut b = Board::new(300.0, true);
+/// let r = construct_centroid(&mut b, &trapezoid, &d).unwrap();
+/// assert!((r.centroid[0] - 2.0).abs() < 1e-9 && (r.centroid[1] - 8.0 / 9.0).abs() < 1e-9);
+/// assert!(b.steps().iter().flat_map(|s| &s.checks).all(|c| c.passed));
+/// ```
+pub fn construct_centroid(
+    b: &mut Board,
+    pts: &[[f64; 2]],
+    dr: &CentroidDrawing,
+) -> Result<CentroidResults, ConstructionError> {
+    let n = pts.len();
+    if n < 3 {
+        return Err(ConstructionError::Unsupported(
+            "a polygon needs at least three vertices".into(),
+        ));
+    }
+    if let Some((i, j)) = self_intersection(pts) {
+        return Err(ConstructionError::Unsupported(format!(
+            "the polygon is not simple: edge {i} (vertex {i} to {}) meets edge {j} (vertex {j} to {})",
+            (i + 1) % n,
+            (j + 1) % n
+        )));
+    }
+    let (area, exact) = polygon_centroid(pts)
+        .ok_or_else(|| ConstructionError::Unsupported("the polygon has zero area".into()))?;
+    let k = 1000.0 / dr.length_scale;
+    let size = pts
+        .iter()
+        .flat_map(|p| pts.iter().map(move |q| (p[0] - q[0]).hypot(p[1] - q[1])))
+        .fold(0.0, f64::max);
+    const NAMES: [&str; 26] = [
+        "A", "B", "C", "D", "E", "F", "G", "H", "I", "J", "K", "L", "M", "N", "O", "P", "Q", "R",
+        "S", "T", "U", "V", "W", "X", "Y", "Z",
+    ];
+    let vs: Vec<H<Point>> = pts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let label = if n <= 26 {
+                Label::plain(NAMES[i])
+            } else {
+                Label::indexed("P", i as u32)
+            };
+            b.point(Point::new(p[0] * k, p[1] * k), label, Role::Given, N_VERTEX)
+        })
+        .collect();
+    let mut outline = vs.clone();
+    outline.push(vs[0]);
+    b.curve(&outline, false, Label::NONE, Role::Result, N_OUTLINE);
+
+    // Fan of triangles from the apex; each centroid where two medians cross.
+    let apex_i = dr.fan_from % n;
+    let apex = vs[apex_i];
+    let mut forces = Vec::new();
+    for t in 1..n - 1 {
+        let (v1, v2) = (vs[(apex_i + t) % n], vs[(apex_i + t + 1) % n]);
+        let signed = 0.5 * crate::kernel::cross(&(v1.g - apex.g), &(v2.g - apex.g)) / (k * k);
+        // A sliver of no area contributes nothing and has no centroid to construct.
+        if signed.abs() <= 1e-12 * size * size {
+            continue;
+        }
+        if t + 1 < n - 1 {
+            b.segment(&apex, &v2, Label::NONE, Role::Construction, N_DIAGONAL);
+        }
+        let m1 = b.divide_segment(&v1, &v2, 2, "m", N_MIDPOINT)[1];
+        let m2 = b.divide_segment(&apex, &v1, 2, "m", N_MIDPOINT)[1];
+        let med1 = b.line_through(&apex, &m1, Label::NONE, Role::Auxiliary, N_MEDIAN)?;
+        let med2 = b.line_through(&v2, &m2, Label::NONE, Role::Auxiliary, N_MEDIAN)?;
+        let g = b.meet_point(
+            &med1,
+            &med2,
+            Label::indexed("S", t as u32),
+            N_TRIANGLE_CENTROID,
+        )?;
+        forces.push((g.g / k, signed));
+    }
+
+    // Two funicular polygons: areas as vertical forces, then turned through 90°.
+    let xmax = vs.iter().map(|v| v.g.x).fold(f64::MIN, f64::max);
+    let ymax = vs.iter().map(|v| v.g.y).fold(f64::MIN, f64::max);
+    let total_mm = forces.iter().map(|f| f.1.abs()).sum::<f64>() / dr.area_scale;
+    let first: Vec<Force> = forces
+        .iter()
+        .map(|(g, a)| Force {
+            at: [g.x, g.y],
+            f: [0.0, -a],
+        })
+        .collect();
+    let second: Vec<Force> = forces
+        .iter()
+        .map(|(g, a)| Force {
+            at: [g.x, g.y],
+            f: [*a, 0.0],
+        })
+        .collect();
+    let mut sd = SystemDrawing {
+        length_scale: dr.length_scale,
+        force_scale: dr.area_scale,
+        pole: None,
+        plan_at: Some([xmax + 30.0, ymax]),
+        unit: "m²",
+    };
+    let r1 = construct_system(b, &first, &sd, &[])?;
+    sd.plan_at = Some([xmax + 30.0 + 0.6 * total_mm + 20.0, ymax + 0.5 * total_mm]);
+    let r2 = construct_system(b, &second, &sd, &[])?;
+    let (Some(l1), Some(l2)) = (r1.resultant_line, r2.resultant_line) else {
+        return Err(ConstructionError::Unsupported(
+            "the polygon has zero area".into(),
+        ));
+    };
+    let s = b.meet_point(&l1, &l2, Label::plain("S"), N_CENTROID)?;
+    let o = b.point(Point::origin(), Label::NONE, Role::Given, N_ORIGIN);
+    let ax = b.line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, N_AXIS)?;
+    let ay = b.line_dir(&o, Vector::new(0.0, 1.0), Label::NONE, Role::Axis, N_AXIS)?;
+    let m = Scale {
+        per_mm: 1.0 / k,
+        unit: "m",
+    };
+    let xs = b.measure(&o, &s, &ax, m, Label::quiet("x", 0), N_COORD);
+    b.check(&xs, "centroid x", "m", "shoelace formula", size, || {
+        exact[0]
+    });
+    let ys = b.measure(&o, &s, &ay, m, Label::quiet("y", 0), N_COORD);
+    b.check(&ys, "centroid y", "m", "shoelace formula", size, || {
+        exact[1]
+    });
+    Ok(CentroidResults {
+        centroid: [xs.g, ys.g],
+        area,
+    })
+}

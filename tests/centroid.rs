@@ -1,0 +1,104 @@
+//! Centroids by two funicular polygons (LH C.3, Abb. 23) against the shoelace formula.
+
+use graphostatik::protocol::Board;
+use graphostatik::scene::AnyScene;
+use graphostatik::statics::centroid::*;
+use proptest::prelude::*;
+
+fn run(pts: &[[f64; 2]], fan_from: usize) -> CentroidResults {
+    let mut b = Board::new(300.0, true);
+    let d = CentroidDrawing {
+        length_scale: 25.0,
+        area_scale: 0.1,
+        fan_from,
+    };
+    let r = construct_centroid(&mut b, pts, &d).unwrap();
+    for c in b.steps().iter().flat_map(|s| &s.checks) {
+        assert!(
+            c.passed,
+            "{}: {} vs {} ({:e})",
+            c.quantity, c.constructed, c.closed_form, c.error
+        );
+    }
+    r
+}
+
+#[test]
+fn a_non_convex_l_shape_with_negative_fan_triangles() {
+    // An L: the fan from vertex 3 (the re-entrant corner's neighbour) has a triangle running
+    // the other way round; its area counts negative.
+    let l = [
+        [0.0, 0.0],
+        [4.0, 0.0],
+        [4.0, 1.0],
+        [1.0, 1.0],
+        [1.0, 3.0],
+        [0.0, 3.0],
+    ];
+    let (_, c) = polygon_centroid(&l).unwrap();
+    for fan in 0..l.len() {
+        let r = run(&l, fan);
+        assert!(
+            (r.centroid[0] - c[0]).abs() < 1e-9 && (r.centroid[1] - c[1]).abs() < 1e-9,
+            "fan {fan}"
+        );
+    }
+    assert!((c[0] - (4.0 * 2.0 + 2.0 * 0.5) / 6.0).abs() < 1e-12);
+}
+
+#[test]
+fn collinear_vertices_make_slivers_that_are_skipped() {
+    let r = run(
+        &[[0.0, 0.0], [2.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]],
+        0,
+    );
+    assert!((r.centroid[0] - 2.0).abs() < 1e-9 && (r.centroid[1] - 1.0).abs() < 1e-9);
+}
+
+#[test]
+fn self_intersecting_polygons_are_refused_with_the_edges_named() {
+    let bow = [[0.0, 0.0], [2.0, 2.0], [2.0, 0.0], [0.0, 2.0]];
+    assert_eq!(self_intersection(&bow), Some((0, 2)));
+    let text =
+        r#"{ "procedure": "centroid", "title": "t", "polygon_m": [[0,0],[2,2],[2,0],[0,2]] }"#;
+    let e = AnyScene::from_json(text, "c.json").unwrap_err().to_string();
+    assert!(
+        e.contains("polygon_m") && e.contains("crosses itself"),
+        "{e}"
+    );
+    let mut b = Board::new(300.0, true);
+    let d = CentroidDrawing {
+        length_scale: 25.0,
+        area_scale: 0.1,
+        fan_from: 0,
+    };
+    assert!(construct_centroid(&mut b, &bow, &d).is_err());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(96))]
+    /// Star-shaped random polygons (simple by construction): the construction finds the
+    /// shoelace centroid from any fan vertex.
+    #[test]
+    fn random_star_polygons(
+        radii in proptest::collection::vec(0.3f64..3.0, 3..14),
+        cx in -2.0f64..2.0, cy in -2.0f64..2.0, fan in 0usize..14,
+    ) {
+        let n = radii.len();
+        let pts: Vec<[f64; 2]> = radii
+            .iter()
+            .enumerate()
+            .map(|(i, r)| {
+                let a = std::f64::consts::TAU * i as f64 / n as f64;
+                [cx + r * a.cos(), cy + r * a.sin()]
+            })
+            .collect();
+        prop_assume!(self_intersection(&pts).is_none());
+        let mut b = Board::new(300.0, true);
+        let d = CentroidDrawing { length_scale: 25.0, area_scale: 0.05, fan_from: fan % n };
+        construct_centroid(&mut b, &pts, &d).unwrap();
+        for c in b.steps().iter().flat_map(|s| &s.checks) {
+            prop_assert!(c.passed, "{}: {} vs {} ({:e} > {:e})", c.quantity, c.constructed, c.closed_form, c.error, c.tolerance);
+        }
+    }
+}
