@@ -13,6 +13,7 @@ fn drawing(h: f64) -> BeamDrawing {
         force_scale: 40.0,
         pole_distance: h,
         parabola_divisions: 8,
+        origin: [0.0, 0.0],
     }
 }
 
@@ -312,4 +313,33 @@ proptest! {
             - rb * span;
         prop_assert!(moment_about_a.abs() <= 1e-9 * scale * len);
     }
+}
+
+#[test]
+fn a_beam_drawn_elsewhere_on_the_sheet_gives_the_same_results() {
+    let beam = Beam {
+        supports: [0.0, 6.0],
+        ends: [-1.0, 7.0],
+        point_loads: vec![
+            PointLoad { x: -1.0, p: 300.0 },
+            PointLoad { x: 2.5, p: 900.0 },
+        ],
+        uniform_loads: vec![UniformLoad {
+            from: 3.0,
+            to: 6.0,
+            q: 250.0,
+        }],
+    };
+    let (_, here) = run(&beam, 900.0);
+    let mut d = drawing(900.0);
+    d.origin = [37.5, -212.25];
+    let mut b = Board::new(500.0, true);
+    let there = construct_beam(&mut b, &beam, &d, &ALL).unwrap();
+    all_pass(&b);
+    assert!((here.reactions.0 - there.reactions.0).abs() < 1e-9);
+    assert_eq!(here.sections.len(), there.sections.len());
+    for (a, c) in here.sections.iter().zip(&there.sections) {
+        assert!((a.moment - c.moment).abs() < 1e-8 && (a.x - c.x).abs() < 1e-9);
+    }
+    assert_eq!(here.zero_moments.len(), there.zero_moments.len());
 }

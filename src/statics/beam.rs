@@ -348,6 +348,9 @@ pub struct BeamDrawing {
     pub pole_distance: f64,
     /// Equal parts each tangent of a uniform load's parabola is divided into (≥ 2).
     pub parabola_divisions: usize,
+    /// Where x = 0 of the beam lies on the sheet (mm), so that several beams (the two planes
+    /// of a shaft) can share one sheet.
+    pub origin: [f64; 2],
 }
 
 /// What to construct beyond the reactions (which everything needs).
@@ -413,7 +416,7 @@ struct Force {
 /// let beam = Beam { supports: [0.0, 6.0], ends: [0.0, 6.0],
 ///     point_loads: vec![PointLoad { x: 2.0, p: 600.0 }], uniform_loads: vec![] };
 /// let drawing = BeamDrawing { length_scale: 50.0, force_scale: 20.0, pole_distance: 500.0,
-///     parabola_divisions: 8 };
+///     parabola_divisions: 8, origin: [0.0, 0.0] };
 /// let mut board = Board::new(300.0, true);
 /// let r = construct_beam(&mut board, &beam, &drawing,
 ///     &BeamRequest { moment_area: true, shear_diagram: true }).unwrap();
@@ -433,7 +436,9 @@ pub fn construct_beam(
     let nloads = beam.point_loads.len() + beam.uniform_loads.len() * (dr.parabola_divisions + 4);
     b.reserve(64 + 40 * nloads, 64 + 60 * nloads);
     let k = 1000.0 / dr.length_scale;
-    let sx = |x: f64| x * k;
+    let [ox, oy] = dr.origin;
+    let sx = |x: f64| x * k + ox;
+    let sy = |y: f64| y + oy;
     let fs = dr.force_scale;
     let h_mm = dr.pole_distance / fs;
     let down = Vector::new(0.0, -1.0);
@@ -487,7 +492,7 @@ pub fn construct_beam(
 
     // --- Position plan ----------------------------------------------------------------
     let left = b.point(
-        Point::new(sx(beam.ends[0]), 0.0),
+        Point::new(sx(beam.ends[0]), sy(0.0)),
         Label::NONE,
         Role::Given,
         N_BEAM_START,
@@ -500,7 +505,7 @@ pub fn construct_beam(
         N_BEAM_AXIS,
     )?;
     let right = b.point(
-        Point::new(sx(beam.ends[1]), 0.0),
+        Point::new(sx(beam.ends[1]), sy(0.0)),
         Label::NONE,
         Role::Given,
         N_BEAM_END,
@@ -511,19 +516,19 @@ pub fn construct_beam(
     for (i, &x) in beam.supports.iter().enumerate() {
         let name = if i == 0 { "A" } else { "B" };
         let p = b.point(
-            Point::new(sx(x), 0.0),
+            Point::new(sx(x), sy(0.0)),
             Label::plain(name),
             Role::Given,
             N_SUPPORT,
         );
         let l = b.point(
-            Point::new(sx(x) - SUPPORT_MM, -1.5),
+            Point::new(sx(x) - SUPPORT_MM, sy(-1.5)),
             Label::NONE,
             Role::Given,
             N_SUPPORT_SYMBOL,
         );
         let r = b.point(
-            Point::new(sx(x) + SUPPORT_MM, -1.5),
+            Point::new(sx(x) + SUPPORT_MM, sy(-1.5)),
             Label::NONE,
             Role::Given,
             N_SUPPORT_SYMBOL,
@@ -542,7 +547,7 @@ pub fn construct_beam(
     let mut end_verticals: Vec<(H<Line>, H<Line>)> = Vec::new();
     for (j, f) in forces.iter().enumerate() {
         let at = b.point(
-            Point::new(sx(f.x), 0.0),
+            Point::new(sx(f.x), sy(0.0)),
             Label::quiet("L", j as u32 + 1),
             Role::Given,
             N_LOAD,
@@ -550,7 +555,7 @@ pub fn construct_beam(
         match f.kind {
             Kind::Point(i) => {
                 let tail = b.point(
-                    Point::new(sx(f.x), ARROW_MM * f.p.signum()),
+                    Point::new(sx(f.x), sy(ARROW_MM * f.p.signum())),
                     Label::indexed("P", i as u32 + 1),
                     Role::Given,
                     N_LOAD_ARROW,
@@ -561,10 +566,10 @@ pub fn construct_beam(
                 let u = beam.uniform_loads[i];
                 let hgt = 0.5 * ARROW_MM;
                 let corners = [
-                    Point::new(sx(u.from), 0.0),
-                    Point::new(sx(u.from), hgt),
-                    Point::new(sx(u.to), hgt),
-                    Point::new(sx(u.to), 0.0),
+                    Point::new(sx(u.from), sy(0.0)),
+                    Point::new(sx(u.from), sy(hgt)),
+                    Point::new(sx(u.to), sy(hgt)),
+                    Point::new(sx(u.to), sy(0.0)),
                 ];
                 let hs: Vec<H<Point>> = corners
                     .iter()
@@ -583,7 +588,7 @@ pub fn construct_beam(
                     N_UNIFORM,
                 );
                 let tail = b.point(
-                    Point::new(sx(f.x), ARROW_MM * 1.4),
+                    Point::new(sx(f.x), sy(ARROW_MM * 1.4)),
                     Label::indexed("Q", i as u32 + 1),
                     Role::Given,
                     N_UNIFORM_RESULTANT,
@@ -606,7 +611,7 @@ pub fn construct_beam(
     // --- Force plan -------------------------------------------------------------------
     let total_mm = forces.iter().map(|f| f.p.abs()).sum::<f64>() / fs;
     let x_fp = sx(beam.ends[1]) + GAP_MM;
-    let top = 0.5 * total_mm;
+    let top = sy(0.5 * total_mm);
     let p0 = b.point(
         Point::new(x_fp, top),
         Label::plain("0"),
@@ -647,7 +652,7 @@ pub fn construct_beam(
         .map_or(beam.supports[0], |f| f.x)
         .min(beam.supports[0]);
     let start = b.point(
-        Point::new(sx(x_first), y_f),
+        Point::new(sx(x_first), sy(y_f)),
         Label::plain("I"),
         Role::Given,
         N_START,
@@ -887,7 +892,7 @@ pub fn construct_beam(
             if let crate::protocol::Cut::Point(p, _) =
                 b.meet(&strings[kstr], &closing, Label::NONE, N_INFLECTION)
             {
-                let x = p.g.x / k;
+                let x = (p.g.x - ox) / k;
                 let eps = 1e-9 * span;
                 if x > lo + eps && x < hi - eps {
                     let xm = b.measure(
@@ -932,7 +937,7 @@ pub fn construct_beam(
             .chain([&start, &ia, &ib])
             .chain(pts.iter())
             .map(|p| p.g.y)
-            .fold(y_f, f64::min);
+            .fold(sy(y_f), f64::min);
         let v_max = ra.abs().max(rb.abs()).max(total.abs()) / fs;
         let y_s = lowest - GAP_MM - v_max;
         let base0 = b.point(
@@ -996,7 +1001,7 @@ pub fn construct_beam(
         let mut diagram = Vec::new();
         let mut values: Vec<(f64, f64, f64)> = Vec::new();
         for (e, &x) in events.iter().enumerate() {
-            let on_beam = b_point(b, sx(x), 0.0);
+            let on_beam = b_point(b, sx(x), sy(0.0));
             let foot_v = b.line_dir(
                 &on_beam,
                 down,
