@@ -23,6 +23,7 @@ mod centroid;
 mod defaults;
 mod error;
 mod force_system;
+mod shaft;
 mod types;
 
 pub use beam::{
@@ -34,6 +35,7 @@ pub use error::SceneError;
 pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,
 };
+pub use shaft::{ShaftProblem, ShaftScene, TorqueSpec};
 pub use types::*;
 
 use crate::crank::{self, Angles, CrankDrive, CrankResults, Drawing, PistonForce, Request};
@@ -430,7 +432,8 @@ pub fn schema_json() -> String {
 
 /// The scene format as a whole: a slider-crank scene (`"procedure": "slider_crank"`, the
 /// default), a beam scene (`"procedure": "beam"`), a force system
-/// (`"procedure": "force_system"`) or a centroid (`"procedure": "centroid"`).
+/// (`"procedure": "force_system"`), a centroid (`"procedure": "centroid"`) or a shaft
+/// (`"procedure": "shaft"`).
 #[derive(schemars::JsonSchema)]
 #[serde(untagged)]
 #[allow(dead_code)]
@@ -443,6 +446,8 @@ enum AnySceneSchema {
     ForceSystem(ForceSystemScene),
     /// A centroid scene.
     Centroid(CentroidScene),
+    /// A shaft scene.
+    Shaft(ShaftScene),
 }
 
 /// A scene of any procedure, validated.
@@ -456,6 +461,8 @@ pub enum AnyScene {
     ForceSystem(ForceSystemScene),
     /// Centroid of a polygon (LH I C.3).
     Centroid(CentroidScene),
+    /// Shaft with loads in two planes and a torque (LH I C.7-8).
+    Shaft(ShaftScene),
 }
 
 /// A constructible problem of any procedure.
@@ -469,6 +476,8 @@ pub enum AnyProblem {
     ForceSystem(ForceSystemProblem),
     /// Centroid of a polygon.
     Centroid(CentroidProblem),
+    /// Shaft.
+    Shaft(ShaftProblem),
 }
 
 #[derive(serde::Deserialize)]
@@ -504,6 +513,13 @@ impl AnyScene {
                 scene.validate(origin)?;
                 Ok(AnyScene::Centroid(scene))
             }
+            Some("shaft") => {
+                let de = &mut serde_json::Deserializer::from_str(text);
+                let scene: ShaftScene =
+                    serde_path_to_error::deserialize(de).map_err(|e| json_error(e, origin))?;
+                scene.validate(origin)?;
+                Ok(AnyScene::Shaft(scene))
+            }
             _ => Scene::from_json(text, origin).map(AnyScene::SliderCrank),
         }
     }
@@ -524,6 +540,7 @@ impl AnyScene {
             AnyScene::Beam(s) => AnyProblem::Beam(s.problem()),
             AnyScene::ForceSystem(s) => AnyProblem::ForceSystem(s.problem()),
             AnyScene::Centroid(s) => AnyProblem::Centroid(s.problem()),
+            AnyScene::Shaft(s) => AnyProblem::Shaft(s.problem()),
         }
     }
 }
@@ -536,6 +553,7 @@ impl AnyProblem {
             AnyProblem::Beam(p) => p.construct(recording).map(|(b, _)| b),
             AnyProblem::ForceSystem(p) => p.construct(recording).map(|(b, _)| b),
             AnyProblem::Centroid(p) => p.construct(recording).map(|(b, _)| b),
+            AnyProblem::Shaft(p) => p.construct(recording).map(|(b, _)| b),
         }
     }
 
@@ -546,6 +564,7 @@ impl AnyProblem {
             AnyProblem::Beam(p) => p.figure_meta(),
             AnyProblem::ForceSystem(p) => p.figure_meta(),
             AnyProblem::Centroid(p) => p.figure_meta(),
+            AnyProblem::Shaft(p) => p.figure_meta(),
         }
     }
 }

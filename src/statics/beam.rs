@@ -431,6 +431,36 @@ pub fn construct_beam(
     dr: &BeamDrawing,
     req: &BeamRequest,
 ) -> Result<BeamResults, ConstructionError> {
+    construct_beam_at(b, beam, dr, req, &[])
+}
+
+/// [`construct_beam`], with the moment also measured at the given sections (m): a vertical
+/// through the section cuts the polygon and the closing line (LH Abb. 24, section C). Sections
+/// at a load or support are there already; sections inside a uniform load are refused (its
+/// moment line is the parabola, read off at its division points).
+///
+/// # Errors
+/// As [`construct_beam`], and [`ConstructionError::Unsupported`] for a section off the beam or
+/// inside a uniform load.
+pub fn construct_beam_at(
+    b: &mut Board,
+    beam: &Beam,
+    dr: &BeamDrawing,
+    req: &BeamRequest,
+    extra_sections: &[f64],
+) -> Result<BeamResults, ConstructionError> {
+    for &x in extra_sections {
+        if !(x >= beam.ends[0] && x <= beam.ends[1]) {
+            return Err(ConstructionError::Unsupported(format!(
+                "section x = {x} m lies off the beam"
+            )));
+        }
+        if beam.uniform_loads.iter().any(|u| x > u.from && x < u.to) {
+            return Err(ConstructionError::Unsupported(format!(
+                "section x = {x} m lies inside a uniform load: its moments are read off the parabola"
+            )));
+        }
+    }
     check_layout(beam)?;
     // About 40 steps and 60 objects per load when everything is drawn.
     let nloads = beam.point_loads.len() + beam.uniform_loads.len() * (dr.parabola_divisions + 4);
@@ -866,6 +896,34 @@ pub fn construct_beam(
                     parabola_data.push((j, t1, corners[j], t2));
                 }
             }
+        }
+        // Sections asked for besides the loads and supports.
+        let tol_x = 1e-12 * span.max(1.0);
+        for &x in extra_sections {
+            let known = beam.supports.iter().any(|s| (s - x).abs() <= tol_x)
+                || forces
+                    .iter()
+                    .any(|f| matches!(f.kind, Kind::Point(_)) && (f.x - x).abs() <= tol_x)
+                || sections.iter().any(|s| (s.x - x).abs() <= tol_x);
+            if known {
+                continue;
+            }
+            let on = b.point(
+                Point::new(sx(x), sy(0.0)),
+                Label::quiet("x", 0),
+                Role::Given,
+                N_SECTION_VERTICAL,
+            );
+            let vertical =
+                b.line_dir(&on, down, Label::NONE, Role::Auxiliary, N_SECTION_VERTICAL)?;
+            let poly = b.meet_point(&strings[string_at(x)], &vertical, Label::NONE, N_POLY_AT)?;
+            let m = moment_at(b, x, &poly, &vertical)?;
+            sections.push(SectionRow {
+                x,
+                what: "x".into(),
+                moment: m.g,
+            });
+            handles.push(m);
         }
         // Zero moments between the supports: a string of the polygon cuts the closing line
         // inside its own stretch.

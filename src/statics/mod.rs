@@ -11,8 +11,11 @@ pub mod beam;
 pub mod centroid;
 pub mod closed_form;
 pub mod funicular;
+pub mod shaft;
 
-pub use beam::{construct_beam, BeamDrawing, BeamRequest, BeamResults, SectionRow};
+pub use beam::{
+    construct_beam, construct_beam_at, BeamDrawing, BeamRequest, BeamResults, SectionRow,
+};
 
 use serde::Serialize;
 

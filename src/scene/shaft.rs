@@ -1,0 +1,257 @@
+//! The shaft scene: loads in two planes and a torque (LH C.7-8, Abb. 26-29).
+
+use super::beam::BeamDrawingSpec;
+use super::defaults::nice_at_least;
+use super::SceneError;
+use crate::protocol::{Board, ConstructionError};
+use crate::statics::shaft::{self, Shaft, ShaftRow, Torque};
+use crate::statics::{BeamDrawing, PointLoad};
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+/// A shaft scene: `"procedure": "shaft"`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ShaftScene {
+    /// Must be `"shaft"`.
+    pub procedure: String,
+    /// Title written on the figure.
+    pub title: String,
+    /// Book reference written under the title.
+    #[serde(default)]
+    pub source: Option<String>,
+    /// Free notes (not drawn).
+    #[serde(default)]
+    pub notes: Option<String>,
+    /// Supports and ends, as for a beam.
+    pub shaft: super::BeamSpec,
+    /// Loads in the first plane.
+    #[serde(default)]
+    pub plane_1_loads: Vec<super::PointLoadSpec>,
+    /// Loads in the second plane.
+    #[serde(default)]
+    pub plane_2_loads: Vec<super::PointLoadSpec>,
+    /// Angle between the two load planes (degrees, 0 < α ≤ 180), default 90.
+    #[serde(default)]
+    pub angle_between_planes_deg: Option<f64>,
+    /// A torque acting over a stretch of the shaft.
+    #[serde(default)]
+    pub torque: Option<TorqueSpec>,
+    /// Bach's ratio α0 weighting the torque in the ideal moment (default 1).
+    #[serde(default)]
+    pub alpha0: Option<f64>,
+    /// Scales and the pole distance, as for a beam.
+    #[serde(default)]
+    pub drawing: Option<BeamDrawingSpec>,
+}
+
+/// A torque over a stretch of the shaft.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TorqueSpec {
+    /// Start of the stretch (m).
+    pub from_m: f64,
+    /// End of the stretch (m).
+    pub to_m: f64,
+    /// Torque M_d (kg·m).
+    pub kg_m: f64,
+}
+
+/// A validated shaft scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShaftProblem {
+    /// Title.
+    pub title: String,
+    /// Source.
+    pub source: String,
+    /// The shaft.
+    pub shaft: Shaft,
+    /// Scales.
+    pub drawing: BeamDrawing,
+}
+
+impl ShaftScene {
+    pub(super) fn validate(&self, origin: &str) -> Result<(), SceneError> {
+        let bad = |field: &str, message: String| SceneError::Invalid {
+            origin: origin.to_string(),
+            field: field.to_string(),
+            message,
+        };
+        if self.procedure != "shaft" {
+            return Err(bad(
+                "procedure",
+                format!("unknown procedure `{}`", self.procedure),
+            ));
+        }
+        let [a, b] = self.shaft.supports_m;
+        if !(a.is_finite() && b.is_finite()) || a >= b {
+            return Err(bad(
+                "shaft.supports_m",
+                format!("support A ({a} m) must lie left of support B ({b} m)"),
+            ));
+        }
+        let [e0, e1] = self.shaft.ends_m.unwrap_or([a, b]);
+        if !(e0 <= a && e1 >= b) {
+            return Err(bad(
+                "shaft.ends_m",
+                "the shaft must reach over both supports".into(),
+            ));
+        }
+        for (plane, loads) in [
+            ("plane_1_loads", &self.plane_1_loads),
+            ("plane_2_loads", &self.plane_2_loads),
+        ] {
+            if loads.len() > super::MAX_LOADS {
+                return Err(bad(plane, format!("more than {} loads", super::MAX_LOADS)));
+            }
+            for (i, l) in loads.iter().enumerate() {
+                if !(l.x_m.is_finite() && l.kg.is_finite()) {
+                    return Err(bad(
+                        &format!("{plane}[{i}]"),
+                        "must be finite numbers".into(),
+                    ));
+                }
+                if l.x_m < e0 || l.x_m > e1 {
+                    return Err(bad(&format!("{plane}[{i}].x_m"), format!("x = {} m lies off the shaft [{e0}, {e1}] m: declare the overhang with shaft.ends_m", l.x_m)));
+                }
+            }
+        }
+        if let Some(al) = self.angle_between_planes_deg {
+            if !(al.is_finite() && al > 0.0 && al <= 180.0) {
+                return Err(bad(
+                    "angle_between_planes_deg",
+                    format!("{al}: give 0 < α ≤ 180"),
+                ));
+            }
+        }
+        if let Some(a0) = self.alpha0 {
+            if !(a0.is_finite() && a0 > 0.0) {
+                return Err(bad("alpha0", format!("must be positive, got {a0}")));
+            }
+        }
+        if let Some(t) = &self.torque {
+            if !(t.from_m.is_finite() && t.to_m.is_finite() && t.kg_m.is_finite())
+                || t.from_m >= t.to_m
+            {
+                return Err(bad("torque", "give finite from_m < to_m and kg_m".into()));
+            }
+            if t.from_m < e0 || t.to_m > e1 {
+                return Err(bad(
+                    "torque",
+                    "the twisted stretch must lie on the shaft".into(),
+                ));
+            }
+        }
+        if let Some(d) = &self.drawing {
+            for (name, v) in [
+                ("drawing.length_scale", d.length_scale),
+                ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
+                ("drawing.pole_distance_kg", d.pole_distance_kg),
+            ] {
+                if let Some(v) = v {
+                    if !(v.is_finite() && v > 0.0) {
+                        return Err(bad(name, format!("must be positive, got {v}")));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The problem the scene describes.
+    pub fn problem(&self) -> ShaftProblem {
+        let [a, b] = self.shaft.supports_m;
+        let ends = self.shaft.ends_m.unwrap_or([a, b]);
+        let loads = |v: &[super::PointLoadSpec]| {
+            v.iter()
+                .map(|l| PointLoad { x: l.x_m, p: l.kg })
+                .collect::<Vec<_>>()
+        };
+        let shaft = Shaft {
+            supports: [a, b],
+            ends,
+            plane_1: loads(&self.plane_1_loads),
+            plane_2: loads(&self.plane_2_loads),
+            angle_deg: self.angle_between_planes_deg.unwrap_or(90.0),
+            torque: self.torque.map(|t| Torque {
+                from: t.from_m,
+                to: t.to_m,
+                md: t.kg_m,
+            }),
+            alpha0: self.alpha0.unwrap_or(1.0),
+        };
+        let total = shaft
+            .plane_1
+            .iter()
+            .chain(&shaft.plane_2)
+            .map(|l| l.p.abs())
+            .fold(0.0, f64::max);
+        let d = self.drawing.unwrap_or(BeamDrawingSpec {
+            length_scale: None,
+            force_scale_kg_per_mm: None,
+            pole_distance_kg: None,
+            parabola_divisions: None,
+        });
+        ShaftProblem {
+            title: self.title.clone(),
+            source: self.source.clone().unwrap_or_default(),
+            drawing: BeamDrawing {
+                length_scale: d
+                    .length_scale
+                    .unwrap_or_else(|| nice_at_least((ends[1] - ends[0]) * 1000.0 / 160.0)),
+                force_scale: d
+                    .force_scale_kg_per_mm
+                    .unwrap_or_else(|| nice_at_least(total / 40.0)),
+                pole_distance: d.pole_distance_kg.unwrap_or_else(|| nice_at_least(total)),
+                parabola_divisions: 8,
+                origin: [0.0, 0.0],
+            },
+            shaft,
+        }
+    }
+}
+
+impl ShaftProblem {
+    /// Constructs the shaft on a fresh board.
+    pub fn construct(&self, recording: bool) -> Result<(Board, Vec<ShaftRow>), ConstructionError> {
+        let mut board = Board::new(500.0, recording);
+        let r = shaft::construct_shaft(&mut board, &self.shaft, &self.drawing)?;
+        Ok((board, r))
+    }
+
+    /// Title, source and scale bars.
+    pub fn figure_meta(&self) -> crate::render::FigureMeta {
+        use crate::fmt::num;
+        use crate::render::ScaleBar;
+        let d = &self.drawing;
+        let ms = d.length_scale / 1000.0 * d.pole_distance;
+        crate::render::FigureMeta {
+            title: self.title.clone(),
+            source: format!(
+                "{}{}planes at {}°, α0 = {}, pole distance H = {} kg",
+                self.source,
+                if self.source.is_empty() { "" } else { " — " },
+                num(self.shaft.angle_deg, 3),
+                num(self.shaft.alpha0, 3),
+                num(d.pole_distance, 6)
+            ),
+            scales: vec![
+                ScaleBar {
+                    name: format!("Längenmaßstab 1 : {}", num(d.length_scale, 6)),
+                    per_mm: d.length_scale / 1000.0,
+                    unit: "m".into(),
+                },
+                ScaleBar {
+                    name: format!("Kräftemaßstab 1 mm = {} kg", num(d.force_scale, 6)),
+                    per_mm: d.force_scale,
+                    unit: "kg".into(),
+                },
+                ScaleBar {
+                    name: format!("Momentenmaßstab 1 mm = {} kg·m", num(ms, 6)),
+                    per_mm: ms,
+                    unit: "kg·m".into(),
+                },
+            ],
+        }
+    }
+}

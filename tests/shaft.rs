@@ -1,0 +1,174 @@
+//! Shafts (LH C.7-8): moments in two planes and the ideal moment against Gl. 13.
+
+use graphostatik::protocol::Board;
+use graphostatik::scene::AnyScene;
+use graphostatik::statics::shaft::*;
+use graphostatik::statics::{BeamDrawing, PointLoad};
+use proptest::prelude::*;
+
+const D: BeamDrawing = BeamDrawing {
+    length_scale: 10.0,
+    force_scale: 20.0,
+    pole_distance: 500.0,
+    parabola_divisions: 8,
+    origin: [0.0, 0.0],
+};
+
+fn run(s: &Shaft) -> Vec<ShaftRow> {
+    let mut b = Board::new(500.0, true);
+    let rows = construct_shaft(&mut b, s, &D).unwrap();
+    for c in b.steps().iter().flat_map(|s| &s.checks) {
+        assert!(
+            c.passed,
+            "{}: {} vs {} ({:e} > {:e})",
+            c.quantity, c.constructed, c.closed_form, c.error, c.tolerance
+        );
+    }
+    rows
+}
+
+fn shaft(angle: f64, alpha0: f64, torque: Option<Torque>) -> Shaft {
+    Shaft {
+        supports: [0.0, 1.5],
+        ends: [0.0, 1.5],
+        plane_1: vec![PointLoad { x: 0.5, p: 600.0 }],
+        plane_2: vec![PointLoad { x: 1.0, p: 400.0 }],
+        angle_deg: angle,
+        torque,
+        alpha0,
+    }
+}
+
+#[test]
+fn planes_at_any_angle_combine_like_forces() {
+    for angle in [30.0, 60.0, 90.0, 120.0, 179.0, 180.0] {
+        let rows = run(&shaft(angle, 1.0, None));
+        for r in &rows {
+            assert!(
+                (r.mb - combined(r.m1, r.m2, angle)).abs() < 1e-9,
+                "α = {angle}, x = {}",
+                r.x
+            );
+            assert_eq!(r.mi, r.mb);
+        }
+    }
+    // Perpendicular planes at x = 0.5: M1 = 600·0.5·1.0/1.5 = 200, M2 = 400·1.0·0.5/1.5·0.5/1.0.
+    let rows = run(&shaft(90.0, 1.0, None));
+    let r = rows.iter().find(|r| (r.x - 0.5).abs() < 1e-12).unwrap();
+    assert!((r.m1 - 200.0).abs() < 1e-9);
+    assert!((r.m2 - 400.0 * 0.5 / 1.5 * 0.5).abs() < 1e-9);
+}
+
+#[test]
+fn opposite_planes_cancel_and_give_a_zero_ordinate_without_nan() {
+    // Planes at 180°: equal moments cancel exactly where they are equal.
+    let s = Shaft {
+        supports: [0.0, 1.0],
+        ends: [0.0, 1.0],
+        plane_1: vec![PointLoad { x: 0.5, p: 300.0 }],
+        plane_2: vec![PointLoad { x: 0.5, p: 300.0 }],
+        angle_deg: 180.0,
+        torque: None,
+        alpha0: 1.0,
+    };
+    for r in run(&s) {
+        assert!(r.mb.abs() < 1e-9 && r.mb.is_finite());
+    }
+}
+
+#[test]
+fn ideal_moment_with_alpha0_1_and_1_5() {
+    let t = Some(Torque {
+        from: 0.0,
+        to: 0.5,
+        md: 150.0,
+    });
+    for alpha0 in [1.0, 1.5] {
+        let rows = run(&shaft(90.0, alpha0, t));
+        let at = rows.iter().find(|r| (r.x - 0.5).abs() < 1e-12).unwrap();
+        assert!((at.mi - ideal(at.mb, 150.0, alpha0)).abs() < 1e-9);
+        // At the support the bending moment vanishes: M_i = 5/8 α0 M_d.
+        let a = rows.iter().find(|r| r.x == 0.0).unwrap();
+        assert!((a.mi - 0.625 * alpha0 * 150.0).abs() < 1e-9);
+        // Beyond the twisted stretch the ideal moment is the bending moment.
+        let b = rows.iter().find(|r| (r.x - 1.0).abs() < 1e-12).unwrap();
+        assert_eq!(b.mi, b.mb);
+    }
+}
+
+#[test]
+fn bundled_transmission_shaft_scenes() {
+    for (file, alpha0) in [
+        ("lh_abb28_transmission_shaft_alpha0_1.json", 1.0),
+        ("lh_abb28_transmission_shaft_alpha0_1_5.json", 1.5),
+    ] {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("scenes")
+            .join(file);
+        let AnyScene::Shaft(scene) = AnyScene::load(&path).unwrap() else {
+            panic!("not a shaft")
+        };
+        let p = scene.problem();
+        let (_, rows) = p.construct(true).unwrap();
+        let at = rows.iter().find(|r| (r.x - 0.45).abs() < 1e-12).unwrap();
+        // P = 500 kg at 0.45 m of 1.2 m: M_b = 500·0.45·0.75/1.2 = 140.625 kg·m; M_d = P·r = 125.
+        assert!((at.mb - 140.625).abs() < 1e-9);
+        assert!((at.mi - ideal(140.625, 125.0, alpha0)).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn bad_shaft_scenes_are_named() {
+    let good = r#"{ "procedure": "shaft", "title": "t", "shaft": { "supports_m": [0, 1] },
+        "plane_1_loads": [ { "x_m": 0.5, "kg": 100 } ], "torque": { "from_m": 0, "to_m": 0.5, "kg_m": 10 } }"#;
+    AnyScene::from_json(good, "s.json").unwrap();
+    for (bad, field) in [
+        (good.replace("[0, 1]", "[1, 1]"), "shaft.supports_m"),
+        (
+            good.replace("\"x_m\": 0.5", "\"x_m\": 2"),
+            "plane_1_loads[0].x_m",
+        ),
+        (good.replace("\"to_m\": 0.5", "\"to_m\": 0"), "torque"),
+        (
+            good.replace("\"title\": \"t\",", "\"title\": \"t\", \"alpha0\": 0,"),
+            "alpha0",
+        ),
+        (
+            good.replace(
+                "\"title\": \"t\",",
+                "\"title\": \"t\", \"angle_between_planes_deg\": 200,",
+            ),
+            "angle_between_planes_deg",
+        ),
+    ] {
+        let e = AnyScene::from_json(&bad, "s.json").unwrap_err().to_string();
+        assert!(e.contains(field), "{e}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+    #[test]
+    fn random_shafts(
+        l1 in proptest::collection::vec((0.0f64..1.0, -800.0f64..800.0), 0..5),
+        l2 in proptest::collection::vec((0.0f64..1.0, -800.0f64..800.0), 0..5),
+        angle in 1.0f64..180.0,
+        alpha0 in 0.5f64..2.0,
+        t in proptest::option::of((0.0f64..0.5, 0.5f64..1.0, -300.0f64..300.0)),
+    ) {
+        let s = Shaft {
+            supports: [0.0, 1.0],
+            ends: [0.0, 1.0],
+            plane_1: l1.iter().map(|&(x, p)| PointLoad { x, p }).collect(),
+            plane_2: l2.iter().map(|&(x, p)| PointLoad { x, p }).collect(),
+            angle_deg: angle,
+            torque: t.map(|(a, b, md)| Torque { from: a, to: b, md }),
+            alpha0,
+        };
+        let mut b = Board::new(500.0, true);
+        construct_shaft(&mut b, &s, &D).unwrap();
+        for c in b.steps().iter().flat_map(|s| &s.checks) {
+            prop_assert!(c.passed, "{}: {} vs {} ({:e} > {:e})", c.quantity, c.constructed, c.closed_form, c.error, c.tolerance);
+        }
+    }
+}
