@@ -267,7 +267,12 @@ pub fn construct_shaft(
     // The triangles of Abb. 27 rise by up to |y1| + |y2| above their base points.
     let rise = [&r1, &r2]
         .iter()
-        .map(|r| r.sections.iter().map(|s| s.moment.abs()).fold(0.0, f64::max))
+        .map(|r| {
+            r.sections
+                .iter()
+                .map(|s| s.moment.abs())
+                .fold(0.0, f64::max)
+        })
         .sum::<f64>()
         / ms;
     let y0 = y_next - rise;
