@@ -343,3 +343,54 @@ fn a_beam_drawn_elsewhere_on_the_sheet_gives_the_same_results() {
     }
     assert_eq!(here.zero_moments.len(), there.zero_moments.len());
 }
+
+#[test]
+fn indirect_loading_of_lh_abb_35() {
+    let beam = Beam {
+        supports: [0.0, 6.0],
+        ends: [0.0, 6.0],
+        point_loads: vec![],
+        uniform_loads: vec![UniformLoad {
+            from: 0.0,
+            to: 6.0,
+            q: 500.0,
+        }],
+    };
+    let panels: Vec<f64> = (0..=6).map(|i| i as f64).collect();
+    let loads = panel_loads(&beam, &panels).unwrap();
+    let p: Vec<f64> = loads.iter().map(|l| l.p).collect();
+    assert_eq!(p, [250.0, 500.0, 500.0, 500.0, 500.0, 500.0, 250.0]);
+    let mut b = Board::new(500.0, true);
+    let r = construct_beam_indirect(&mut b, &beam, &panels, &drawing(1500.0), &ALL).unwrap();
+    all_pass(&b);
+    assert!((r.max_moment.unwrap().0 - 2250.0).abs() < 1e-9);
+    // A load reaching past the last stringer is refused, not cut off.
+    assert!(panel_loads(&beam, &[0.0, 5.0]).is_err());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+    /// Random loads on random stringers: at every cross beam the indirect moment equals the
+    /// moment of the direct load.
+    #[test]
+    fn stringers_touch_the_direct_moment_area_at_the_cross_beams(
+        gaps in proptest::collection::vec(0.2f64..2.0, 1..8),
+        loads in proptest::collection::vec((0.0f64..1.0, -300.0f64..900.0), 0..6),
+        q in proptest::option::of((0.0f64..0.5, 0.5f64..1.0, 10.0f64..600.0)),
+    ) {
+        let mut panels = vec![0.0];
+        for g in &gaps { panels.push(panels.last().unwrap() + g); }
+        let l = *panels.last().unwrap();
+        let beam = Beam {
+            supports: [0.0, l],
+            ends: [0.0, l],
+            point_loads: loads.iter().map(|&(f, p)| PointLoad { x: f * l, p }).collect(),
+            uniform_loads: q.map(|(a, b, q)| UniformLoad { from: a * l, to: b * l, q }).into_iter().collect(),
+        };
+        let mut b = Board::new(500.0, true);
+        construct_beam_indirect(&mut b, &beam, &panels, &drawing(800.0), &ALL).unwrap();
+        for c in b.steps().iter().flat_map(|s| &s.checks) {
+            prop_assert!(c.passed, "{}: {} vs {} ({:e} > {:e})", c.quantity, c.constructed, c.closed_form, c.error, c.tolerance);
+        }
+    }
+}

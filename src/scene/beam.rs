@@ -29,6 +29,10 @@ pub struct BeamScene {
     /// Uniformly distributed loads.
     #[serde(default)]
     pub uniform_loads: Vec<UniformLoadSpec>,
+    /// Panel points (m) of stringers that carry the loads to the beam (indirect loading,
+    /// LH Abb. 35); absent for loads acting on the beam directly.
+    #[serde(default)]
+    pub stringers_m: Option<Vec<f64>>,
     /// What to construct besides the reactions: `moment_area`, `shear_diagram`.
     #[serde(default)]
     pub outputs: Vec<BeamOutput>,
@@ -114,6 +118,8 @@ pub struct BeamProblem {
     pub drawing: BeamDrawing,
     /// What to construct.
     pub request: BeamRequest,
+    /// Panel points of stringers (empty: direct loading).
+    pub stringers: Vec<f64>,
 }
 
 /// Most loads a beam scene may carry: the figure stays readable, the benchmark goes further.
@@ -217,6 +223,44 @@ impl BeamScene {
                 }
             }
         }
+        if let Some(st) = &self.stringers_m {
+            if st.len() < 2 || st.len() > MAX_LOADS {
+                return Err(bad(
+                    "stringers_m",
+                    format!("{} panel points: give 2 to {MAX_LOADS}", st.len()),
+                ));
+            }
+            for (i, x) in st.iter().enumerate() {
+                finite(&format!("stringers_m[{i}]"), *x)?;
+                on_beam(&format!("stringers_m[{i}]"), *x)?;
+                if i > 0 && *x <= st[i - 1] {
+                    return Err(bad(
+                        &format!("stringers_m[{i}]"),
+                        "panel points must increase".into(),
+                    ));
+                }
+            }
+            let (first, last) = (st[0], st[st.len() - 1]);
+            for (i, l) in self.point_loads.iter().enumerate() {
+                if l.x_m < first || l.x_m > last {
+                    return Err(bad(
+                        &format!("point_loads[{i}].x_m"),
+                        format!(
+                            "x = {} m lies outside the stringers [{first}, {last}] m",
+                            l.x_m
+                        ),
+                    ));
+                }
+            }
+            for (i, u) in self.uniform_loads.iter().enumerate() {
+                if u.from_m < first || u.to_m > last {
+                    return Err(bad(
+                        &format!("uniform_loads[{i}]"),
+                        format!("the load reaches outside the stringers [{first}, {last}] m"),
+                    ));
+                }
+            }
+        }
         if let Some(d) = &self.drawing {
             for (name, v) in [
                 ("drawing.length_scale", d.length_scale),
@@ -298,6 +342,7 @@ impl BeamScene {
             beam,
             drawing,
             request,
+            stringers: self.stringers_m.clone().unwrap_or_default(),
         }
     }
 }
@@ -307,7 +352,17 @@ impl BeamProblem {
     pub fn construct(&self, recording: bool) -> Result<(Board, BeamResults), ConstructionError> {
         let span = (self.beam.ends[1] - self.beam.ends[0]) * 1000.0 / self.drawing.length_scale;
         let mut board = Board::new(span.max(1.0) * 3.0, recording);
-        let r = statics::construct_beam(&mut board, &self.beam, &self.drawing, &self.request)?;
+        let r = if self.stringers.is_empty() {
+            statics::construct_beam(&mut board, &self.beam, &self.drawing, &self.request)?
+        } else {
+            statics::construct_beam_indirect(
+                &mut board,
+                &self.beam,
+                &self.stringers,
+                &self.drawing,
+                &self.request,
+            )?
+        };
         Ok((board, r))
     }
 

@@ -14,7 +14,8 @@ pub mod funicular;
 pub mod shaft;
 
 pub use beam::{
-    construct_beam, construct_beam_at, BeamDrawing, BeamRequest, BeamResults, SectionRow,
+    construct_beam, construct_beam_at, construct_beam_indirect, panel_loads, BeamDrawing,
+    BeamRequest, BeamResults, SectionRow,
 };
 
 use serde::Serialize;

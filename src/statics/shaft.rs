@@ -242,6 +242,7 @@ pub fn construct_shaft(
                 zero_moments: vec![],
                 shear: vec![],
                 max_moment: None,
+                moment_handles: vec![],
             });
         }
         let mut d = *dr;
