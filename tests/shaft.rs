@@ -36,6 +36,7 @@ fn shaft(angle: f64, alpha0: f64, torque: Option<Torque>) -> Shaft {
         angle_deg: angle,
         torque,
         alpha0,
+        kb: None,
     }
 }
 
@@ -70,6 +71,7 @@ fn opposite_planes_cancel_and_give_a_zero_ordinate_without_nan() {
         angle_deg: 180.0,
         torque: None,
         alpha0: 1.0,
+        kb: None,
     };
     for r in run(&s) {
         assert!(r.mb.abs() < 1e-9 && r.mb.is_finite());
@@ -164,6 +166,7 @@ proptest! {
             angle_deg: angle,
             torque: t.map(|(a, b, md)| Torque { from: a, to: b, md }),
             alpha0,
+            kb: Some(1000.0),
         };
         let mut b = Board::new(500.0, true);
         construct_shaft(&mut b, &s, &D).unwrap();

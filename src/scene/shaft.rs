@@ -40,6 +40,9 @@ pub struct ShaftScene {
     /// Bach's ratio α0 weighting the torque in the ideal moment (default 1).
     #[serde(default)]
     pub alpha0: Option<f64>,
+    /// Allowed bending stress k_b (kg/cm²): each section then reports the diameter it needs.
+    #[serde(default)]
+    pub kb_kg_per_cm2: Option<f64>,
     /// Scales and the pole distance, as for a beam.
     #[serde(default)]
     pub drawing: Option<BeamDrawingSpec>,
@@ -129,6 +132,11 @@ impl ShaftScene {
                 return Err(bad("alpha0", format!("must be positive, got {a0}")));
             }
         }
+        if let Some(kb) = self.kb_kg_per_cm2 {
+            if !(kb.is_finite() && kb > 0.0) {
+                return Err(bad("kb_kg_per_cm2", format!("must be positive, got {kb}")));
+            }
+        }
         if let Some(t) = &self.torque {
             if !(t.from_m.is_finite() && t.to_m.is_finite() && t.kg_m.is_finite())
                 || t.from_m >= t.to_m
@@ -179,6 +187,7 @@ impl ShaftScene {
                 md: t.kg_m,
             }),
             alpha0: self.alpha0.unwrap_or(1.0),
+            kb: self.kb_kg_per_cm2,
         };
         let total = shaft
             .plane_1

@@ -12,6 +12,7 @@ pub mod centroid;
 pub mod closed_form;
 pub mod funicular;
 pub mod shaft;
+pub mod sizing;
 
 pub use beam::{
     construct_beam, construct_beam_at, construct_beam_indirect, panel_loads, BeamDrawing,

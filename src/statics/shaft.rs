@@ -148,6 +148,9 @@ pub struct Shaft {
     /// Bach's ratio α0 of the allowed bending and torsion stresses, which weights the torque
     /// in Gl. 13 (the issue asks for 1 and 1.5).
     pub alpha0: f64,
+    /// Allowed bending stress k_b (kg/cm²): with it, each section reports the diameter the
+    /// ideal moment needs, d = ∛(M_i / (0.1·k_b)) (LH Aufgabe 7).
+    pub kb: Option<f64>,
 }
 
 /// One section of the shaft.
@@ -165,6 +168,8 @@ pub struct ShaftRow {
     pub md: f64,
     /// Ideal moment (kg·m).
     pub mi: f64,
+    /// Diameter the ideal moment needs (mm), if k_b is given.
+    pub diameter_mm: Option<f64>,
 }
 
 /// The closed forms: M_b from M₁, M₂ at the angle α; M_i by Gl. 13.
@@ -189,7 +194,8 @@ pub fn ideal(mb: f64, md: f64, alpha0: f64) -> f64 {
 /// use graphostatik::protocol::Board;
 /// let shaft = Shaft { supports: [0.0, 1.0], ends: [0.0, 1.0],
 ///     plane_1: vec![PointLoad { x: 0.4, p: 300.0 }], plane_2: vec![PointLoad { x: 0.4, p: 400.0 }],
-///     angle_deg: 90.0, torque: Some(Torque { from: 0.0, to: 0.4, md: 100.0 }), alpha0: 1.0 };
+///     angle_deg: 90.0, torque: Some(Torque { from: 0.0, to: 0.4, md: 100.0 }), alpha0: 1.0,
+///     kb: Some(1000.0) };
 /// let d = BeamDrawing { length_scale: 10.0, force_scale: 10.0, pole_distance: 500.0,
 ///     parabola_divisions: 8, origin: [0.0, 0.0] };
 /// let mut b = Board::new(300.0, true);
@@ -197,6 +203,8 @@ pub fn ideal(mb: f64, md: f64, alpha0: f64) -> f64 {
 /// let at = rows.iter().find(|r| (r.x - 0.4).abs() < 1e-12).unwrap();
 /// // M1 = 300·0.4·0.6 = 72, M2 = 96: perpendicular planes give M_b = 120 kg·m.
 /// assert!((at.mb - 120.0).abs() < 1e-9);
+/// // d = ∛(M_i / (0.1 k_b)) with M_i in kg·cm.
+/// assert!((at.diameter_mm.unwrap() - 10.0 * (100.0 * at.mi / 100.0).cbrt()).abs() < 1e-9);
 /// assert!(b.steps().iter().flat_map(|s| &s.checks).all(|c| c.passed));
 /// ```
 pub fn construct_shaft(
@@ -389,6 +397,9 @@ pub fn construct_shaft(
         } else {
             mb
         };
+        let diameter_mm = shaft
+            .kb
+            .map(|kb| 10.0 * super::sizing::shaft_diameter_cm(100.0 * mi, kb));
         rows.push(ShaftRow {
             x,
             m1,
@@ -396,6 +407,7 @@ pub fn construct_shaft(
             mb,
             md,
             mi,
+            diameter_mm,
         });
     }
     Ok(rows)
