@@ -178,3 +178,71 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn lh_abb_21_auxiliary_forces_and_their_degenerate_case() {
+    let mut b = Board::new(300.0, true);
+    // Antiparallel, unequal: the resultant lies outside, a = l·K2/(K1 + K2) with signs.
+    let a = parallel_pair_by_auxiliary_forces(
+        &mut b,
+        f(0.0, 0.0, 0.0, -300.0),
+        f(2.0, 0.0, 0.0, 100.0),
+        200.0,
+        &D,
+    )
+    .unwrap();
+    assert!((a - 2.0 * -100.0 / (300.0 - 100.0)).abs() < 1e-9, "{a}");
+    for c in b.steps().iter().flat_map(|s| &s.checks) {
+        assert!(c.passed);
+    }
+    // Equal and opposite: a couple, the partial resultants are parallel.
+    let mut b = Board::new(300.0, true);
+    let e = parallel_pair_by_auxiliary_forces(
+        &mut b,
+        f(0.0, 0.0, 0.0, -300.0),
+        f(2.0, 0.0, 0.0, 300.0),
+        200.0,
+        &D,
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("couple"), "{e}");
+    assert!(b
+        .steps()
+        .iter()
+        .any(|s| s.outcome.as_deref().is_some_and(|o| o.contains("parallel"))));
+    // Not parallel: refused.
+    let mut b = Board::new(300.0, true);
+    assert!(parallel_pair_by_auxiliary_forces(
+        &mut b,
+        f(0.0, 0.0, 0.0, -300.0),
+        f(2.0, 0.0, 10.0, 300.0),
+        200.0,
+        &D
+    )
+    .is_err());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(96))]
+    /// Any auxiliary force gives the same resultant (the lever rule), at any inclination.
+    #[test]
+    fn any_auxiliary_force_gives_the_lever_rule(
+        k1 in 10.0f64..1000.0, k2 in 10.0f64..1000.0, l in 0.2f64..5.0,
+        aux in 5.0f64..2000.0, angle in 0.0f64..360.0,
+    ) {
+        let (s, c) = graphostatik::kernel::angle::sin_cos_deg(angle);
+        let mut b = Board::new(300.0, true);
+        let a = parallel_pair_by_auxiliary_forces(
+            &mut b,
+            f(0.0, 0.0, -s * k1, c * k1),
+            f(l * c, l * s, -s * k2, c * k2),
+            aux,
+            &D,
+        ).unwrap();
+        prop_assert!((a - l * k2 / (k1 + k2)).abs() < 1e-9 * l.max(1.0) * (1.0 + (k1 + k2) / aux));
+        for c in b.steps().iter().flat_map(|s| &s.checks) {
+            prop_assert!(c.passed, "{}: {} vs {}", c.quantity, c.constructed, c.closed_form);
+        }
+    }
+}

@@ -27,6 +27,10 @@ pub struct ForceSystemScene {
     /// Forces to resolve along two given directions.
     #[serde(default)]
     pub resolve: Vec<ResolveSpec>,
+    /// Draw the resultant of two parallel forces by two equal and opposite auxiliary forces of
+    /// this size (kg) instead of the funicular polygon (LH C.1, Abb. 21).
+    #[serde(default)]
+    pub auxiliary_force_kg: Option<f64>,
     /// Scales and the pole; any left out are chosen.
     #[serde(default)]
     pub drawing: Option<ForceDrawingSpec>,
@@ -90,6 +94,8 @@ pub struct ForceSystemProblem {
     pub resolutions: Vec<Resolution>,
     /// Scales and pole.
     pub drawing: SystemDrawing,
+    /// The auxiliary force of LH Abb. 21, if that construction is asked for.
+    pub auxiliary_force: Option<f64>,
 }
 
 impl ForceSystemScene {
@@ -164,6 +170,17 @@ impl ForceSystemScene {
                 ));
             }
         }
+        if let Some(aux) = self.auxiliary_force_kg {
+            if !(aux.is_finite() && aux > 0.0) {
+                return Err(bad(
+                    "auxiliary_force_kg",
+                    format!("must be positive, got {aux}"),
+                ));
+            }
+            if self.forces.len() != 2 || !self.resolve.is_empty() {
+                return Err(bad("auxiliary_force_kg", "the auxiliary-force construction takes exactly two parallel forces and no resolutions".into()));
+            }
+        }
         if let Some(d) = &self.drawing {
             for (name, v) in [
                 ("drawing.length_scale", d.length_scale),
@@ -208,6 +225,7 @@ impl ForceSystemScene {
             pole_kg: None,
         });
         ForceSystemProblem {
+            auxiliary_force: self.auxiliary_force_kg,
             title: self.title.clone(),
             source: self.source.clone().unwrap_or_default(),
             resolutions: self
@@ -236,16 +254,31 @@ impl ForceSystemScene {
 }
 
 impl ForceSystemProblem {
-    /// Constructs the system on a fresh board.
-    pub fn construct(&self, recording: bool) -> Result<(Board, SystemResults), ConstructionError> {
+    /// Constructs the system on a fresh board. The results are `None` for the
+    /// auxiliary-force construction of two parallel forces, whose one constructed value (the
+    /// distance a of the resultant) is in the protocol with its check.
+    pub fn construct(
+        &self,
+        recording: bool,
+    ) -> Result<(Board, Option<SystemResults>), ConstructionError> {
         let mut board = Board::new(300.0, recording);
+        if let Some(aux) = self.auxiliary_force {
+            funicular::parallel_pair_by_auxiliary_forces(
+                &mut board,
+                self.forces[0],
+                self.forces[1],
+                aux,
+                &self.drawing,
+            )?;
+            return Ok((board, None));
+        }
         let r = funicular::construct_system(
             &mut board,
             &self.forces,
             &self.drawing,
             &self.resolutions,
         )?;
-        Ok((board, r))
+        Ok((board, Some(r)))
     }
 
     /// Title, source and scale bars.
