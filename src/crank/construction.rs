@@ -3,22 +3,8 @@
 use super::closed_form as cf;
 use super::{Angles, CrankDrive, Drawing, Request};
 use crate::kernel::{Branch, Circle, Line, Point, Vector};
-use crate::protocol::{Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};
 use serde::Serialize;
-
-const fn note(
-    caption: &'static str,
-    de: Option<&'static str>,
-    book: &'static str,
-    topic: Topic,
-) -> Note {
-    Note {
-        caption,
-        term_de: de,
-        book,
-        topic,
-    }
-}
 
 const N_CENTRE: Note = note(
     "crank shaft centre O",

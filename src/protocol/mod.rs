@@ -7,4 +7,6 @@ mod board;
 mod step;
 
 pub use board::{Board, ConstructionError, Cut, Scale, H};
-pub use step::{Check, Geom, Ids, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Topic};
+pub use step::{
+    note, Check, Geom, Ids, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Topic,
+};

@@ -191,6 +191,21 @@ pub struct Note {
     pub topic: Topic,
 }
 
+/// A [`Note`] in one line, for the `const` notes of the procedures.
+pub const fn note(
+    caption: &'static str,
+    term_de: Option<&'static str>,
+    book: &'static str,
+    topic: Topic,
+) -> Note {
+    Note {
+        caption,
+        term_de,
+        book,
+        topic,
+    }
+}
+
 /// The geometry of an object.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(rename_all = "snake_case", tag = "type")]

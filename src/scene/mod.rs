@@ -492,34 +492,12 @@ impl AnyScene {
         // A first look for the procedure only; the real parse keeps line and column.
         let probe: Option<ProcedureProbe> = serde_json::from_str(text).ok();
         match probe.and_then(|p| p.procedure).as_deref() {
-            Some("beam") => {
-                let de = &mut serde_json::Deserializer::from_str(text);
-                let scene: BeamScene =
-                    serde_path_to_error::deserialize(de).map_err(|e| json_error(e, origin))?;
-                scene.validate(origin)?;
-                Ok(AnyScene::Beam(scene))
-            }
+            Some("beam") => parse_as::<BeamScene>(text, origin).map(AnyScene::Beam),
             Some("force_system") => {
-                let de = &mut serde_json::Deserializer::from_str(text);
-                let scene: ForceSystemScene =
-                    serde_path_to_error::deserialize(de).map_err(|e| json_error(e, origin))?;
-                scene.validate(origin)?;
-                Ok(AnyScene::ForceSystem(scene))
+                parse_as::<ForceSystemScene>(text, origin).map(AnyScene::ForceSystem)
             }
-            Some("centroid") => {
-                let de = &mut serde_json::Deserializer::from_str(text);
-                let scene: CentroidScene =
-                    serde_path_to_error::deserialize(de).map_err(|e| json_error(e, origin))?;
-                scene.validate(origin)?;
-                Ok(AnyScene::Centroid(scene))
-            }
-            Some("shaft") => {
-                let de = &mut serde_json::Deserializer::from_str(text);
-                let scene: ShaftScene =
-                    serde_path_to_error::deserialize(de).map_err(|e| json_error(e, origin))?;
-                scene.validate(origin)?;
-                Ok(AnyScene::Shaft(scene))
-            }
+            Some("centroid") => parse_as::<CentroidScene>(text, origin).map(AnyScene::Centroid),
+            Some("shaft") => parse_as::<ShaftScene>(text, origin).map(AnyScene::Shaft),
             _ => Scene::from_json(text, origin).map(AnyScene::SliderCrank),
         }
     }
@@ -567,6 +545,33 @@ impl AnyProblem {
             AnyProblem::Shaft(p) => p.figure_meta(),
         }
     }
+}
+
+/// A scene type that checks its own values after parsing.
+trait Validate {
+    fn validate(&self, origin: &str) -> Result<(), SceneError>;
+}
+
+macro_rules! validate_by_method {
+    ($($t:ty),*) => {$(
+        impl Validate for $t {
+            fn validate(&self, origin: &str) -> Result<(), SceneError> {
+                <$t>::validate(self, origin)
+            }
+        }
+    )*};
+}
+validate_by_method!(BeamScene, ForceSystemScene, CentroidScene, ShaftScene);
+
+/// Parses a scene of one procedure, keeping field path, line and column, then validates it.
+fn parse_as<T: serde::de::DeserializeOwned + Validate>(
+    text: &str,
+    origin: &str,
+) -> Result<T, SceneError> {
+    let de = &mut serde_json::Deserializer::from_str(text);
+    let scene: T = serde_path_to_error::deserialize(de).map_err(|e| json_error(e, origin))?;
+    scene.validate(origin)?;
+    Ok(scene)
 }
 
 fn json_error(e: serde_path_to_error::Error<serde_json::Error>, origin: &str) -> SceneError {

@@ -20,22 +20,8 @@
 use super::closed_form as cf;
 use super::Beam;
 use crate::kernel::{Line, Point, Vector};
-use crate::protocol::{Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
 use serde::Serialize;
-
-const fn note(
-    caption: &'static str,
-    de: Option<&'static str>,
-    book: &'static str,
-    topic: Topic,
-) -> Note {
-    Note {
-        caption,
-        term_de: de,
-        book,
-        topic,
-    }
-}
 
 const N_BEAM_START: Note = note(
     "left end of the beam",
@@ -1073,6 +1059,25 @@ pub fn construct_beam_at(
                 pts[0]
             }
         };
+        let shear_at = |b: &mut Board, x: f64, right: bool| -> f64 {
+            let m = b.measure(
+                &pts[depth_index(x, right)],
+                &anchor(x, right),
+                &load_line,
+                kg,
+                Label::NONE,
+                N_SHEAR_MEASURE,
+            );
+            let side = if right {
+                "shear force V (right of the section)"
+            } else {
+                "shear force V (left of the section)"
+            };
+            b.check(&m, side, "kg", "method of sections", pref, || {
+                sections_cf.shear(x, !right)
+            });
+            m.g
+        };
         let mut diagram = Vec::new();
         let mut values: Vec<(f64, f64, f64)> = Vec::new();
         for (e, &x) in events.iter().enumerate() {
@@ -1085,51 +1090,17 @@ pub fn construct_beam_at(
                 N_SECTION_VERTICAL,
             )?;
             let foot = b.meet_point(&foot_v, &base, Label::NONE, N_SHEAR_FOOT)?;
+            // Shear just left and just right of the event, read off the load line; none
+            // outside the ends of the beam.
             let vl = if e == 0 {
                 None
             } else {
-                // Inside a uniform load the left value comes with the whole load passed only at
-                // its end; at any other event the left value is the right value of the event before.
-                let kk = depth_index(x, false);
-                let m = b.measure(
-                    &pts[kk],
-                    &anchor(x, false),
-                    &load_line,
-                    kg,
-                    Label::NONE,
-                    N_SHEAR_MEASURE,
-                );
-                b.check(
-                    &m,
-                    "shear force V (left of the section)",
-                    "kg",
-                    "method of sections",
-                    pref,
-                    || sections_cf.shear(x, true),
-                );
-                Some(m.g)
+                Some(shear_at(b, x, false))
             };
             let vr = if e + 1 == events.len() {
                 None
             } else {
-                let kk = depth_index(x, true);
-                let m = b.measure(
-                    &pts[kk],
-                    &anchor(x, true),
-                    &load_line,
-                    kg,
-                    Label::NONE,
-                    N_SHEAR_MEASURE,
-                );
-                b.check(
-                    &m,
-                    "shear force V (right of the section)",
-                    "kg",
-                    "method of sections",
-                    pref,
-                    || sections_cf.shear(x, false),
-                );
-                Some(m.g)
+                Some(shear_at(b, x, true))
             };
             let up_line = H {
                 id: foot_v.id,

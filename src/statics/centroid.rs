@@ -10,22 +10,8 @@
 
 use super::funicular::{construct_system, Force, SystemDrawing};
 use crate::kernel::{Point, Vector};
-use crate::protocol::{Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
 use serde::Serialize;
-
-const fn note(
-    caption: &'static str,
-    de: Option<&'static str>,
-    book: &'static str,
-    topic: Topic,
-) -> Note {
-    Note {
-        caption,
-        term_de: de,
-        book,
-        topic,
-    }
-}
 
 const N_VERTEX: Note = note(
     "vertex of the polygon",

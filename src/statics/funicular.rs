@@ -13,22 +13,8 @@
 //! equilibrium (force polygon and funicular polygon both closed).
 
 use crate::kernel::{Line, Point, Vector};
-use crate::protocol::{Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};
 use serde::Serialize;
-
-const fn note(
-    caption: &'static str,
-    de: Option<&'static str>,
-    book: &'static str,
-    topic: Topic,
-) -> Note {
-    Note {
-        caption,
-        term_de: de,
-        book,
-        topic,
-    }
-}
 
 const N_APPLICATION: Note = note(
     "point of application",

@@ -17,22 +17,8 @@
 use super::beam::{construct_beam_at, BeamDrawing, BeamRequest, BeamResults};
 use super::{Beam, PointLoad};
 use crate::kernel::{Point, Vector};
-use crate::protocol::{Board, ConstructionError, Label, Note, Role, Scale, Topic};
+use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Scale, Topic};
 use serde::Serialize;
-
-const fn note(
-    caption: &'static str,
-    de: Option<&'static str>,
-    book: &'static str,
-    topic: Topic,
-) -> Note {
-    Note {
-        caption,
-        term_de: de,
-        book,
-        topic,
-    }
-}
 
 const N_BASE: Note = note(
     "base point of the combination at the section",
