@@ -1,7 +1,7 @@
 //! The beam scene: a beam on two supports with point and uniform loads (LH C.4-6, Aufgabe 6).
 
 use super::defaults::nice_at_least;
-use super::SceneError;
+use super::{optional_positive, SceneError};
 use crate::protocol::{Board, ConstructionError};
 use crate::statics::{self, Beam, BeamDrawing, BeamRequest, BeamResults, PointLoad, UniformLoad};
 use schemars::JsonSchema;
@@ -262,17 +262,14 @@ impl BeamScene {
             }
         }
         if let Some(d) = &self.drawing {
-            for (name, v) in [
-                ("drawing.length_scale", d.length_scale),
-                ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
-                ("drawing.pole_distance_kg", d.pole_distance_kg),
-            ] {
-                if let Some(v) = v {
-                    if !(v.is_finite() && v > 0.0) {
-                        return Err(bad(name, format!("must be positive, got {v}")));
-                    }
-                }
-            }
+            optional_positive(
+                origin,
+                &[
+                    ("drawing.length_scale", d.length_scale),
+                    ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
+                    ("drawing.pole_distance_kg", d.pole_distance_kg),
+                ],
+            )?;
             if let Some(m) = d.parabola_divisions {
                 if !(2..=64).contains(&m) {
                     return Err(bad(
@@ -369,7 +366,6 @@ impl BeamProblem {
     /// Title, source and scale bars of the figure.
     pub fn figure_meta(&self) -> crate::render::FigureMeta {
         use crate::fmt::num;
-        use crate::render::ScaleBar;
         let d = &self.drawing;
         crate::render::FigureMeta {
             title: self.title.clone(),
@@ -380,24 +376,9 @@ impl BeamProblem {
                 num(d.pole_distance, 6)
             ),
             scales: vec![
-                ScaleBar {
-                    name: format!("Längenmaßstab 1 : {}", num(d.length_scale, 6)),
-                    per_mm: d.length_scale / 1000.0,
-                    unit: "m".into(),
-                },
-                ScaleBar {
-                    name: format!("Kräftemaßstab 1 mm = {} kg", num(d.force_scale, 6)),
-                    per_mm: d.force_scale,
-                    unit: "kg".into(),
-                },
-                ScaleBar {
-                    name: format!(
-                        "Momentenmaßstab 1 mm = {} kg·m",
-                        num(d.length_scale / 1000.0 * d.pole_distance, 6)
-                    ),
-                    per_mm: d.length_scale / 1000.0 * d.pole_distance,
-                    unit: "kg·m".into(),
-                },
+                super::bars::length(d.length_scale, "m"),
+                super::bars::force(d.force_scale),
+                super::bars::moment(d.length_scale / 1000.0 * d.pole_distance),
             ],
         }
     }

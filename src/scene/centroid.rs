@@ -2,7 +2,7 @@
 //! (LH C.3, Abb. 23).
 
 use super::defaults::nice_at_least;
-use super::SceneError;
+use super::{optional_positive, SceneError};
 use crate::protocol::{Board, ConstructionError};
 use crate::statics::centroid::{self, CentroidDrawing, CentroidResults};
 use schemars::JsonSchema;
@@ -105,16 +105,13 @@ impl CentroidScene {
             return Err(bad("fan_from", format!("vertex {} of {n}", self.fan_from)));
         }
         if let Some(d) = &self.drawing {
-            for (name, v) in [
-                ("drawing.length_scale", d.length_scale),
-                ("drawing.area_scale_m2_per_mm", d.area_scale_m2_per_mm),
-            ] {
-                if let Some(v) = v {
-                    if !(v.is_finite() && v > 0.0) {
-                        return Err(bad(name, format!("must be positive, got {v}")));
-                    }
-                }
-            }
+            optional_positive(
+                origin,
+                &[
+                    ("drawing.length_scale", d.length_scale),
+                    ("drawing.area_scale_m2_per_mm", d.area_scale_m2_per_mm),
+                ],
+            )?;
         }
         Ok(())
     }
@@ -165,23 +162,13 @@ impl CentroidProblem {
 
     /// Title, source and scale bars.
     pub fn figure_meta(&self) -> crate::render::FigureMeta {
-        use crate::fmt::num;
-        use crate::render::ScaleBar;
         let d = &self.drawing;
         crate::render::FigureMeta {
             title: self.title.clone(),
             source: self.source.clone(),
             scales: vec![
-                ScaleBar {
-                    name: format!("Längenmaßstab 1 : {}", num(d.length_scale, 6)),
-                    per_mm: d.length_scale / 1000.0,
-                    unit: "m".into(),
-                },
-                ScaleBar {
-                    name: format!("Flächenmaßstab 1 mm = {} m²", num(d.area_scale, 6)),
-                    per_mm: d.area_scale,
-                    unit: "m²".into(),
-                },
+                super::bars::length(d.length_scale, "m"),
+                super::bars::area(d.area_scale),
             ],
         }
     }

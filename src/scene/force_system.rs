@@ -2,7 +2,7 @@
 //! resolutions along two lines (LH A.1-4, C.2, Aufgabe 2).
 
 use super::defaults::nice_at_least;
-use super::SceneError;
+use super::{optional_positive, SceneError};
 use crate::protocol::{Board, ConstructionError};
 use crate::statics::funicular::{self, Force, Resolution, SystemDrawing, SystemResults};
 use schemars::JsonSchema;
@@ -182,16 +182,13 @@ impl ForceSystemScene {
             }
         }
         if let Some(d) = &self.drawing {
-            for (name, v) in [
-                ("drawing.length_scale", d.length_scale),
-                ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
-            ] {
-                if let Some(v) = v {
-                    if !(v.is_finite() && v > 0.0) {
-                        return Err(bad(name, format!("must be positive, got {v}")));
-                    }
-                }
-            }
+            optional_positive(
+                origin,
+                &[
+                    ("drawing.length_scale", d.length_scale),
+                    ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
+                ],
+            )?;
         }
         Ok(())
     }
@@ -283,23 +280,13 @@ impl ForceSystemProblem {
 
     /// Title, source and scale bars.
     pub fn figure_meta(&self) -> crate::render::FigureMeta {
-        use crate::fmt::num;
-        use crate::render::ScaleBar;
         let d = &self.drawing;
         crate::render::FigureMeta {
             title: self.title.clone(),
             source: self.source.clone(),
             scales: vec![
-                ScaleBar {
-                    name: format!("Längenmaßstab 1 : {}", num(d.length_scale, 6)),
-                    per_mm: d.length_scale / 1000.0,
-                    unit: "m".into(),
-                },
-                ScaleBar {
-                    name: format!("Kräftemaßstab 1 mm = {} kg", num(d.force_scale, 6)),
-                    per_mm: d.force_scale,
-                    unit: "kg".into(),
-                },
+                super::bars::length(d.length_scale, "m"),
+                super::bars::force(d.force_scale),
             ],
         }
     }

@@ -336,33 +336,14 @@ impl Scene {
 impl Problem {
     /// What the sheet writes besides the construction: title, source and the scale bars.
     pub fn figure_meta(&self) -> crate::render::FigureMeta {
-        use crate::render::ScaleBar;
         let d = &self.drawing;
         let r = &self.request;
-        let mut scales = vec![ScaleBar {
-            name: format!("Längenmaßstab 1 : {}", crate::fmt::num(d.length_scale, 6)),
-            per_mm: d.length_scale,
-            unit: "mm".into(),
-        }];
+        let mut scales = vec![bars::length(d.length_scale, "mm")];
         if r.velocity_parallel || r.velocity_instant_centre {
-            scales.push(ScaleBar {
-                name: format!(
-                    "Geschwindigkeitsmaßstab 1 mm = {} m/s",
-                    crate::fmt::num(d.velocity_scale, 6)
-                ),
-                per_mm: d.velocity_scale,
-                unit: "m/s".into(),
-            });
+            scales.push(bars::velocity(d.velocity_scale));
         }
         if r.rod_force || r.guide_force || r.tangential_force || r.radial_force {
-            scales.push(ScaleBar {
-                name: format!(
-                    "Kräftemaßstab 1 mm = {} kg",
-                    crate::fmt::num(d.force_scale, 6)
-                ),
-                per_mm: d.force_scale,
-                unit: "kg".into(),
-            });
+            scales.push(bars::force(d.force_scale));
         }
         let rod = if self.drive.finite_rod {
             format!(
@@ -543,6 +524,71 @@ impl AnyProblem {
             AnyProblem::ForceSystem(p) => p.figure_meta(),
             AnyProblem::Centroid(p) => p.figure_meta(),
             AnyProblem::Shaft(p) => p.figure_meta(),
+        }
+    }
+}
+
+/// Checks that every scale or pole given (`Some`) is a positive, finite number.
+fn optional_positive(origin: &str, fields: &[(&str, Option<f64>)]) -> Result<(), SceneError> {
+    for &(name, v) in fields {
+        if let Some(v) = v {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(SceneError::Invalid {
+                    origin: origin.to_string(),
+                    field: name.to_string(),
+                    message: format!("must be positive, got {v}"),
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The scale bars a sheet writes: length 1 : n (machine unit per mm shown in m or mm), force,
+/// moment, area, velocity. German names as the books write them.
+mod bars {
+    use crate::fmt::num;
+    use crate::render::ScaleBar;
+
+    /// Längenmaßstab 1 : n, the bar in `unit` ("m" or "mm").
+    pub fn length(n: f64, unit: &str) -> ScaleBar {
+        let per_mm = if unit == "m" { n / 1000.0 } else { n };
+        ScaleBar {
+            name: format!("Längenmaßstab 1 : {}", num(n, 6)),
+            per_mm,
+            unit: unit.into(),
+        }
+    }
+    /// Kräftemaßstab 1 mm = f kg.
+    pub fn force(f: f64) -> ScaleBar {
+        ScaleBar {
+            name: format!("Kräftemaßstab 1 mm = {} kg", num(f, 6)),
+            per_mm: f,
+            unit: "kg".into(),
+        }
+    }
+    /// Momentenmaßstab 1 mm = m kg·m.
+    pub fn moment(m: f64) -> ScaleBar {
+        ScaleBar {
+            name: format!("Momentenmaßstab 1 mm = {} kg·m", num(m, 6)),
+            per_mm: m,
+            unit: "kg·m".into(),
+        }
+    }
+    /// Flächenmaßstab 1 mm = a m².
+    pub fn area(a: f64) -> ScaleBar {
+        ScaleBar {
+            name: format!("Flächenmaßstab 1 mm = {} m²", num(a, 6)),
+            per_mm: a,
+            unit: "m²".into(),
+        }
+    }
+    /// Geschwindigkeitsmaßstab 1 mm = v m/s.
+    pub fn velocity(v: f64) -> ScaleBar {
+        ScaleBar {
+            name: format!("Geschwindigkeitsmaßstab 1 mm = {} m/s", num(v, 6)),
+            per_mm: v,
+            unit: "m/s".into(),
         }
     }
 }

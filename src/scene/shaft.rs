@@ -2,7 +2,7 @@
 
 use super::beam::BeamDrawingSpec;
 use super::defaults::nice_at_least;
-use super::SceneError;
+use super::{optional_positive, SceneError};
 use crate::protocol::{Board, ConstructionError};
 use crate::statics::shaft::{self, Shaft, ShaftRow, Torque};
 use crate::statics::{BeamDrawing, PointLoad};
@@ -151,17 +151,14 @@ impl ShaftScene {
             }
         }
         if let Some(d) = &self.drawing {
-            for (name, v) in [
-                ("drawing.length_scale", d.length_scale),
-                ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
-                ("drawing.pole_distance_kg", d.pole_distance_kg),
-            ] {
-                if let Some(v) = v {
-                    if !(v.is_finite() && v > 0.0) {
-                        return Err(bad(name, format!("must be positive, got {v}")));
-                    }
-                }
-            }
+            optional_positive(
+                origin,
+                &[
+                    ("drawing.length_scale", d.length_scale),
+                    ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
+                    ("drawing.pole_distance_kg", d.pole_distance_kg),
+                ],
+            )?;
         }
         Ok(())
     }
@@ -231,7 +228,6 @@ impl ShaftProblem {
     /// Title, source and scale bars.
     pub fn figure_meta(&self) -> crate::render::FigureMeta {
         use crate::fmt::num;
-        use crate::render::ScaleBar;
         let d = &self.drawing;
         let ms = d.length_scale / 1000.0 * d.pole_distance;
         crate::render::FigureMeta {
@@ -245,21 +241,9 @@ impl ShaftProblem {
                 num(d.pole_distance, 6)
             ),
             scales: vec![
-                ScaleBar {
-                    name: format!("Längenmaßstab 1 : {}", num(d.length_scale, 6)),
-                    per_mm: d.length_scale / 1000.0,
-                    unit: "m".into(),
-                },
-                ScaleBar {
-                    name: format!("Kräftemaßstab 1 mm = {} kg", num(d.force_scale, 6)),
-                    per_mm: d.force_scale,
-                    unit: "kg".into(),
-                },
-                ScaleBar {
-                    name: format!("Momentenmaßstab 1 mm = {} kg·m", num(ms, 6)),
-                    per_mm: ms,
-                    unit: "kg·m".into(),
-                },
+                super::bars::length(d.length_scale, "m"),
+                super::bars::force(d.force_scale),
+                super::bars::moment(ms),
             ],
         }
     }
