@@ -53,6 +53,21 @@ pub struct ForceSpec {
     pub angle_deg: Option<f64>,
 }
 
+impl ForceSpec {
+    /// The force's components (kg): `kg_xy`, or `kg` along `angle_deg`; `None` unless exactly
+    /// one of the two forms is given.
+    pub fn vector(&self) -> Option<[f64; 2]> {
+        match (self.kg_xy, self.kg, self.angle_deg) {
+            (Some(xy), None, None) => Some(xy),
+            (None, Some(k), Some(a)) => {
+                let (s, c) = crate::kernel::angle::sin_cos_deg(a);
+                Some([k * c, k * s])
+            }
+            _ => None,
+        }
+    }
+}
+
 /// A resolution of one force along two directions.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -125,18 +140,11 @@ impl ForceSystemScene {
             if !f.at_m.iter().all(|v| v.is_finite()) {
                 return Err(bad(&field("at_m"), "must be finite numbers".into()));
             }
-            let v = match (f.kg_xy, f.kg, f.angle_deg) {
-                (Some(xy), None, None) => xy,
-                (None, Some(k), Some(a)) => {
-                    let (s, c) = crate::kernel::angle::sin_cos_deg(a);
-                    [k * c, k * s]
-                }
-                _ => {
-                    return Err(bad(
-                        &format!("forces[{i}]"),
-                        "give either kg_xy, or kg with angle_deg".into(),
-                    ))
-                }
+            let Some(v) = f.vector() else {
+                return Err(bad(
+                    &format!("forces[{i}]"),
+                    "give either kg_xy, or kg with angle_deg".into(),
+                ));
             };
             if !v.iter().all(|x| x.is_finite()) {
                 return Err(bad(
@@ -198,24 +206,13 @@ impl ForceSystemScene {
         let forces: Vec<Force> = self
             .forces
             .iter()
-            .map(|f| {
-                let v = f.kg_xy.unwrap_or_else(|| {
-                    let (s, c) = crate::kernel::angle::sin_cos_deg(f.angle_deg.unwrap_or(0.0));
-                    let k = f.kg.unwrap_or(0.0);
-                    [k * c, k * s]
-                });
-                Force { at: f.at_m, f: v }
+            .map(|f| Force {
+                at: f.at_m,
+                // Validated: one of the two forms is given.
+                f: f.vector().unwrap_or([0.0, 0.0]),
             })
             .collect();
-        let fmax = forces
-            .iter()
-            .map(|f| f.f[0].hypot(f.f[1]))
-            .fold(0.0, f64::max);
-        let reach = forces
-            .iter()
-            .map(|f| f.at[0].hypot(f.at[1]))
-            .fold(0.0, f64::max)
-            .max(1.0);
+        let (fmax, reach) = funicular::extent(&forces);
         let d = self.drawing.unwrap_or(ForceDrawingSpec {
             length_scale: None,
             force_scale_kg_per_mm: None,

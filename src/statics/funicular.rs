@@ -244,6 +244,21 @@ pub fn sum_and_moment(forces: &[Force]) -> ([f64; 2], f64) {
     (r, m)
 }
 
+/// The largest force (kg) and the farthest point of application from the origin (m, at least
+/// 1): the magnitudes a force system's tolerances and default scales are relative to.
+pub fn extent(forces: &[Force]) -> (f64, f64) {
+    let fmax = forces
+        .iter()
+        .map(|f| f.f[0].hypot(f.f[1]))
+        .fold(0.0, f64::max);
+    let reach = forces
+        .iter()
+        .map(|f| f.at[0].hypot(f.at[1]))
+        .fold(0.0, f64::max)
+        .max(1.0);
+    (fmax, reach)
+}
+
 /// Closed form of the resolution of `f` along unit directions `d1`, `d2`: the 2×2 solve.
 pub fn resolve(f: [f64; 2], d1: [f64; 2], d2: [f64; 2]) -> Option<[f64; 2]> {
     let det = d1[0] * d2[1] - d1[1] * d2[0];
@@ -297,15 +312,7 @@ pub fn construct_system(
     let fs = dr.force_scale;
     let sp = |p: [f64; 2]| Point::new(p[0] * k, p[1] * k);
     let (r_cf, m_cf) = sum_and_moment(forces);
-    let fmax = forces
-        .iter()
-        .map(|f| f.f[0].hypot(f.f[1]))
-        .fold(0.0, f64::max);
-    let reach = forces
-        .iter()
-        .map(|f| f.at[0].hypot(f.at[1]))
-        .fold(0.0, f64::max)
-        .max(1.0);
+    let (fmax, reach) = extent(forces);
     let kg = Scale {
         per_mm: fs,
         unit: "kg",
