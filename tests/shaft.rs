@@ -84,6 +84,7 @@ fn ideal_moment_with_alpha0_1_and_1_5() {
         from: 0.0,
         to: 0.5,
         md: 150.0,
+        radius: None,
     });
     for alpha0 in [1.0, 1.5] {
         let rows = run(&shaft(90.0, alpha0, t));
@@ -95,6 +96,39 @@ fn ideal_moment_with_alpha0_1_and_1_5() {
         // Beyond the twisted stretch the ideal moment is the bending moment.
         let b = rows.iter().find(|r| (r.x - 1.0).abs() < 1e-12).unwrap();
         assert_eq!(b.mi, b.mb);
+    }
+}
+
+#[test]
+fn torque_ordinate_by_the_pole_triangle_of_gl_12() {
+    // P = 500 kg on r = 0.25 m: M_d = 125 kg·m, for radii inside and outside the pole triangle.
+    for (r, alpha0) in [(0.25, 1.0), (0.25, 1.5), (2.0, 1.5), (0.001, 1.0)] {
+        let t = Torque {
+            from: 0.0,
+            to: 0.5,
+            md: 125.0,
+            radius: Some(r),
+        };
+        let s = shaft(90.0, alpha0, Some(t));
+        let mut b = Board::new(500.0, true);
+        let rows = construct_shaft(&mut b, &s, &D).unwrap();
+        let checks: Vec<_> = b
+            .steps()
+            .iter()
+            .flat_map(|s| &s.checks)
+            .filter(|c| c.formula.contains("Gl. 12"))
+            .collect();
+        // x, and α0·x when α0 ≠ 1.
+        assert_eq!(checks.len(), if alpha0 == 1.0 { 1 } else { 2 });
+        assert!(checks.iter().all(|c| c.passed));
+        assert!((checks[0].constructed - 125.0).abs() < 1e-9);
+        let a = rows.iter().find(|r| r.x == 0.0).unwrap();
+        assert!((a.mi - 0.625 * alpha0 * 125.0).abs() < 1e-9, "{}", a.mi);
+        // The torque rectangle CFGH is drawn as a closed polygon.
+        assert!(b
+            .steps()
+            .iter()
+            .any(|s| s.caption.starts_with("torque rectangle")));
     }
 }
 
@@ -132,6 +166,10 @@ fn bad_shaft_scenes_are_named() {
         ),
         (good.replace("\"to_m\": 0.5", "\"to_m\": 0"), "torque"),
         (
+            good.replace("\"kg_m\": 10", "\"kg_m\": 10, \"radius_m\": -0.1"),
+            "torque.radius_m",
+        ),
+        (
             good.replace("\"title\": \"t\",", "\"title\": \"t\", \"alpha0\": 0,"),
             "alpha0",
         ),
@@ -157,6 +195,7 @@ proptest! {
         angle in 1.0f64..180.0,
         alpha0 in 0.5f64..2.0,
         t in proptest::option::of((0.0f64..0.5, 0.5f64..1.0, -300.0f64..300.0)),
+        radius in proptest::option::of(0.01f64..2.0),
     ) {
         let s = Shaft {
             supports: [0.0, 1.0],
@@ -164,7 +203,7 @@ proptest! {
             plane_1: l1.iter().map(|&(x, p)| PointLoad { x, p }).collect(),
             plane_2: l2.iter().map(|&(x, p)| PointLoad { x, p }).collect(),
             angle_deg: angle,
-            torque: t.map(|(a, b, md)| Torque { from: a, to: b, md }),
+            torque: t.map(|(a, b, md)| Torque { from: a, to: b, md, radius }),
             alpha0,
             kb: Some(1000.0),
         };

@@ -58,6 +58,10 @@ pub struct TorqueSpec {
     pub to_m: f64,
     /// Torque M_d (kg·m).
     pub kg_m: f64,
+    /// Radius r (m) of the pulley or crank on which the twisting force P = M_d / r acts; with
+    /// it the torque ordinate is constructed in the pole triangle (LH Gl. 12).
+    #[serde(default)]
+    pub radius_m: Option<f64>,
 }
 
 /// A validated shaft scene.
@@ -143,6 +147,11 @@ impl ShaftScene {
             {
                 return Err(bad("torque", "give finite from_m < to_m and kg_m".into()));
             }
+            if let Some(r) = t.radius_m {
+                if !(r.is_finite() && r > 0.0) {
+                    return Err(bad("torque.radius_m", format!("must be positive, got {r}")));
+                }
+            }
             if t.from_m < e0 || t.to_m > e1 {
                 return Err(bad(
                     "torque",
@@ -182,6 +191,7 @@ impl ShaftScene {
                 from: t.from_m,
                 to: t.to_m,
                 md: t.kg_m,
+                radius: t.radius_m,
             }),
             alpha0: self.alpha0.unwrap_or(1.0),
             kb: self.kb_kg_per_cm2,

@@ -105,6 +105,79 @@ const N_MI: Note = note(
     Topic::Moment,
 );
 
+const N_TQ_POLE: Note = note(
+    "pole O of the twisting force",
+    Some("Pol"),
+    "LH Gl. 12, Abb. 28",
+    Topic::Moment,
+);
+const N_TQ_FORCE: Note = note(
+    "twisting force P = M_d / r at the pole distance H",
+    Some("Kraft P"),
+    "LH Gl. 12, Abb. 28",
+    Topic::Moment,
+);
+const N_TQ_RAY: Note = note(
+    "pole ray to an end of P",
+    Some("Polstrahl"),
+    "LH Gl. 12, Abb. 28",
+    Topic::Moment,
+);
+const N_TQ_AXIS: Note = note(
+    "perpendicular from the pole to the line of P",
+    Some("Polweite"),
+    "LH Gl. 12",
+    Topic::Moment,
+);
+const N_TQ_R: Note = note(
+    "radius r laid off from the pole at the length scale",
+    Some("Abstand r"),
+    "LH Gl. 12",
+    Topic::Moment,
+);
+const N_TQ_PAR: Note = note(
+    "parallel to P at distance r from the pole",
+    Some("Parallele im Abstande r"),
+    "LH Gl. 12",
+    Topic::Moment,
+);
+const N_TQ_CUT: Note = note(
+    "the parallel cuts the pole ray",
+    Some("Schnittpunkt"),
+    "LH Gl. 12",
+    Topic::Moment,
+);
+const N_TQ_X: Note = note(
+    "torque ordinate x: x/r = P/H, so x·H = P·r = M_d (intercept theorem)",
+    Some("Drehmomentordinate"),
+    "LH Gl. 12",
+    Topic::Moment,
+);
+const N_TQ_R0: Note = note(
+    "α0·r laid off from the pole",
+    Some("Abstand α0·r"),
+    "LH Gl. 12-13",
+    Topic::Moment,
+);
+const N_TQ_X0: Note = note(
+    "weighted torque ordinate α0·x cut off at distance α0·r",
+    Some("Drehmomentordinate"),
+    "LH Gl. 12-13",
+    Topic::Moment,
+);
+const N_TQ_RECT: Note = note(
+    "torque rectangle CFGH of height x over the twisted stretch",
+    Some("Drehmomentfläche"),
+    "LH Abb. 28",
+    Topic::Moment,
+);
+const N_TQ_CORNER: Note = note(
+    "corner of the torque rectangle",
+    Some("Drehmomentfläche"),
+    "LH Abb. 28",
+    Topic::Moment,
+);
+
 /// A torque M_d (kg·m) acting on the stretch of shaft from `from` to `to` (m).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Torque {
@@ -114,6 +187,11 @@ pub struct Torque {
     pub to: f64,
     /// Torque (kg·m).
     pub md: f64,
+    /// Radius (m) at which the twisting force P = M_d / r acts (the pulley or crank radius).
+    /// With it the torque ordinate is constructed as the book does (Gl. 12): the parallel to P
+    /// at distance r from the pole cuts the pole rays of P in x, x·H = P·r. Without it the
+    /// ordinate M_d / H is laid off directly.
+    pub radius: Option<f64>,
 }
 
 /// A shaft on two supports with loads in two planes and a torque.
@@ -169,6 +247,122 @@ pub fn ideal(mb: f64, md: f64, alpha0: f64) -> f64 {
     0.375 * mb + 0.625 * mb.hypot(alpha0 * md)
 }
 
+/// The torque ordinate by the pole triangle of the twisting force (LH Gl. 12): P = M_d / r is
+/// drawn at the pole distance H from the pole O; the parallel to P at distance r from O cuts
+/// the two pole rays in the ordinate x, and x/r = P/H gives x·H = P·r = M_d. A second parallel
+/// at α0·r cuts off α0·x, the leg of Abb. 29. Returns (x, α0·x) in mm.
+fn torque_ordinate(
+    b: &mut Board,
+    t: &Torque,
+    r: f64,
+    alpha0: f64,
+    dr: &BeamDrawing,
+    pole_at: Point,
+    mscale: Scale,
+) -> Result<(f64, f64), ConstructionError> {
+    let p_mm = t.md.abs() / r / dr.force_scale;
+    let h_mm = dr.pole_distance / dr.force_scale;
+    let r_mm = r * 1000.0 / dr.length_scale;
+    let o = b.point(pole_at, Label::plain("O"), Role::Given, N_TQ_POLE);
+    let down = Vector::new(0.0, -1.0);
+    let top = b.point(
+        pole_at + Vector::new(h_mm, 0.5 * p_mm),
+        Label::quiet("P", 0),
+        Role::Given,
+        N_TQ_FORCE,
+    );
+    let line_p = b.line_dir(&top, down, Label::NONE, Role::Construction, N_TQ_FORCE)?;
+    let bottom = b.lay_off(
+        &top,
+        &line_p,
+        p_mm,
+        Label::plain("P"),
+        Role::Force,
+        N_TQ_FORCE,
+    )?;
+    let ray_top = b.line_through(&o, &top, Label::NONE, Role::Construction, N_TQ_RAY)?;
+    let ray_bottom = b.line_through(&o, &bottom, Label::NONE, Role::Construction, N_TQ_RAY)?;
+    let axis = b.perpendicular(&line_p, &o, Label::NONE, Role::Auxiliary, N_TQ_AXIS);
+    let cut_off = |b: &mut Board, dist: f64, n_r: Note, n_x: Note, weight: f64| {
+        let foot = b.lay_off(&o, &axis, dist, Label::NONE, Role::Construction, n_r)?;
+        let par = b.parallel(&line_p, &foot, Label::NONE, Role::Construction, N_TQ_PAR);
+        let c1 = b.meet_point(&ray_top, &par, Label::NONE, N_TQ_CUT)?;
+        let c2 = b.meet_point(&ray_bottom, &par, Label::NONE, N_TQ_CUT)?;
+        b.segment(&c1, &c2, Label::NONE, Role::Result, n_x);
+        let x = b.measure(&c1, &c2, &line_p, mscale, Label::quiet("Md", 0), n_x);
+        b.check(
+            &x,
+            "torque ordinate read as a moment",
+            "kg·m",
+            "LH Gl. 12: x·H = P·r",
+            weight * t.md.abs(),
+            || weight * t.md.abs(),
+        );
+        Ok::<f64, ConstructionError>((c2.g - c1.g).norm())
+    };
+    let x = cut_off(b, r_mm, N_TQ_R, N_TQ_X, 1.0)?;
+    let ax = if alpha0 == 1.0 {
+        x
+    } else {
+        cut_off(b, alpha0 * r_mm, N_TQ_R0, N_TQ_X0, alpha0)?
+    };
+    Ok((x, ax))
+}
+
+/// The torque rectangle CFGH of height `x` mm over the twisted stretch (LH Abb. 28).
+fn torque_rectangle(
+    b: &mut Board,
+    t: &Torque,
+    x: f64,
+    dr: &BeamDrawing,
+    base_y: f64,
+) -> Result<(), ConstructionError> {
+    let k = 1000.0 / dr.length_scale;
+    let c = b.point(
+        Point::new(t.from * k + dr.origin[0], base_y),
+        Label::plain("C"),
+        Role::Given,
+        N_TQ_CORNER,
+    );
+    let base = b.line_dir(
+        &c,
+        Vector::new(1.0, 0.0),
+        Label::NONE,
+        Role::Axis,
+        N_TQ_CORNER,
+    )?;
+    let h = b.lay_off(
+        &c,
+        &base,
+        (t.to - t.from) * k,
+        Label::plain("H"),
+        Role::Construction,
+        N_TQ_CORNER,
+    )?;
+    let up_c = b.perpendicular(&base, &c, Label::NONE, Role::Construction, N_TQ_CORNER);
+    let up_h = b.perpendicular(&base, &h, Label::NONE, Role::Construction, N_TQ_CORNER);
+    // x is laid off upwards: the perpendicular's direction may point either way.
+    let sx = if up_c.g.dir.y >= 0.0 { x } else { -x };
+    let f = b.lay_off(
+        &c,
+        &up_c,
+        sx,
+        Label::plain("F"),
+        Role::Construction,
+        N_TQ_CORNER,
+    )?;
+    let top = b.parallel(&base, &f, Label::NONE, Role::Construction, N_TQ_CORNER);
+    let g = b.meet_point(&top, &up_h, Label::plain("G"), N_TQ_CORNER)?;
+    b.curve(
+        &[c, f, g, h, c],
+        false,
+        Label::NONE,
+        Role::Result,
+        N_TQ_RECT,
+    );
+    Ok(())
+}
+
 /// Constructs both moment areas, their combination and the ideal moment at every section
 /// (supports, loads of either plane, ends of the torque).
 ///
@@ -180,7 +374,7 @@ pub fn ideal(mb: f64, md: f64, alpha0: f64) -> f64 {
 /// use graphostatik::protocol::Board;
 /// let shaft = Shaft { supports: [0.0, 1.0], ends: [0.0, 1.0],
 ///     plane_1: vec![PointLoad { x: 0.4, p: 300.0 }], plane_2: vec![PointLoad { x: 0.4, p: 400.0 }],
-///     angle_deg: 90.0, torque: Some(Torque { from: 0.0, to: 0.4, md: 100.0 }), alpha0: 1.0,
+///     angle_deg: 90.0, torque: Some(Torque { from: 0.0, to: 0.4, md: 100.0, radius: Some(0.2) }), alpha0: 1.0,
 ///     kb: Some(1000.0) };
 /// let d = BeamDrawing { length_scale: 10.0, force_scale: 10.0, pole_distance: 500.0,
 ///     parabola_divisions: 8, origin: [0.0, 0.0] };
@@ -270,6 +464,30 @@ pub fn construct_shaft(
         })
         .sum::<f64>()
         / ms;
+    let mscale = Scale {
+        per_mm: ms,
+        unit: "kg·m",
+    };
+    // The torque: its ordinate by Gl. 12 when the radius is known, and its rectangle.
+    let mut torque_mm = None;
+    if let Some(t) = shaft.torque.filter(|t| t.md != 0.0) {
+        let direct = t.md.abs() / ms;
+        let (x, ax) = match t.radius {
+            Some(r) => torque_ordinate(
+                b,
+                &t,
+                r,
+                shaft.alpha0,
+                dr,
+                Point::new(shaft.ends[1] * k + dr.origin[0] + 40.0, y_next),
+                mscale,
+            )?,
+            None => (direct, shaft.alpha0 * direct),
+        };
+        torque_rectangle(b, &t, x, dr, y_next - x)?;
+        y_next -= x + 40.0;
+        torque_mm = Some(ax);
+    }
     let y0 = y_next - rise;
     let (_, cos_a) = crate::kernel::angle::sin_cos_deg(shaft.angle_deg);
     let (sin_a, _) = crate::kernel::angle::sin_cos_deg(shaft.angle_deg);
@@ -280,10 +498,6 @@ pub fn construct_shaft(
         .map(|s| s.moment.abs())
         .fold(0.0, f64::max)
         .max(shaft.torque.map_or(0.0, |t| t.md.abs() * shaft.alpha0));
-    let mscale = Scale {
-        per_mm: ms,
-        unit: "kg·m",
-    };
     let s1 = super::closed_form::Sections::new(&b1);
     let s2 = super::closed_form::Sections::new(&b2);
     let mut rows = Vec::new();
@@ -359,7 +573,7 @@ pub fn construct_shaft(
             let ex = b.lay_off(
                 &ey,
                 &normal,
-                shaft.alpha0 * md.abs() / ms,
+                torque_mm.unwrap_or(shaft.alpha0 * md.abs() / ms),
                 Label::NONE,
                 Role::Construction,
                 N_LEG_X,
