@@ -153,6 +153,45 @@ fn bundled_transmission_shaft_scenes() {
     }
 }
 
+/// LH Aufgabe 7: the distances are derived from the printed ordinates (the scene's notes say
+/// how); the construction must then give the book's ordinates within the drawing's reading
+/// error. The book reads ordinates to whole millimetres at h = 25 mm, 1 mm = 100 kg, 1:10, so
+/// ±0.5 mm, i.e. 2 % of y″ = 25 mm and 3 % of y‴ = 17 mm; the diameters it prints are
+/// rounded to whole millimetres (±1 mm).
+#[test]
+fn aufgabe_7_crankshaft_reproduces_the_printed_ordinates_and_diameters() {
+    use graphostatik::statics::sizing::shaft_diameter_cm;
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join("lh_aufgabe7_crankshaft.json");
+    let AnyScene::Shaft(scene) = AnyScene::load(&path).unwrap() else {
+        panic!("not a shaft")
+    };
+    let p = scene.problem();
+    let (board, rows) = p.construct(true).unwrap();
+    assert!(board
+        .steps()
+        .iter()
+        .flat_map(|s| &s.checks)
+        .all(|c| c.passed));
+    // Ordinates in mm at the pole distance H = 2500 kg and 1:10: 25 kg·m per mm.
+    let ms = p.drawing.length_scale / 1000.0 * p.drawing.pole_distance;
+    let pin = rows.iter().find(|r| (r.x - 0.275).abs() < 1e-12).unwrap();
+    let bearing_a = rows.iter().find(|r| r.x == 0.0).unwrap();
+    let (y2, y3) = (pin.mb / ms, bearing_a.mb / ms);
+    assert!((y2 - 25.0).abs() <= 0.5, "y″ = {y2} mm");
+    assert!((y3 - 17.0).abs() <= 0.5, "y‴ = {y3} mm");
+    // d = ∛(M_b / (0.1 k_b)) from the bending ordinate, as the book computes it.
+    let d = |mb: f64| 10.0 * shaft_diameter_cm(100.0 * mb, 1000.0);
+    assert!((d(pin.mb) - 85.0).abs() <= 1.0, "{}", d(pin.mb));
+    assert!((d(bearing_a.mb) - 75.0).abs() <= 1.0, "{}", d(bearing_a.mb));
+    // The torque P·r = 4540 · 0.11 reaches from the flywheel to arm I, not to bearing B.
+    assert!((bearing_a.md - 499.4).abs() < 1e-12);
+    assert_eq!(rows.last().unwrap().md, 0.0);
+    // With the torque, the ideal moment (α0 = 1.5) needs the larger diameter.
+    assert!(bearing_a.diameter_mm.unwrap() > d(bearing_a.mb));
+}
+
 #[test]
 fn bad_shaft_scenes_are_named() {
     let good = r#"{ "procedure": "shaft", "title": "t", "shaft": { "supports_m": [0, 1] },
