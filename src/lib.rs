@@ -22,3 +22,4 @@ pub mod protocol;
 pub mod render;
 pub mod scene;
 pub mod statics;
+pub mod truss;

@@ -95,6 +95,10 @@ pub enum Topic {
     Moment,
     /// The shear diagram (Querkraftdiagramm).
     Shear,
+    /// The truss drawn to scale: joints, members, supports (Bauplan).
+    Truss,
+    /// The Cremona plan: one point per space of Bow's notation, every member once.
+    Cremona,
 }
 
 /// How an object is drawn: the textbook's hierarchy of lines.

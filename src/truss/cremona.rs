@@ -1,0 +1,888 @@
+//! The Cremona force plan (LH B.4, Abb. 17, Regel 1 and 2), with the support reactions by the
+//! funicular polygon and its closing line (LH C.2).
+//!
+//! # Reactions
+//! With a pin at A and a roller at B: the force polygon of the loads, a pole O and its rays;
+//! the first string through A (the only point of A's reaction known), each further string from
+//! the cut of the previous one with the next load's line of action, the last one cut with
+//! B's reaction line in b′. The closing line A b′, carried parallel through O, cuts the
+//! parallel to B's reaction through the end of the force polygon: that point divides the
+//! closing side of the force polygon into B and A. This works for any directions, loads
+//! parallel or not.
+//!
+//! # The plan in Bow's notation
+//! Every space of the truss drawing gets a point of the plan: the spaces between the external
+//! forces (loads and reactions, taken clockwise round the outline) are the corners of the
+//! external force polygon; each triangle of the truss is found where the parallels to two of
+//! its members through the points of the neighbouring spaces meet. That is the joint
+//! polygon of a joint where only the space between two members is unknown, so two unknown
+//! member forces (Regel 2: clockwise round every joint, kept for the whole plan). Every member
+//! then appears once, as the segment between the points of the two spaces it separates.
+//!
+//! Going clockwise round joint a across member m from the space L on its left (seen from a
+//! towards b) to the space R, the member acts on a as the plan vector from L to R. If that
+//! vector points from a towards b the member pulls at the joint: tension (+); towards a,
+//! it pushes: compression (−) (Regel 1).
+
+use super::faces::{self, dest, origin, PlaneGraph};
+use super::matrix::{self, Solution};
+use super::{JointLoad, LoadCase, MemberForce, SupportKind, Truss};
+use crate::kernel::{Line, Point, Vector};
+use crate::protocol::{note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};
+use serde::Serialize;
+
+const N_JOINT: Note = note(
+    "joint",
+    Some("Knotenpunkt"),
+    "LH B.4, Abb. 17",
+    Topic::Truss,
+);
+const N_MEMBER: Note = note("member", Some("Stab"), "LH B.4, Abb. 17", Topic::Truss);
+const N_SUPPORT: Note = note(
+    "support reaction line",
+    Some("Auflager"),
+    "LH B.3",
+    Topic::Truss,
+);
+const N_LOAD: Note = note("joint load", Some("Knotenlast"), "LH B.3", Topic::Loads);
+const N_FP: Note = note(
+    "loads laid off head to tail",
+    Some("Krafteck"),
+    "LH C.2",
+    Topic::ForcePlan,
+);
+const N_POLE: Note = note("pole O", Some("Pol"), "LH C.2", Topic::ForcePlan);
+const N_RAY: Note = note("pole ray", Some("Polstrahl"), "LH C.2", Topic::ForcePlan);
+const N_LOA: Note = note(
+    "line of action of the load",
+    Some("Wirkungslinie"),
+    "LH C.2",
+    Topic::Funicular,
+);
+const N_STRING: Note = note(
+    "string parallel to the pole ray",
+    Some("Seilstrahl"),
+    "LH C.2",
+    Topic::Funicular,
+);
+const N_STRING_CUT: Note = note(
+    "string cuts the next line of action",
+    Some("Seileck"),
+    "LH C.2",
+    Topic::Funicular,
+);
+const N_B_CUT: Note = note(
+    "last string cuts the reaction line of B",
+    Some("Seileck"),
+    "LH C.2",
+    Topic::Reactions,
+);
+const N_CLOSING: Note = note(
+    "closing line from A",
+    Some("Schlusslinie"),
+    "LH C.2",
+    Topic::Reactions,
+);
+const N_CLOSING_RAY: Note = note(
+    "closing line carried through the pole",
+    Some("Schlusslinie"),
+    "LH C.2",
+    Topic::Reactions,
+);
+const N_B_DIR: Note = note(
+    "direction of B through the end of the loads",
+    Some("Auflagerdruck B"),
+    "LH C.2",
+    Topic::Reactions,
+);
+const N_SPLIT: Note = note(
+    "the closing side divided into B and A",
+    Some("Auflagerdrücke"),
+    "LH C.2",
+    Topic::Reactions,
+);
+const N_REACT: Note = note(
+    "support reaction read off",
+    Some("Auflagerdruck"),
+    "LH B.3, C.2",
+    Topic::Reactions,
+);
+const N_AXIS: Note = note(
+    "reading direction",
+    Some("Achse"),
+    "LH B.3",
+    Topic::Reactions,
+);
+const N_EXT: Note = note(
+    "external force laid on, clockwise round the truss",
+    Some("Krafteck der äußeren Kräfte"),
+    "LH B.4, Regel 2",
+    Topic::Cremona,
+);
+const N_START: Note = note(
+    "first space of the plan",
+    Some("Kräfteplan"),
+    "LH B.4",
+    Topic::Cremona,
+);
+const N_PAR: Note = note(
+    "parallel to a member through the point of the space beyond it",
+    Some("Parallele zum Stab"),
+    "LH B.4, Abb. 17a",
+    Topic::Cremona,
+);
+const N_SPACE: Note = note(
+    "joint polygon closed: the two unknown member forces meet",
+    Some("Knotenpunktpolygon"),
+    "LH B.4, Regel 2",
+    Topic::Cremona,
+);
+const N_FORCE: Note = note(
+    "member force: tension if it points away from the joint (Regel 1)",
+    Some("Stabkraft"),
+    "LH B.4, Regel 1",
+    Topic::Cremona,
+);
+
+/// Scales and where the figure's blocks go.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct TrussDrawing {
+    /// Length scale 1 : n of the truss drawing.
+    pub length_scale: f64,
+    /// Force scale, kg per mm.
+    pub force_scale: f64,
+}
+
+/// The result of one load case.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CaseResult {
+    /// Load case name.
+    pub case: String,
+    /// Reaction forces (kg), one vector per support in the order of the supports.
+    pub reactions: Vec<[f64; 2]>,
+    /// Member forces in the order of the members.
+    pub members: Vec<MemberForce>,
+    /// Largest out-of-balance force at any joint for the plan's forces (kg).
+    pub plan_residual: f64,
+    /// The same for the dense solve, where it was made.
+    pub matrix_residual: Option<f64>,
+}
+
+/// Roman numerals for joint names in figures; further joints are numbered K₂₁, K₂₂, ….
+const SPACE_NAMES: [&str; 26] = [
+    "a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m", "n", "o", "p", "q", "r", "s",
+    "t", "u", "v", "w", "x", "y", "z",
+];
+
+fn space_label(i: usize) -> Label {
+    if i < SPACE_NAMES.len() {
+        Label::plain(SPACE_NAMES[i])
+    } else {
+        Label::indexed("r", i as u32 + 1)
+    }
+}
+
+fn member_label(t: &Truss, m: usize) -> Label {
+    let n = t.members[m].name.parse::<u32>().unwrap_or(m as u32 + 1);
+    Label::indexed("S", n)
+}
+
+fn joint_label(j: usize) -> Label {
+    Label::indexed("K", j as u32 + 1)
+}
+
+/// Everything the truss drawing needs per case, computed without a board.
+struct External {
+    /// (joint, force) of every external force, loads first, then reactions.
+    forces: Vec<(usize, Vector)>,
+    /// Reaction vectors per support.
+    reactions: Vec<Vector>,
+}
+
+/// The reaction supports: exactly one pin and one roller.
+fn pin_roller(t: &Truss) -> Result<(usize, usize, Vector), ConstructionError> {
+    let pins: Vec<_> = t
+        .supports
+        .iter()
+        .filter(|s| s.kind == SupportKind::Pinned)
+        .collect();
+    let rollers: Vec<_> = t
+        .supports
+        .iter()
+        .filter_map(|s| match s.kind {
+            SupportKind::Roller { dir } => Some((s.joint, dir)),
+            _ => None,
+        })
+        .collect();
+    if pins.len() == 1 && rollers.len() == 1 {
+        Ok((pins[0].joint, rollers[0].0, rollers[0].1))
+    } else {
+        Err(ConstructionError::Unsupported(format!(
+            "the graphic reactions need one pin and one roller; the truss has {} pin(s) and {} roller(s)",
+            pins.len(),
+            rollers.len()
+        )))
+    }
+}
+
+/// Constructs the truss drawing and, per load case, the reactions and the Cremona plan,
+/// each checked member by member against the dense solve of the joint equations
+/// (up to [`matrix::DENSE_MAX_JOINTS`] joints).
+///
+/// # Errors
+/// A truss that is not determinate, not a plane drawing, or whose plan stalls (three unknown
+/// members at every remaining joint: Ritter's section would be needed), and loads at joints
+/// off the outline.
+///
+/// ```
+/// use graphostatik::truss::{cremona::*, *};
+/// use graphostatik::kernel::{Point, Vector};
+/// use graphostatik::protocol::Board;
+/// // A triangle, span 2 m, height 1 m, 1000 kg at the apex: each rafter −707 kg, the tie +500.
+/// let j = |n: &str, x, y| Joint { name: n.into(), at: Point::new(x, y) };
+/// let m = |n: &str, a, b| Member { name: n.into(), ends: [a, b] };
+/// let t = Truss {
+///     joints: vec![j("I", 0.0, 0.0), j("II", 2.0, 0.0), j("III", 1.0, 1.0)],
+///     members: vec![m("1", 0, 2), m("2", 2, 1), m("3", 0, 1)],
+///     supports: vec![
+///         Support { joint: 0, kind: SupportKind::Pinned },
+///         Support { joint: 1, kind: SupportKind::Roller { dir: Vector::new(0.0, 1.0) } },
+///     ],
+/// };
+/// let case = LoadCase { name: "P".into(),
+///     loads: vec![JointLoad { joint: 2, force: Vector::new(0.0, -1000.0) }] };
+/// let mut b = Board::new(400.0, true);
+/// let r = construct_truss(&mut b, &t, &[case],
+///     &TrussDrawing { length_scale: 20.0, force_scale: 20.0 }).unwrap();
+/// let s: Vec<f64> = r[0].members.iter().map(|m| m.force).collect();
+/// assert!((s[0] + 707.1068).abs() < 1e-3 && (s[2] - 500.0).abs() < 1e-9);
+/// assert!(b.steps().iter().flat_map(|s| &s.checks).all(|c| c.passed));
+/// ```
+pub fn construct_truss(
+    b: &mut Board,
+    t: &Truss,
+    cases: &[LoadCase],
+    dr: &TrussDrawing,
+) -> Result<Vec<CaseResult>, ConstructionError> {
+    let analysis = matrix::analyse(t);
+    match analysis.determinacy {
+        matrix::Determinacy::Determinate => {}
+        matrix::Determinacy::Mechanism { joint, freedoms } => {
+            return Err(ConstructionError::Unsupported(format!(
+                "the truss is a mechanism ({freedoms} free motion(s)): joint {} can move",
+                t.joints[joint].name
+            )))
+        }
+        matrix::Determinacy::OverDeterminate { redundant } => {
+            return Err(ConstructionError::Unsupported(format!(
+                "the truss is over-determinate by {redundant} (s = {}, 2k − 3 = {}): the Cremona plan needs a determinate truss (split it as in LH B.5)",
+                t.members.len(),
+                2 * t.joints.len() as i64 - 3
+            )))
+        }
+    }
+    let g = faces::plane_graph(t).map_err(|e| {
+        ConstructionError::Unsupported(match e {
+            faces::GraphError::Disconnected { joint } => {
+                format!("joint {} is not connected to the truss", t.joints[joint].name)
+            }
+            faces::GraphError::Crossing => {
+                "members cross: the Cremona plan needs a plane drawing (drop crossing counter-diagonals as in LH B.5)".into()
+            }
+        })
+    })?;
+    let (pin, roller, rdir) = pin_roller(t)?;
+    let mut out = Vec::with_capacity(cases.len());
+    let mut row_top = 0.0;
+    for case in cases {
+        let sol = if t.joints.len() <= matrix::DENSE_MAX_JOINTS {
+            matrix::solve(t, case)
+        } else {
+            None
+        };
+        // A scratch run fixes where the blocks go; the real run draws them there.
+        let mut scratch = Board::new(b.tolerance().length * 1e6, false);
+        let dry = construct_case(
+            &mut scratch,
+            t,
+            &g,
+            case,
+            sol.as_ref(),
+            dr,
+            Layout {
+                truss: Point::origin(),
+                polygon: Point::origin(),
+                plan: Point::origin(),
+            },
+            (pin, roller, rdir),
+        )?;
+        let gap = 30.0;
+        let [tx0, ty0, tx1, ty1] = dry.boxes[0];
+        let [px0, py0, px1, py1] = dry.boxes[1];
+        let [qx0, qy0, _, qy1] = dry.boxes[2];
+        let truss = Point::new(-tx0, row_top - ty1);
+        let polygon = Point::new(tx1 - tx0 + gap - px0, row_top - py1);
+        let plan = Point::new(tx1 - tx0 + gap + (px1 - px0) + gap - qx0, row_top - qy1);
+        b.set_context(|| case.name.clone());
+        let r = construct_case(
+            b,
+            t,
+            &g,
+            case,
+            sol.as_ref(),
+            dr,
+            Layout {
+                truss,
+                polygon,
+                plan,
+            },
+            (pin, roller, rdir),
+        )?;
+        b.clear_context();
+        let height = (ty1 - ty0).max(py1 - py0).max(qy1 - qy0);
+        row_top -= height + 2.0 * gap;
+        out.push(r.result);
+    }
+    Ok(out)
+}
+
+#[derive(Clone, Copy)]
+struct Layout {
+    truss: Point,
+    polygon: Point,
+    plan: Point,
+}
+
+struct CaseOut {
+    result: CaseResult,
+    /// Bounding boxes [x0, y0, x1, y1] of the truss drawing, the reactions' force polygon,
+    /// and the Cremona plan, relative to their origins.
+    boxes: [[f64; 4]; 3],
+}
+
+fn grow(bx: &mut [f64; 4], p: Point, o: Point) {
+    let (x, y) = (p.x - o.x, p.y - o.y);
+    bx[0] = bx[0].min(x);
+    bx[1] = bx[1].min(y);
+    bx[2] = bx[2].max(x);
+    bx[3] = bx[3].max(y);
+}
+
+const EMPTY: [f64; 4] = [
+    f64::INFINITY,
+    f64::INFINITY,
+    f64::NEG_INFINITY,
+    f64::NEG_INFINITY,
+];
+
+/// The pole for the reaction construction: off the left of the loads' resultant by about the
+/// polygon's size, picked among a few candidates for the best-conditioned cuts of strings with
+/// lines of action and of the last string with B's line.
+fn choose_pole(corners: &[Point], loads: &[Vector], rdir: Vector) -> Point {
+    let (first, last) = (corners[0], corners[corners.len() - 1]);
+    let mid = Point::from((first.coords + last.coords) * 0.5);
+    let span = corners
+        .iter()
+        .map(|c| (c - mid).norm())
+        .fold(0.0, f64::max)
+        .max(10.0);
+    let chord = last - first;
+    let n = if chord.norm() > 1e-9 * span {
+        Vector::new(-chord.y, chord.x).normalize()
+    } else {
+        Vector::new(-1.0, 0.0)
+    };
+    let sin = |a: Vector, b: Vector| (a.x * b.y - a.y * b.x).abs() / (a.norm() * b.norm());
+    let score = |o: Point| -> f64 {
+        let mut worst = f64::INFINITY;
+        for (i, l) in loads.iter().enumerate() {
+            worst = worst.min(sin(corners[i] - o, *l));
+        }
+        worst.min(sin(last - o, rdir))
+    };
+    let mut best = (mid + n * span, -1.0);
+    for (f, turn) in [
+        (1.0, 0.0),
+        (1.0, 0.5),
+        (1.0, -0.5),
+        (1.6, 0.0),
+        (0.7, 0.3),
+        (1.3, -0.8),
+        (2.0, 1.0),
+    ] {
+        let o = mid + n * (f * span) + chord * turn;
+        let s = score(o);
+        if s > best.1 * (1.0 + 1e-9) {
+            best = (o, s);
+        }
+    }
+    best.0
+}
+
+#[allow(clippy::too_many_arguments)]
+fn construct_case(
+    b: &mut Board,
+    t: &Truss,
+    g: &PlaneGraph,
+    case: &LoadCase,
+    sol: Option<&Solution>,
+    dr: &TrussDrawing,
+    at: Layout,
+    (pin, roller, rdir): (usize, usize, Vector),
+) -> Result<CaseOut, ConstructionError> {
+    let k = 1000.0 / dr.length_scale;
+    let fs = dr.force_scale;
+    let kg = Scale {
+        per_mm: fs,
+        unit: "kg",
+    };
+    let maxload = case
+        .loads
+        .iter()
+        .map(|l| l.force.norm())
+        .fold(0.0, f64::max);
+    let mut boxes = [EMPTY; 3];
+    // The truss drawing (Bauplan).
+    let jp: Vec<H<Point>> = t
+        .joints
+        .iter()
+        .enumerate()
+        .map(|(i, j)| {
+            let p = at.truss + j.at.coords * k;
+            grow(&mut boxes[0], p, at.truss);
+            b.point(p, joint_label(i), Role::Given, N_JOINT)
+        })
+        .collect();
+    // Each member drawn as the line through its joints over their distance: the line (a → b)
+    // that the plan's parallels and readings refer to.
+    let mut mline = Vec::with_capacity(t.members.len());
+    for (m, mem) in t.members.iter().enumerate() {
+        let [i, j] = mem.ends;
+        mline.push(b.line_through(&jp[i], &jp[j], member_label(t, m), Role::Given, N_MEMBER)?);
+    }
+    let rline = b.line_dir(&jp[roller], rdir, Label::plain("B"), Role::Guide, N_SUPPORT)?;
+    b.point(jp[pin].g, Label::plain("A"), Role::Guide, N_SUPPORT);
+    // Loads, drawn as arrows ending at their joints, in the order of their joints.
+    let mut loads: Vec<JointLoad> = case
+        .loads
+        .iter()
+        .copied()
+        .filter(|l| l.force.norm() > 0.0)
+        .collect();
+    loads.sort_by(|a, c| {
+        let (pa, pc) = (t.joints[a.joint].at, t.joints[c.joint].at);
+        pa.x.total_cmp(&pc.x).then(pa.y.total_cmp(&pc.y))
+    });
+    for l in &loads {
+        let head = jp[l.joint];
+        let tail = b.point(head.g - l.force / fs, Label::NONE, Role::Given, N_LOAD);
+        grow(&mut boxes[0], tail.g, at.truss);
+        b.segment(&tail, &head, Label::indexed("P", 0), Role::Force, N_LOAD);
+    }
+    // Reactions by the funicular polygon.
+    let reactions: [Vector; 2] = if loads.is_empty() {
+        [Vector::zeros(), Vector::zeros()]
+    } else {
+        let mut corners = vec![at.polygon];
+        for l in &loads {
+            let c = *corners.last().expect("starts with one corner") + l.force / fs;
+            corners.push(c);
+        }
+        let dirs: Vec<Vector> = loads.iter().map(|l| l.force).collect();
+        let pole = choose_pole(&corners, &dirs, rdir);
+        let f0 = b.point(corners[0], Label::indexed("F", 0), Role::Given, N_FP);
+        let mut fh = vec![f0];
+        for (i, l) in loads.iter().enumerate() {
+            let along = b.line_dir(&fh[i], l.force, Label::NONE, Role::Auxiliary, N_FP)?;
+            let p = b.lay_off(
+                &fh[i],
+                &along,
+                l.force.norm() / fs,
+                Label::NONE,
+                Role::Force,
+                N_FP,
+            )?;
+            fh.push(p);
+        }
+        let o = b.point(pole, Label::plain("O"), Role::Given, N_POLE);
+        for p in fh.iter().map(|h| h.g).chain([pole]) {
+            grow(&mut boxes[1], p, at.polygon);
+        }
+        let rays: Vec<H<Line>> = fh
+            .iter()
+            .map(|f| b.line_through(&o, f, Label::NONE, Role::Construction, N_RAY))
+            .collect::<Result<_, _>>()?;
+        let mut s = b.parallel(
+            &rays[0],
+            &jp[pin],
+            Label::NONE,
+            Role::Construction,
+            N_STRING,
+        );
+        for (i, l) in loads.iter().enumerate() {
+            let loa = b.line_dir(&jp[l.joint], l.force, Label::NONE, Role::Auxiliary, N_LOA)?;
+            let c = b.meet_point(&s, &loa, Label::NONE, N_STRING_CUT)?;
+            grow(&mut boxes[0], c.g, at.truss);
+            s = b.parallel(&rays[i + 1], &c, Label::NONE, Role::Construction, N_STRING);
+        }
+        let bcut = b.meet_point(&s, &rline, Label::quiet("b", 0), N_B_CUT)?;
+        grow(&mut boxes[0], bcut.g, at.truss);
+        let closing =
+            b.line_through(&jp[pin], &bcut, Label::NONE, Role::Construction, N_CLOSING)?;
+        let through_o = b.parallel(&closing, &o, Label::NONE, Role::Construction, N_CLOSING_RAY);
+        let bl = b.parallel(
+            &rline,
+            &fh[loads.len()],
+            Label::NONE,
+            Role::Auxiliary,
+            N_B_DIR,
+        );
+        let x = b.meet_point(&through_o, &bl, Label::quiet("X", 0), N_SPLIT)?;
+        grow(&mut boxes[1], x.g, at.polygon);
+        let last = fh[loads.len()];
+        b.segment(&last, &x, Label::plain("B"), Role::Force, N_REACT);
+        b.segment(&x, &fh[0], Label::plain("A"), Role::Force, N_REACT);
+        let rb = b.measure(&last, &x, &rline, kg, Label::quiet("B", 0), N_REACT);
+        let xa = b.line_dir(
+            &x,
+            Vector::new(1.0, 0.0),
+            Label::NONE,
+            Role::Auxiliary,
+            N_AXIS,
+        )?;
+        let ya = b.line_dir(
+            &x,
+            Vector::new(0.0, 1.0),
+            Label::NONE,
+            Role::Auxiliary,
+            N_AXIS,
+        )?;
+        let ax = b.measure(&x, &fh[0], &xa, kg, Label::quiet("Ax", 0), N_REACT);
+        let ay = b.measure(&x, &fh[0], &ya, kg, Label::quiet("Ay", 0), N_REACT);
+        if let Some(sol) = sol {
+            // The solve's reaction columns: in the order of the supports.
+            let (mut c, mut pin_c, mut roll_c) = (0, 0, 0);
+            for sup in &t.supports {
+                match sup.kind {
+                    SupportKind::Pinned => {
+                        pin_c = c;
+                        c += 2;
+                    }
+                    SupportKind::Roller { .. } => {
+                        roll_c = c;
+                        c += 1;
+                    }
+                }
+            }
+            let r = &sol.reactions;
+            let f = "joint equilibrium, dense LU (nalgebra)";
+            b.check(&rb, "reaction B along its line", "kg", f, maxload, || {
+                r[roll_c]
+            });
+            b.check(&ax, "reaction A, horizontal", "kg", f, maxload, || r[pin_c]);
+            b.check(&ay, "reaction A, vertical", "kg", f, maxload, || {
+                r[pin_c + 1]
+            });
+        }
+        [(fh[0].g - x.g) * fs, (x.g - last.g) * fs]
+    };
+    // The external forces at their joints: loads, then A and B.
+    let mut ext: Vec<(usize, Vector)> = loads.iter().map(|l| (l.joint, l.force)).collect();
+    let tiny = 1e-12 * maxload.max(reactions[0].norm()).max(reactions[1].norm());
+    for (j, r) in [(pin, reactions[0]), (roller, reactions[1])] {
+        if r.norm() > tiny {
+            ext.push((j, r));
+        }
+    }
+    let external = External {
+        forces: ext,
+        reactions: reactions.to_vec(),
+    };
+    let (result, plan_box) =
+        cremona_plan(b, t, g, case, &external, sol, dr, at.plan, &mline, maxload)?;
+    boxes[2] = plan_box;
+    for bx in &mut boxes {
+        if !bx[0].is_finite() {
+            *bx = [0.0; 4];
+        }
+    }
+    Ok(CaseOut { result, boxes })
+}
+
+/// Assigns every external force to its place on the outline, clockwise, and every outer
+/// half-edge to the space on its left.
+fn outline(
+    t: &Truss,
+    g: &PlaneGraph,
+    ext: &External,
+) -> Result<(Vec<usize>, Vec<usize>), ConstructionError> {
+    let nh = g.next.len();
+    let mut space_of_half = vec![usize::MAX; nh];
+    let mut order = Vec::with_capacity(ext.forces.len());
+    let mut placed = vec![false; ext.forces.len()];
+    let outer = &g.faces[g.outer];
+    if outer.is_empty() {
+        return Err(ConstructionError::Unsupported(
+            "a truss needs members".into(),
+        ));
+    }
+    // The outline's half-edges in order: h_in = u → v, then h_out = v → w.
+    let mut space = 0;
+    for (idx, &h_in) in outer.iter().enumerate() {
+        space_of_half[h_in] = space;
+        let h_out = outer[(idx + 1) % outer.len()];
+        let v = dest(t, h_in);
+        let back = g.angle[h_in ^ 1];
+        let span = if h_out == h_in ^ 1 {
+            std::f64::consts::TAU
+        } else {
+            faces::cw(back, g.angle[h_out])
+        };
+        // Forces at v whose line of action leaves into this sector, clockwise.
+        let mut here: Vec<(f64, usize)> = Vec::new();
+        for (fi, &(j, f)) in ext.forces.iter().enumerate() {
+            if j != v || placed[fi] {
+                continue;
+            }
+            // The line of action drawn on the outside: the arrow coming in towards the joint
+            // (−f) if that side is outside, else going out (+f).
+            let a_in = (-f.y).atan2(-f.x);
+            let a_out = f.y.atan2(f.x);
+            let inside = |a: f64| {
+                let c = faces::cw(back, a);
+                c > 0.0 && c < span
+            };
+            let a = if inside(a_in) {
+                a_in
+            } else if inside(a_out) {
+                a_out
+            } else {
+                continue;
+            };
+            here.push((faces::cw(back, a), fi));
+        }
+        here.sort_by(|a, c| a.0.total_cmp(&c.0).then(a.1.cmp(&c.1)));
+        for (_, fi) in here {
+            placed[fi] = true;
+            order.push(fi);
+            space += 1;
+        }
+    }
+    if let Some(fi) = placed.iter().position(|p| !p) {
+        let j = ext.forces[fi].0;
+        return Err(ConstructionError::Unsupported(format!(
+            "joint {} carries an external force but its line of action does not leave the truss on the outside: Bow's notation needs external forces at outer joints",
+            t.joints[j].name
+        )));
+    }
+    // The space after the last force is the first one again.
+    let n = order.len().max(1);
+    for s in &mut space_of_half {
+        if *s != usize::MAX {
+            *s %= n;
+        }
+    }
+    Ok((order, space_of_half))
+}
+
+#[allow(clippy::too_many_arguments)]
+fn cremona_plan(
+    b: &mut Board,
+    t: &Truss,
+    g: &PlaneGraph,
+    case: &LoadCase,
+    ext: &External,
+    sol: Option<&Solution>,
+    dr: &TrussDrawing,
+    at: Point,
+    mline: &[H<Line>],
+    maxload: f64,
+) -> Result<(CaseResult, [f64; 4]), ConstructionError> {
+    let fs = dr.force_scale;
+    let kg = Scale {
+        per_mm: fs,
+        unit: "kg",
+    };
+    let mut bx = EMPTY;
+    let (order, mut space_of_half) = outline(t, g, ext)?;
+    let n_ext = order.len().max(1);
+    // Inner faces become spaces after the outer ones.
+    let mut space_of_face = vec![usize::MAX; g.faces.len()];
+    let mut n_spaces = n_ext;
+    for (f, sp) in space_of_face.iter_mut().enumerate() {
+        if f != g.outer {
+            *sp = n_spaces;
+            n_spaces += 1;
+        }
+    }
+    }
+    for h in 0..space_of_half.len() {
+        if g.face_of[h] != g.outer {
+            space_of_half[h] = space_of_face[g.face_of[h]];
+        }
+    }
+    let mut pt: Vec<Option<H<Point>>> = vec![None; n_spaces];
+    // The external force polygon, clockwise round the truss.
+    let start = b.point(at, space_label(0), Role::Given, N_START);
+    grow(&mut bx, at, at);
+    pt[0] = Some(start);
+    let mut cur = start;
+    for (i, &fi) in order.iter().enumerate() {
+        let f = ext.forces[fi].1;
+        let along = b.line_dir(&cur, f, Label::NONE, Role::Auxiliary, N_EXT)?;
+        let lab = if i + 1 < order.len() {
+            space_label(i + 1)
+        } else {
+            Label::NONE
+        };
+        let next = b.lay_off(&cur, &along, f.norm() / fs, lab, Role::Force, N_EXT)?;
+        grow(&mut bx, next.g, at);
+        if i + 1 < order.len() {
+            pt[i + 1] = Some(next);
+        }
+        cur = next;
+    }
+    // Joints touching each space, to revisit when it becomes known.
+    let mut joints_of_space: Vec<Vec<usize>> = vec![Vec::new(); n_spaces];
+    for (h, &s) in space_of_half.iter().enumerate() {
+        joints_of_space[s].push(origin(t, h));
+    }
+    for js in &mut joints_of_space {
+        js.sort_unstable();
+        js.dedup();
+    }
+    let mut forces: Vec<Option<f64>> = vec![None; t.members.len()];
+    let mut plan_mm = vec![0.0; t.members.len()];
+    let mut queue: std::collections::VecDeque<usize> = (0..t.joints.len()).collect();
+    let mut queued = vec![true; t.joints.len()];
+    let reference = maxload.max(ext.reactions.iter().map(|r| r.norm()).fold(0.0, f64::max));
+    // Draws every member whose two spaces are known and that is not drawn yet.
+    let settle = |b: &mut Board,
+                  pt: &[Option<H<Point>>],
+                  forces: &mut Vec<Option<f64>>,
+                  plan_mm: &mut Vec<f64>,
+                  members: &mut dyn Iterator<Item = usize>| {
+        for m in members {
+            if forces[m].is_some() {
+                continue;
+            }
+            let (l, r) = (space_of_half[2 * m], space_of_half[2 * m + 1]);
+            if let (Some(pl), Some(pr)) = (pt[l], pt[r]) {
+                b.segment(&pl, &pr, member_label(t, m), Role::Result, N_FORCE);
+                let v = b.measure(&pl, &pr, &mline[m], kg, member_label(t, m), N_FORCE);
+                if let Some(sol) = sol {
+                    b.check(
+                        &v,
+                        "member force (tension +)",
+                        "kg",
+                        "joint equilibrium, dense LU (nalgebra)",
+                        reference,
+                        || sol.members[m],
+                    );
+                }
+                forces[m] = Some(v.g);
+                plan_mm[m] = (pr.g - pl.g).norm();
+            }
+        }
+    };
+    // Members on the outline are known from the external polygon already.
+    settle(b, &pt, &mut forces, &mut plan_mm, &mut (0..t.members.len()));
+    while let Some(v) = queue.pop_front() {
+        queued[v] = false;
+        let around = &g.around[v];
+        let d = around.len();
+        if d < 2 {
+            continue;
+        }
+        let unknown: Vec<usize> = (0..d)
+            .filter(|&i| pt[space_of_half[around[i]]].is_none())
+            .collect();
+        let mut spaces: Vec<usize> = unknown.iter().map(|&i| space_of_half[around[i]]).collect();
+        spaces.dedup();
+        if spaces.len() != 1 || unknown.len() != 1 {
+            continue;
+        }
+        let i = unknown[0];
+        let (ha, hb) = (around[i], around[(i + 1) % d]);
+        let u = space_of_half[ha];
+        let (x, y) = (space_of_half[ha ^ 1], space_of_half[hb]);
+        let (Some(px), Some(py)) = (pt[x], pt[y]) else {
+            continue;
+        };
+        let name = &t.joints[v].name;
+        let ctx = |b: &mut Board| b.set_context(|| format!("{}: joint {name}", case.name));
+        ctx(b);
+        let la = b.parallel(&mline[ha / 2], &px, Label::NONE, Role::Construction, N_PAR);
+        let lb = b.parallel(&mline[hb / 2], &py, Label::NONE, Role::Construction, N_PAR);
+        let p = match b.meet(&la, &lb, space_label(u), N_SPACE) {
+            Cut::Point(p, _) => p,
+            // Two members in line at this joint: another joint has to fix the space.
+            _ => continue,
+        };
+        grow(&mut bx, p.g, at);
+        pt[u] = Some(p);
+        settle(
+            b,
+            &pt,
+            &mut forces,
+            &mut plan_mm,
+            &mut g
+                .faces
+                .iter()
+                .enumerate()
+                .filter(|(f, _)| space_of_face[*f] == u)
+                .flat_map(|(_, c)| c.iter().map(|h| h / 2))
+                .collect::<Vec<_>>()
+                .into_iter(),
+        );
+        for &j in &joints_of_space[u] {
+            if !queued[j] {
+                queued[j] = true;
+                queue.push_back(j);
+            }
+        }
+    }
+    b.set_context(|| case.name.clone());
+    if let Some(m) = forces.iter().position(|f| f.is_none()) {
+        let stuck: Vec<&str> = (0..t.joints.len())
+            .filter(|&v| g.around[v].iter().any(|&h| forces[h / 2].is_none()))
+            .map(|v| t.joints[v].name.as_str())
+            .take(6)
+            .collect();
+        return Err(ConstructionError::Unsupported(format!(
+            "the Cremona plan stalls before member {}: at joints {} three or more member forces are unknown, so Ritter's method of sections (LH B.4) would be needed",
+            t.members[m].name,
+            stuck.join(", ")
+        )));
+    }
+    let members: Vec<f64> = forces.iter().map(|f| f.unwrap_or(0.0)).collect();
+    // Reaction components in the solve's order, for the residual.
+    let mut rc = Vec::new();
+    for sup in &t.supports {
+        let (pin_v, roll_v) = (ext.reactions[0], ext.reactions[1]);
+        match sup.kind {
+            SupportKind::Pinned => rc.extend([pin_v.x, pin_v.y]),
+            SupportKind::Roller { dir } => rc.push(roll_v.dot(&dir)),
+        }
+    }
+    let plan_residual = matrix::max_residual(t, case, &members, &rc);
+    let matrix_residual = sol.map(|s| matrix::max_residual(t, case, &s.members, &s.reactions));
+    let result = CaseResult {
+        case: case.name.clone(),
+        reactions: ext.reactions.iter().map(|r| [r.x, r.y]).collect(),
+        members: t
+            .members
+            .iter()
+            .enumerate()
+            .map(|(m, mem)| MemberForce {
+                member: mem.name.clone(),
+                plan_mm: plan_mm[m],
+                force: members[m],
+                matrix: sol.map(|s| s.members[m]),
+            })
+            .collect(),
+        plan_residual,
+        matrix_residual,
+    };
+    Ok((result, bx))
+}

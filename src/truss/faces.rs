@@ -1,0 +1,162 @@
+//! The truss drawing as a plane graph: the members around every joint in angular order, the
+//! faces (the triangles of the truss and the outside), and the walk around the outside along
+//! which the external forces are named.
+//!
+//! This is the frame of Bow's notation: every face of the truss and every space between two
+//! external forces gets a letter, every member and force is named by the two spaces it
+//! separates, and the Cremona plan has one point per space (the reciprocal figure).
+//!
+//! Half-edge `2m` runs along member m from its first joint to its second, `2m + 1` back.
+//! Faces are traced with the face on the left: bounded faces counter-clockwise (positive
+//! area), the outside clockwise (negative area). A drawing whose members cross gives a
+//! tracing that violates Euler's formula k − s + f = 2, and is refused.
+
+use super::Truss;
+use std::f64::consts::TAU;
+
+/// The plane graph of a truss.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlaneGraph {
+    /// Outgoing half-edges of every joint, counter-clockwise by angle.
+    pub around: Vec<Vec<usize>>,
+    /// Angle of every half-edge (radians, in (−π, π]).
+    pub angle: Vec<f64>,
+    /// The next half-edge along the same face.
+    pub next: Vec<usize>,
+    /// The face left of every half-edge.
+    pub face_of: Vec<usize>,
+    /// Every face as its cycle of half-edges.
+    pub faces: Vec<Vec<usize>>,
+    /// The outside face.
+    pub outer: usize,
+}
+
+/// Joint at the start of half-edge `h`.
+pub fn origin(t: &Truss, h: usize) -> usize {
+    t.members[h / 2].ends[h % 2]
+}
+
+/// Joint at the end of half-edge `h`.
+pub fn dest(t: &Truss, h: usize) -> usize {
+    t.members[h / 2].ends[1 - h % 2]
+}
+
+/// Why a truss has no plane graph.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum GraphError {
+    /// Some joint cannot be reached from the first one.
+    Disconnected {
+        /// A joint not reached.
+        joint: usize,
+    },
+    /// Members cross each other (Euler's formula fails).
+    Crossing,
+}
+
+/// Builds the plane graph, O(s log s).
+pub fn plane_graph(t: &Truss) -> Result<PlaneGraph, GraphError> {
+    let k = t.joints.len();
+    let nh = 2 * t.members.len();
+    let mut angle = vec![0.0; nh];
+    let mut around: Vec<Vec<usize>> = vec![Vec::new(); k];
+    for h in 0..nh {
+        let d = t.joints[dest(t, h)].at - t.joints[origin(t, h)].at;
+        angle[h] = d.y.atan2(d.x);
+        around[origin(t, h)].push(h);
+    }
+    for list in &mut around {
+        list.sort_by(|&a, &b| angle[a].total_cmp(&angle[b]).then(a.cmp(&b)));
+    }
+    // Connected?
+    let mut seen = vec![false; k];
+    let mut stack = vec![0];
+    if k > 0 {
+        seen[0] = true;
+    }
+    while let Some(v) = stack.pop() {
+        for &h in &around[v] {
+            let w = dest(t, h);
+            if !seen[w] {
+                seen[w] = true;
+                stack.push(w);
+            }
+        }
+    }
+    if let Some(joint) = seen.iter().position(|s| !s) {
+        return Err(GraphError::Disconnected { joint });
+    }
+    let mut pos = vec![0; nh];
+    for list in &around {
+        for (i, &h) in list.iter().enumerate() {
+            pos[h] = i;
+        }
+    }
+    // next(u→v) = the half-edge leaving v clockwise next to v→u.
+    let next: Vec<usize> = (0..nh)
+        .map(|h| {
+            let t_ = h ^ 1;
+            let list = &around[origin(t, t_)];
+            let i = pos[t_];
+            list[(i + list.len() - 1) % list.len()]
+        })
+        .collect();
+    let mut face_of = vec![usize::MAX; nh];
+    let mut faces = Vec::new();
+    for h0 in 0..nh {
+        if face_of[h0] != usize::MAX {
+            continue;
+        }
+        let f = faces.len();
+        let mut cycle = Vec::new();
+        let mut h = h0;
+        while face_of[h] == usize::MAX {
+            face_of[h] = f;
+            cycle.push(h);
+            h = next[h];
+        }
+        faces.push(cycle);
+    }
+    let area = |cycle: &[usize]| -> f64 {
+        cycle
+            .iter()
+            .map(|&h| {
+                let a = t.joints[origin(t, h)].at;
+                let b = t.joints[dest(t, h)].at;
+                a.x * b.y - a.y * b.x
+            })
+            .sum::<f64>()
+            * 0.5
+    };
+    let outer = if faces.is_empty() {
+        0
+    } else {
+        (0..faces.len())
+            .min_by(|&a, &b| area(&faces[a]).total_cmp(&area(&faces[b])).then(a.cmp(&b)))
+            .unwrap_or(0)
+    };
+    // Euler: k − s + f = 2 for a connected plane drawing (a single joint has one face).
+    if !faces.is_empty() && k as i64 - t.members.len() as i64 + faces.len() as i64 != 2 {
+        return Err(GraphError::Crossing);
+    }
+    // A bounded face traced clockwise means the drawing folds over itself.
+    if faces
+        .iter()
+        .enumerate()
+        .any(|(f, c)| f != outer && area(c) <= 0.0)
+    {
+        return Err(GraphError::Crossing);
+    }
+    Ok(PlaneGraph {
+        around,
+        angle,
+        next,
+        face_of,
+        faces,
+        outer,
+    })
+}
+
+/// Clockwise angle from `from` to `to` (radians, in [0, 2π)).
+pub fn cw(from: f64, to: f64) -> f64 {
+    (from - to).rem_euclid(TAU)
+}

@@ -1,0 +1,278 @@
+//! The joint-equilibrium equations of a truss (LH B.2-3): at every joint ΣX = 0 and ΣY = 0,
+//! 2k equations in the s member forces and the r reaction components.
+//!
+//! # Determinacy and stability (LH Gl. 2)
+//! The books count: a truss of triangles needs s = 2k − 3 members. Counting alone is not
+//! enough (a truss can have the right number of members and still be a mechanism where one
+//! panel has none), so [`analyse`] also takes the rank of the 2k × (s + r) equilibrium
+//! matrix A by its singular values:
+//! - rank A < 2k: some load cannot be carried; the truss (with its supports) is a
+//!   **mechanism**. A vector u with Aᵀu = 0 is a motion of the joints that no member resists,
+//!   and the joint that moves most is named;
+//! - rank A = 2k = s + r: **determinate**, one solution for every load;
+//! - rank A = 2k < s + r: **over-determinate** by s + r − 2k (LH B.5).
+//!
+//! # Numerics
+//! A singular value counts as zero below [`RANK_REL`] × the largest. The dense SVD costs
+//! O(k³) time and O(k²) memory; [`DENSE_MAX_JOINTS`] bounds where it is made.
+
+use super::{LoadCase, SupportKind, Truss};
+use nalgebra::{DMatrix, DVector};
+use serde::Serialize;
+
+/// A singular value of the equilibrium matrix below this fraction of the largest counts as
+/// zero. The matrix entries are direction cosines (of size 1), so the largest singular value
+/// is of order 1 to √(max degree); 1e-10 is far above the 1e-16 rounding of well-formed
+/// trusses and far below the 1e-3 of a shallow truss at 0.1°.
+pub const RANK_REL: f64 = 1e-10;
+
+/// The dense rank test and solve are made up to this many joints (a 2k × 2k matrix of
+/// 2 × 1500 rows is 72 MB and some seconds); above it the Cremona plan's residual at every
+/// joint is the check.
+pub const DENSE_MAX_JOINTS: usize = 1500;
+
+/// What the rank test finds.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "kind")]
+pub enum Determinacy {
+    /// s + r = 2k and full rank.
+    Determinate,
+    /// Full rank with more unknowns than equations.
+    OverDeterminate {
+        /// s + r − 2k: the number of redundant members or reactions.
+        redundant: usize,
+    },
+    /// Rank below 2k: a joint can move.
+    Mechanism {
+        /// The joint that moves most in a motion no member resists.
+        joint: usize,
+        /// 2k − rank: the number of independent motions.
+        freedoms: usize,
+    },
+}
+
+/// The count and the rank.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Analysis {
+    /// Joints k.
+    pub joints: usize,
+    /// Members s.
+    pub members: usize,
+    /// Reaction unknowns r.
+    pub reactions: usize,
+    /// The books' count: s − (2k − 3) (negative: too few members, positive: too many), for
+    /// trusses with three reaction unknowns.
+    pub count_excess: i64,
+    /// Rank of the equilibrium matrix, if the dense test was made.
+    pub rank: Option<usize>,
+    /// The verdict (by the rank where it was made, otherwise by counting).
+    pub determinacy: Determinacy,
+}
+
+/// The equilibrium matrix A (2k × (s + r)): column m holds member m's unit forces on its two
+/// joints (tension positive: it pulls each joint towards the other), then one column per
+/// reaction component (a pin's x and y, a roller's direction), in the order of the supports.
+pub fn equilibrium_matrix(t: &Truss) -> DMatrix<f64> {
+    let k = t.joints.len();
+    let s = t.members.len();
+    let mut a = DMatrix::zeros(2 * k, s + t.reaction_unknowns());
+    for (m, mem) in t.members.iter().enumerate() {
+        let (d, _) = t.member_dir(m);
+        let [i, j] = mem.ends;
+        a[(2 * i, m)] += d.x;
+        a[(2 * i + 1, m)] += d.y;
+        a[(2 * j, m)] -= d.x;
+        a[(2 * j + 1, m)] -= d.y;
+    }
+    let mut c = s;
+    for sup in &t.supports {
+        let j = sup.joint;
+        match sup.kind {
+            SupportKind::Pinned => {
+                a[(2 * j, c)] = 1.0;
+                a[(2 * j + 1, c + 1)] = 1.0;
+                c += 2;
+            }
+            SupportKind::Roller { dir } => {
+                a[(2 * j, c)] = dir.x;
+                a[(2 * j + 1, c)] = dir.y;
+                c += 1;
+            }
+        }
+    }
+    a
+}
+
+/// Counts, and tests the rank when the truss has at most [`DENSE_MAX_JOINTS`] joints.
+///
+/// ```
+/// use graphostatik::truss::{matrix::*, *};
+/// use graphostatik::kernel::{Point, Vector};
+/// // A triangle on a pin and a roller: s = 3 = 2·3 − 3.
+/// let j = |n: &str, x, y| Joint { name: n.into(), at: Point::new(x, y) };
+/// let m = |n: &str, a, b| Member { name: n.into(), ends: [a, b] };
+/// let mut t = Truss {
+///     joints: vec![j("I", 0.0, 0.0), j("II", 2.0, 0.0), j("III", 1.0, 1.0)],
+///     members: vec![m("1", 0, 1), m("2", 1, 2), m("3", 2, 0)],
+///     supports: vec![
+///         Support { joint: 0, kind: SupportKind::Pinned },
+///         Support { joint: 1, kind: SupportKind::Roller { dir: Vector::new(0.0, 1.0) } },
+///     ],
+/// };
+/// assert_eq!(analyse(&t).determinacy, Determinacy::Determinate);
+/// // Without member 2, joint III can swing about I.
+/// t.members.remove(1);
+/// assert!(matches!(analyse(&t).determinacy, Determinacy::Mechanism { joint: 2, .. }));
+/// ```
+pub fn analyse(t: &Truss) -> Analysis {
+    let k = t.joints.len();
+    let s = t.members.len();
+    let r = t.reaction_unknowns();
+    let count_excess = s as i64 - (2 * k as i64 - 3);
+    let by_count = || {
+        if s + r == 2 * k {
+            Determinacy::Determinate
+        } else if s + r > 2 * k {
+            Determinacy::OverDeterminate {
+                redundant: s + r - 2 * k,
+            }
+        } else {
+            Determinacy::Mechanism {
+                joint: 0,
+                freedoms: 2 * k - s - r,
+            }
+        }
+    };
+    if k > DENSE_MAX_JOINTS || k == 0 {
+        return Analysis {
+            joints: k,
+            members: s,
+            reactions: r,
+            count_excess,
+            rank: None,
+            determinacy: by_count(),
+        };
+    }
+    let a = equilibrium_matrix(t);
+    // Padded to at least 2k columns so that the SVD's U spans the whole joint space, and the
+    // motions Aᵀu = 0 show as left singular vectors of zero singular values.
+    let n = a.ncols().max(2 * k);
+    let mut sq = DMatrix::zeros(2 * k, n);
+    sq.columns_mut(0, a.ncols()).copy_from(&a);
+    let svd = sq.svd(true, false);
+    let sv = &svd.singular_values;
+    let smax = sv.iter().cloned().fold(0.0, f64::max);
+    let rank = sv.iter().filter(|&&x| x > RANK_REL * smax).count();
+    let determinacy = if rank < 2 * k {
+        let u = svd.u.as_ref().expect("U was asked for");
+        // The singular vector of the smallest singular value is a free motion of the joints.
+        let (imin, _) =
+            sv.iter().enumerate().fold(
+                (0, f64::INFINITY),
+                |(bi, bv), (i, &v)| {
+                    if v < bv {
+                        (i, v)
+                    } else {
+                        (bi, bv)
+                    }
+                },
+            );
+        let col = u.column(imin);
+        let mut best = (0, -1.0);
+        for j in 0..k {
+            let m = col[2 * j].hypot(col[2 * j + 1]);
+            // Ties go to the first joint, so that the name does not depend on rounding.
+            if m > best.1 * (1.0 + 1e-9) {
+                best = (j, m);
+            }
+        }
+        Determinacy::Mechanism {
+            joint: best.0,
+            freedoms: 2 * k - rank,
+        }
+    } else if s + r > 2 * k {
+        Determinacy::OverDeterminate {
+            redundant: s + r - 2 * k,
+        }
+    } else {
+        Determinacy::Determinate
+    };
+    Analysis {
+        joints: k,
+        members: s,
+        reactions: r,
+        count_excess,
+        rank: Some(rank),
+        determinacy,
+    }
+}
+
+/// Member forces and reaction components of a determinate truss under one load case.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Solution {
+    /// Member forces (kg), tension +, in the order of the members.
+    pub members: Vec<f64>,
+    /// Reaction components (kg) in the order of [`equilibrium_matrix`]'s columns.
+    pub reactions: Vec<f64>,
+}
+
+/// Solves A f = −p by LU decomposition (dense, O(k³)): the independent solve every
+/// Cremona plan is checked against. `None` if A is not square or is singular.
+pub fn solve(t: &Truss, case: &LoadCase) -> Option<Solution> {
+    let a = equilibrium_matrix(t);
+    if a.nrows() != a.ncols() {
+        return None;
+    }
+    let mut p = DVector::zeros(a.nrows());
+    for l in &case.loads {
+        p[2 * l.joint] -= l.force.x;
+        p[2 * l.joint + 1] -= l.force.y;
+    }
+    let f = a.lu().solve(&p)?;
+    if f.iter().any(|x| !x.is_finite()) {
+        return None;
+    }
+    let s = t.members.len();
+    Some(Solution {
+        members: f.rows(0, s).iter().cloned().collect(),
+        reactions: f.rows(s, f.len() - s).iter().cloned().collect(),
+    })
+}
+
+/// The largest out-of-balance force (kg) at any joint for the given member forces and
+/// reaction components: O(s + k), usable at any size.
+pub fn max_residual(t: &Truss, case: &LoadCase, members: &[f64], reactions: &[f64]) -> f64 {
+    let k = t.joints.len();
+    let mut r = vec![0.0; 2 * k];
+    for l in &case.loads {
+        r[2 * l.joint] += l.force.x;
+        r[2 * l.joint + 1] += l.force.y;
+    }
+    for (m, mem) in t.members.iter().enumerate() {
+        let (d, _) = t.member_dir(m);
+        let [i, j] = mem.ends;
+        r[2 * i] += members[m] * d.x;
+        r[2 * i + 1] += members[m] * d.y;
+        r[2 * j] -= members[m] * d.x;
+        r[2 * j + 1] -= members[m] * d.y;
+    }
+    let mut c = 0;
+    for sup in &t.supports {
+        let j = sup.joint;
+        match sup.kind {
+            SupportKind::Pinned => {
+                r[2 * j] += reactions[c];
+                r[2 * j + 1] += reactions[c + 1];
+                c += 2;
+            }
+            SupportKind::Roller { dir } => {
+                r[2 * j] += reactions[c] * dir.x;
+                r[2 * j + 1] += reactions[c] * dir.y;
+                c += 1;
+            }
+        }
+    }
+    (0..k)
+        .map(|j| r[2 * j].hypot(r[2 * j + 1]))
+        .fold(0.0, f64::max)
+}

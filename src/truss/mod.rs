@@ -1,0 +1,146 @@
+//! Trusses (LH I B): the joint-equilibrium model, determinacy and stability (B.2, Gl. 2), the
+//! support reactions by the funicular polygon, and the Cremona force plan (B.4, Abb. 17).
+//!
+//! Positions are in m, forces in kg (the books' technical units). A member force is positive
+//! in tension (Zug, +) and negative in compression (Druck, −), as in the books' tables.
+//!
+//! # Modules
+//! - [`matrix`]: the equilibrium matrix of the joints, its rank (is the truss a mechanism,
+//!   determinate or over-determinate?) and the dense solve that every plan is checked against;
+//! - [`faces`]: the truss drawn as a plane graph, its faces, and the outer boundary along
+//!   which the external forces are named (Bow's notation);
+//! - [`cremona`]: the reactions and the combined Cremona plan, every joint polygon a step.
+
+pub mod cremona;
+pub mod faces;
+pub mod matrix;
+
+use crate::kernel::{Point, Vector};
+use serde::Serialize;
+
+/// A joint (Knotenpunkt).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Joint {
+    /// Its name ("I", "II", … as in the books).
+    pub name: String,
+    /// Position (m).
+    pub at: Point,
+}
+
+/// A member (Stab) between two joints, by index.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Member {
+    /// Its name ("1", "2", … as in the books).
+    pub name: String,
+    /// The joints it joins (indices into [`Truss::joints`]).
+    pub ends: [usize; 2],
+}
+
+/// How a support holds its joint.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SupportKind {
+    /// A pin (festes Auflager): the reaction may take any direction (two unknowns).
+    Pinned,
+    /// A roller (bewegliches Auflager): the reaction acts along the given unit direction only.
+    Roller {
+        /// Direction of the reaction (unit vector).
+        dir: Vector,
+    },
+}
+
+/// A support at a joint.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Support {
+    /// The joint (index).
+    pub joint: usize,
+    /// Pin or roller.
+    pub kind: SupportKind,
+}
+
+/// A load at a joint (kg), x to the right, y up.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct JointLoad {
+    /// The joint (index).
+    pub joint: usize,
+    /// The force (kg).
+    pub force: Vector,
+}
+
+/// A load case (dead load, snow, wind from the left, …).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LoadCase {
+    /// Its name.
+    pub name: String,
+    /// The loads.
+    pub loads: Vec<JointLoad>,
+}
+
+/// A plane truss with its supports.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Truss {
+    /// The joints.
+    pub joints: Vec<Joint>,
+    /// The members.
+    pub members: Vec<Member>,
+    /// The supports.
+    pub supports: Vec<Support>,
+}
+
+impl Truss {
+    /// Number of reaction unknowns: two per pin, one per roller.
+    pub fn reaction_unknowns(&self) -> usize {
+        self.supports
+            .iter()
+            .map(|s| match s.kind {
+                SupportKind::Pinned => 2,
+                SupportKind::Roller { .. } => 1,
+            })
+            .sum()
+    }
+
+    /// The member's unit direction from its first joint to its second, and its length (m).
+    pub fn member_dir(&self, m: usize) -> (Vector, f64) {
+        let [a, b] = self.members[m].ends;
+        let d = self.joints[b].at - self.joints[a].at;
+        let l = d.norm();
+        (d / l, l)
+    }
+
+    /// The size of the truss: the larger side of its bounding box (m), the scale of every
+    /// length tolerance.
+    pub fn size(&self) -> f64 {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for j in &self.joints {
+            lo = [lo[0].min(j.at.x), lo[1].min(j.at.y)];
+            hi = [hi[0].max(j.at.x), hi[1].max(j.at.y)];
+        }
+        (hi[0] - lo[0]).max(hi[1] - lo[1]).max(f64::MIN_POSITIVE)
+    }
+}
+
+/// The force of one member in one load case.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MemberForce {
+    /// Member name.
+    pub member: String,
+    /// Length of its segment in the plan (mm).
+    pub plan_mm: f64,
+    /// Force (kg): tension +, compression −.
+    pub force: f64,
+    /// The force the joint-equilibrium solve gives (kg), where it was made.
+    pub matrix: Option<f64>,
+}
+
+impl MemberForce {
+    /// "Zug", "Druck" or "0" (a zero-force member, |S| below `zero`).
+    pub fn kind(&self, zero: f64) -> &'static str {
+        if self.force.abs() <= zero {
+            "0"
+        } else if self.force > 0.0 {
+            "Zug"
+        } else {
+            "Druck"
+        }
+    }
+}
