@@ -715,7 +715,6 @@ fn cremona_plan(
             n_spaces += 1;
         }
     }
-    }
     for h in 0..space_of_half.len() {
         if g.face_of[h] != g.outer {
             space_of_half[h] = space_of_face[g.face_of[h]];
