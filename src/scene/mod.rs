@@ -24,6 +24,7 @@ mod defaults;
 mod error;
 mod force_system;
 mod shaft;
+mod truss;
 mod types;
 
 pub use beam::{
@@ -36,6 +37,7 @@ pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,
 };
 pub use shaft::{ShaftProblem, ShaftScene, TorqueSpec};
+pub use truss::{TrussProblem, TrussScene};
 pub use types::*;
 
 use crate::crank::{self, Angles, CrankDrive, CrankResults, Drawing, PistonForce, Request};
@@ -413,8 +415,8 @@ pub fn schema_json() -> String {
 
 /// The scene format as a whole: a slider-crank scene (`"procedure": "slider_crank"`, the
 /// default), a beam scene (`"procedure": "beam"`), a force system
-/// (`"procedure": "force_system"`), a centroid (`"procedure": "centroid"`) or a shaft
-/// (`"procedure": "shaft"`).
+/// (`"procedure": "force_system"`), a centroid (`"procedure": "centroid"`), a shaft
+/// (`"procedure": "shaft"`) or a truss (`"procedure": "truss"`).
 #[derive(schemars::JsonSchema)]
 #[serde(untagged)]
 #[allow(dead_code)]
@@ -429,6 +431,8 @@ enum AnySceneSchema {
     Centroid(CentroidScene),
     /// A shaft scene.
     Shaft(ShaftScene),
+    /// A truss scene.
+    Truss(TrussScene),
 }
 
 /// A scene of any procedure, validated.
@@ -444,6 +448,8 @@ pub enum AnyScene {
     Centroid(CentroidScene),
     /// Shaft with loads in two planes and a torque (LH I C.7-8).
     Shaft(ShaftScene),
+    /// Truss with load cases (LH I B).
+    Truss(TrussScene),
 }
 
 /// A constructible problem of any procedure.
@@ -459,6 +465,8 @@ pub enum AnyProblem {
     Centroid(CentroidProblem),
     /// Shaft.
     Shaft(ShaftProblem),
+    /// Truss.
+    Truss(TrussProblem),
 }
 
 #[derive(serde::Deserialize)]
@@ -479,6 +487,7 @@ impl AnyScene {
             }
             Some("centroid") => parse_as::<CentroidScene>(text, origin).map(AnyScene::Centroid),
             Some("shaft") => parse_as::<ShaftScene>(text, origin).map(AnyScene::Shaft),
+            Some("truss") => parse_as::<TrussScene>(text, origin).map(AnyScene::Truss),
             _ => Scene::from_json(text, origin).map(AnyScene::SliderCrank),
         }
     }
@@ -500,6 +509,7 @@ impl AnyScene {
             AnyScene::ForceSystem(s) => AnyProblem::ForceSystem(s.problem()),
             AnyScene::Centroid(s) => AnyProblem::Centroid(s.problem()),
             AnyScene::Shaft(s) => AnyProblem::Shaft(s.problem()),
+            AnyScene::Truss(s) => AnyProblem::Truss(s.problem()),
         }
     }
 }
@@ -513,6 +523,7 @@ impl AnyProblem {
             AnyProblem::ForceSystem(p) => p.construct(recording).map(|(b, _)| b),
             AnyProblem::Centroid(p) => p.construct(recording).map(|(b, _)| b),
             AnyProblem::Shaft(p) => p.construct(recording).map(|(b, _)| b),
+            AnyProblem::Truss(p) => p.construct(recording).map(|(b, _)| b),
         }
     }
 
@@ -524,6 +535,7 @@ impl AnyProblem {
             AnyProblem::ForceSystem(p) => p.figure_meta(),
             AnyProblem::Centroid(p) => p.figure_meta(),
             AnyProblem::Shaft(p) => p.figure_meta(),
+            AnyProblem::Truss(p) => p.figure_meta(),
         }
     }
 }
@@ -607,7 +619,13 @@ macro_rules! validate_by_method {
         }
     )*};
 }
-validate_by_method!(BeamScene, ForceSystemScene, CentroidScene, ShaftScene);
+validate_by_method!(
+    BeamScene,
+    ForceSystemScene,
+    CentroidScene,
+    ShaftScene,
+    TrussScene
+);
 
 /// Parses a scene of one procedure, keeping field path, line and column, then validates it.
 fn parse_as<T: serde::de::DeserializeOwned + Validate>(

@@ -168,7 +168,7 @@ pub struct CaseResult {
     pub matrix_residual: Option<f64>,
 }
 
-/// Roman numerals for joint names in figures; further joints are numbered K₂₁, K₂₂, ….
+/// Letters of the spaces in Bow's notation; further spaces are r₂₇, r₂₈, ….
 const SPACE_NAMES: [&str; 26] = [
     "a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l", "m", "n", "o", "p", "q", "r", "s",
     "t", "u", "v", "w", "x", "y", "z",
@@ -187,8 +187,20 @@ fn member_label(t: &Truss, m: usize) -> Label {
     Label::indexed("S", n)
 }
 
-fn joint_label(j: usize) -> Label {
-    Label::indexed("K", j as u32 + 1)
+/// Roman numerals, for joints named as in the books.
+const ROMAN: [&str; 40] = [
+    "I", "II", "III", "IV", "V", "VI", "VII", "VIII", "IX", "X", "XI", "XII", "XIII", "XIV", "XV",
+    "XVI", "XVII", "XVIII", "XIX", "XX", "XXI", "XXII", "XXIII", "XXIV", "XXV", "XXVI", "XXVII",
+    "XXVIII", "XXIX", "XXX", "XXXI", "XXXII", "XXXIII", "XXXIV", "XXXV", "XXXVI", "XXXVII",
+    "XXXVIII", "XXXIX", "XL",
+];
+
+/// A joint named with a roman numeral keeps its name in the figure; others are K₁, K₂, ….
+fn joint_label(t: &Truss, j: usize) -> Label {
+    match ROMAN.iter().find(|r| **r == t.joints[j].name) {
+        Some(r) => Label::plain(r),
+        None => Label::indexed("K", j as u32 + 1),
+    }
 }
 
 /// Everything the truss drawing needs per case, computed without a board.
@@ -264,7 +276,44 @@ pub fn construct_truss(
     cases: &[LoadCase],
     dr: &TrussDrawing,
 ) -> Result<Vec<CaseResult>, ConstructionError> {
-    let analysis = matrix::analyse(t);
+    construct(b, t, cases, dr, t.joints.len() <= matrix::DENSE_MAX_JOINTS)
+}
+
+/// The plan alone, without the rank test and the dense solve: what a drafter does, and what
+/// the benchmark times against the dense solve. The plan still refuses a truss it cannot
+/// resolve (it stalls, or two members meet in line where a space must be fixed), and
+/// [`CaseResult::plan_residual`] still reports the balance at every joint.
+///
+/// # Errors
+/// As [`construct_truss`].
+pub fn construct_plan(
+    b: &mut Board,
+    t: &Truss,
+    cases: &[LoadCase],
+    dr: &TrussDrawing,
+) -> Result<Vec<CaseResult>, ConstructionError> {
+    construct(b, t, cases, dr, false)
+}
+
+fn construct(
+    b: &mut Board,
+    t: &Truss,
+    cases: &[LoadCase],
+    dr: &TrussDrawing,
+    dense: bool,
+) -> Result<Vec<CaseResult>, ConstructionError> {
+    let analysis = if dense {
+        matrix::analyse(t)
+    } else {
+        matrix::Analysis {
+            joints: t.joints.len(),
+            members: t.members.len(),
+            reactions: t.reaction_unknowns(),
+            count_excess: t.members.len() as i64 - (2 * t.joints.len() as i64 - 3),
+            rank: None,
+            determinacy: matrix::Determinacy::Determinate,
+        }
+    };
     match analysis.determinacy {
         matrix::Determinacy::Determinate => {}
         matrix::Determinacy::Mechanism { joint, freedoms } => {
@@ -295,11 +344,7 @@ pub fn construct_truss(
     let mut out = Vec::with_capacity(cases.len());
     let mut row_top = 0.0;
     for case in cases {
-        let sol = if t.joints.len() <= matrix::DENSE_MAX_JOINTS {
-            matrix::solve(t, case)
-        } else {
-            None
-        };
+        let sol = if dense { matrix::solve(t, case) } else { None };
         // A scratch run fixes where the blocks go; the real run draws them there.
         let mut scratch = Board::new(b.tolerance().length * 1e6, false);
         let dry = construct_case(
@@ -450,7 +495,7 @@ fn construct_case(
         .map(|(i, j)| {
             let p = at.truss + j.at.coords * k;
             grow(&mut boxes[0], p, at.truss);
-            b.point(p, joint_label(i), Role::Given, N_JOINT)
+            b.point(p, joint_label(t, i), Role::Given, N_JOINT)
         })
         .collect();
     // Each member drawn as the line through its joints over their distance: the line (a → b)
@@ -460,8 +505,14 @@ fn construct_case(
         let [i, j] = mem.ends;
         mline.push(b.line_through(&jp[i], &jp[j], member_label(t, m), Role::Given, N_MEMBER)?);
     }
-    let rline = b.line_dir(&jp[roller], rdir, Label::plain("B"), Role::Guide, N_SUPPORT)?;
-    b.point(jp[pin].g, Label::plain("A"), Role::Guide, N_SUPPORT);
+    // The left support is A, the right one B, whichever is the pin.
+    let (la, lb) = if t.joints[pin].at.x <= t.joints[roller].at.x {
+        ("A", "B")
+    } else {
+        ("B", "A")
+    };
+    let rline = b.line_dir(&jp[roller], rdir, Label::plain(lb), Role::Guide, N_SUPPORT)?;
+    b.point(jp[pin].g, Label::plain(la), Role::Guide, N_SUPPORT);
     // Loads, drawn as arrows ending at their joints, in the order of their joints.
     let mut loads: Vec<JointLoad> = case
         .loads
@@ -540,8 +591,8 @@ fn construct_case(
         let x = b.meet_point(&through_o, &bl, Label::quiet("X", 0), N_SPLIT)?;
         grow(&mut boxes[1], x.g, at.polygon);
         let last = fh[loads.len()];
-        b.segment(&last, &x, Label::plain("B"), Role::Force, N_REACT);
-        b.segment(&x, &fh[0], Label::plain("A"), Role::Force, N_REACT);
+        b.segment(&last, &x, Label::plain(lb), Role::Force, N_REACT);
+        b.segment(&x, &fh[0], Label::plain(la), Role::Force, N_REACT);
         let rb = b.measure(&last, &x, &rline, kg, Label::quiet("B", 0), N_REACT);
         let xa = b.line_dir(
             &x,
@@ -576,11 +627,18 @@ fn construct_case(
             }
             let r = &sol.reactions;
             let f = "joint equilibrium, dense LU (nalgebra)";
-            b.check(&rb, "reaction B along its line", "kg", f, maxload, || {
-                r[roll_c]
+            b.check(
+                &rb,
+                "roller reaction along its line",
+                "kg",
+                f,
+                maxload,
+                || r[roll_c],
+            );
+            b.check(&ax, "pin reaction, horizontal", "kg", f, maxload, || {
+                r[pin_c]
             });
-            b.check(&ax, "reaction A, horizontal", "kg", f, maxload, || r[pin_c]);
-            b.check(&ay, "reaction A, vertical", "kg", f, maxload, || {
+            b.check(&ay, "pin reaction, vertical", "kg", f, maxload, || {
                 r[pin_c + 1]
             });
         }

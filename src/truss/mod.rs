@@ -13,6 +13,7 @@
 
 pub mod cremona;
 pub mod faces;
+pub mod generate;
 pub mod matrix;
 
 use crate::kernel::{Point, Vector};
