@@ -47,8 +47,24 @@ enum Command {
         /// The scene file.
         scene: PathBuf,
     },
+    /// Print the table of member forces of a truss scene, per load case and combination.
+    Forces {
+        /// The truss scene file.
+        scene: PathBuf,
+        /// markdown, csv or json.
+        #[arg(long, default_value = "markdown")]
+        format: TableFormat,
+    },
     /// Print the JSON Schema of the scene format.
     Schema,
+}
+
+/// Formats of the member-force table.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum TableFormat {
+    Markdown,
+    Csv,
+    Json,
 }
 
 /// Input errors: exit status 2, one line naming the place.
@@ -157,6 +173,26 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
             let p = load(&scene)?;
             let board = construct(&scene, &p)?;
             println!("{}", board.to_json());
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Forces { scene, format } => {
+            let p = load(&scene)?;
+            let AnyProblem::Truss(t) = &p else {
+                return Err(Fail(format!(
+                    "{}: `forces` needs a truss scene (\"procedure\": \"truss\")",
+                    scene.display()
+                )));
+            };
+            let (_, results) = t
+                .construct(true)
+                .map_err(|e| Fail(format!("{}: {e}", scene.display())))?;
+            use graphostatik::render::forces;
+            let text = match format {
+                TableFormat::Markdown => forces::markdown(&results, &t.combinations),
+                TableFormat::Csv => forces::csv(&results, &t.combinations),
+                TableFormat::Json => forces::json(&results, &t.combinations) + "\n",
+            };
+            print!("{text}");
             Ok(ExitCode::SUCCESS)
         }
         Command::Schema => {

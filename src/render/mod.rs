@@ -3,6 +3,7 @@
 //! and computes no mechanics: the scales and title it writes come in a [`FigureMeta`].
 
 mod figure;
+pub mod forces;
 mod style;
 mod table;
 mod walkthrough;

@@ -4,6 +4,7 @@ use super::defaults::nice_at_least;
 use super::{optional_positive, SceneError};
 use crate::kernel::{Point, Vector};
 use crate::protocol::{Board, ConstructionError};
+use crate::render::forces::Combination;
 use crate::truss::cremona::{self, CaseResult, TrussDrawing};
 use crate::truss::matrix::{self, Determinacy};
 use crate::truss::{Joint, JointLoad, LoadCase, Member, Support, SupportKind, Truss};
@@ -36,6 +37,9 @@ pub struct TrussScene {
     pub supports: Vec<SupportSpec>,
     /// The load cases, each with its own reactions and Cremona plan.
     pub load_cases: Vec<LoadCaseSpec>,
+    /// Sums of load cases for the table of member forces (the book's "Gesamtbelastung").
+    #[serde(default)]
+    pub combinations: Vec<CombinationSpec>,
     /// Scales; any left out are chosen.
     #[serde(default)]
     pub drawing: Option<TrussDrawingSpec>,
@@ -94,6 +98,16 @@ pub struct LoadCaseSpec {
     pub loads: Vec<JointLoadSpec>,
 }
 
+/// A sum of load cases, by name.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CombinationSpec {
+    /// Its name ("total").
+    pub name: String,
+    /// The load cases added, by name.
+    pub cases: Vec<String>,
+}
+
 /// A load at a joint: `kg` downwards, or `kg` along `angle_deg`, or components `kg_xy`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -147,6 +161,8 @@ pub struct TrussProblem {
     pub truss: Truss,
     /// The load cases.
     pub cases: Vec<LoadCase>,
+    /// Sums of load cases for the table.
+    pub combinations: Vec<Combination>,
     /// Scales.
     pub drawing: TrussDrawing,
 }
@@ -341,6 +357,16 @@ impl TrussScene {
                 }
             }
         }
+        for (c, combo) in self.combinations.iter().enumerate() {
+            for (i, name) in combo.cases.iter().enumerate() {
+                if !self.load_cases.iter().any(|l| &l.name == name) {
+                    return Err(bad(
+                        format!("combinations[{c}].cases[{i}]"),
+                        format!("no load case is named `{name}`"),
+                    ));
+                }
+            }
+        }
         if let Some(d) = &self.drawing {
             optional_positive(
                 origin,
@@ -458,11 +484,24 @@ impl TrussScene {
                 .force_scale_kg_per_mm
                 .unwrap_or_else(|| nice_at_least(maxload / 80.0)),
         };
+        let combinations = self
+            .combinations
+            .iter()
+            .map(|c| Combination {
+                name: c.name.clone(),
+                cases: c
+                    .cases
+                    .iter()
+                    .filter_map(|n| self.load_cases.iter().position(|l| &l.name == n))
+                    .collect(),
+            })
+            .collect();
         TrussProblem {
             title: self.title.clone(),
             source: self.source.clone().unwrap_or_default(),
             truss,
             cases,
+            combinations,
             drawing,
         }
     }

@@ -1,0 +1,143 @@
+//! The table of member forces of a truss (LH B.4, "Auswertung"): per load case the length of
+//! the member's segment in the plan and its force, tension + and compression −, and the
+//! combinations the scene asks for (the book's "Gesamtbelastung"). As Markdown, CSV or JSON.
+
+use crate::fmt::num;
+use crate::truss::cremona::CaseResult;
+use serde::Serialize;
+
+/// A named sum of load cases.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Combination {
+    /// Its name ("total").
+    pub name: String,
+    /// Indices of the cases added.
+    pub cases: Vec<usize>,
+}
+
+/// A force below this many kg is written as 0 and classed as a zero-force member: the plan
+/// is exact to about 1e-12 of the loads, so anything below a gram is rounding.
+pub const ZERO_KG: f64 = 1e-3;
+
+fn signed(x: f64) -> String {
+    if x.abs() <= ZERO_KG {
+        "0".into()
+    } else if x > 0.0 {
+        format!("+{}", num(x, 1))
+    } else {
+        format!("−{}", num(-x, 1))
+    }
+}
+
+fn kind(x: f64) -> &'static str {
+    if x.abs() <= ZERO_KG {
+        "0"
+    } else if x > 0.0 {
+        "Zug"
+    } else {
+        "Druck"
+    }
+}
+
+fn combined(results: &[CaseResult], c: &Combination, m: usize) -> f64 {
+    c.cases.iter().map(|&i| results[i].members[m].force).sum()
+}
+
+/// The table as Markdown: member, then per case the plan length (mm) and force (kg), then the
+/// combinations, then tension or compression of the last column.
+pub fn markdown(results: &[CaseResult], combos: &[Combination]) -> String {
+    let mut head = vec!["member".to_string()];
+    for r in results {
+        head.push(format!("{} plan (mm)", r.case));
+        head.push(format!("{} (kg)", r.case));
+    }
+    for c in combos {
+        head.push(format!("{} (kg)", c.name));
+    }
+    head.push("kind".into());
+    let mut out = format!("| {} |\n", head.join(" | "));
+    out.push('|');
+    for (i, _) in head.iter().enumerate() {
+        out.push_str(if i == 0 { "---|" } else { "---:|" });
+    }
+    out.push('\n');
+    let n = results.first().map_or(0, |r| r.members.len());
+    for m in 0..n {
+        let mut row = vec![results[0].members[m].member.clone()];
+        let mut last = 0.0;
+        for r in results {
+            row.push(num(r.members[m].plan_mm, 1));
+            row.push(signed(r.members[m].force));
+            last = r.members[m].force;
+        }
+        for c in combos {
+            last = combined(results, c, m);
+            row.push(signed(last));
+        }
+        row.push(kind(last).into());
+        out.push_str(&format!("| {} |\n", row.join(" | ")));
+    }
+    out
+}
+
+/// The same as CSV (comma-separated, plain minus signs, one header line).
+pub fn csv(results: &[CaseResult], combos: &[Combination]) -> String {
+    let q = |s: &str| format!("\"{}\"", s.replace('"', "\"\""));
+    let mut head = vec![q("member")];
+    for r in results {
+        head.push(q(&format!("{} plan_mm", r.case)));
+        head.push(q(&format!("{} kg", r.case)));
+    }
+    for c in combos {
+        head.push(q(&format!("{} kg", c.name)));
+    }
+    let mut out = head.join(",") + "\n";
+    let n = results.first().map_or(0, |r| r.members.len());
+    for m in 0..n {
+        let mut row = vec![q(&results[0].members[m].member)];
+        for r in results {
+            row.push(num(r.members[m].plan_mm, 3));
+            row.push(num(r.members[m].force, 3));
+        }
+        for c in combos {
+            row.push(num(combined(results, c, m), 3));
+        }
+        out.push_str(&(row.join(",") + "\n"));
+    }
+    out
+}
+
+/// The cases and combinations as JSON.
+pub fn json(results: &[CaseResult], combos: &[Combination]) -> String {
+    #[derive(Serialize)]
+    struct Combo<'a> {
+        name: &'a str,
+        cases: Vec<&'a str>,
+        members: Vec<(String, f64)>,
+    }
+    #[derive(Serialize)]
+    struct All<'a> {
+        cases: &'a [CaseResult],
+        combinations: Vec<Combo<'a>>,
+    }
+    let n = results.first().map_or(0, |r| r.members.len());
+    let all = All {
+        cases: results,
+        combinations: combos
+            .iter()
+            .map(|c| Combo {
+                name: &c.name,
+                cases: c.cases.iter().map(|&i| results[i].case.as_str()).collect(),
+                members: (0..n)
+                    .map(|m| {
+                        (
+                            results[0].members[m].member.clone(),
+                            combined(results, c, m),
+                        )
+                    })
+                    .collect(),
+            })
+            .collect(),
+    };
+    serde_json::to_string_pretty(&all).expect("plain data")
+}
