@@ -684,6 +684,10 @@ fn outline(
             "a truss needs members".into(),
         ));
     }
+    let mut at_joint: std::collections::BTreeMap<usize, Vec<usize>> = Default::default();
+    for (fi, &(j, _)) in ext.forces.iter().enumerate() {
+        at_joint.entry(j).or_default().push(fi);
+    }
     // The outline's half-edges in order: h_in = u → v, then h_out = v → w.
     let mut space = 0;
     for (idx, &h_in) in outer.iter().enumerate() {
@@ -698,8 +702,9 @@ fn outline(
         };
         // Forces at v whose line of action leaves into this sector, clockwise.
         let mut here: Vec<(f64, usize)> = Vec::new();
-        for (fi, &(j, f)) in ext.forces.iter().enumerate() {
-            if j != v || placed[fi] {
+        for &fi in at_joint.get(&v).map_or(&[][..], |v| v.as_slice()) {
+            let f = ext.forces[fi].1;
+            if placed[fi] {
                 continue;
             }
             // The line of action drawn on the outside: the arrow coming in towards the joint
@@ -771,6 +776,12 @@ fn cremona_plan(
         if f != g.outer {
             *sp = n_spaces;
             n_spaces += 1;
+        }
+    }
+    let mut face_of_space = vec![g.outer; n_spaces];
+    for (f, &sp) in space_of_face.iter().enumerate() {
+        if sp != usize::MAX {
+            face_of_space[sp] = f;
         }
     }
     for h in 0..space_of_half.len() {
@@ -883,14 +894,7 @@ fn cremona_plan(
             &pt,
             &mut forces,
             &mut plan_mm,
-            &mut g
-                .faces
-                .iter()
-                .enumerate()
-                .filter(|(f, _)| space_of_face[*f] == u)
-                .flat_map(|(_, c)| c.iter().map(|h| h / 2))
-                .collect::<Vec<_>>()
-                .into_iter(),
+            &mut g.faces[face_of_space[u]].iter().map(|h| h / 2),
         );
         for &j in &joints_of_space[u] {
             if !queued[j] {

@@ -127,22 +127,19 @@ pub fn plane_graph(t: &Truss) -> Result<PlaneGraph, GraphError> {
             .sum::<f64>()
             * 0.5
     };
-    let outer = if faces.is_empty() {
-        0
-    } else {
-        (0..faces.len())
-            .min_by(|&a, &b| area(&faces[a]).total_cmp(&area(&faces[b])).then(a.cmp(&b)))
-            .unwrap_or(0)
-    };
+    let areas: Vec<f64> = faces.iter().map(|c| area(c)).collect();
+    let outer = (0..faces.len())
+        .min_by(|&a, &b| areas[a].total_cmp(&areas[b]).then(a.cmp(&b)))
+        .unwrap_or(0);
     // Euler: k − s + f = 2 for a connected plane drawing (a single joint has one face).
     if !faces.is_empty() && k as i64 - t.members.len() as i64 + faces.len() as i64 != 2 {
         return Err(GraphError::Crossing);
     }
     // A bounded face traced clockwise means the drawing folds over itself.
-    if faces
+    if areas
         .iter()
         .enumerate()
-        .any(|(f, c)| f != outer && area(c) <= 0.0)
+        .any(|(f, &a)| f != outer && a <= 0.0)
     {
         return Err(GraphError::Crossing);
     }

@@ -1,0 +1,131 @@
+//! What the Cremona plan costs against the dense joint-equilibrium solve, in time and peak
+//! memory, on Warren girders of about 100, 1,000 and 10,000 joints with a load at every
+//! bottom joint.
+//!
+//! - plan: the Cremona plan alone (reactions by the funicular polygon, every space of Bow's
+//!   notation), on a board that does not record;
+//! - recorded: the same, recorded step by step (what `render` draws), without the dense check;
+//! - dense LU: nalgebra's LU solve of the 2k × 2k equilibrium matrix, the check every plan
+//!   is compared with up to 1,500 joints. At 10,000 joints it would need 2k² · 8 bytes =
+//!   3.2 GB and is not run.
+//!
+//! `cargo bench --bench truss` prints the table in Markdown. Peak memory is counted by a
+//! global allocator that records the largest number of bytes live during one run.
+
+use graphostatik::kernel::Vector;
+use graphostatik::protocol::Board;
+use graphostatik::truss::cremona::{construct_plan, TrussDrawing};
+use graphostatik::truss::generate::{parallel_chord, Web};
+use graphostatik::truss::matrix;
+use graphostatik::truss::{JointLoad, LoadCase, Truss};
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::hint::black_box;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Instant;
+
+struct Counting;
+static LIVE: AtomicUsize = AtomicUsize::new(0);
+static PEAK: AtomicUsize = AtomicUsize::new(0);
+
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
+        let p = unsafe { System.alloc(l) };
+        if !p.is_null() {
+            let now = LIVE.fetch_add(l.size(), Ordering::Relaxed) + l.size();
+            PEAK.fetch_max(now, Ordering::Relaxed);
+        }
+        p
+    }
+    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
+        unsafe { System.dealloc(p, l) };
+        LIVE.fetch_sub(l.size(), Ordering::Relaxed);
+    }
+}
+
+#[global_allocator]
+static A: Counting = Counting;
+
+const D: TrussDrawing = TrussDrawing {
+    length_scale: 100.0,
+    force_scale: 50.0,
+};
+
+fn girder(joints: usize) -> (Truss, Vec<LoadCase>) {
+    // Warren: k = 2n + 1.
+    let n = (joints - 1) / 2;
+    let t = parallel_chord(Web::Warren, n, 2.0, 2.0);
+    let loads = (1..n)
+        .map(|i| JointLoad {
+            joint: i,
+            force: Vector::new(0.0, -(1000.0 + (i % 7) as f64 * 100.0)),
+        })
+        .collect();
+    (
+        t,
+        vec![LoadCase {
+            name: "P".into(),
+            loads,
+        }],
+    )
+}
+
+/// Median wall time (ns) and the peak of live heap bytes above the start, over `reps` runs.
+fn measure(reps: usize, f: &dyn Fn()) -> (f64, usize) {
+    let mut times = Vec::new();
+    let mut peak = 0;
+    for _ in 0..reps {
+        let base = LIVE.load(Ordering::Relaxed);
+        PEAK.store(base, Ordering::Relaxed);
+        let t = Instant::now();
+        f();
+        times.push(t.elapsed().as_nanos() as f64);
+        peak = peak.max(PEAK.load(Ordering::Relaxed) - base);
+    }
+    times.sort_by(f64::total_cmp);
+    (times[reps / 2], peak)
+}
+
+fn mb(bytes: usize) -> String {
+    format!("{:.2} MB", bytes as f64 / 1e6)
+}
+
+fn main() {
+    println!(
+        "| joints | members | plan | ns per joint | peak | recorded | peak | dense LU | peak |"
+    );
+    println!("|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for joints in [101usize, 1001, 10_001] {
+        let (t, cases) = girder(joints);
+        let k = t.joints.len();
+        let (tp, mp) = measure(7, &|| {
+            let mut b = Board::new(1000.0, false);
+            black_box(construct_plan(&mut b, &t, &cases, &D).unwrap());
+        });
+        let (tr, mr) = measure(5, &|| {
+            let mut b = Board::new(1000.0, true);
+            black_box(construct_plan(&mut b, &t, &cases, &D).unwrap());
+        });
+        let dense = if k <= matrix::DENSE_MAX_JOINTS {
+            let (td, md) = measure(3, &|| {
+                black_box(matrix::solve(&t, &cases[0]).unwrap());
+            });
+            (format!("{:.2} ms", td / 1e6), mb(md))
+        } else {
+            (
+                "not run".into(),
+                format!("{:.1} GB", (2 * k * 2 * k * 8) as f64 / 1e9),
+            )
+        };
+        println!(
+            "| {k} | {} | {:.2} ms | {:.0} | {} | {:.2} ms | {} | {} | {} |",
+            t.members.len(),
+            tp / 1e6,
+            tp / k as f64,
+            mb(mp),
+            tr / 1e6,
+            mb(mr),
+            dense.0,
+            dense.1
+        );
+    }
+}
