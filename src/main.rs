@@ -188,6 +188,11 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
                 .map_err(|e| Fail(format!("{}: {e}", scene.display())))?;
             use graphostatik::render::forces;
             let text = match format {
+                TableFormat::Markdown if results.len() > 1 => format!(
+                    "{}\n{}",
+                    forces::markdown(&results, &t.combinations),
+                    forces::envelope_markdown(&results)
+                ),
                 TableFormat::Markdown => forces::markdown(&results, &t.combinations),
                 TableFormat::Csv => forces::csv(&results, &t.combinations),
                 TableFormat::Json => forces::json(&results, &t.combinations) + "\n",

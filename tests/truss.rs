@@ -419,3 +419,49 @@ proptest! {
         prop_assert!(r[0].members.iter().all(|m| m.matrix.is_some()));
     }
 }
+
+#[test]
+fn a_moving_load_gives_one_case_per_position_and_an_envelope() {
+    let scene = r#"{ "procedure": "truss", "title": "t",
+        "joints": [ { "name": "B0", "at_m": [0, 0] }, { "name": "B1", "at_m": [2, 0] }, { "name": "B2", "at_m": [4, 0] },
+                    { "name": "B3", "at_m": [6, 0] }, { "name": "T1", "at_m": [2, 2] }, { "name": "T2", "at_m": [4, 2] } ],
+        "members": [ { "name": "1", "joints": ["B0", "B1"] }, { "name": "2", "joints": ["B1", "B2"] },
+                     { "name": "3", "joints": ["B2", "B3"] }, { "name": "4", "joints": ["B0", "T1"] },
+                     { "name": "5", "joints": ["T1", "T2"] }, { "name": "6", "joints": ["T2", "B3"] },
+                     { "name": "7", "joints": ["B1", "T1"] }, { "name": "8", "joints": ["B2", "T2"] },
+                     { "name": "9", "joints": ["T1", "B2"] } ],
+        "supports": [ { "joint": "B0", "kind": "pinned" }, { "joint": "B3", "kind": "roller", "direction_deg": 90 } ],
+        "load_cases": [ { "name": "dead", "loads": [ { "joint": "B1", "kg": 500 }, { "joint": "B2", "kg": 500 } ] } ],
+        "moving_loads": [ { "name": "crane", "path": ["B0", "B1", "B2", "B3"], "loads_kg": [3000, 1000] } ] }"#;
+    let AnyScene::Truss(s) = AnyScene::from_json(scene, "m.json").unwrap() else {
+        panic!()
+    };
+    let p = s.problem();
+    // The train of two loads takes three positions on four joints.
+    let names: Vec<_> = p.cases.iter().map(|c| c.name.as_str()).collect();
+    assert_eq!(names, ["dead", "crane at B0", "crane at B1", "crane at B2"]);
+    let (b, r) = p.construct(true).unwrap();
+    all_checks_pass(&b);
+    let env = graphostatik::render::forces::envelope(&r);
+    for (m, e) in env.iter().enumerate() {
+        let max = r.iter().map(|c| c.members[m].force).fold(0.0, f64::max);
+        let min = r.iter().map(|c| c.members[m].force).fold(0.0, f64::min);
+        assert_eq!(e.tension.0, if max > 1e-3 { max } else { 0.0 });
+        assert_eq!(e.compression.0, if min < -1e-3 { min } else { 0.0 });
+    }
+    // The bottom chord's middle member is in tension, largest with the heavy load at B1.
+    assert_eq!(env[1].tension.1, "crane at B1");
+    for (bad, field) in [
+        (
+            scene.replace(r#""B3"], "loads_kg""#, r#""B9"], "loads_kg""#),
+            "moving_loads[0].path[3]",
+        ),
+        (
+            scene.replace("[3000, 1000]", "[]"),
+            "moving_loads[0].loads_kg",
+        ),
+    ] {
+        let e = AnyScene::from_json(&bad, "m.json").unwrap_err().to_string();
+        assert!(e.contains(field), "{e}");
+    }
+}

@@ -43,6 +43,62 @@ fn combined(results: &[CaseResult], c: &Combination, m: usize) -> f64 {
     c.cases.iter().map(|&i| results[i].members[m].force).sum()
 }
 
+/// The extremes of one member over all load cases (LH B.5, T6): the largest tension and the
+/// largest compression, with the case where each occurs.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Extremes {
+    /// Member name.
+    pub member: String,
+    /// Largest tension (kg, ≥ 0) and its case.
+    pub tension: (f64, String),
+    /// Largest compression (kg, ≤ 0) and its case.
+    pub compression: (f64, String),
+}
+
+/// The envelope over all cases: the first case reaching each extreme names it; "-" where the
+/// member is never in tension (or compression).
+pub fn envelope(results: &[CaseResult]) -> Vec<Extremes> {
+    let n = results.first().map_or(0, |r| r.members.len());
+    (0..n)
+        .map(|m| {
+            let mut t = (0.0, "-".to_string());
+            let mut c = (0.0, "-".to_string());
+            for r in results {
+                let f = r.members[m].force;
+                if f > t.0 && f > ZERO_KG {
+                    t = (f, r.case.clone());
+                }
+                if f < c.0 && f < -ZERO_KG {
+                    c = (f, r.case.clone());
+                }
+            }
+            Extremes {
+                member: results[0].members[m].member.clone(),
+                tension: t,
+                compression: c,
+            }
+        })
+        .collect()
+}
+
+/// The envelope as a Markdown table.
+pub fn envelope_markdown(results: &[CaseResult]) -> String {
+    let mut out = String::from(
+        "| member | max tension (kg) | in case | max compression (kg) | in case |\n|---|---:|---|---:|---|\n",
+    );
+    for e in envelope(results) {
+        out.push_str(&format!(
+            "| {} | {} | {} | {} | {} |\n",
+            e.member,
+            signed(e.tension.0),
+            e.tension.1,
+            signed(e.compression.0),
+            e.compression.1
+        ));
+    }
+    out
+}
+
 /// The table as Markdown: member, then per case the plan length (mm) and force (kg), then the
 /// combinations, then tension or compression of the last column.
 pub fn markdown(results: &[CaseResult], combos: &[Combination]) -> String {
@@ -119,6 +175,7 @@ pub fn json(results: &[CaseResult], combos: &[Combination]) -> String {
     struct All<'a> {
         cases: &'a [CaseResult],
         combinations: Vec<Combo<'a>>,
+        envelope: Vec<Extremes>,
     }
     let n = results.first().map_or(0, |r| r.members.len());
     let all = All {
@@ -138,6 +195,7 @@ pub fn json(results: &[CaseResult], combos: &[Combination]) -> String {
                     .collect(),
             })
             .collect(),
+        envelope: envelope(results),
     };
     serde_json::to_string_pretty(&all).expect("plain data")
 }

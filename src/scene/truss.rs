@@ -37,6 +37,10 @@ pub struct TrussScene {
     pub supports: Vec<SupportSpec>,
     /// The load cases, each with its own reactions and Cremona plan.
     pub load_cases: Vec<LoadCaseSpec>,
+    /// Load trains moved joint by joint along a path (LH B.5, T6): each position becomes a
+    /// load case of its own, and the table's envelope gives every member's extremes.
+    #[serde(default)]
+    pub moving_loads: Vec<MovingLoadSpec>,
     /// Sums of load cases for the table of member forces (the book's "Gesamtbelastung").
     #[serde(default)]
     pub combinations: Vec<CombinationSpec>,
@@ -96,6 +100,18 @@ pub struct LoadCaseSpec {
     pub name: String,
     /// Loads at joints.
     pub loads: Vec<JointLoadSpec>,
+}
+
+/// A train of vertical loads on consecutive joints of a path, moved one joint at a time.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MovingLoadSpec {
+    /// Name; the positions are named "name at joint".
+    pub name: String,
+    /// The joints the train runs over, in order.
+    pub path: Vec<String>,
+    /// The loads of the train (kg, downwards), on consecutive joints of the path.
+    pub loads_kg: Vec<f64>,
 }
 
 /// A sum of load cases, by name.
@@ -357,6 +373,28 @@ impl TrussScene {
                 }
             }
         }
+        for (i, mv) in self.moving_loads.iter().enumerate() {
+            for (k, j) in mv.path.iter().enumerate() {
+                if !index.contains_key(j.as_str()) {
+                    return Err(bad(
+                        format!("moving_loads[{i}].path[{k}]"),
+                        format!("joint `{j}` does not exist"),
+                    ));
+                }
+            }
+            if mv.loads_kg.is_empty() || mv.loads_kg.len() > mv.path.len() {
+                return Err(bad(
+                    format!("moving_loads[{i}].loads_kg"),
+                    format!("give 1 to {} loads (the length of the path)", mv.path.len()),
+                ));
+            }
+            if let Some(k) = mv.loads_kg.iter().position(|x| !x.is_finite()) {
+                return Err(bad(
+                    format!("moving_loads[{i}].loads_kg[{k}]"),
+                    "must be finite".into(),
+                ));
+            }
+        }
         for (c, combo) in self.combinations.iter().enumerate() {
             for (i, name) in combo.cases.iter().enumerate() {
                 if !self.load_cases.iter().any(|l| &l.name == name) {
@@ -453,7 +491,7 @@ impl TrussScene {
             .enumerate()
             .map(|(i, j)| (j.name.as_str(), i))
             .collect();
-        let cases: Vec<LoadCase> = self
+        let mut cases: Vec<LoadCase> = self
             .load_cases
             .iter()
             .map(|c| LoadCase {
@@ -468,6 +506,22 @@ impl TrussScene {
                     .collect(),
             })
             .collect();
+        for mv in &self.moving_loads {
+            for p in 0..=mv.path.len() - mv.loads_kg.len() {
+                cases.push(LoadCase {
+                    name: format!("{} at {}", mv.name, mv.path[p]),
+                    loads: mv
+                        .loads_kg
+                        .iter()
+                        .enumerate()
+                        .map(|(i, &kg)| JointLoad {
+                            joint: index[mv.path[p + i].as_str()],
+                            force: Vector::new(0.0, -kg),
+                        })
+                        .collect(),
+                });
+            }
+        }
         let maxload = cases
             .iter()
             .map(|c| c.loads.iter().map(|l| l.force.norm()).sum::<f64>())
