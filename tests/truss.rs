@@ -465,3 +465,112 @@ fn a_moving_load_gives_one_case_per_position_and_an_envelope() {
         assert!(e.contains(field), "{e}");
     }
 }
+
+/// A parallel girder of three square panels with both diagonals in every panel (LH Abb. 19):
+/// k = 8, s = 16 = 2k − 3 + 3.
+fn double_diagonal_scene(mode: &str) -> String {
+    let mut joints = Vec::new();
+    for i in 0..4 {
+        joints.push(format!(r#"{{ "name": "B{i}", "at_m": [{}, 0] }}"#, 2 * i));
+        joints.push(format!(r#"{{ "name": "T{i}", "at_m": [{}, 2] }}"#, 2 * i));
+    }
+    let mut members = Vec::new();
+    let mut m = |a: String, b: String| {
+        let n = members.len() + 1;
+        members.push(format!(r#"{{ "name": "{n}", "joints": ["{a}", "{b}"] }}"#));
+    };
+    for i in 0..3 {
+        m(format!("B{i}"), format!("B{}", i + 1));
+        m(format!("T{i}"), format!("T{}", i + 1));
+    }
+    for i in 0..4 {
+        m(format!("B{i}"), format!("T{i}"));
+    }
+    // Pairs: members 11/12, 13/14, 15/16; the first of each rises to the right.
+    for i in 0..3 {
+        m(format!("B{i}"), format!("T{}", i + 1));
+        m(format!("T{i}"), format!("B{}", i + 1));
+    }
+    format!(
+        r#"{{ "procedure": "truss", "title": "t", "joints": [{}], "members": [{}],
+        "supports": [ {{ "joint": "B0", "kind": "pinned" }}, {{ "joint": "B3", "kind": "roller", "direction_deg": 90 }} ],
+        "load_cases": [ {{ "name": "P", "loads": [ {{ "joint": "B1", "kg": 1000 }}, {{ "joint": "B2", "kg": 1000 }} ] }},
+                        {{ "name": "Q", "loads": [ {{ "joint": "B1", "kg": 3000 }} ] }} ],
+        "diagonal_pairs": [["11", "12"], ["13", "14"], ["15", "16"]], "diagonal_mode": "{mode}" }}"#,
+        joints.join(", "),
+        members.join(", ")
+    )
+}
+
+fn pairs_problem(mode: &str) -> graphostatik::scene::TrussProblem {
+    match AnyScene::from_json(&double_diagonal_scene(mode), "d.json").unwrap() {
+        AnyScene::Truss(s) => s.problem(),
+        _ => panic!(),
+    }
+}
+
+#[test]
+fn double_diagonals_split_into_two_systems_with_half_loads() {
+    let p = pairs_problem("split_half_loads");
+    let (b, r) = p.construct(true).unwrap();
+    // Two sub-trusses per case, each checked against its own dense solve.
+    assert_eq!(all_checks_pass(&b), 2 * 2 * (3 + 13));
+    for c in &r {
+        // The sum is in balance at every joint of the whole truss.
+        assert!(c.plan_residual < 1e-9 * 3000.0, "{}", c.plan_residual);
+    }
+    // Symmetric load: in the end panels the two diagonals carry ±½ of the shear √2.
+    let d = &r[0].members;
+    assert!((d[10].force + d[11].force).abs() < 1e-9);
+    assert!((d[10].force.abs() - 0.5 * 1000.0 * 2f64.sqrt()).abs() < 1e-9);
+}
+
+#[test]
+fn tension_only_counter_diagonals_switch_until_every_working_diagonal_pulls() {
+    let p = pairs_problem("tension_only");
+    let (b, r) = p.construct(true).unwrap();
+    all_checks_pass(&b);
+    for c in &r {
+        assert!(c.plan_residual < 1e-9 * 3000.0, "{}", c.plan_residual);
+        for pair in [[10, 11], [12, 13], [14, 15]] {
+            let (f0, f1) = (c.members[pair[0]].force, c.members[pair[1]].force);
+            // One of the two is slack, the other pulls (or both are idle).
+            assert!(f0 == 0.0 || f1 == 0.0, "{}: {f0} {f1}", c.case);
+            assert!(f0 >= -1e-9 && f1 >= -1e-9, "{}: {f0} {f1}", c.case);
+        }
+    }
+    // Case P: in the left panel the rising diagonal 11 would push, so 12 works.
+    assert_eq!(r[0].members[10].force, 0.0);
+    assert!((r[0].members[11].force - 1000.0 * 2f64.sqrt()).abs() < 1e-9);
+    // The figure names the slack bars of each case.
+    assert!(b.steps().iter().any(|s| s
+        .context
+        .as_deref()
+        .is_some_and(|c| c.starts_with("P (11,"))));
+}
+
+#[test]
+fn bad_diagonal_pairs_are_named() {
+    let good = double_diagonal_scene("tension_only");
+    for (bad, field) in [
+        (
+            good.replace(r#"["15", "16"]"#, r#"["15", "17"]"#),
+            "diagonal_pairs[2][1]",
+        ),
+        (
+            good.replace(r#"["15", "16"]"#, r#"["15", "11"]"#),
+            "diagonal_pairs[2][1]",
+        ),
+        (
+            good.replace(r#", "diagonal_mode": "tension_only""#, ""),
+            "diagonal_mode",
+        ),
+        (
+            good.replace(r#", ["15", "16"]"#, ""),
+            "over-determinate by 1",
+        ),
+    ] {
+        let e = AnyScene::from_json(&bad, "d.json").unwrap_err().to_string();
+        assert!(e.contains(field), "{field}: {e}");
+    }
+}

@@ -7,6 +7,7 @@ use crate::protocol::{Board, ConstructionError};
 use crate::render::forces::Combination;
 use crate::truss::cremona::{self, CaseResult, TrussDrawing};
 use crate::truss::matrix::{self, Determinacy};
+use crate::truss::redundant::{self, PairMode};
 use crate::truss::{Joint, JointLoad, LoadCase, Member, Support, SupportKind, Truss};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
@@ -41,6 +42,14 @@ pub struct TrussScene {
     /// load case of its own, and the table's envelope gives every member's extremes.
     #[serde(default)]
     pub moving_loads: Vec<MovingLoadSpec>,
+    /// Pairs of diagonals in one panel (members by name), for a truss with more than 2k − 3
+    /// members (LH B.5, Abb. 19-20).
+    #[serde(default)]
+    pub diagonal_pairs: Vec<[String; 2]>,
+    /// How the pairs work: `split_half_loads` (two systems, half the loads each, added) or
+    /// `tension_only` (flat bars: per case the diagonal in tension works, the other is slack).
+    #[serde(default)]
+    pub diagonal_mode: Option<PairMode>,
     /// Sums of load cases for the table of member forces (the book's "Gesamtbelastung").
     #[serde(default)]
     pub combinations: Vec<CombinationSpec>,
@@ -179,6 +188,10 @@ pub struct TrussProblem {
     pub cases: Vec<LoadCase>,
     /// Sums of load cases for the table.
     pub combinations: Vec<Combination>,
+    /// Pairs of diagonals (member indices) and how they work.
+    pub pairs: Vec<[usize; 2]>,
+    /// How the pairs work (with pairs only).
+    pub pair_mode: Option<PairMode>,
     /// Scales.
     pub drawing: TrussDrawing,
 }
@@ -414,8 +427,63 @@ impl TrussScene {
                 ],
             )?;
         }
-        // Stability: the rank of the equilibrium matrix (LH Gl. 2 and more).
+        // Pairs of diagonals: each system (one diagonal of every pair) must be determinate.
         let truss = self.truss();
+        if !self.diagonal_pairs.is_empty() {
+            if self.diagonal_mode.is_none() {
+                return Err(bad(
+                    "diagonal_mode".into(),
+                    "give `split_half_loads` or `tension_only` for the diagonal pairs".into(),
+                ));
+            }
+            let mut seen: HashMap<&str, usize> = HashMap::new();
+            for (i, pair) in self.diagonal_pairs.iter().enumerate() {
+                for (k, name) in pair.iter().enumerate() {
+                    if !names.contains_key(name.as_str()) {
+                        return Err(bad(
+                            format!("diagonal_pairs[{i}][{k}]"),
+                            format!("no member is named `{name}`"),
+                        ));
+                    }
+                    if let Some(first) = seen.insert(name.as_str(), i) {
+                        return Err(bad(
+                            format!("diagonal_pairs[{i}][{k}]"),
+                            format!("member `{name}` is already in pair {first}"),
+                        ));
+                    }
+                }
+            }
+            let pairs = self.pair_indices();
+            for side in 0..2 {
+                let drop: Vec<usize> = pairs.iter().map(|p| p[1 - side]).collect();
+                let (sub, _) = redundant::without(&truss, &drop);
+                let a = matrix::analyse(&sub);
+                let why = match a.determinacy {
+                    Determinacy::Determinate => continue,
+                    Determinacy::OverDeterminate { redundant } => {
+                        format!("still over-determinate by {redundant}: pair the other double diagonals too")
+                    }
+                    Determinacy::Mechanism { joint, .. } => {
+                        format!("a mechanism: joint `{}` can move", sub.joints[joint].name)
+                    }
+                };
+                return Err(bad(
+                    "diagonal_pairs".into(),
+                    format!(
+                        "with the {} diagonal of every pair the truss is {why}",
+                        if side == 0 { "first" } else { "second" },
+                    ),
+                ));
+            }
+            return Ok(());
+        }
+        if self.diagonal_mode.is_some() {
+            return Err(bad(
+                "diagonal_mode".into(),
+                "a mode without diagonal_pairs".into(),
+            ));
+        }
+        // Stability: the rank of the equilibrium matrix (LH Gl. 2 and more).
         match matrix::analyse(&truss).determinacy {
             Determinacy::Determinate => Ok(()),
             Determinacy::Mechanism { joint, freedoms } => Err(bad(
@@ -436,6 +504,14 @@ impl TrussScene {
                 ),
             )),
         }
+    }
+
+    fn pair_indices(&self) -> Vec<[usize; 2]> {
+        let pos = |n: &str| self.members.iter().position(|m| m.name == n).unwrap_or(0);
+        self.diagonal_pairs
+            .iter()
+            .map(|[a, b]| [pos(a), pos(b)])
+            .collect()
     }
 
     fn truss(&self) -> Truss {
@@ -556,6 +632,8 @@ impl TrussScene {
             truss,
             cases,
             combinations,
+            pairs: self.pair_indices(),
+            pair_mode: self.diagonal_mode,
             drawing,
         }
     }
@@ -571,7 +649,17 @@ impl TrussProblem {
             self.truss.size() * 1000.0 / self.drawing.length_scale,
             recording,
         );
-        let r = cremona::construct_truss(&mut board, &self.truss, &self.cases, &self.drawing)?;
+        let r = match self.pair_mode {
+            Some(mode) if !self.pairs.is_empty() => redundant::construct_pairs(
+                &mut board,
+                &self.truss,
+                &self.pairs,
+                mode,
+                &self.cases,
+                &self.drawing,
+            )?,
+            _ => cremona::construct_truss(&mut board, &self.truss, &self.cases, &self.drawing)?,
+        };
         Ok((board, r))
     }
 

@@ -276,7 +276,38 @@ pub fn construct_truss(
     cases: &[LoadCase],
     dr: &TrussDrawing,
 ) -> Result<Vec<CaseResult>, ConstructionError> {
-    construct(b, t, cases, dr, t.joints.len() <= matrix::DENSE_MAX_JOINTS)
+    let mut row = 0.0;
+    construct(
+        b,
+        t,
+        cases,
+        dr,
+        t.joints.len() <= matrix::DENSE_MAX_JOINTS,
+        &mut row,
+    )
+}
+
+/// As [`construct_truss`], drawing the cases' rows from `row_top` (mm) downwards and moving
+/// it below them: for figures that draw several trusses (sub-trusses, counter-diagonals
+/// switched per case) one under the other.
+///
+/// # Errors
+/// As [`construct_truss`].
+pub fn construct_truss_rows(
+    b: &mut Board,
+    t: &Truss,
+    cases: &[LoadCase],
+    dr: &TrussDrawing,
+    row_top: &mut f64,
+) -> Result<Vec<CaseResult>, ConstructionError> {
+    construct(
+        b,
+        t,
+        cases,
+        dr,
+        t.joints.len() <= matrix::DENSE_MAX_JOINTS,
+        row_top,
+    )
 }
 
 /// The plan alone, without the rank test and the dense solve: what a drafter does, and what
@@ -292,7 +323,8 @@ pub fn construct_plan(
     cases: &[LoadCase],
     dr: &TrussDrawing,
 ) -> Result<Vec<CaseResult>, ConstructionError> {
-    construct(b, t, cases, dr, false)
+    let mut row = 0.0;
+    construct(b, t, cases, dr, false, &mut row)
 }
 
 fn construct(
@@ -301,6 +333,7 @@ fn construct(
     cases: &[LoadCase],
     dr: &TrussDrawing,
     dense: bool,
+    row_top: &mut f64,
 ) -> Result<Vec<CaseResult>, ConstructionError> {
     let analysis = if dense {
         matrix::analyse(t)
@@ -342,7 +375,6 @@ fn construct(
     })?;
     let (pin, roller, rdir) = pin_roller(t)?;
     let mut out = Vec::with_capacity(cases.len());
-    let mut row_top = 0.0;
     for case in cases {
         let sol = if dense { matrix::solve(t, case) } else { None };
         // A scratch run fixes where the blocks go; the real run draws them there.
@@ -365,9 +397,9 @@ fn construct(
         let [tx0, ty0, tx1, ty1] = dry.boxes[0];
         let [px0, py0, px1, py1] = dry.boxes[1];
         let [qx0, qy0, _, qy1] = dry.boxes[2];
-        let truss = Point::new(-tx0, row_top - ty1);
-        let polygon = Point::new(tx1 - tx0 + gap - px0, row_top - py1);
-        let plan = Point::new(tx1 - tx0 + gap + (px1 - px0) + gap - qx0, row_top - qy1);
+        let truss = Point::new(-tx0, *row_top - ty1);
+        let polygon = Point::new(tx1 - tx0 + gap - px0, *row_top - py1);
+        let plan = Point::new(tx1 - tx0 + gap + (px1 - px0) + gap - qx0, *row_top - qy1);
         b.set_context(|| case.name.clone());
         let r = construct_case(
             b,
@@ -385,7 +417,7 @@ fn construct(
         )?;
         b.clear_context();
         let height = (ty1 - ty0).max(py1 - py0).max(qy1 - qy0);
-        row_top -= height + 2.0 * gap;
+        *row_top -= height + 2.0 * gap;
         out.push(r.result);
     }
     Ok(out)

@@ -15,6 +15,7 @@ pub mod cremona;
 pub mod faces;
 pub mod generate;
 pub mod matrix;
+pub mod redundant;
 
 use crate::kernel::{Point, Vector};
 use serde::Serialize;

@@ -1,0 +1,204 @@
+//! Trusses with more than 2k − 3 members (LH B.5, Abb. 19-20): parallel girders with two
+//! diagonals in a panel.
+//!
+//! - **Split into two systems** ([`PairMode::SplitHalfLoads`]): each system keeps one
+//!   diagonal of every pair, both carry half the loads, and the forces are added. Chords
+//!   and posts get the sum of both plans, each diagonal the force of its own system.
+//! - **Tension-only counter-diagonals** ([`PairMode::TensionOnly`], flat bars): per load
+//!   case only one diagonal of a pair works, the one in tension. The plan is drawn with the
+//!   first diagonal of each pair; every pair whose working diagonal comes out in compression
+//!   is switched to the other, and the plan is drawn again, until all working diagonals pull.
+//!   The book: "man verfährt so, als wenn die zweite Diagonale nicht vorhanden wäre".
+
+use super::cremona::{construct_plan, construct_truss_rows, CaseResult, TrussDrawing};
+use super::{matrix, LoadCase, MemberForce, SupportKind, Truss};
+use crate::protocol::{Board, ConstructionError};
+use serde::Serialize;
+
+/// How the pairs of diagonals are treated.
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize, schemars::JsonSchema,
+)]
+#[serde(rename_all = "snake_case")]
+pub enum PairMode {
+    /// Two systems with half the loads each, added (Abb. 19 a, b).
+    SplitHalfLoads,
+    /// Flat bars that take tension only: per case the one in tension works.
+    TensionOnly,
+}
+
+/// A force below this (kg) counts as zero when deciding whether a flat bar is compressed:
+/// the plan is exact to about 1e-12 of the loads.
+pub const SLACK_KG: f64 = 1e-6;
+
+/// The truss without the members in `drop`, and the old index of every member kept.
+pub fn without(t: &Truss, drop: &[usize]) -> (Truss, Vec<usize>) {
+    let keep: Vec<usize> = (0..t.members.len()).filter(|m| !drop.contains(m)).collect();
+    (
+        Truss {
+            joints: t.joints.clone(),
+            members: keep.iter().map(|&m| t.members[m].clone()).collect(),
+            supports: t.supports.clone(),
+        },
+        keep,
+    )
+}
+
+fn full_result(
+    t: &Truss,
+    case: &LoadCase,
+    name: String,
+    forces: &[f64],
+    plan_mm: &[f64],
+    matrix: &[Option<f64>],
+    reactions: Vec<[f64; 2]>,
+) -> CaseResult {
+    // Reaction components in the solve's order, for the balance of the whole truss.
+    let mut rc = Vec::new();
+    let (pin, roller) = (reactions[0], reactions[1]);
+    for sup in &t.supports {
+        match sup.kind {
+            SupportKind::Pinned => rc.extend(pin),
+            SupportKind::Roller { dir } => rc.push(roller[0] * dir.x + roller[1] * dir.y),
+        }
+    }
+    CaseResult {
+        case: name,
+        reactions,
+        members: t
+            .members
+            .iter()
+            .enumerate()
+            .map(|(m, mem)| MemberForce {
+                member: mem.name.clone(),
+                plan_mm: plan_mm[m],
+                force: forces[m],
+                matrix: matrix[m],
+            })
+            .collect(),
+        plan_residual: matrix::max_residual(t, case, forces, &rc),
+        matrix_residual: None,
+    }
+}
+
+/// Constructs every case for a truss with pairs of diagonals (indices into `t.members`).
+///
+/// # Errors
+/// As [`construct_truss_rows`]; and a tension-only case that no choice of working diagonals
+/// carries with all of them in tension.
+pub fn construct_pairs(
+    b: &mut Board,
+    t: &Truss,
+    pairs: &[[usize; 2]],
+    mode: PairMode,
+    cases: &[LoadCase],
+    dr: &TrussDrawing,
+) -> Result<Vec<CaseResult>, ConstructionError> {
+    let mut row = 0.0;
+    let mut out = Vec::with_capacity(cases.len());
+    let n = t.members.len();
+    for case in cases {
+        match mode {
+            PairMode::SplitHalfLoads => {
+                let half = LoadCase {
+                    name: String::new(),
+                    loads: case
+                        .loads
+                        .iter()
+                        .map(|l| super::JointLoad {
+                            joint: l.joint,
+                            force: l.force * 0.5,
+                        })
+                        .collect(),
+                };
+                let mut forces = vec![0.0; n];
+                let mut plan = vec![0.0; n];
+                let mut reactions = vec![[0.0; 2]; 2];
+                for (s, system) in ["a", "b"].iter().enumerate() {
+                    let drop: Vec<usize> = pairs.iter().map(|p| p[1 - s]).collect();
+                    let (sub, keep) = without(t, &drop);
+                    let c = LoadCase {
+                        name: format!("{}, system {system} (half loads)", case.name),
+                        loads: half.loads.clone(),
+                    };
+                    let r = construct_truss_rows(b, &sub, &[c], dr, &mut row)?;
+                    for (i, &m) in keep.iter().enumerate() {
+                        forces[m] += r[0].members[i].force;
+                        plan[m] += r[0].members[i].plan_mm;
+                    }
+                    for (k, rv) in r[0].reactions.iter().enumerate() {
+                        reactions[k][0] += rv[0];
+                        reactions[k][1] += rv[1];
+                    }
+                }
+                out.push(full_result(
+                    t,
+                    case,
+                    case.name.clone(),
+                    &forces,
+                    &plan,
+                    &vec![None; n],
+                    reactions,
+                ));
+            }
+            PairMode::TensionOnly => {
+                let mut working: Vec<usize> = vec![0; pairs.len()];
+                let mut tried = std::collections::BTreeSet::new();
+                loop {
+                    if !tried.insert(working.clone()) {
+                        return Err(ConstructionError::Unsupported(format!(
+                            "{}: no choice of the tension-only diagonals has them all in tension",
+                            case.name
+                        )));
+                    }
+                    let drop: Vec<usize> =
+                        pairs.iter().zip(&working).map(|(p, &w)| p[1 - w]).collect();
+                    let (sub, keep) = without(t, &drop);
+                    let mut scratch = Board::new(b.tolerance().length * 1e6, false);
+                    let r = construct_plan(&mut scratch, &sub, std::slice::from_ref(case), dr)?;
+                    let force_of = |m: usize| {
+                        keep.iter()
+                            .position(|&k| k == m)
+                            .map_or(0.0, |i| r[0].members[i].force)
+                    };
+                    let mut switched = false;
+                    for (p, w) in pairs.iter().zip(working.iter_mut()) {
+                        if force_of(p[*w]) < -SLACK_KG {
+                            *w = 1 - *w;
+                            switched = true;
+                        }
+                    }
+                    if switched {
+                        continue;
+                    }
+                    let slack: Vec<&str> =
+                        drop.iter().map(|&m| t.members[m].name.as_str()).collect();
+                    let c = LoadCase {
+                        name: format!("{} ({} slack)", case.name, slack.join(", ")),
+                        loads: case.loads.clone(),
+                    };
+                    let r = construct_truss_rows(b, &sub, std::slice::from_ref(&c), dr, &mut row)?;
+                    let mut forces = vec![0.0; n];
+                    let mut plan = vec![0.0; n];
+                    let mut mat = vec![Some(0.0); n];
+                    for (i, &m) in keep.iter().enumerate() {
+                        forces[m] = r[0].members[i].force;
+                        plan[m] = r[0].members[i].plan_mm;
+                        mat[m] = r[0].members[i].matrix;
+                    }
+                    out.push(full_result(
+                        t,
+                        case,
+                        case.name.clone(),
+                        &forces,
+                        &plan,
+                        &mat,
+                        r[0].reactions.clone(),
+                    ));
+                    break;
+                }
+            }
+        }
+    }
+    Ok(out)
+}
