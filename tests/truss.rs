@@ -574,3 +574,67 @@ fn bad_diagonal_pairs_are_named() {
         assert!(e.contains(field), "{field}: {e}");
     }
 }
+
+/// LH Aufgabe 4 with the loads generated from the roof (Gl. 3-10) instead of typed in: the
+/// book rounds its node loads (500 for 495, 650 for 648, 1200 for 1192, 485 for 483), so
+/// they agree within 1.5 %.
+#[test]
+fn aufgabe_4_loads_from_the_roof_formulas() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join("lh_aufgabe4_shed_roof.json");
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    v["load_cases"] = serde_json::json!([]);
+    v["roof"] = serde_json::json!({
+        "bay_m": 3, "truss_kg_per_m2": 50, "wind_k_kg_per_m2": 150,
+        "slopes": [ { "joints": ["I", "II"], "cover_kg_per_m2": 30 },
+                    { "joints": ["II", "III", "IV"], "cover_kg_per_m2": 40 } ] });
+    let AnyScene::Truss(s) = AnyScene::from_json(&v.to_string(), "roof.json").unwrap() else {
+        panic!()
+    };
+    let p = s.problem();
+    let names: Vec<_> = p.cases.iter().map(|c| c.name.as_str()).collect();
+    assert_eq!(names, ["dead load", "wind left", "wind right", "snow"]);
+    let total = |c: usize, j: usize| -> Vector {
+        p.cases[c]
+            .loads
+            .iter()
+            .filter(|l| l.joint == j)
+            .map(|l| l.force)
+            .sum()
+    };
+    let near = |got: f64, want: f64| (got - want).abs() <= 0.015 * want.abs();
+    // Dead load at I, II, III, IV: 250, 575, 650, 325 kg.
+    for (j, want) in [(0, 250.0), (1, 575.0), (2, 650.0), (3, 325.0)] {
+        assert!(near(-total(0, j).y, want), "dead {j}: {}", total(0, j));
+    }
+    // Wind from the left: W/2 = 600 kg at I and II, normal to the 60° slope.
+    for j in [0, 1] {
+        let w = total(1, j);
+        assert!(near(w.norm(), 600.0) && (w.y / w.x + 30f64.to_radians().tan()).abs() < 1e-6);
+    }
+    // Wind from the right: W′ = 485 kg per zinc panel; snow 250, 500, 250 kg.
+    assert!(near(total(2, 2).norm(), 485.0));
+    for (j, want) in [(1, 250.0), (2, 500.0), (3, 250.0)] {
+        assert!(near(-total(3, j).y, want), "snow {j}");
+    }
+    let (b, r) = p.construct(true).unwrap();
+    all_checks_pass(&b);
+    let typed = load_scene("lh_aufgabe4_shed_roof.json")
+        .construct(false)
+        .unwrap()
+        .1;
+    for (g, t) in r.iter().zip(&typed) {
+        for (mg, mt) in g.members.iter().zip(&t.members) {
+            assert!(
+                (mg.force - mt.force).abs() <= 0.015 * mt.force.abs() + 1e-6,
+                "{} {}: {} vs {}",
+                g.case,
+                mg.member,
+                mg.force,
+                mt.force
+            );
+        }
+    }
+}

@@ -16,6 +16,7 @@ pub mod faces;
 pub mod generate;
 pub mod matrix;
 pub mod redundant;
+pub mod roof;
 
 use crate::kernel::{Point, Vector};
 use serde::Serialize;
