@@ -949,20 +949,44 @@ fn cremona_plan(
         )));
     }
     let members: Vec<f64> = forces.iter().map(|f| f.unwrap_or(0.0)).collect();
-    // Reaction components in the solve's order, for the residual.
+    let matrix: Vec<Option<f64>> = (0..members.len())
+        .map(|m| sol.map(|s| s.members[m]))
+        .collect();
+    let mut result = case_result(
+        t,
+        case,
+        case.name.clone(),
+        &members,
+        &plan_mm,
+        &matrix,
+        [ext.reactions[0], ext.reactions[1]],
+    );
+    result.matrix_residual = sol.map(|s| matrix::max_residual(t, case, &s.members, &s.reactions));
+    Ok((result, bx))
+}
+
+/// The result of a case from its member forces and reactions (pin, roller), with the balance
+/// of every joint of `t` under them.
+pub(crate) fn case_result(
+    t: &Truss,
+    case: &LoadCase,
+    name: String,
+    forces: &[f64],
+    plan_mm: &[f64],
+    matrix: &[Option<f64>],
+    reactions: [Vector; 2],
+) -> CaseResult {
+    // Reaction components in the solve's order.
     let mut rc = Vec::new();
     for sup in &t.supports {
-        let (pin_v, roll_v) = (ext.reactions[0], ext.reactions[1]);
         match sup.kind {
-            SupportKind::Pinned => rc.extend([pin_v.x, pin_v.y]),
-            SupportKind::Roller { dir } => rc.push(roll_v.dot(&dir)),
+            SupportKind::Pinned => rc.extend([reactions[0].x, reactions[0].y]),
+            SupportKind::Roller { dir } => rc.push(reactions[1].dot(&dir)),
         }
     }
-    let plan_residual = matrix::max_residual(t, case, &members, &rc);
-    let matrix_residual = sol.map(|s| matrix::max_residual(t, case, &s.members, &s.reactions));
-    let result = CaseResult {
-        case: case.name.clone(),
-        reactions: ext.reactions.iter().map(|r| [r.x, r.y]).collect(),
+    CaseResult {
+        case: name,
+        reactions: reactions.iter().map(|r| [r.x, r.y]).collect(),
         members: t
             .members
             .iter()
@@ -970,12 +994,11 @@ fn cremona_plan(
             .map(|(m, mem)| MemberForce {
                 member: mem.name.clone(),
                 plan_mm: plan_mm[m],
-                force: members[m],
-                matrix: sol.map(|s| s.members[m]),
+                force: forces[m],
+                matrix: matrix[m],
             })
             .collect(),
-        plan_residual,
-        matrix_residual,
-    };
-    Ok((result, bx))
+        plan_residual: matrix::max_residual(t, case, forces, &rc),
+        matrix_residual: None,
+    }
 }

@@ -11,7 +11,7 @@
 //!   The book: "man verfährt so, als wenn die zweite Diagonale nicht vorhanden wäre".
 
 use super::cremona::{construct_plan, construct_truss_rows, CaseResult, TrussDrawing};
-use super::{matrix, LoadCase, MemberForce, SupportKind, Truss};
+use super::{LoadCase, Truss};
 use crate::protocol::{Board, ConstructionError};
 use serde::Serialize;
 
@@ -53,32 +53,16 @@ fn full_result(
     matrix: &[Option<f64>],
     reactions: Vec<[f64; 2]>,
 ) -> CaseResult {
-    // Reaction components in the solve's order, for the balance of the whole truss.
-    let mut rc = Vec::new();
-    let (pin, roller) = (reactions[0], reactions[1]);
-    for sup in &t.supports {
-        match sup.kind {
-            SupportKind::Pinned => rc.extend(pin),
-            SupportKind::Roller { dir } => rc.push(roller[0] * dir.x + roller[1] * dir.y),
-        }
-    }
-    CaseResult {
-        case: name,
-        reactions,
-        members: t
-            .members
-            .iter()
-            .enumerate()
-            .map(|(m, mem)| MemberForce {
-                member: mem.name.clone(),
-                plan_mm: plan_mm[m],
-                force: forces[m],
-                matrix: matrix[m],
-            })
-            .collect(),
-        plan_residual: matrix::max_residual(t, case, forces, &rc),
-        matrix_residual: None,
-    }
+    let v = |r: [f64; 2]| crate::kernel::Vector::new(r[0], r[1]);
+    super::cremona::case_result(
+        t,
+        case,
+        name,
+        forces,
+        plan_mm,
+        matrix,
+        [v(reactions[0]), v(reactions[1])],
+    )
 }
 
 /// Constructs every case for a truss with pairs of diagonals (indices into `t.members`).
