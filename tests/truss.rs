@@ -638,3 +638,140 @@ fn aufgabe_4_loads_from_the_roof_formulas() {
         }
     }
 }
+
+/// Henneberg's second step on member `m` of the triangle (u, v, x): drop u–v, put a joint w
+/// inside the triangle and join it to u, v and x. The truss stays determinate and plane, but
+/// w starts with three unknown members, and two such steps stall the plan of joints.
+fn henneberg(t: &Truss, m: usize, x: usize) -> Truss {
+    let mut t = t.clone();
+    let [u, v] = t.members[m].ends;
+    let c = (t.joints[u].at.coords + t.joints[v].at.coords + t.joints[x].at.coords) / 3.0;
+    t.joints.push(Joint {
+        name: format!("W{}", t.joints.len()),
+        at: Point::from(c),
+    });
+    let w = t.joints.len() - 1;
+    t.members.remove(m);
+    for e in [u, v, x] {
+        let name = (t.members.len() + 100).to_string();
+        t.members.push(Member { name, ends: [w, e] });
+    }
+    t
+}
+
+/// (member, third joint) of every triangle of members.
+fn triangles(t: &Truss) -> Vec<(usize, usize)> {
+    let joined = |a: usize, b: usize| {
+        t.members
+            .iter()
+            .any(|m| m.ends == [a, b] || m.ends == [b, a])
+    };
+    let mut out = Vec::new();
+    for (mi, m) in t.members.iter().enumerate() {
+        for x in 0..t.joints.len() {
+            if !m.ends.contains(&x) && joined(m.ends[0], x) && joined(m.ends[1], x) {
+                out.push((mi, x));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn a_stalled_plan_goes_on_by_ritters_section() {
+    // Warren girder of three panels, two Henneberg steps: no joint with two unknowns is left
+    // after the supports' joints.
+    let t0 = parallel_chord(Web::Warren, 3, 2.0, 2.0);
+    let t = henneberg(&henneberg(&t0, 4, 0), 5, 2);
+    assert_eq!(analyse(&t).determinacy, Determinacy::Determinate);
+    let (b, r) = run(&t, &case((1..3).map(|i| down(i, 1000.0)).collect()));
+    let ritter: Vec<_> = b
+        .steps()
+        .iter()
+        .filter(|s| s.caption.starts_with("Ritter section"))
+        .collect();
+    assert_eq!(ritter.len(), 1);
+    // The moment point is a drawn cut of two member lines, and the step names the section.
+    assert!(ritter[0].conditioning.is_some());
+    assert!(ritter[0]
+        .context
+        .as_deref()
+        .unwrap()
+        .contains("Ritter section through"));
+    assert!(r[0].plan_residual < 1e-9 * 1000.0);
+}
+
+#[test]
+fn a_triangular_prism_is_refused_with_the_joints_named() {
+    // Outer triangle joined to an inner one: every section through three members meets in a
+    // corner, so neither joints nor Ritter's section start the plan. (With the inner
+    // triangle placed so that the three links meet in one point, it is a mechanism, and
+    // the rank test says so.)
+    let t = small(
+        &[
+            (0.0, 0.0),
+            (6.0, 0.0),
+            (3.0, 5.0),
+            (2.0, 1.2),
+            (4.2, 1.0),
+            (3.3, 3.2),
+        ],
+        &[
+            (0, 1),
+            (1, 2),
+            (2, 0),
+            (3, 4),
+            (4, 5),
+            (5, 3),
+            (0, 3),
+            (1, 4),
+            (2, 5),
+        ],
+        90.0,
+    );
+    assert_eq!(analyse(&t).determinacy, Determinacy::Determinate);
+    let mut b = Board::new(400.0, true);
+    let e = construct_truss(&mut b, &t, &case(vec![down(2, 1000.0)]), &D).unwrap_err();
+    assert!(
+        e.to_string().contains("stalls") && e.to_string().contains("K0"),
+        "{e}"
+    );
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+    #[test]
+    fn henneberg_trusses_are_solved_or_refused_cleanly(
+        web in prop_oneof![Just(Web::Warren), Just(Web::Pratt)],
+        n in 2usize..6,
+        picks in proptest::collection::vec(0usize..1000, 0..3),
+        height in 0.5f64..3.0,
+    ) {
+        let mut t = parallel_chord(web, n, 2.0, height);
+        for p in picks {
+            let tri = triangles(&t);
+            if tri.is_empty() {
+                break;
+            }
+            let (m, x) = tri[p % tri.len()];
+            t = henneberg(&t, m, x);
+        }
+        prop_assume!(analyse(&t).determinacy == Determinacy::Determinate);
+        let loads = case((1..n).map(|i| down(i, 1000.0)).collect());
+        let mut b = Board::new(400.0, true);
+        match construct_truss(&mut b, &t, &loads, &D) {
+            Ok(r) => {
+                for c in b.steps().iter().flat_map(|s| &s.checks) {
+                    prop_assert!(c.passed, "{}: {} vs {}", c.quantity, c.constructed, c.closed_form);
+                }
+                prop_assert!(r[0].plan_residual < 1e-9 * 1000.0 * 100.0);
+            }
+            // The only refusal allowed: a plan that neither joints nor a section can start
+            // (or a split that folded the drawing).
+            Err(e) => prop_assert!(
+                e.to_string().contains("stalls") || e.to_string().contains("cross"),
+                "{e}"
+            ),
+        }
+    }
+}
