@@ -775,3 +775,20 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn zero_force_members_are_marked_in_the_truss_drawing() {
+    let t = small(
+        &[(0.0, 0.0), (2.0, 0.0), (1.0, 0.0), (1.0, 1.0)],
+        &[(0, 2), (2, 1), (0, 3), (3, 1), (2, 3)],
+        90.0,
+    );
+    let (b, _) = run(&t, &case(vec![down(3, 1000.0)]));
+    let marks: Vec<_> = b
+        .steps()
+        .iter()
+        .filter(|s| s.caption == "zero-force member")
+        .collect();
+    assert_eq!(marks.len(), 1);
+    assert_eq!(marks[0].inputs.len(), 2);
+}

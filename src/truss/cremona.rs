@@ -144,6 +144,22 @@ const N_FORCE: Note = note(
     Topic::Cremona,
 );
 
+/// A member force at most this fraction of the largest external force is a zero-force
+/// member (Nullstab): the plan is exact to about 1e-12 of the loads, so 1e-9 separates
+/// rounding from a real force with room on both sides.
+pub const ZERO_FORCE_REL: f64 = 1e-9;
+
+const N_ZERO: Note = note(
+    "zero-force member",
+    Some("Nullstab"),
+    "LH B.4, Aufgabe 5",
+    Topic::Truss,
+);
+
+fn ext_max(ext: &External) -> f64 {
+    ext.forces.iter().map(|(_, f)| f.norm()).fold(0.0, f64::max)
+}
+
 /// Scales and where the figure's blocks go.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct TrussDrawing {
@@ -691,6 +707,14 @@ fn construct_case(
     let (result, plan_box) =
         cremona_plan(b, t, g, case, &external, sol, dr, at.plan, &mline, maxload)?;
     boxes[2] = plan_box;
+    // Zero-force members (Nullstäbe) marked in the truss drawing.
+    let zero = ZERO_FORCE_REL * maxload.max(ext_max(&external));
+    for (m, f) in result.members.iter().enumerate() {
+        if f.force.abs() <= zero {
+            let [i, j] = t.members[m].ends;
+            b.segment(&jp[i], &jp[j], Label::plain("0"), Role::Auxiliary, N_ZERO);
+        }
+    }
     for bx in &mut boxes {
         if !bx[0].is_finite() {
             *bx = [0.0; 4];
