@@ -663,6 +663,16 @@ impl Board {
         H { id, g: value }
     }
 
+    /// Writes a table on the sheet with its top-left corner at `at` (the evaluation of a
+    /// plan, LH B.4 "Auswertung"); `inputs` are the objects its numbers were read from.
+    pub fn table(&mut self, at: Point, rows: Vec<Vec<String>>, inputs: &[ObjId], note: Note) {
+        if !self.recording {
+            return;
+        }
+        self.begin(StepKind::Measure, note, inputs);
+        self.add(Label::NONE, Role::Result, || Geom::Table { at, rows });
+    }
+
     /// Draws a curve through points (`smooth`) or the polygon through them.
     pub fn curve(
         &mut self,

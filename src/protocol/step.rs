@@ -258,6 +258,14 @@ pub enum Geom {
         /// Smooth through the points, or straight between them.
         smooth: bool,
     },
+    /// A table written on the sheet (the book's "Auswertung" next to a force plan): rows of
+    /// cells, the first row the header, its top-left corner at `at`.
+    Table {
+        /// Top-left corner (mm on the sheet).
+        at: Point,
+        /// The rows, each the same number of cells.
+        rows: Vec<Vec<String>>,
+    },
     /// A measured number.
     Scalar {
         /// The value in the quantity's unit.

@@ -1,5 +1,6 @@
 //! One SVG figure of a recorded construction.
 
+use super::style::class as class_of;
 use super::style::*;
 use crate::fmt::num;
 use crate::kernel::{Point, Vector};
@@ -148,8 +149,37 @@ fn extent_points(obj: &Object, out: &mut Vec<Point>) {
             }
         }
         Geom::Curve { points, .. } => out.extend(points.iter().copied()),
+        Geom::Table { at, rows } => {
+            let (w, h) = table_size(rows);
+            out.push(*at);
+            out.push(*at + Vector::new(w, -h));
+        }
         Geom::Scalar { .. } => {}
     }
+}
+
+/// Column widths of a table (mm), estimated from the character counts.
+fn table_columns(rows: &[Vec<String>]) -> Vec<f64> {
+    let n = rows.iter().map(|r| r.len()).max().unwrap_or(0);
+    (0..n)
+        .map(|c| {
+            rows.iter()
+                .filter_map(|r| r.get(c))
+                .map(|s| s.chars().count())
+                .max()
+                .unwrap_or(0) as f64
+                * TABLE_CHAR
+                + TABLE_GAP
+        })
+        .collect()
+}
+
+/// Width and height of a table (mm).
+fn table_size(rows: &[Vec<String>]) -> (f64, f64) {
+    (
+        table_columns(rows).iter().sum(),
+        rows.len() as f64 * TABLE_ROW,
+    )
 }
 
 fn bounds(pts: &[Point]) -> [f64; 4] {
@@ -366,6 +396,46 @@ fn draw_object(board: &Board, f: &Frame, obj: &Object, g: Group) -> Group {
             if !obj.label.is_empty() {
                 if let Some(top) = points.iter().max_by(|a, b| a.y.total_cmp(&b.y)) {
                     g = g.add(label_text(f, &(top + Vector::new(1.0, 1.5)), &obj.label));
+                }
+            }
+        }
+        Geom::Table { at, rows } => {
+            let cols = table_columns(rows);
+            for (i, row) in rows.iter().enumerate() {
+                let y = at.y - (i as f64 + 0.8) * TABLE_ROW;
+                let mut x = at.x;
+                for (c, cell) in row.iter().enumerate() {
+                    // Numbers right-aligned in their column, words left-aligned.
+                    let numeric = cell
+                        .chars()
+                        .next()
+                        .is_some_and(|ch| ch.is_ascii_digit() || "+−-".contains(ch));
+                    let w = cols[c] - TABLE_GAP;
+                    let (px, anchor) = if numeric && i > 0 {
+                        (x + w, "end")
+                    } else {
+                        (x, "start")
+                    };
+                    g = g.add(
+                        Text::new(cell.as_str())
+                            .set("class", "small")
+                            .set("x", f.x(&Point::new(px, y)))
+                            .set("y", f.y(&Point::new(px, y)))
+                            .set("text-anchor", anchor),
+                    );
+                    x += cols[c];
+                }
+                if i == 0 {
+                    let (w, _) = table_size(rows);
+                    let ly = at.y - TABLE_ROW * 1.05;
+                    g = g.add(
+                        SLine::new()
+                            .set("class", class_of(Role::Construction))
+                            .set("x1", f.x(&Point::new(at.x, ly)))
+                            .set("y1", f.y(&Point::new(at.x, ly)))
+                            .set("x2", f.x(&Point::new(at.x + w, ly)))
+                            .set("y2", f.y(&Point::new(at.x + w, ly))),
+                    );
                 }
             }
         }

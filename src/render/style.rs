@@ -17,6 +17,13 @@ pub const TITLE_CHAR: f64 = 3.0;
 pub const TEXT_CHAR: f64 = 1.75;
 /// Estimated advance of one character of small text (mm), see [`TITLE_CHAR`].
 pub const SMALL_CHAR: f64 = 1.45;
+/// Height of a table row (mm).
+pub const TABLE_ROW: f64 = 3.6;
+/// Space between table columns (mm).
+pub const TABLE_GAP: f64 = 3.0;
+/// Estimated advance of one character in a table (mm), a little wider than
+/// [`SMALL_CHAR`] so that columns never touch.
+pub const TABLE_CHAR: f64 = 1.7;
 /// How far a construction line runs past the last point constructed on it (mm).
 pub const LINE_OVERSHOOT: f64 = 3.0;
 /// Length of the short compass arc drawn through a point cut on a circle (mm of arc).

@@ -149,6 +149,12 @@ const N_FORCE: Note = note(
 /// rounding from a real force with room on both sides.
 pub const ZERO_FORCE_REL: f64 = 1e-9;
 
+const N_TABLE: Note = note(
+    "table of member forces read off the plan",
+    Some("Auswertung"),
+    "LH B.4",
+    Topic::Cremona,
+);
 const N_ZERO: Note = note(
     "zero-force member",
     Some("Nullstab"),
@@ -706,11 +712,39 @@ fn construct_case(
     };
     let (result, plan_box) =
         cremona_plan(b, t, g, case, &external, sol, dr, at.plan, &mline, maxload)?;
+    // The evaluation of the plan written beside it (LH B.4, "Auswertung").
+    let zero_kg = ZERO_FORCE_REL * maxload.max(ext_max(&external));
+    let mut rows = vec![vec![
+        "Stab".to_string(),
+        "Strecke mm".to_string(),
+        "Stabkraft kg".to_string(),
+        "Art".to_string(),
+    ]];
+    for mf in &result.members {
+        let (force, kind) = if mf.force.abs() <= zero_kg {
+            ("0".to_string(), "Nullstab")
+        } else if mf.force > 0.0 {
+            (format!("+{}", crate::fmt::num(mf.force, 0)), "Zug")
+        } else {
+            (format!("−{}", crate::fmt::num(-mf.force, 0)), "Druck")
+        };
+        rows.push(vec![
+            mf.member.clone(),
+            crate::fmt::num(mf.plan_mm, 1),
+            force,
+            kind.to_string(),
+        ]);
+    }
+    let corner = at.plan + Vector::new(plan_box[2] + 12.0, plan_box[3]);
+    b.table(corner, rows, &[], N_TABLE);
+    let mut plan_box = plan_box;
+    // Room for the table: about 1.45 mm per character and 3.6 mm per row.
+    plan_box[2] += 12.0 + 60.0;
+    plan_box[1] = plan_box[1].min(plan_box[3] - 3.6 * (t.members.len() as f64 + 1.0));
     boxes[2] = plan_box;
     // Zero-force members (Nullstäbe) marked in the truss drawing.
-    let zero = ZERO_FORCE_REL * maxload.max(ext_max(&external));
     for (m, f) in result.members.iter().enumerate() {
-        if f.force.abs() <= zero {
+        if f.force.abs() <= zero_kg {
             let [i, j] = t.members[m].ends;
             b.segment(&jp[i], &jp[j], Label::plain("0"), Role::Auxiliary, N_ZERO);
         }
