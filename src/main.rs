@@ -191,11 +191,13 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
                 TableFormat::Markdown if results.len() > 1 => format!(
                     "{}\n{}",
                     forces::markdown(&results, &t.combinations),
-                    forces::envelope_markdown(&results)
+                    forces::envelope_markdown(&results, t.envelope.as_ref())
                 ),
                 TableFormat::Markdown => forces::markdown(&results, &t.combinations),
                 TableFormat::Csv => forces::csv(&results, &t.combinations),
-                TableFormat::Json => forces::json(&results, &t.combinations) + "\n",
+                TableFormat::Json => {
+                    forces::json(&results, &t.combinations, t.envelope.as_ref()) + "\n"
+                }
             };
             print!("{text}");
             Ok(ExitCode::SUCCESS)

@@ -4,16 +4,8 @@
 
 use crate::fmt::num;
 use crate::truss::cremona::CaseResult;
+pub use crate::truss::envelope::{envelope, Combination, EnvelopeRule, Extremes};
 use serde::Serialize;
-
-/// A named sum of load cases.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Combination {
-    /// Its name ("total").
-    pub name: String,
-    /// Indices of the cases added.
-    pub cases: Vec<usize>,
-}
 
 /// A force below this many kg is written as 0 and classed as a zero-force member: the plan
 /// is exact to about 1e-12 of the loads, so anything below a gram is rounding.
@@ -39,61 +31,18 @@ fn kind(x: f64) -> &'static str {
     }
 }
 
-fn combined(results: &[CaseResult], c: &Combination, m: usize) -> f64 {
-    c.cases.iter().map(|&i| results[i].members[m].force).sum()
-}
-
-/// The extremes of one member over all load cases (LH B.5, T6): the largest tension and the
-/// largest compression, with the case where each occurs.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Extremes {
-    /// Member name.
-    pub member: String,
-    /// Largest tension (kg, ≥ 0) and its case.
-    pub tension: (f64, String),
-    /// Largest compression (kg, ≤ 0) and its case.
-    pub compression: (f64, String),
-}
-
-/// The envelope over all cases: the first case reaching each extreme names it; "-" where the
-/// member is never in tension (or compression).
-pub fn envelope(results: &[CaseResult]) -> Vec<Extremes> {
-    let n = results.first().map_or(0, |r| r.members.len());
-    (0..n)
-        .map(|m| {
-            let mut t = (0.0, "-".to_string());
-            let mut c = (0.0, "-".to_string());
-            for r in results {
-                let f = r.members[m].force;
-                if f > t.0 && f > ZERO_KG {
-                    t = (f, r.case.clone());
-                }
-                if f < c.0 && f < -ZERO_KG {
-                    c = (f, r.case.clone());
-                }
-            }
-            Extremes {
-                member: results[0].members[m].member.clone(),
-                tension: t,
-                compression: c,
-            }
-        })
-        .collect()
-}
-
 /// The envelope as a Markdown table.
-pub fn envelope_markdown(results: &[CaseResult]) -> String {
-    let mut out = String::from(
-        "| member | max tension (kg) | in case | max compression (kg) | in case |\n|---|---:|---|---:|---|\n",
-    );
-    for e in envelope(results) {
+pub fn envelope_markdown(results: &[CaseResult], rule: Option<&EnvelopeRule>) -> String {
+    let mut out =
+        String::from("| member | max (kg) | from | min (kg) | from |\n|---|---:|---|---:|---|\n");
+    for e in envelope(results, rule) {
         out.push_str(&format!(
             "| {} | {} | {} | {} | {} |\n",
             e.member,
-            signed(e.tension.0),
-            e.tension.1,
-            signed(e.compression.0),
-            e.compression.1
+            signed(e.max.0),
+            e.max.1,
+            signed(e.min.0),
+            e.min.1
         ));
     }
     out
@@ -127,7 +76,7 @@ pub fn markdown(results: &[CaseResult], combos: &[Combination]) -> String {
             last = r.members[m].force;
         }
         for c in combos {
-            last = combined(results, c, m);
+            last = c.force(results, m);
             row.push(signed(last));
         }
         row.push(kind(last).into());
@@ -156,7 +105,7 @@ pub fn csv(results: &[CaseResult], combos: &[Combination]) -> String {
             row.push(num(r.members[m].force, 3));
         }
         for c in combos {
-            row.push(num(combined(results, c, m), 3));
+            row.push(num(c.force(results, m), 3));
         }
         out.push_str(&(row.join(",") + "\n"));
     }
@@ -164,7 +113,7 @@ pub fn csv(results: &[CaseResult], combos: &[Combination]) -> String {
 }
 
 /// The cases and combinations as JSON.
-pub fn json(results: &[CaseResult], combos: &[Combination]) -> String {
+pub fn json(results: &[CaseResult], combos: &[Combination], rule: Option<&EnvelopeRule>) -> String {
     #[derive(Serialize)]
     struct Combo<'a> {
         name: &'a str,
@@ -186,16 +135,11 @@ pub fn json(results: &[CaseResult], combos: &[Combination]) -> String {
                 name: &c.name,
                 cases: c.cases.iter().map(|&i| results[i].case.as_str()).collect(),
                 members: (0..n)
-                    .map(|m| {
-                        (
-                            results[0].members[m].member.clone(),
-                            combined(results, c, m),
-                        )
-                    })
+                    .map(|m| (results[0].members[m].member.clone(), c.force(results, m)))
                     .collect(),
             })
             .collect(),
-        envelope: envelope(results),
+        envelope: envelope(results, rule),
     };
     serde_json::to_string_pretty(&all).expect("plain data")
 }

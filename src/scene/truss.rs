@@ -4,8 +4,8 @@ use super::defaults::nice_at_least;
 use super::{optional_positive, SceneError};
 use crate::kernel::{Point, Vector};
 use crate::protocol::{Board, ConstructionError};
-use crate::render::forces::Combination;
 use crate::truss::cremona::{self, CaseResult, TrussDrawing};
+use crate::truss::envelope::{Combination, EnvelopeRule};
 use crate::truss::matrix::{self, Determinacy};
 use crate::truss::redundant::{self, PairMode};
 use crate::truss::roof;
@@ -59,6 +59,11 @@ pub struct TrussScene {
     /// Sums of load cases for the table of member forces (the book's "Gesamtbelastung").
     #[serde(default)]
     pub combinations: Vec<CombinationSpec>,
+    /// The rule of the envelope: permanent cases, and groups of cases that exclude each
+    /// other (the positions of each moving load are such a group by themselves). Without
+    /// it, the envelope takes each case alone.
+    #[serde(default)]
+    pub envelope: Option<EnvelopeSpec>,
     /// Scales; any left out are chosen.
     #[serde(default)]
     pub drawing: Option<TrussDrawingSpec>,
@@ -153,6 +158,18 @@ pub struct SlopeSpec {
     pub cover_kg_per_m2: f64,
 }
 
+/// Which load cases are permanent and which exclude each other, by name.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct EnvelopeSpec {
+    /// Cases always present (dead load).
+    #[serde(default)]
+    pub permanent: Vec<String>,
+    /// Groups of which at most one case acts (wind from the left or the right).
+    #[serde(default)]
+    pub exclusive: Vec<Vec<String>>,
+}
+
 /// A sum of load cases, by name.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -218,6 +235,8 @@ pub struct TrussProblem {
     pub cases: Vec<LoadCase>,
     /// Sums of load cases for the table.
     pub combinations: Vec<Combination>,
+    /// The rule of the envelope, if the scene gives one.
+    pub envelope: Option<EnvelopeRule>,
     /// Pairs of diagonals (member indices) and how they work.
     pub pairs: Vec<[usize; 2]>,
     /// How the pairs work (with pairs only).
@@ -481,6 +500,28 @@ impl TrussScene {
                 }
             }
         }
+        if let Some(env) = &self.envelope {
+            let names = self.case_names();
+            let known = |n: &String| names.contains(n);
+            for (i, n) in env.permanent.iter().enumerate() {
+                if !known(n) {
+                    return Err(bad(
+                        format!("envelope.permanent[{i}]"),
+                        format!("no load case is named `{n}`"),
+                    ));
+                }
+            }
+            for (g, group) in env.exclusive.iter().enumerate() {
+                for (i, n) in group.iter().enumerate() {
+                    if !known(n) {
+                        return Err(bad(
+                            format!("envelope.exclusive[{g}][{i}]"),
+                            format!("no load case is named `{n}`"),
+                        ));
+                    }
+                }
+            }
+        }
         if let Some(d) = &self.drawing {
             optional_positive(
                 origin,
@@ -722,7 +763,29 @@ impl TrussScene {
                     .collect(),
             })
             .collect();
+        let envelope = self.envelope.as_ref().map(|e| {
+            let idx = |n: &String| cases.iter().position(|c| &c.name == n);
+            let mut exclusive: Vec<Vec<usize>> = e
+                .exclusive
+                .iter()
+                .map(|g| g.iter().filter_map(idx).collect())
+                .collect();
+            // Each moving load's positions exclude each other.
+            for mv in &self.moving_loads {
+                let prefix = format!("{} at ", mv.name);
+                exclusive.push(
+                    (0..cases.len())
+                        .filter(|&c| cases[c].name.starts_with(&prefix))
+                        .collect(),
+                );
+            }
+            EnvelopeRule {
+                permanent: e.permanent.iter().filter_map(idx).collect(),
+                exclusive,
+            }
+        });
         TrussProblem {
+            envelope,
             title: self.title.clone(),
             source: self.source.clone().unwrap_or_default(),
             truss,

@@ -12,6 +12,7 @@
 //! - [`cremona`]: the reactions and the combined Cremona plan, every joint polygon a step.
 
 pub mod cremona;
+pub mod envelope;
 pub mod faces;
 pub mod generate;
 pub mod matrix;
