@@ -806,3 +806,31 @@ fn zero_force_members_are_marked_in_the_truss_drawing() {
     assert_eq!(marks.len(), 1);
     assert_eq!(marks[0].inputs.len(), 2);
 }
+
+#[test]
+fn an_empty_load_case_and_a_self_balanced_one_give_clean_plans() {
+    let t = parallel_chord(Web::Pratt, 4, 2.0, 1.5);
+    // Two equal and opposite horizontal pulls on the bottom chord: no reactions, the chord
+    // between them in tension.
+    let pull = |j: usize, x: f64| JointLoad {
+        joint: j,
+        force: Vector::new(x, 0.0),
+    };
+    let cases = vec![
+        LoadCase {
+            name: "nothing".into(),
+            loads: vec![],
+        },
+        LoadCase {
+            name: "pulled".into(),
+            loads: vec![pull(0, -500.0), pull(4, 500.0)],
+        },
+    ];
+    let (_, r) = run(&t, &cases);
+    assert!(r[0].members.iter().all(|m| m.force == 0.0));
+    assert!(r[0].reactions.iter().all(|v| v[0] == 0.0 && v[1] == 0.0));
+    for m in 0..4 {
+        assert!((r[1].members[m].force - 500.0).abs() < 1e-9, "{m}");
+    }
+    assert!(r[1].reactions.iter().all(|v| v[0].hypot(v[1]) < 1e-9));
+}

@@ -486,12 +486,26 @@ fn choose_pole(corners: &[Point], loads: &[Vector], rdir: Vector) -> Point {
         .fold(0.0, f64::max)
         .max(10.0);
     let chord = last - first;
-    let n = if chord.norm() > 1e-9 * span {
-        Vector::new(-chord.y, chord.x).normalize()
+    // Off to the side of the closing chord; if the polygon closes, of its longest side.
+    let along = if chord.norm() > 1e-9 * span {
+        chord
     } else {
-        Vector::new(-1.0, 0.0)
+        loads
+            .iter()
+            .copied()
+            .max_by(|a, b| a.norm().total_cmp(&b.norm()))
+            .unwrap_or(Vector::new(0.0, 1.0))
     };
-    let sin = |a: Vector, b: Vector| (a.x * b.y - a.y * b.x).abs() / (a.norm() * b.norm());
+    let n = Vector::new(-along.y, along.x).normalize();
+    // A pole on a corner or on a ray parallel to the next line of action scores 0.
+    let sin = |a: Vector, b: Vector| {
+        let d = a.norm() * b.norm();
+        if d > 1e-9 * span * b.norm() {
+            (a.x * b.y - a.y * b.x).abs() / d
+        } else {
+            0.0
+        }
+    };
     let score = |o: Point| -> f64 {
         let mut worst = f64::INFINITY;
         for (i, l) in loads.iter().enumerate() {
@@ -509,7 +523,7 @@ fn choose_pole(corners: &[Point], loads: &[Vector], rdir: Vector) -> Point {
         (1.3, -0.8),
         (2.0, 1.0),
     ] {
-        let o = mid + n * (f * span) + chord * turn;
+        let o = mid + n * (f * span) + along.normalize() * (turn * span);
         let s = score(o);
         if s > best.1 * (1.0 + 1e-9) {
             best = (o, s);
