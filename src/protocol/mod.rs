@@ -9,4 +9,5 @@ mod step;
 pub use board::{Board, ConstructionError, Cut, Scale, H};
 pub use step::{
     note, Check, Geom, Ids, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Topic,
+    TABLE_BLOCK_ROWS,
 };

@@ -259,7 +259,8 @@ pub enum Geom {
         smooth: bool,
     },
     /// A table written on the sheet (the book's "Auswertung" next to a force plan): rows of
-    /// cells, the first row the header, its top-left corner at `at`.
+    /// cells, the first row the header, its top-left corner at `at`. Beyond
+    /// [`TABLE_BLOCK_ROWS`] rows it is written in blocks side by side, each under the header.
     Table {
         /// Top-left corner (mm on the sheet).
         at: Point,
@@ -274,6 +275,9 @@ pub enum Geom {
         unit: &'static str,
     },
 }
+
+/// Most body rows of a table block on the sheet; a longer table continues in a block beside.
+pub const TABLE_BLOCK_ROWS: usize = 30;
 
 /// An object on the board.
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -4,7 +4,7 @@ use super::style::class as class_of;
 use super::style::*;
 use crate::fmt::num;
 use crate::kernel::{Point, Vector};
-use crate::protocol::{Board, Geom, Label, Object, Role, Step, StepId};
+use crate::protocol::{Board, Geom, Label, Object, Role, Step, StepId, TABLE_BLOCK_ROWS};
 use svg::node::element::{
     Circle as SCircle, Definitions, Group, Line as SLine, Marker, Path, Style, TSpan, Text, Title,
 };
@@ -150,9 +150,11 @@ fn extent_points(obj: &Object, out: &mut Vec<Point>) {
         }
         Geom::Curve { points, .. } => out.extend(points.iter().copied()),
         Geom::Table { at, rows } => {
-            let (w, h) = table_size(rows);
-            out.push(*at);
-            out.push(*at + Vector::new(w, -h));
+            for (block, corner) in table_blocks(*at, rows) {
+                let (w, h) = table_size(&block);
+                out.push(corner);
+                out.push(corner + Vector::new(w, -h));
+            }
         }
         Geom::Scalar { .. } => {}
     }
@@ -172,6 +174,27 @@ fn table_columns(rows: &[Vec<String>]) -> Vec<f64> {
                 + TABLE_GAP
         })
         .collect()
+}
+
+/// A table cut into blocks of at most [`TABLE_BLOCK_ROWS`] body rows, each with the header,
+/// side by side from `at`.
+fn table_blocks(at: Point, rows: &[Vec<String>]) -> Vec<(Vec<Vec<String>>, Point)> {
+    let Some((head, body)) = rows.split_first() else {
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    let mut x = at.x;
+    for chunk in body.chunks(TABLE_BLOCK_ROWS.max(1)) {
+        let mut block = vec![head.clone()];
+        block.extend(chunk.iter().cloned());
+        let (w, _) = table_size(&block);
+        out.push((block, Point::new(x, at.y)));
+        x += w + 3.0 * TABLE_GAP;
+    }
+    if body.is_empty() {
+        out.push((vec![head.clone()], at));
+    }
+    out
 }
 
 /// Width and height of a table (mm).
@@ -400,46 +423,56 @@ fn draw_object(board: &Board, f: &Frame, obj: &Object, g: Group) -> Group {
             }
         }
         Geom::Table { at, rows } => {
-            let cols = table_columns(rows);
-            for (i, row) in rows.iter().enumerate() {
-                let y = at.y - (i as f64 + 0.8) * TABLE_ROW;
-                let mut x = at.x;
-                for (c, cell) in row.iter().enumerate() {
-                    // Numbers right-aligned in their column, words left-aligned.
-                    let numeric = cell
-                        .chars()
-                        .next()
-                        .is_some_and(|ch| ch.is_ascii_digit() || "+−-".contains(ch));
-                    let w = cols[c] - TABLE_GAP;
-                    let (px, anchor) = if numeric && i > 0 {
-                        (x + w, "end")
-                    } else {
-                        (x, "start")
-                    };
-                    g = g.add(
-                        Text::new(cell.as_str())
-                            .set("class", "small")
-                            .set("x", f.x(&Point::new(px, y)))
-                            .set("y", f.y(&Point::new(px, y)))
-                            .set("text-anchor", anchor),
-                    );
-                    x += cols[c];
-                }
-                if i == 0 {
-                    let (w, _) = table_size(rows);
-                    let ly = at.y - TABLE_ROW * 1.05;
-                    g = g.add(
-                        SLine::new()
-                            .set("class", class_of(Role::Construction))
-                            .set("x1", f.x(&Point::new(at.x, ly)))
-                            .set("y1", f.y(&Point::new(at.x, ly)))
-                            .set("x2", f.x(&Point::new(at.x + w, ly)))
-                            .set("y2", f.y(&Point::new(at.x + w, ly))),
-                    );
-                }
+            for (block, corner) in table_blocks(*at, rows) {
+                g = draw_table(f, corner, &block, g);
             }
         }
         Geom::Scalar { .. } => {}
+    }
+    g
+}
+
+/// One block of a table, its top-left corner at `at`.
+fn draw_table(f: &Frame, at: Point, rows: &[Vec<String>], g: Group) -> Group {
+    let mut g = g;
+    let at = &at;
+    let cols = table_columns(rows);
+    for (i, row) in rows.iter().enumerate() {
+        let y = at.y - (i as f64 + 0.8) * TABLE_ROW;
+        let mut x = at.x;
+        for (c, cell) in row.iter().enumerate() {
+            // Numbers right-aligned in their column, words left-aligned.
+            let numeric = cell
+                .chars()
+                .next()
+                .is_some_and(|ch| ch.is_ascii_digit() || "+−-".contains(ch));
+            let w = cols[c] - TABLE_GAP;
+            let (px, anchor) = if numeric && i > 0 {
+                (x + w, "end")
+            } else {
+                (x, "start")
+            };
+            g = g.add(
+                Text::new(cell.as_str())
+                    .set("class", "small")
+                    .set("x", f.x(&Point::new(px, y)))
+                    .set("y", f.y(&Point::new(px, y)))
+                    .set("text-anchor", anchor),
+            );
+            x += cols[c];
+        }
+        if i == 0 {
+            let (w, _) = table_size(rows);
+            let ly = at.y - TABLE_ROW * 1.05;
+            g = g.add(
+                SLine::new()
+                    .set("class", class_of(Role::Construction))
+                    .set("x1", f.x(&Point::new(at.x, ly)))
+                    .set("y1", f.y(&Point::new(at.x, ly)))
+                    .set("x2", f.x(&Point::new(at.x + w, ly)))
+                    .set("y2", f.y(&Point::new(at.x + w, ly))),
+            );
+        }
     }
     g
 }

@@ -28,7 +28,9 @@ use super::faces::{self, dest, origin, PlaneGraph};
 use super::matrix::{self, Solution};
 use super::{JointLoad, LoadCase, MemberForce, SupportKind, Truss};
 use crate::kernel::{Line, Point, Vector};
-use crate::protocol::{note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{
+    note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H, TABLE_BLOCK_ROWS,
+};
 use serde::Serialize;
 
 const N_JOINT: Note = note(
@@ -752,9 +754,12 @@ fn construct_case(
     let corner = at.plan + Vector::new(plan_box[2] + 12.0, plan_box[3]);
     b.table(corner, rows, &[], N_TABLE);
     let mut plan_box = plan_box;
-    // Room for the table: about 1.45 mm per character and 3.6 mm per row.
-    plan_box[2] += 12.0 + 60.0;
-    plan_box[1] = plan_box[1].min(plan_box[3] - 3.6 * (t.members.len() as f64 + 1.0));
+    // Room for the table: blocks of at most TABLE_BLOCK_ROWS rows side by side, each about
+    // 75 mm wide, 3.6 mm per row.
+    let n = t.members.len();
+    let blocks = n.div_ceil(TABLE_BLOCK_ROWS).max(1);
+    plan_box[2] += 12.0 + 75.0 * blocks as f64;
+    plan_box[1] = plan_box[1].min(plan_box[3] - 3.6 * (n.min(TABLE_BLOCK_ROWS) as f64 + 1.0));
     boxes[2] = plan_box;
     // Zero-force members (Nullstäbe) marked in the truss drawing.
     for (m, f) in result.members.iter().enumerate() {
