@@ -157,6 +157,12 @@ const N_TABLE: Note = note(
     "LH B.4",
     Topic::Cremona,
 );
+const N_SLACK: Note = note(
+    "counter-diagonal out of action in this case (flat bar, would be compressed)",
+    Some("Gegendiagonale"),
+    "LH B.5",
+    Topic::Truss,
+);
 const N_ZERO: Note = note(
     "zero-force member",
     Some("Nullstab"),
@@ -308,12 +314,14 @@ pub fn construct_truss(
         dr,
         t.joints.len() <= matrix::DENSE_MAX_JOINTS,
         &mut row,
+        &[],
     )
 }
 
 /// As [`construct_truss`], drawing the cases' rows from `row_top` (mm) downwards and moving
 /// it below them: for figures that draw several trusses (sub-trusses, counter-diagonals
-/// switched per case) one under the other.
+/// switched per case) one under the other. `slack` are joint pairs of members left out of
+/// this truss but drawn dashed in its drawing (counter-diagonals out of action).
 ///
 /// # Errors
 /// As [`construct_truss`].
@@ -323,6 +331,7 @@ pub fn construct_truss_rows(
     cases: &[LoadCase],
     dr: &TrussDrawing,
     row_top: &mut f64,
+    slack: &[[usize; 2]],
 ) -> Result<Vec<CaseResult>, ConstructionError> {
     construct(
         b,
@@ -331,6 +340,7 @@ pub fn construct_truss_rows(
         dr,
         t.joints.len() <= matrix::DENSE_MAX_JOINTS,
         row_top,
+        slack,
     )
 }
 
@@ -348,7 +358,7 @@ pub fn construct_plan(
     dr: &TrussDrawing,
 ) -> Result<Vec<CaseResult>, ConstructionError> {
     let mut row = 0.0;
-    construct(b, t, cases, dr, false, &mut row)
+    construct(b, t, cases, dr, false, &mut row, &[])
 }
 
 fn construct(
@@ -358,6 +368,7 @@ fn construct(
     dr: &TrussDrawing,
     dense: bool,
     row_top: &mut f64,
+    slack: &[[usize; 2]],
 ) -> Result<Vec<CaseResult>, ConstructionError> {
     let analysis = if dense {
         matrix::analyse(t)
@@ -416,6 +427,7 @@ fn construct(
                 plan: Point::origin(),
             },
             (pin, roller, rdir),
+            slack,
         )?;
         let gap = 30.0;
         let [tx0, ty0, tx1, ty1] = dry.boxes[0];
@@ -438,6 +450,7 @@ fn construct(
                 plan,
             },
             (pin, roller, rdir),
+            slack,
         )?;
         b.clear_context();
         let height = (ty1 - ty0).max(py1 - py0).max(qy1 - qy0);
@@ -544,6 +557,7 @@ fn construct_case(
     dr: &TrussDrawing,
     at: Layout,
     (pin, roller, rdir): (usize, usize, Vector),
+    slack: &[[usize; 2]],
 ) -> Result<CaseOut, ConstructionError> {
     let k = 1000.0 / dr.length_scale;
     let fs = dr.force_scale;
@@ -574,6 +588,10 @@ fn construct_case(
     for (m, mem) in t.members.iter().enumerate() {
         let [i, j] = mem.ends;
         mline.push(b.line_through(&jp[i], &jp[j], member_label(t, m), Role::Given, N_MEMBER)?);
+    }
+    // Members out of action in this case, dashed.
+    for &[i, j] in slack {
+        b.segment(&jp[i], &jp[j], Label::NONE, Role::Auxiliary, N_SLACK);
     }
     // The left support is A, the right one B, whichever is the pin.
     let (la, lb) = if t.joints[pin].at.x <= t.joints[roller].at.x {

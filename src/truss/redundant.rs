@@ -105,7 +105,7 @@ pub fn construct_pairs(
                         name: format!("{}, system {system} (half loads)", case.name),
                         loads: half.loads.clone(),
                     };
-                    let r = construct_truss_rows(b, &sub, &[c], dr, &mut row)?;
+                    let r = construct_truss_rows(b, &sub, &[c], dr, &mut row, &[])?;
                     for (i, &m) in keep.iter().enumerate() {
                         forces[m] += r[0].members[i].force;
                         plan[m] += r[0].members[i].plan_mm;
@@ -161,7 +161,15 @@ pub fn construct_pairs(
                         name: format!("{} ({} slack)", case.name, slack.join(", ")),
                         loads: case.loads.clone(),
                     };
-                    let r = construct_truss_rows(b, &sub, std::slice::from_ref(&c), dr, &mut row)?;
+                    let ghosts: Vec<[usize; 2]> = drop.iter().map(|&m| t.members[m].ends).collect();
+                    let r = construct_truss_rows(
+                        b,
+                        &sub,
+                        std::slice::from_ref(&c),
+                        dr,
+                        &mut row,
+                        &ghosts,
+                    )?;
                     let mut forces = vec![0.0; n];
                     let mut plan = vec![0.0; n];
                     let mut mat = vec![Some(0.0); n];
