@@ -982,78 +982,28 @@ fn cremona_plan(
     };
     // Members on the outline are known from the external polygon already.
     settle(b, &pt, &mut forces, &mut plan_mm, &mut (0..t.members.len()));
+    let spaces = Spaces {
+        of_half: &space_of_half,
+        face_of: &face_of_space,
+        n_ext,
+    };
     loop {
-        while let Some(v) = queue.pop_front() {
-            queued[v] = false;
-            let around = &g.around[v];
-            let d = around.len();
-            if d < 2 {
-                continue;
+        let fixed = match queue.pop_front() {
+            Some(v) => {
+                queued[v] = false;
+                joint_polygon(b, t, g, v, &spaces, &mut pt, mline, case)
             }
-            let unknown: Vec<usize> = (0..d)
-                .filter(|&i| pt[space_of_half[around[i]]].is_none())
-                .collect();
-            let mut spaces: Vec<usize> =
-                unknown.iter().map(|&i| space_of_half[around[i]]).collect();
-            spaces.dedup();
-            if spaces.len() != 1 || unknown.len() != 1 {
-                continue;
-            }
-            let i = unknown[0];
-            let (ha, hb) = (around[i], around[(i + 1) % d]);
-            let u = space_of_half[ha];
-            let (x, y) = (space_of_half[ha ^ 1], space_of_half[hb]);
-            let (Some(px), Some(py)) = (pt[x], pt[y]) else {
-                continue;
-            };
-            let name = &t.joints[v].name;
-            let ctx = |b: &mut Board| b.set_context(|| format!("{}: joint {name}", case.name));
-            ctx(b);
-            let la = b.parallel(&mline[ha / 2], &px, Label::NONE, Role::Construction, N_PAR);
-            let lb = b.parallel(&mline[hb / 2], &py, Label::NONE, Role::Construction, N_PAR);
-            let p = match b.meet(&la, &lb, space_label(u), N_SPACE) {
-                Cut::Point(p, _) => p,
-                // Two members in line at this joint: another joint has to fix the space.
-                _ => continue,
-            };
-            grow(&mut bx, p.g, at);
-            pt[u] = Some(p);
-            settle(
-                b,
-                &pt,
-                &mut forces,
-                &mut plan_mm,
-                &mut g.faces[face_of_space[u]].iter().map(|h| h / 2),
-            );
-            for &j in &joints_of_space[u] {
-                if !queued[j] {
-                    queued[j] = true;
-                    queue.push_back(j);
-                }
-            }
-        }
-        if pt.iter().all(|p| p.is_some()) {
-            break;
-        }
-        // No joint with two unknown members is left: Ritter's section.
-        let Some(u) = ritter(
-            b,
-            t,
-            g,
-            &Spaces {
-                of_half: &space_of_half,
-                face_of: &face_of_space,
-                n_ext,
+            None if pt.iter().all(|p| p.is_some()) => break,
+            // No joint with two unknown members is left: Ritter's section.
+            None => match ritter(b, t, g, &spaces, &mut pt, ext, mline, case, fs) {
+                Some(u) => Some(u),
+                None => break,
             },
-            &mut pt,
-            ext,
-            mline,
-            case,
-            fs,
-        ) else {
-            break;
         };
-        grow(&mut bx, pt[u].expect("just set").g, at);
+        let Some(u) = fixed else {
+            continue;
+        };
+        grow(&mut bx, pt[u].expect("just fixed").g, at);
         settle(
             b,
             &pt,
@@ -1133,6 +1083,51 @@ pub(crate) fn case_result(
             .collect(),
         plan_residual: matrix::max_residual(t, case, forces, &rc),
         matrix_residual: None,
+    }
+}
+
+/// The polygon of joint `v` if only one space round it is unknown: the parallels to the two
+/// members bounding that space, through the points of the spaces beyond them, meet in its
+/// point (Regel 2). Returns the space fixed.
+#[allow(clippy::too_many_arguments)]
+fn joint_polygon(
+    b: &mut Board,
+    t: &Truss,
+    g: &PlaneGraph,
+    v: usize,
+    sp: &Spaces,
+    pt: &mut [Option<H<Point>>],
+    mline: &[H<Line>],
+    case: &LoadCase,
+) -> Option<usize> {
+    let around = &g.around[v];
+    let d = around.len();
+    if d < 2 {
+        return None;
+    }
+    let unknown: Vec<usize> = (0..d)
+        .filter(|&i| pt[sp.of_half[around[i]]].is_none())
+        .collect();
+    let mut spaces: Vec<usize> = unknown.iter().map(|&i| sp.of_half[around[i]]).collect();
+    spaces.dedup();
+    if spaces.len() != 1 || unknown.len() != 1 {
+        return None;
+    }
+    let i = unknown[0];
+    let (ha, hb) = (around[i], around[(i + 1) % d]);
+    let u = sp.of_half[ha];
+    let (px, py) = (pt[sp.of_half[ha ^ 1]]?, pt[sp.of_half[hb]]?);
+    let name = &t.joints[v].name;
+    b.set_context(|| format!("{}: joint {name}", case.name));
+    let la = b.parallel(&mline[ha / 2], &px, Label::NONE, Role::Construction, N_PAR);
+    let lb = b.parallel(&mline[hb / 2], &py, Label::NONE, Role::Construction, N_PAR);
+    match b.meet(&la, &lb, space_label(u), N_SPACE) {
+        Cut::Point(p, _) => {
+            pt[u] = Some(p);
+            Some(u)
+        }
+        // Two members in line at this joint: another joint has to fix the space.
+        _ => None,
     }
 }
 
