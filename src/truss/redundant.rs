@@ -10,8 +10,9 @@
 //!   is switched to the other, and the plan is drawn again, until all working diagonals pull.
 //!   The book: "man verfährt so, als wenn die zweite Diagonale nicht vorhanden wäre".
 
-use super::cremona::{construct_plan, construct_truss_rows, CaseResult, TrussDrawing};
+use super::cremona::{case_result, construct_plan, construct_truss_rows, CaseResult, TrussDrawing};
 use super::{LoadCase, Truss};
+use crate::kernel::Vector;
 use crate::protocol::{Board, ConstructionError};
 use serde::Serialize;
 
@@ -44,25 +45,9 @@ pub fn without(t: &Truss, drop: &[usize]) -> (Truss, Vec<usize>) {
     )
 }
 
-fn full_result(
-    t: &Truss,
-    case: &LoadCase,
-    name: String,
-    forces: &[f64],
-    plan_mm: &[f64],
-    matrix: &[Option<f64>],
-    reactions: Vec<[f64; 2]>,
-) -> CaseResult {
-    let v = |r: [f64; 2]| crate::kernel::Vector::new(r[0], r[1]);
-    super::cremona::case_result(
-        t,
-        case,
-        name,
-        forces,
-        plan_mm,
-        matrix,
-        [v(reactions[0]), v(reactions[1])],
-    )
+/// A reaction vector from its components.
+fn vector(r: [f64; 2]) -> Vector {
+    Vector::new(r[0], r[1])
 }
 
 /// Constructs every case for a truss with pairs of diagonals (indices into `t.members`).
@@ -97,7 +82,7 @@ pub fn construct_pairs(
                 };
                 let mut forces = vec![0.0; n];
                 let mut plan = vec![0.0; n];
-                let mut reactions = vec![[0.0; 2]; 2];
+                let mut reactions = [[0.0; 2]; 2];
                 for (s, system) in ["a", "b"].iter().enumerate() {
                     let drop: Vec<usize> = pairs.iter().map(|p| p[1 - s]).collect();
                     let (sub, keep) = without(t, &drop);
@@ -115,14 +100,14 @@ pub fn construct_pairs(
                         reactions[k][1] += rv[1];
                     }
                 }
-                out.push(full_result(
+                out.push(case_result(
                     t,
                     case,
                     case.name.clone(),
                     &forces,
                     &plan,
                     &vec![None; n],
-                    reactions,
+                    [vector(reactions[0]), vector(reactions[1])],
                 ));
             }
             PairMode::TensionOnly => {
@@ -178,14 +163,14 @@ pub fn construct_pairs(
                         plan[m] = r[0].members[i].plan_mm;
                         mat[m] = r[0].members[i].matrix;
                     }
-                    out.push(full_result(
+                    out.push(case_result(
                         t,
                         case,
                         case.name.clone(),
                         &forces,
                         &plan,
                         &mat,
-                        r[0].reactions.clone(),
+                        [vector(r[0].reactions[0]), vector(r[0].reactions[1])],
                     ));
                     break;
                 }
