@@ -95,6 +95,18 @@ fn scene_files(args: &[PathBuf]) -> Result<Vec<PathBuf>, Fail> {
     Ok(files)
 }
 
+/// Writes to standard output. A reader that has gone away (`… | head`) ends the output
+/// quietly, as Unix tools do; any other write error is reported.
+fn say(text: &str) -> Result<(), Fail> {
+    use std::io::Write;
+    let mut o = std::io::stdout().lock();
+    match o.write_all(text.as_bytes()).and_then(|_| o.flush()) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        Err(e) => Err(Fail(format!("standard output: {e}"))),
+    }
+}
+
 fn load(path: &Path) -> Result<AnyProblem, Fail> {
     let scene = AnyScene::load(path).map_err(|e| Fail(e.to_string()))?;
     Ok(scene.problem())
@@ -139,7 +151,7 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
             ensure_dir(&out)?;
             for (path, svg) in outputs {
                 write(&path, &svg)?;
-                println!("{}", path.display());
+                say(&format!("{}\n", path.display()))?;
             }
             Ok(ExitCode::SUCCESS)
         }
@@ -147,9 +159,9 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
             let p = load(&scene)?;
             let board = construct(&scene, &p)?;
             if json {
-                println!("{}", render::check_table_json(&board));
+                say(&(render::check_table_json(&board) + "\n"))?;
             } else {
-                print!("{}", render::check_table_text(&board));
+                say(&render::check_table_text(&board))?;
             }
             let failed = render::check_rows(&board).iter().any(|r| !r.passed);
             Ok(if failed {
@@ -166,13 +178,13 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
             for page in &pages {
                 write(&out.join(&page.name), &page.contents)?;
             }
-            println!("{} pages in {}", pages.len(), out.display());
+            say(&format!("{} pages in {}\n", pages.len(), out.display()))?;
             Ok(ExitCode::SUCCESS)
         }
         Command::Protocol { scene } => {
             let p = load(&scene)?;
             let board = construct(&scene, &p)?;
-            println!("{}", board.to_json());
+            say(&(board.to_json() + "\n"))?;
             Ok(ExitCode::SUCCESS)
         }
         Command::Forces { scene, format } => {
@@ -199,11 +211,11 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
                     forces::json(&results, &t.combinations, t.envelope.as_ref()) + "\n"
                 }
             };
-            print!("{text}");
+            say(&text)?;
             Ok(ExitCode::SUCCESS)
         }
         Command::Schema => {
-            println!("{}", graphostatik::scene::schema_json());
+            say(&(graphostatik::scene::schema_json() + "\n"))?;
             Ok(ExitCode::SUCCESS)
         }
     }

@@ -246,3 +246,27 @@ fn cli_steps_writes_a_walkthrough() {
     assert_eq!(first.matches("inkscape:groupmode=\"layer\"").count(), 2); // sheet + step 1
     std::fs::remove_dir_all(&d).unwrap();
 }
+
+/// A reader that stops early (`graphostatik protocol … | head`) ends the output quietly:
+/// exit status 0 and no panic.
+#[test]
+fn a_closed_pipe_is_not_a_panic() {
+    use std::io::Read;
+    use std::process::Stdio;
+    let scene = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join("lh_aufgabe4_shed_roof.json");
+    let mut child = Command::new(bin())
+        .args(["protocol", scene.to_str().unwrap()])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = [0u8; 64];
+    child.stdout.take().unwrap().read_exact(&mut first).unwrap();
+    // The pipe's reading end is dropped here, long before the protocol (megabytes) is out.
+    let o = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(o.status.code(), Some(0), "{err}");
+}
