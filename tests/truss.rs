@@ -882,3 +882,60 @@ fn aufgabe_5_table_2_reactions_and_diagonals() {
         );
     }
 }
+
+#[test]
+fn crossing_members_are_solved_by_joint_polygons_one_by_one() {
+    // A square panel with both diagonals and no top: determinate (s = 5 = 2·4 − 3) but the
+    // diagonals cross, so there is no plane drawing for Bow's notation.
+    let t = small(
+        &[(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0)],
+        &[(0, 1), (1, 2), (0, 3), (0, 2), (1, 3)],
+        90.0,
+    );
+    assert_eq!(analyse(&t).determinacy, Determinacy::Determinate);
+    let loads = vec![
+        down(2, 1000.0),
+        JointLoad {
+            joint: 3,
+            force: Vector::new(300.0, -500.0),
+        },
+    ];
+    let (b, r) = run(&t, &case(loads));
+    assert!(b.steps().iter().any(|s| s
+        .context
+        .as_deref()
+        .is_some_and(|c| c.contains("joint polygon"))));
+    // Every member found once, each checked against the dense solve.
+    let member_checks = b
+        .steps()
+        .iter()
+        .flat_map(|s| &s.checks)
+        .filter(|c| c.quantity.starts_with("member force"))
+        .count();
+    assert_eq!(member_checks, 5);
+    assert!(r[0].plan_residual < 1e-9 * 1000.0);
+}
+
+#[test]
+fn a_load_inside_the_outline_is_solved_by_joint_polygons() {
+    // Henneberg's step on an inner diagonal puts the new joint inside the girder: Bow's
+    // notation cannot name a load there.
+    let t0 = parallel_chord(Web::Warren, 3, 2.0, 2.0);
+    let inner = t0
+        .members
+        .iter()
+        .position(|m| m.ends == [4, 1] || m.ends == [1, 4] || m.ends == [5, 1] || m.ends == [1, 5])
+        .unwrap();
+    let tri = triangles(&t0)
+        .into_iter()
+        .find(|&(m, _)| m == inner)
+        .unwrap();
+    let t = henneberg(&t0, tri.0, tri.1);
+    let w = t.joints.len() - 1;
+    let (b, r) = run(&t, &case(vec![down(w, 1000.0), down(1, 500.0)]));
+    assert!(b.steps().iter().any(|s| s
+        .context
+        .as_deref()
+        .is_some_and(|c| c.contains("joint polygon"))));
+    assert!(r[0].plan_residual < 1e-9 * 1000.0);
+}

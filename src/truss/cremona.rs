@@ -212,7 +212,7 @@ fn space_label(i: usize) -> Label {
     }
 }
 
-fn member_label(t: &Truss, m: usize) -> Label {
+pub(crate) fn member_label(t: &Truss, m: usize) -> Label {
     let n = t.members[m].name.parse::<u32>().unwrap_or(m as u32 + 1);
     Label::indexed("S", n)
 }
@@ -234,11 +234,11 @@ fn joint_label(t: &Truss, j: usize) -> Label {
 }
 
 /// Everything the truss drawing needs per case, computed without a board.
-struct External {
+pub(crate) struct External {
     /// (joint, force) of every external force, loads first, then reactions.
-    forces: Vec<(usize, Vector)>,
+    pub(crate) forces: Vec<(usize, Vector)>,
     /// Reaction vectors per support.
-    reactions: Vec<Vector>,
+    pub(crate) reactions: Vec<Vector>,
 }
 
 /// The reaction supports: exactly one pin and one roller.
@@ -398,16 +398,18 @@ fn construct(
             )))
         }
     }
-    let g = faces::plane_graph(t).map_err(|e| {
-        ConstructionError::Unsupported(match e {
-            faces::GraphError::Disconnected { joint } => {
-                format!("joint {} is not connected to the truss", t.joints[joint].name)
-            }
-            faces::GraphError::Crossing => {
-                "members cross: the Cremona plan needs a plane drawing (drop crossing counter-diagonals as in LH B.5)".into()
-            }
-        })
-    })?;
+    // Members that cross leave no plane drawing for Bow's notation: the joint polygons are
+    // drawn one by one instead.
+    let g = match faces::plane_graph(t) {
+        Ok(g) => Some(g),
+        Err(faces::GraphError::Crossing) => None,
+        Err(faces::GraphError::Disconnected { joint }) => {
+            return Err(ConstructionError::Unsupported(format!(
+                "joint {} is not connected to the truss",
+                t.joints[joint].name
+            )))
+        }
+    };
     let (pin, roller, rdir) = pin_roller(t)?;
     let mut out = Vec::with_capacity(cases.len());
     for case in cases {
@@ -417,7 +419,7 @@ fn construct(
         let dry = construct_case(
             &mut scratch,
             t,
-            &g,
+            g.as_ref(),
             case,
             sol.as_ref(),
             dr,
@@ -440,7 +442,7 @@ fn construct(
         let r = construct_case(
             b,
             t,
-            &g,
+            g.as_ref(),
             case,
             sol.as_ref(),
             dr,
@@ -474,7 +476,7 @@ struct CaseOut {
     boxes: [[f64; 4]; 3],
 }
 
-fn grow(bx: &mut [f64; 4], p: Point, o: Point) {
+pub(crate) fn grow(bx: &mut [f64; 4], p: Point, o: Point) {
     let (x, y) = (p.x - o.x, p.y - o.y);
     bx[0] = bx[0].min(x);
     bx[1] = bx[1].min(y);
@@ -482,7 +484,7 @@ fn grow(bx: &mut [f64; 4], p: Point, o: Point) {
     bx[3] = bx[3].max(y);
 }
 
-const EMPTY: [f64; 4] = [
+pub(crate) const EMPTY: [f64; 4] = [
     f64::INFINITY,
     f64::INFINITY,
     f64::NEG_INFINITY,
@@ -551,7 +553,7 @@ fn choose_pole(corners: &[Point], loads: &[Vector], rdir: Vector) -> Point {
 fn construct_case(
     b: &mut Board,
     t: &Truss,
-    g: &PlaneGraph,
+    g: Option<&PlaneGraph>,
     case: &LoadCase,
     sol: Option<&Solution>,
     dr: &TrussDrawing,
@@ -744,8 +746,14 @@ fn construct_case(
         forces: ext,
         reactions: reactions.to_vec(),
     };
-    let (result, plan_box) =
-        cremona_plan(b, t, g, case, &external, sol, dr, at.plan, &mline, maxload)?;
+    // Bow's notation needs a plane drawing and every external force on the outline;
+    // otherwise the joint polygons are drawn one by one (LH Abb. 17a).
+    let (result, plan_box) = match g.filter(|g| outline(t, g, &external).is_ok()) {
+        Some(g) => cremona_plan(b, t, g, case, &external, sol, dr, at.plan, &mline, maxload)?,
+        None => {
+            super::joints::joint_polygons(b, t, case, &external, sol, dr, at.plan, &mline, maxload)?
+        }
+    };
     // The evaluation of the plan written beside it (LH B.4, "Auswertung").
     let zero_kg = ZERO_FORCE_REL * maxload.max(ext_max(&external));
     let mut rows = vec![vec![

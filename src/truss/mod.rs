@@ -15,6 +15,7 @@ pub mod cremona;
 pub mod envelope;
 pub mod faces;
 pub mod generate;
+mod joints;
 pub mod matrix;
 pub mod redundant;
 pub mod roof;
