@@ -828,7 +828,7 @@ impl TrussProblem {
         crate::render::FigureMeta {
             title: self.title.clone(),
             source: format!(
-                "{}{}Cremona plan, tension +, compression −",
+                "{}{}force plan (Kräfteplan), tension +, compression −",
                 self.source,
                 if self.source.is_empty() { "" } else { " — " },
             ),
