@@ -185,9 +185,9 @@ fn aufgabe_4_against_the_book_table() {
         .contains("| 5 | 28.1 | −562.9 | 0 | 0 |"));
     // The reactions the book computes: A = 925, B = 875 (dead load), A1 = 375, B1 = 625.
     let dead = &r[0];
-    assert!((dead.reactions[1][1] - 925.0).abs() < 1e-9);
-    assert!((dead.reactions[0][1] - 875.0).abs() < 1e-9);
-    assert!((r[3].reactions[1][1] - 375.0).abs() < 1e-9);
+    assert!((dead.reactions[0][1] - 925.0).abs() < 1e-9);
+    assert!((dead.reactions[1][1] - 875.0).abs() < 1e-9);
+    assert!((r[3].reactions[0][1] - 375.0).abs() < 1e-9);
 }
 
 #[test]
@@ -938,4 +938,57 @@ fn a_load_inside_the_outline_is_solved_by_joint_polygons() {
         .as_deref()
         .is_some_and(|c| c.contains("joint polygon"))));
     assert!(r[0].plan_residual < 1e-9 * 1000.0);
+}
+
+#[test]
+fn three_rollers_by_culmanns_line() {
+    // A triangle on three rollers: vertical at I, inclined at II, horizontal at III.
+    let mut t = small(
+        &[(0.0, 0.0), (4.0, 0.0), (2.0, 3.0)],
+        &[(0, 2), (2, 1), (0, 1)],
+        90.0,
+    );
+    let roller = |j: usize, deg: f64| {
+        let (s, c) = graphostatik::kernel::angle::sin_cos_deg(deg);
+        Support {
+            joint: j,
+            kind: SupportKind::Roller {
+                dir: Vector::new(c, s),
+            },
+        }
+    };
+    t.supports = vec![roller(0, 90.0), roller(1, 120.0), roller(2, 0.0)];
+    assert_eq!(analyse(&t).determinacy, Determinacy::Determinate);
+    let loads = vec![
+        down(2, 1000.0),
+        JointLoad {
+            joint: 0,
+            force: Vector::new(400.0, -200.0),
+        },
+    ];
+    let (b, r) = run(&t, &case(loads));
+    // Three reactions read along their lines and checked, Culmann's line drawn.
+    let roller_checks = b
+        .steps()
+        .iter()
+        .flat_map(|s| &s.checks)
+        .filter(|c| c.quantity.starts_with("roller reaction"))
+        .count();
+    assert_eq!(roller_checks, 3);
+    assert!(b.steps().iter().any(|s| s.caption.starts_with("Culmann")));
+    assert!(r[0].plan_residual < 1e-9 * 1000.0);
+    // A couple on three rollers has no resultant to cut: a clear refusal.
+    let couple = vec![
+        JointLoad {
+            joint: 0,
+            force: Vector::new(0.0, 500.0),
+        },
+        JointLoad {
+            joint: 1,
+            force: Vector::new(0.0, -500.0),
+        },
+    ];
+    let mut b = Board::new(400.0, true);
+    let e = construct_truss(&mut b, &t, &case(couple), &D).unwrap_err();
+    assert!(e.to_string().contains("couple"), "{e}");
 }

@@ -35,7 +35,7 @@ pub struct TrussScene {
     pub joints: Vec<JointSpec>,
     /// The members.
     pub members: Vec<MemberSpec>,
-    /// The supports: one pin and one roller.
+    /// The supports: one pin and one roller, or three rollers.
     pub supports: Vec<SupportSpec>,
     /// The load cases, each with its own reactions and Cremona plan.
     #[serde(default)]
@@ -398,10 +398,12 @@ impl TrussScene {
             .filter(|s| s.kind == SupportKindSpec::Pinned)
             .count();
         let rollers = self.supports.len() - pins;
-        if pins != 1 || rollers != 1 {
+        if !matches!((pins, rollers), (1, 1) | (0, 3)) {
             return Err(bad(
                 "supports".into(),
-                format!("give one pin and one roller (found {pins} pin(s), {rollers} roller(s))"),
+                format!(
+                    "give one pin and one roller, or three rollers (found {pins} pin(s), {rollers} roller(s))"
+                ),
             ));
         }
         if self.load_cases.is_empty() && self.roof.is_none() && self.moving_loads.is_empty() {

@@ -241,8 +241,30 @@ pub(crate) struct External {
     pub(crate) reactions: Vec<Vector>,
 }
 
-/// The reaction supports: exactly one pin and one roller.
-fn pin_roller(t: &Truss) -> Result<(usize, usize, Vector), ConstructionError> {
+/// The supports, as the reaction construction takes them.
+#[derive(Debug, Clone, Copy)]
+enum Supports {
+    /// A pin and a roller: the closing line of the funicular polygon (LH C.2).
+    PinRoller {
+        pin: usize,
+        roller: usize,
+        dir: Vector,
+    },
+    /// Three rollers: Culmann's line (the resultant with one reaction balances the other
+    /// two, so both pairs act along the line through their meeting points).
+    Rollers([(usize, Vector); 3]),
+}
+
+/// Index of support `s` in [`Truss::supports`] by joint.
+fn support_index(t: &Truss, joint: usize) -> usize {
+    t.supports
+        .iter()
+        .position(|s| s.joint == joint)
+        .expect("a support at that joint")
+}
+
+/// The reaction supports: one pin and one roller, or three rollers.
+fn supports(t: &Truss) -> Result<Supports, ConstructionError> {
     let pins: Vec<_> = t
         .supports
         .iter()
@@ -256,14 +278,18 @@ fn pin_roller(t: &Truss) -> Result<(usize, usize, Vector), ConstructionError> {
             _ => None,
         })
         .collect();
-    if pins.len() == 1 && rollers.len() == 1 {
-        Ok((pins[0].joint, rollers[0].0, rollers[0].1))
-    } else {
-        Err(ConstructionError::Unsupported(format!(
-            "the graphic reactions need one pin and one roller; the truss has {} pin(s) and {} roller(s)",
+    match (pins.len(), rollers.len()) {
+        (1, 1) => Ok(Supports::PinRoller {
+            pin: pins[0].joint,
+            roller: rollers[0].0,
+            dir: rollers[0].1,
+        }),
+        (0, 3) => Ok(Supports::Rollers([rollers[0], rollers[1], rollers[2]])),
+        _ => Err(ConstructionError::Unsupported(format!(
+            "the graphic reactions need one pin and one roller, or three rollers; the truss has {} pin(s) and {} roller(s)",
             pins.len(),
             rollers.len()
-        )))
+        ))),
     }
 }
 
@@ -410,7 +436,7 @@ fn construct(
             )))
         }
     };
-    let (pin, roller, rdir) = pin_roller(t)?;
+    let sup = supports(t)?;
     let mut out = Vec::with_capacity(cases.len());
     for case in cases {
         let sol = if dense { matrix::solve(t, case) } else { None };
@@ -428,7 +454,7 @@ fn construct(
                 polygon: Point::origin(),
                 plan: Point::origin(),
             },
-            (pin, roller, rdir),
+            sup,
             slack,
         )?;
         let gap = 30.0;
@@ -451,7 +477,7 @@ fn construct(
                 polygon,
                 plan,
             },
-            (pin, roller, rdir),
+            sup,
             slack,
         )?;
         b.clear_context();
@@ -558,15 +584,11 @@ fn construct_case(
     sol: Option<&Solution>,
     dr: &TrussDrawing,
     at: Layout,
-    (pin, roller, rdir): (usize, usize, Vector),
+    sup: Supports,
     slack: &[[usize; 2]],
 ) -> Result<CaseOut, ConstructionError> {
     let k = 1000.0 / dr.length_scale;
     let fs = dr.force_scale;
-    let kg = Scale {
-        per_mm: fs,
-        unit: "kg",
-    };
     let maxload = case
         .loads
         .iter()
@@ -595,14 +617,42 @@ fn construct_case(
     for &[i, j] in slack {
         b.segment(&jp[i], &jp[j], Label::NONE, Role::Auxiliary, N_SLACK);
     }
-    // The left support is A, the right one B, whichever is the pin.
-    let (la, lb) = if t.joints[pin].at.x <= t.joints[roller].at.x {
-        ("A", "B")
-    } else {
-        ("B", "A")
-    };
-    let rline = b.line_dir(&jp[roller], rdir, Label::plain(lb), Role::Guide, N_SUPPORT)?;
-    b.point(jp[pin].g, Label::plain(la), Role::Guide, N_SUPPORT);
+    // Supports lettered A, B, C from the left.
+    let mut by_x: Vec<usize> = (0..t.supports.len()).collect();
+    by_x.sort_by(|&a, &c| {
+        let (pa, pc) = (
+            t.joints[t.supports[a].joint].at,
+            t.joints[t.supports[c].joint].at,
+        );
+        pa.x.total_cmp(&pc.x).then(a.cmp(&c))
+    });
+    let mut letter = vec![""; t.supports.len()];
+    for (rank, &si) in by_x.iter().enumerate() {
+        letter[si] = ["A", "B", "C"].get(rank).copied().unwrap_or("S");
+    }
+    // Each support's reaction line (a roller's) or point (a pin's).
+    let mut rlines: Vec<Option<H<Line>>> = vec![None; t.supports.len()];
+    for (si, s) in t.supports.iter().enumerate() {
+        match s.kind {
+            SupportKind::Roller { dir } => {
+                rlines[si] = Some(b.line_dir(
+                    &jp[s.joint],
+                    dir,
+                    Label::plain(letter[si]),
+                    Role::Guide,
+                    N_SUPPORT,
+                )?);
+            }
+            SupportKind::Pinned => {
+                b.point(
+                    jp[s.joint].g,
+                    Label::plain(letter[si]),
+                    Role::Guide,
+                    N_SUPPORT,
+                );
+            }
+        }
+    }
     // Loads, drawn as arrows ending at their joints, in the order of their joints.
     let mut loads: Vec<JointLoad> = case
         .loads
@@ -620,17 +670,21 @@ fn construct_case(
         grow(&mut boxes[0], tail.g, at.truss);
         b.segment(&tail, &head, Label::indexed("P", 0), Role::Force, N_LOAD);
     }
-    // Reactions by the funicular polygon.
-    let reactions: [Vector; 2] = if loads.is_empty() {
-        [Vector::zeros(), Vector::zeros()]
-    } else {
+    // Reactions by the funicular polygon, one vector per support.
+    let mut reactions = vec![Vector::zeros(); t.supports.len()];
+    if !loads.is_empty() {
         let mut corners = vec![at.polygon];
         for l in &loads {
             let c = *corners.last().expect("starts with one corner") + l.force / fs;
             corners.push(c);
         }
         let dirs: Vec<Vector> = loads.iter().map(|l| l.force).collect();
-        let pole = choose_pole(&corners, &dirs, rdir);
+        // The first string starts at the pin, or at the first roller.
+        let (start, last_dir) = match sup {
+            Supports::PinRoller { pin, dir, .. } => (pin, dir),
+            Supports::Rollers(r) => (r[0].0, r[0].1),
+        };
+        let pole = choose_pole(&corners, &dirs, last_dir);
         let f0 = b.point(corners[0], Label::indexed("F", 0), Role::Given, N_FP);
         let mut fh = vec![f0];
         for (i, l) in loads.iter().enumerate() {
@@ -653,98 +707,67 @@ fn construct_case(
             .iter()
             .map(|f| b.line_through(&o, f, Label::NONE, Role::Construction, N_RAY))
             .collect::<Result<_, _>>()?;
-        let mut s = b.parallel(
+        let first = b.parallel(
             &rays[0],
-            &jp[pin],
+            &jp[start],
             Label::NONE,
             Role::Construction,
             N_STRING,
         );
+        let mut s = first;
         for (i, l) in loads.iter().enumerate() {
             let loa = b.line_dir(&jp[l.joint], l.force, Label::NONE, Role::Auxiliary, N_LOA)?;
             let c = b.meet_point(&s, &loa, Label::NONE, N_STRING_CUT)?;
             grow(&mut boxes[0], c.g, at.truss);
             s = b.parallel(&rays[i + 1], &c, Label::NONE, Role::Construction, N_STRING);
         }
-        let bcut = b.meet_point(&s, &rline, Label::quiet("b", 0), N_B_CUT)?;
-        grow(&mut boxes[0], bcut.g, at.truss);
-        let closing =
-            b.line_through(&jp[pin], &bcut, Label::NONE, Role::Construction, N_CLOSING)?;
-        let through_o = b.parallel(&closing, &o, Label::NONE, Role::Construction, N_CLOSING_RAY);
-        let bl = b.parallel(
-            &rline,
-            &fh[loads.len()],
-            Label::NONE,
-            Role::Auxiliary,
-            N_B_DIR,
-        );
-        let x = b.meet_point(&through_o, &bl, Label::quiet("X", 0), N_SPLIT)?;
-        grow(&mut boxes[1], x.g, at.polygon);
         let last = fh[loads.len()];
-        b.segment(&last, &x, Label::plain(lb), Role::Force, N_REACT);
-        b.segment(&x, &fh[0], Label::plain(la), Role::Force, N_REACT);
-        let rb = b.measure(&last, &x, &rline, kg, Label::quiet("B", 0), N_REACT);
-        let xa = b.line_dir(
-            &x,
-            Vector::new(1.0, 0.0),
-            Label::NONE,
-            Role::Auxiliary,
-            N_AXIS,
-        )?;
-        let ya = b.line_dir(
-            &x,
-            Vector::new(0.0, 1.0),
-            Label::NONE,
-            Role::Auxiliary,
-            N_AXIS,
-        )?;
-        let ax = b.measure(&x, &fh[0], &xa, kg, Label::quiet("Ax", 0), N_REACT);
-        let ay = b.measure(&x, &fh[0], &ya, kg, Label::quiet("Ay", 0), N_REACT);
-        if let Some(sol) = sol {
-            // The solve's reaction columns: in the order of the supports.
-            let (mut c, mut pin_c, mut roll_c) = (0, 0, 0);
-            for sup in &t.supports {
-                match sup.kind {
-                    SupportKind::Pinned => {
-                        pin_c = c;
-                        c += 2;
-                    }
-                    SupportKind::Roller { .. } => {
-                        roll_c = c;
-                        c += 1;
-                    }
+        let mut segs: Vec<Option<(H<Point>, H<Point>)>> = vec![None; t.supports.len()];
+        match sup {
+            Supports::PinRoller { pin, roller, .. } => {
+                let ri = support_index(t, roller);
+                let rline = rlines[ri].expect("a roller has a line");
+                let bcut = b.meet_point(&s, &rline, Label::quiet("b", 0), N_B_CUT)?;
+                grow(&mut boxes[0], bcut.g, at.truss);
+                let closing =
+                    b.line_through(&jp[pin], &bcut, Label::NONE, Role::Construction, N_CLOSING)?;
+                let through_o =
+                    b.parallel(&closing, &o, Label::NONE, Role::Construction, N_CLOSING_RAY);
+                let bl = b.parallel(&rline, &last, Label::NONE, Role::Auxiliary, N_B_DIR);
+                let x = b.meet_point(&through_o, &bl, Label::quiet("X", 0), N_SPLIT)?;
+                grow(&mut boxes[1], x.g, at.polygon);
+                let pi = support_index(t, pin);
+                segs[ri] = Some((last, x));
+                segs[pi] = Some((x, fh[0]));
+            }
+            Supports::Rollers(r) => {
+                for (si, from, to) in culmann(b, t, &rlines, &first, &s, &fh, &r)? {
+                    grow(&mut boxes[1], to.g, at.polygon);
+                    segs[si] = Some((from, to));
                 }
             }
-            let r = &sol.reactions;
-            let f = "joint equilibrium, dense LU (nalgebra)";
-            b.check(
-                &rb,
-                "roller reaction along its line",
-                "kg",
-                f,
-                maxload,
-                || r[roll_c],
-            );
-            b.check(&ax, "pin reaction, horizontal", "kg", f, maxload, || {
-                r[pin_c]
-            });
-            b.check(&ay, "pin reaction, vertical", "kg", f, maxload, || {
-                r[pin_c + 1]
-            });
         }
-        [(fh[0].g - x.g) * fs, (x.g - last.g) * fs]
-    };
-    // The external forces at their joints: loads, then A and B.
+        // Each reaction drawn, read off and checked: a roller's along its line, a pin's by
+        // its horizontal and vertical parts.
+        for (si, seg) in segs.iter().enumerate() {
+            if let Some((from, to)) = seg {
+                b.segment(from, to, Label::plain(letter[si]), Role::Force, N_REACT);
+                reactions[si] = (to.g - from.g) * fs;
+            }
+        }
+        read_reactions(b, t, &segs, &rlines, sol, maxload, fs)?;
+    }
+    // The external forces at their joints: loads, then the reactions.
     let mut ext: Vec<(usize, Vector)> = loads.iter().map(|l| (l.joint, l.force)).collect();
-    let tiny = 1e-12 * maxload.max(reactions[0].norm()).max(reactions[1].norm());
-    for (j, r) in [(pin, reactions[0]), (roller, reactions[1])] {
+    let tiny = 1e-12 * reactions.iter().map(|r| r.norm()).fold(maxload, f64::max);
+    for (si, r) in reactions.iter().enumerate() {
         if r.norm() > tiny {
-            ext.push((j, r));
+            ext.push((t.supports[si].joint, *r));
         }
     }
     let external = External {
         forces: ext,
-        reactions: reactions.to_vec(),
+        reactions: reactions.clone(),
     };
     // Bow's notation needs a plane drawing and every external force on the outline;
     // otherwise the joint polygons are drawn one by one (LH Abb. 17a).
@@ -800,6 +823,178 @@ fn construct_case(
         }
     }
     Ok(CaseOut { result, boxes })
+}
+
+const N_RESULTANT: Note = note(
+    "the first and last strings meet on the resultant of the loads",
+    Some("Resultierende"),
+    "LH C.2",
+    Topic::Reactions,
+);
+const N_CULMANN_P: Note = note(
+    "the resultant meets the lone roller's line",
+    Some("Culmannsche Gerade"),
+    "LH C.2",
+    Topic::Reactions,
+);
+const N_CULMANN_Q: Note = note(
+    "the other two reaction lines meet",
+    Some("Culmannsche Gerade"),
+    "LH C.2",
+    Topic::Reactions,
+);
+const N_CULMANN: Note = note(
+    "Culmann's line through both points",
+    Some("Culmannsche Gerade"),
+    "LH C.2",
+    Topic::Reactions,
+);
+const N_CULMANN_PLAN: Note = note(
+    "in the force plan: the lone reaction, then the two along Culmann's line resolved",
+    Some("Zerlegung"),
+    "LH A.3, C.2",
+    Topic::Reactions,
+);
+
+/// A reaction in the force plan: its support (index), tail and head.
+type PlanReaction = (usize, H<Point>, H<Point>);
+
+/// Three rollers (Culmann): the resultant R of the loads and the lone roller's reaction
+/// meet in P, the other two reaction lines in Q; R and the lone reaction together balance
+/// the other two, so their sum acts along PQ. In the force plan, the parallel to the lone
+/// roller through the end of the loads and the parallel to PQ through their start give the
+/// lone reaction; the other two follow by resolving along their lines. Of the three rollers
+/// the lone one is the one with the best-conditioned cuts. Returns (support index, tail,
+/// head) of each reaction in the force plan.
+#[allow(clippy::too_many_arguments)]
+fn culmann(
+    b: &mut Board,
+    t: &Truss,
+    rlines: &[Option<H<Line>>],
+    first: &H<Line>,
+    last_string: &H<Line>,
+    fh: &[H<Point>],
+    r: &[(usize, Vector); 3],
+) -> Result<Vec<PlanReaction>, ConstructionError> {
+    let n = fh.len() - 1;
+    let rv = fh[n].g - fh[0].g;
+    let span = fh
+        .iter()
+        .map(|f| (f.g - fh[0].g).norm())
+        .fold(0.0, f64::max);
+    if rv.norm() <= 1e-9 * span.max(f64::MIN_POSITIVE) {
+        return Err(ConstructionError::Unsupported(
+            "the loads form a couple (their force polygon closes): three rollers need a resultant to cut".into(),
+        ));
+    }
+    let on_r = b.meet_point(first, last_string, Label::quiet("R", 0), N_RESULTANT)?;
+    let rl = b.line_dir(
+        &on_r,
+        rv,
+        Label::plain("R"),
+        Role::Construction,
+        N_RESULTANT,
+    )?;
+    let sin = |a: Vector, c: Vector| (a.x * c.y - a.y * c.x).abs() / (a.norm() * c.norm());
+    let mut best = (0, -1.0);
+    for k in 0..3 {
+        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+        let score = sin(rv, r[k].1).min(sin(r[i].1, r[j].1));
+        if score > best.1 {
+            best = (k, score);
+        }
+    }
+    let k = best.0;
+    let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+    let line = |s: usize| rlines[support_index(t, r[s].0)].expect("a roller has a line");
+    let (lk, li, lj) = (line(k), line(i), line(j));
+    let p = b.meet_point(&rl, &lk, Label::quiet("P", 0), N_CULMANN_P)?;
+    let q = b.meet_point(&li, &lj, Label::quiet("Q", 0), N_CULMANN_Q)?;
+    let c = b.line_through(&p, &q, Label::plain("c"), Role::Construction, N_CULMANN)?;
+    let (f0, last) = (fh[0], fh[n]);
+    let along_k = b.parallel(&lk, &last, Label::NONE, Role::Auxiliary, N_CULMANN_PLAN);
+    let along_c = b.parallel(&c, &f0, Label::NONE, Role::Auxiliary, N_CULMANN_PLAN);
+    let x = b.meet_point(&along_k, &along_c, Label::quiet("X", 0), N_CULMANN_PLAN)?;
+    let along_i = b.parallel(&li, &x, Label::NONE, Role::Auxiliary, N_CULMANN_PLAN);
+    let along_j = b.parallel(&lj, &f0, Label::NONE, Role::Auxiliary, N_CULMANN_PLAN);
+    let y = b.meet_point(&along_i, &along_j, Label::quiet("Y", 0), N_CULMANN_PLAN)?;
+    Ok(vec![
+        (support_index(t, r[k].0), last, x),
+        (support_index(t, r[i].0), x, y),
+        (support_index(t, r[j].0), y, f0),
+    ])
+}
+
+/// Reads each reaction off the force plan and checks it against the dense solve: a roller's
+/// along its line, a pin's by its horizontal and vertical parts.
+fn read_reactions(
+    b: &mut Board,
+    t: &Truss,
+    segs: &[Option<(H<Point>, H<Point>)>],
+    rlines: &[Option<H<Line>>],
+    sol: Option<&Solution>,
+    reference: f64,
+    fs: f64,
+) -> Result<(), ConstructionError> {
+    let kg = Scale {
+        per_mm: fs,
+        unit: "kg",
+    };
+    let f = "joint equilibrium, dense LU (nalgebra)";
+    let mut col = 0;
+    for (si, sup) in t.supports.iter().enumerate() {
+        let first_col = col;
+        col += match sup.kind {
+            SupportKind::Pinned => 2,
+            SupportKind::Roller { .. } => 1,
+        };
+        let Some((from, to)) = segs[si] else {
+            continue;
+        };
+        match sup.kind {
+            SupportKind::Roller { .. } => {
+                let line = rlines[si].expect("a roller has a line");
+                let v = b.measure(&from, &to, &line, kg, Label::quiet("R", 0), N_REACT);
+                if let Some(sol) = sol {
+                    b.check(
+                        &v,
+                        "roller reaction along its line",
+                        "kg",
+                        f,
+                        reference,
+                        || sol.reactions[first_col],
+                    );
+                }
+            }
+            SupportKind::Pinned => {
+                let xa = b.line_dir(
+                    &from,
+                    Vector::new(1.0, 0.0),
+                    Label::NONE,
+                    Role::Auxiliary,
+                    N_AXIS,
+                )?;
+                let ya = b.line_dir(
+                    &from,
+                    Vector::new(0.0, 1.0),
+                    Label::NONE,
+                    Role::Auxiliary,
+                    N_AXIS,
+                )?;
+                let ax = b.measure(&from, &to, &xa, kg, Label::quiet("Ax", 0), N_REACT);
+                let ay = b.measure(&from, &to, &ya, kg, Label::quiet("Ay", 0), N_REACT);
+                if let Some(sol) = sol {
+                    b.check(&ax, "pin reaction, horizontal", "kg", f, reference, || {
+                        sol.reactions[first_col]
+                    });
+                    b.check(&ay, "pin reaction, vertical", "kg", f, reference, || {
+                        sol.reactions[first_col + 1]
+                    });
+                }
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Assigns every external force to its place on the outline, clockwise, and every outer
@@ -1050,13 +1245,13 @@ fn cremona_plan(
         &members,
         &plan_mm,
         &matrix,
-        [ext.reactions[0], ext.reactions[1]],
+        &ext.reactions,
     );
     result.matrix_residual = sol.map(|s| matrix::max_residual(t, case, &s.members, &s.reactions));
     Ok((result, bx))
 }
 
-/// The result of a case from its member forces and reactions (pin, roller), with the balance
+/// The result of a case from its member forces and reactions (one per support), with the balance
 /// of every joint of `t` under them.
 pub(crate) fn case_result(
     t: &Truss,
@@ -1065,14 +1260,14 @@ pub(crate) fn case_result(
     forces: &[f64],
     plan_mm: &[f64],
     matrix: &[Option<f64>],
-    reactions: [Vector; 2],
+    reactions: &[Vector],
 ) -> CaseResult {
     // Reaction components in the solve's order.
     let mut rc = Vec::new();
-    for sup in &t.supports {
+    for (sup, r) in t.supports.iter().zip(reactions) {
         match sup.kind {
-            SupportKind::Pinned => rc.extend([reactions[0].x, reactions[0].y]),
-            SupportKind::Roller { dir } => rc.push(reactions[1].dot(&dir)),
+            SupportKind::Pinned => rc.extend([r.x, r.y]),
+            SupportKind::Roller { dir } => rc.push(r.dot(&dir)),
         }
     }
     CaseResult {

@@ -252,7 +252,7 @@ pub(crate) fn joint_polygons(
         &forces,
         &plan_mm,
         &matrix,
-        [ext.reactions[0], ext.reactions[1]],
+        &ext.reactions,
     );
     result.matrix_residual =
         sol.map(|s| super::matrix::max_residual(t, case, &s.members, &s.reactions));

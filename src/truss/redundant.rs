@@ -82,7 +82,7 @@ pub fn construct_pairs(
                 };
                 let mut forces = vec![0.0; n];
                 let mut plan = vec![0.0; n];
-                let mut reactions = [[0.0; 2]; 2];
+                let mut reactions = vec![[0.0; 2]; t.supports.len()];
                 for (s, system) in ["a", "b"].iter().enumerate() {
                     let drop: Vec<usize> = pairs.iter().map(|p| p[1 - s]).collect();
                     let (sub, keep) = without(t, &drop);
@@ -107,7 +107,7 @@ pub fn construct_pairs(
                     &forces,
                     &plan,
                     &vec![None; n],
-                    [vector(reactions[0]), vector(reactions[1])],
+                    &reactions.iter().map(|&r| vector(r)).collect::<Vec<_>>(),
                 ));
             }
             PairMode::TensionOnly => {
@@ -170,7 +170,11 @@ pub fn construct_pairs(
                         &forces,
                         &plan,
                         &mat,
-                        [vector(r[0].reactions[0]), vector(r[0].reactions[1])],
+                        &r[0]
+                            .reactions
+                            .iter()
+                            .map(|&v| vector(v))
+                            .collect::<Vec<_>>(),
                     ));
                     break;
                 }
