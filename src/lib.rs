@@ -8,9 +8,12 @@
 //!
 //! 1. [`kernel`] — geometry (points, lines, circles, intersections with conditioning);
 //! 2. [`protocol`] — the board on which every kernel operation is recorded as a step;
-//! 3. [`crank`] — the slider-crank procedures (LH II, KG XIV B);
+//! 3. the procedures: [`crank`] — the slider-crank (LH II, KG XIV B); [`statics`] — force
+//!    and funicular polygons, beams, centroids, shafts (LH I A, C); [`truss`] — determinacy,
+//!    reactions, Cremona plans, Ritter sections, counter-diagonals, envelopes (LH I B);
 //! 4. [`scene`] — the JSON scene format, its validation and its mapping to procedures;
-//! 5. [`render`] — textbook-style SVG, one layer per step, walk-through pages;
+//! 5. [`render`] — textbook-style SVG, one layer per step, walk-through pages, the check
+//!    table and the tables of member forces;
 //! 6. the `graphostatik` command line.
 #![warn(missing_docs)]
 
