@@ -2,7 +2,7 @@
 //!
 //! Two curves that meet at the angle θ locate their common point with an error
 //! `δ / sin θ` when either curve is off by `δ` across its direction. `1 / sin θ` is the
-//! error amplification. Below [`GLANCING_ANGLE`](super::tolerance::GLANCING_ANGLE) the
+//! error amplification. Below [`GLANCING_ANGLE`] the
 //! intersection is flagged as glancing.
 //!
 //! The intersection routines have the sine and cosine of the meeting angle at hand; they are
