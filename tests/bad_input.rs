@@ -225,7 +225,10 @@ fn cli_steps_writes_a_walkthrough() {
     let o = Command::new(bin())
         .args([
             "steps",
-            concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/kg_tafel1.json"),
+            concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/scenes/lh_abb22_funicular.json"
+            ),
             "--out",
         ])
         .arg(&d)
@@ -245,6 +248,29 @@ fn cli_steps_writes_a_walkthrough() {
     let first = std::fs::read_to_string(d.join("step-001.svg")).unwrap();
     assert_eq!(first.matches("inkscape:groupmode=\"layer\"").count(), 2); // sheet + step 1
     std::fs::remove_dir_all(&d).unwrap();
+}
+
+/// A large construction (KG Tafel I: hundreds of steps) is paged by groups of steps that
+/// share a context, at most `MAX_PAGES` pages, and every step is still listed.
+#[test]
+fn a_long_walkthrough_is_paged_by_groups() {
+    use graphostatik::render::{walkthrough, MAX_PAGES};
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/kg_tafel1.json");
+    let p = graphostatik::scene::AnyScene::load(&path)
+        .unwrap()
+        .problem();
+    let board = p.construct(true).unwrap();
+    assert!(board.steps().len() > MAX_PAGES);
+    let pages = walkthrough(&p.figure_meta(), &board);
+    assert!(pages.len() <= MAX_PAGES + 1, "{}", pages.len());
+    let index = &pages.last().unwrap().contents;
+    for s in board.steps() {
+        assert!(
+            index.contains(&format!("<b>{}</b>", s.id)),
+            "step {} missing",
+            s.id
+        );
+    }
 }
 
 /// A reader that stops early (`graphostatik protocol … | head`) ends the output quietly:

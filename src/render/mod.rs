@@ -10,4 +10,4 @@ mod walkthrough;
 
 pub use figure::{figure, FigureMeta, ScaleBar};
 pub use table::{check_rows, check_table_json, check_table_text, CheckRow};
-pub use walkthrough::{walkthrough, Page};
+pub use walkthrough::{walkthrough, Page, MAX_PAGES};

@@ -2,7 +2,7 @@
 //! through them with their captions.
 
 use super::figure::{figure, FigureMeta};
-use crate::protocol::Board;
+use crate::protocol::{Board, Step};
 
 /// A file of the walk-through: its name and contents.
 #[derive(Debug, Clone, PartialEq)]
@@ -20,61 +20,53 @@ fn html_escape(s: &str) -> String {
         .replace('"', "&quot;")
 }
 
+/// Most pages a walk-through writes. Each page is a whole figure, so a construction of
+/// thousands of steps (a crane bridge with ten load positions) would write gigabytes; above
+/// this, consecutive steps that share a context (one joint polygon, one crank angle) share
+/// a page, and if that is still too many, neighbouring groups are merged evenly.
+pub const MAX_PAGES: usize = 150;
+
+/// The steps of each page, in order.
+fn page_groups(board: &Board) -> Vec<Vec<&Step>> {
+    let steps = board.steps();
+    if steps.len() <= MAX_PAGES {
+        return steps.iter().map(|s| vec![s]).collect();
+    }
+    let mut groups: Vec<Vec<&Step>> = Vec::new();
+    for s in steps {
+        match groups.last_mut() {
+            Some(g) if g[0].context == s.context => g.push(s),
+            _ => groups.push(vec![s]),
+        }
+    }
+    if groups.len() > MAX_PAGES {
+        let per = groups.len().div_ceil(MAX_PAGES);
+        groups = groups
+            .chunks(per)
+            .map(|c| c.iter().flatten().copied().collect())
+            .collect();
+    }
+    groups
+}
+
 /// The pages of a walk-through: `step-NNN.svg` showing steps 1..NNN with NNN highlighted,
 /// and `index.html`, which works offline (no script from outside, images by relative path),
-/// with buttons and the arrow keys to step back and forth.
+/// with buttons and the arrow keys to step back and forth. Beyond [`MAX_PAGES`] steps a page
+/// shows a group of steps (named by its last one) and lists them all.
 pub fn walkthrough(meta: &FigureMeta, board: &Board) -> Vec<Page> {
     let mut pages = Vec::new();
     let mut items = String::new();
-    for step in board.steps() {
-        let name = format!("step-{}.svg", step.id);
+    for group in page_groups(board) {
+        let last = group[group.len() - 1];
+        let name = format!("step-{}.svg", last.id);
         pages.push(Page {
             name: name.clone(),
-            contents: figure(meta, board, Some(step.id)),
+            contents: figure(meta, board, Some(last.id)),
         });
-        let mut detail = String::new();
-        if let Some(de) = step.term_de {
-            detail.push_str(&format!(" <span class=\"de\">({})</span>", html_escape(de)));
-        }
-        if !step.book.is_empty() {
-            detail.push_str(&format!(
-                " <span class=\"book\">{}</span>",
-                html_escape(step.book)
-            ));
-        }
-        if let Some(c) = &step.conditioning {
-            detail.push_str(&format!(
-                " <span class=\"cond{}\">cut at {}°</span>",
-                if c.glancing() { " glancing" } else { "" },
-                crate::fmt::num(c.angle_deg(), 1)
-            ));
-        }
-        if let Some(o) = &step.outcome {
-            detail.push_str(&format!(
-                " <span class=\"outcome\">{}</span>",
-                html_escape(o)
-            ));
-        }
-        for c in &step.checks {
-            detail.push_str(&format!(
-                " <span class=\"check {}\">{} = {} {} (closed form {}, error {})</span>",
-                if c.passed { "ok" } else { "fail" },
-                html_escape(c.quantity),
-                crate::fmt::num(c.constructed, 6),
-                html_escape(c.unit),
-                crate::fmt::num(c.closed_form, 6),
-                crate::fmt::sci(c.error)
-            ));
-        }
+        let lines: Vec<String> = group.iter().map(|s| step_line(s)).collect();
         items.push_str(&format!(
-            "<li data-src=\"{name}\"><b>{}</b> {}{}{}</li>\n",
-            step.id,
-            html_escape(step.caption),
-            step.context
-                .as_ref()
-                .map(|c| format!(" <i>{}</i>", html_escape(c)))
-                .unwrap_or_default(),
-            detail
+            "<li data-src=\"{name}\">{}</li>\n",
+            lines.join("<br>")
         ));
     }
     let index = format!(
@@ -140,4 +132,53 @@ show(0);
         contents: index,
     });
     pages
+}
+
+/// One step's line in the index: number, caption, context, German term, book, cut angle,
+/// outcome and checks.
+fn step_line(step: &Step) -> String {
+    let mut detail = String::new();
+    if let Some(de) = step.term_de {
+        detail.push_str(&format!(" <span class=\"de\">({})</span>", html_escape(de)));
+    }
+    if !step.book.is_empty() {
+        detail.push_str(&format!(
+            " <span class=\"book\">{}</span>",
+            html_escape(step.book)
+        ));
+    }
+    if let Some(c) = &step.conditioning {
+        detail.push_str(&format!(
+            " <span class=\"cond{}\">cut at {}°</span>",
+            if c.glancing() { " glancing" } else { "" },
+            crate::fmt::num(c.angle_deg(), 1)
+        ));
+    }
+    if let Some(o) = &step.outcome {
+        detail.push_str(&format!(
+            " <span class=\"outcome\">{}</span>",
+            html_escape(o)
+        ));
+    }
+    for c in &step.checks {
+        detail.push_str(&format!(
+            " <span class=\"check {}\">{} = {} {} (closed form {}, error {})</span>",
+            if c.passed { "ok" } else { "fail" },
+            html_escape(c.quantity),
+            crate::fmt::num(c.constructed, 6),
+            html_escape(c.unit),
+            crate::fmt::num(c.closed_form, 6),
+            crate::fmt::sci(c.error)
+        ));
+    }
+    format!(
+        "<b>{}</b> {}{}{}",
+        step.id,
+        html_escape(step.caption),
+        step.context
+            .as_ref()
+            .map(|c| format!(" <i>{}</i>", html_escape(c)))
+            .unwrap_or_default(),
+        detail
+    )
 }
