@@ -296,3 +296,25 @@ fn a_closed_pipe_is_not_a_panic() {
     assert!(!err.contains("panicked"), "{err}");
     assert_eq!(o.status.code(), Some(0), "{err}");
 }
+
+/// Every scene shown in README.md parses, validates and constructs with all checks passing,
+/// so the documentation cannot drift from the format.
+#[test]
+fn the_scenes_in_the_readme_are_valid() {
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let mut n = 0;
+    for block in readme.split("```json\n").skip(1) {
+        let json = block.split("```").next().unwrap();
+        let scene = graphostatik::scene::AnyScene::from_json(json, "README.md")
+            .unwrap_or_else(|e| panic!("{e}\n{json}"));
+        let board = scene.problem().construct(true).unwrap();
+        assert!(board
+            .steps()
+            .iter()
+            .flat_map(|s| &s.checks)
+            .all(|c| c.passed));
+        n += 1;
+    }
+    assert!(n >= 3, "{n} scenes found");
+}
