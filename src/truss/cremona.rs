@@ -438,8 +438,12 @@ fn construct(
     };
     let sup = supports(t)?;
     let mut out = Vec::with_capacity(cases.len());
-    for case in cases {
-        let sol = if dense { matrix::solve(t, case) } else { None };
+    let sols = if dense {
+        matrix::solve_all(t, cases)
+    } else {
+        vec![None; cases.len()]
+    };
+    for (case, sol) in cases.iter().zip(sols) {
         // A scratch run fixes where the blocks go; the real run draws them there.
         let mut scratch = Board::new(b.tolerance().length * 1e6, false);
         let dry = construct_case(
@@ -1153,7 +1157,7 @@ fn cremona_plan(
     let mut plan_mm = vec![0.0; t.members.len()];
     let mut queue: std::collections::VecDeque<usize> = (0..t.joints.len()).collect();
     let mut queued = vec![true; t.joints.len()];
-    let reference = maxload.max(ext.reactions.iter().map(|r| r.norm()).fold(0.0, f64::max));
+    let reference = check_reference(maxload, ext);
     // Draws every member whose two spaces are known and that is not drawn yet.
     let settle = |b: &mut Board,
                   pt: &[Option<H<Point>>],
@@ -1168,16 +1172,7 @@ fn cremona_plan(
             if let (Some(pl), Some(pr)) = (pt[l], pt[r]) {
                 b.segment(&pl, &pr, member_label(t, m), Role::Result, N_FORCE);
                 let v = b.measure(&pl, &pr, &mline[m], kg, member_label(t, m), N_FORCE);
-                if let Some(sol) = sol {
-                    b.check(
-                        &v,
-                        "member force (tension +)",
-                        "kg",
-                        "joint equilibrium, dense LU (nalgebra)",
-                        reference,
-                        || sol.members[m],
-                    );
-                }
+                check_member(b, &v, m, sol, reference);
                 forces[m] = Some(v.g);
                 plan_mm[m] = (pr.g - pl.g).norm();
             }
@@ -1234,6 +1229,19 @@ fn cremona_plan(
             stuck.join(", ")
         )));
     }
+    Ok((plan_result(t, case, ext, &forces, &plan_mm, sol), bx))
+}
+
+/// The result of a plan, either way it was drawn: the forces found, the dense solve beside
+/// them, and the balance of both at every joint.
+pub(crate) fn plan_result(
+    t: &Truss,
+    case: &LoadCase,
+    ext: &External,
+    forces: &[Option<f64>],
+    plan_mm: &[f64],
+    sol: Option<&Solution>,
+) -> CaseResult {
     let members: Vec<f64> = forces.iter().map(|f| f.unwrap_or(0.0)).collect();
     let matrix: Vec<Option<f64>> = (0..members.len())
         .map(|m| sol.map(|s| s.members[m]))
@@ -1243,12 +1251,37 @@ fn cremona_plan(
         case,
         case.name.clone(),
         &members,
-        &plan_mm,
+        plan_mm,
         &matrix,
         &ext.reactions,
     );
     result.matrix_residual = sol.map(|s| matrix::max_residual(t, case, &s.members, &s.reactions));
-    Ok((result, bx))
+    result
+}
+
+/// The scale of the checks: the largest load or reaction of the case (kg).
+pub(crate) fn check_reference(maxload: f64, ext: &External) -> f64 {
+    maxload.max(ext_max(ext))
+}
+
+/// Checks a member force read off a plan against the dense solve, if it was made.
+pub(crate) fn check_member(
+    b: &mut Board,
+    value: &H<f64>,
+    m: usize,
+    sol: Option<&Solution>,
+    reference: f64,
+) {
+    if let Some(sol) = sol {
+        b.check(
+            value,
+            "member force (tension +)",
+            "kg",
+            "joint equilibrium, dense LU (nalgebra)",
+            reference,
+            || sol.members[m],
+        );
+    }
 }
 
 /// The result of a case from its member forces and reactions (one per support), with the balance

@@ -9,7 +9,10 @@
 //! its side of the polygon: pointing away from the joint it pulls (tension, Regel 1).
 //! Every member is found once, so it is drawn in one joint polygon and read there.
 
-use super::cremona::{case_result, grow, member_label, CaseResult, External, TrussDrawing, EMPTY};
+use super::cremona::{
+    check_member, check_reference, grow, member_label, plan_result, CaseResult, External,
+    TrussDrawing, EMPTY,
+};
 use super::matrix::Solution;
 use super::{LoadCase, Truss};
 use crate::kernel::{Line, Point, Vector};
@@ -85,7 +88,7 @@ pub(crate) fn joint_polygons(
     for &(j, f) in &ext.forces {
         ext_at[j].push(f);
     }
-    let reference = maxload.max(ext.forces.iter().map(|(_, f)| f.norm()).fold(0.0, f64::max));
+    let reference = check_reference(maxload, ext);
     let dir_from = |v: usize, m: usize| {
         let [a, c] = t.members[m].ends;
         let o = if a == v { c } else { a };
@@ -213,16 +216,7 @@ pub(crate) fn joint_polygons(
             found.push((m2, h2, (start.g - mid.g).norm()));
         }
         for (m, h, mm) in found {
-            if let Some(sol) = sol {
-                b.check(
-                    &h,
-                    "member force (tension +)",
-                    "kg",
-                    "joint equilibrium, dense LU (nalgebra)",
-                    reference,
-                    || sol.members[m],
-                );
-            }
+            check_member(b, &h, m, sol, reference);
             force[m] = Some(h.g);
             plan_mm[m] = mm;
             for &e in &t.members[m].ends {
@@ -241,21 +235,7 @@ pub(crate) fn joint_polygons(
             t.members[m].name
         )));
     }
-    let forces: Vec<f64> = force.iter().map(|f| f.unwrap_or(0.0)).collect();
-    let matrix: Vec<Option<f64>> = (0..forces.len())
-        .map(|m| sol.map(|s| s.members[m]))
-        .collect();
-    let mut result = case_result(
-        t,
-        case,
-        case.name.clone(),
-        &forces,
-        &plan_mm,
-        &matrix,
-        &ext.reactions,
-    );
-    result.matrix_residual =
-        sol.map(|s| super::matrix::max_residual(t, case, &s.members, &s.reactions));
+    let result = plan_result(t, case, ext, &force, &plan_mm, sol);
     if !bx[0].is_finite() {
         bx = [0.0; 4];
     }

@@ -219,24 +219,37 @@ pub struct Solution {
 /// Solves A f = −p by LU decomposition (dense, O(k³)): the independent solve every
 /// Cremona plan is checked against. `None` if A is not square or is singular.
 pub fn solve(t: &Truss, case: &LoadCase) -> Option<Solution> {
+    solve_all(t, std::slice::from_ref(case)).pop().flatten()
+}
+
+/// [`solve`] for every load case of one truss: A is built and factorised once (O(k³)), and
+/// each case costs one back-substitution (O(k²)).
+pub fn solve_all(t: &Truss, cases: &[LoadCase]) -> Vec<Option<Solution>> {
     let a = equilibrium_matrix(t);
     if a.nrows() != a.ncols() {
-        return None;
+        return vec![None; cases.len()];
     }
-    let mut p = DVector::zeros(a.nrows());
-    for l in &case.loads {
-        p[2 * l.joint] -= l.force.x;
-        p[2 * l.joint + 1] -= l.force.y;
-    }
-    let f = a.lu().solve(&p)?;
-    if f.iter().any(|x| !x.is_finite()) {
-        return None;
-    }
+    let n = a.nrows();
+    let lu = a.lu();
     let s = t.members.len();
-    Some(Solution {
-        members: f.rows(0, s).iter().cloned().collect(),
-        reactions: f.rows(s, f.len() - s).iter().cloned().collect(),
-    })
+    cases
+        .iter()
+        .map(|case| {
+            let mut p = DVector::zeros(n);
+            for l in &case.loads {
+                p[2 * l.joint] -= l.force.x;
+                p[2 * l.joint + 1] -= l.force.y;
+            }
+            let f = lu.solve(&p)?;
+            if f.iter().any(|x| !x.is_finite()) {
+                return None;
+            }
+            Some(Solution {
+                members: f.rows(0, s).iter().cloned().collect(),
+                reactions: f.rows(s, f.len() - s).iter().cloned().collect(),
+            })
+        })
+        .collect()
 }
 
 /// The largest out-of-balance force (kg) at any joint for the given member forces and
