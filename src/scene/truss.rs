@@ -492,9 +492,12 @@ impl TrussScene {
                 ));
             }
         }
+        let truss = self.truss();
+        let case_names = self.case_names(&truss);
+        let known = |n: &String| case_names.contains(n);
         for (c, combo) in self.combinations.iter().enumerate() {
             for (i, name) in combo.cases.iter().enumerate() {
-                if !self.case_names().iter().any(|l| l == name) {
+                if !known(name) {
                     return Err(bad(
                         format!("combinations[{c}].cases[{i}]"),
                         format!("no load case is named `{name}`"),
@@ -503,8 +506,6 @@ impl TrussScene {
             }
         }
         if let Some(env) = &self.envelope {
-            let names = self.case_names();
-            let known = |n: &String| names.contains(n);
             for (i, n) in env.permanent.iter().enumerate() {
                 if !known(n) {
                     return Err(bad(
@@ -534,7 +535,6 @@ impl TrussScene {
             )?;
         }
         // Pairs of diagonals: each system (one diagonal of every pair) must be determinate.
-        let truss = self.truss();
         if !self.diagonal_pairs.is_empty() {
             if self.diagonal_mode.is_none() {
                 return Err(bad(
@@ -635,13 +635,10 @@ impl TrussScene {
         )
     }
 
-    /// Names of all load cases: generated roof cases, the scene's, and the moving positions.
-    fn case_names(&self) -> Vec<String> {
-        let mut names: Vec<String> = self
-            .roof_cases(&self.truss())
-            .into_iter()
-            .map(|c| c.name)
-            .collect();
+    /// Names of the load cases a combination or envelope may name: the generated roof cases
+    /// and the scene's own.
+    fn case_names(&self, truss: &Truss) -> Vec<String> {
+        let mut names: Vec<String> = self.roof_cases(truss).into_iter().map(|c| c.name).collect();
         names.extend(self.load_cases.iter().map(|c| c.name.clone()));
         names
     }
