@@ -893,10 +893,7 @@ impl Builder<'_> {
         let fpt = self
             .b
             .meet_point(&rod, &normal, Label::quiet("S", i as u32), N_S_CUT)?;
-        let scale = Scale {
-            per_mm: self.scales.force_scale,
-            unit: "kg",
-        };
+        let scale = Scale::kg(self.scales.force_scale);
         let s = self.b.measure(
             &b,
             &fpt,
@@ -969,10 +966,7 @@ impl Builder<'_> {
         let kp = self
             .b
             .meet_point(&par_tan, &crank, Label::quiet("K", i as u32), N_K_CUT)?;
-        let scale = Scale {
-            per_mm: self.scales.force_scale,
-            unit: "kg",
-        };
+        let scale = Scale::kg(self.scales.force_scale);
         let t = self.b.measure(
             &pin,
             &tp,
@@ -1069,10 +1063,7 @@ impl Builder<'_> {
         let cpt = self
             .b
             .meet_point(&par, &vertical, Label::quiet("C", i as u32), N_POLAR_CUT)?;
-        let scale = Scale {
-            per_mm: self.scales.force_scale,
-            unit: "kg",
-        };
+        let scale = Scale::kg(self.scales.force_scale);
         let t = self.b.measure(
             &o,
             &cpt,

@@ -72,6 +72,13 @@ pub struct Scale {
     pub unit: &'static str,
 }
 
+impl Scale {
+    /// A force scale: `per_mm` kg per mm of the sheet (the books' "1 mm = 100 kg").
+    pub const fn kg(per_mm: f64) -> Scale {
+        Scale { per_mm, unit: "kg" }
+    }
+}
+
 /// The board of a construction: objects and steps, in the order made.
 ///
 /// A board either records (objects and steps kept, captions, checks) or only computes: the

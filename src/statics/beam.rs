@@ -462,10 +462,7 @@ pub fn construct_beam_at(
     let h_mm = dr.pole_distance / fs;
     let down = Vector::new(0.0, -1.0);
     let up = Vector::new(0.0, 1.0);
-    let kg = Scale {
-        per_mm: fs,
-        unit: "kg",
-    };
+    let kg = Scale::kg(fs);
     let moment_scale = Scale {
         per_mm: dr.length_scale / 1000.0 * dr.pole_distance,
         unit: "kg·m",

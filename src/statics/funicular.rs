@@ -313,10 +313,7 @@ pub fn construct_system(
     let sp = |p: [f64; 2]| Point::new(p[0] * k, p[1] * k);
     let (r_cf, m_cf) = sum_and_moment(forces);
     let (fmax, reach) = extent(forces);
-    let kg = Scale {
-        per_mm: fs,
-        unit: "kg",
-    };
+    let kg = Scale::kg(fs);
 
     // --- Position plan: points of application, arrows, lines of action ------------------
     let mut lines = Vec::with_capacity(forces.len());

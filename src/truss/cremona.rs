@@ -940,10 +940,7 @@ fn read_reactions(
     reference: f64,
     fs: f64,
 ) -> Result<(), ConstructionError> {
-    let kg = Scale {
-        per_mm: fs,
-        unit: "kg",
-    };
+    let kg = Scale::kg(fs);
     let f = "joint equilibrium, dense LU (nalgebra)";
     let mut col = 0;
     for (si, sup) in t.supports.iter().enumerate() {
@@ -1096,10 +1093,7 @@ fn cremona_plan(
     maxload: f64,
 ) -> Result<(CaseResult, [f64; 4]), ConstructionError> {
     let fs = dr.force_scale;
-    let kg = Scale {
-        per_mm: fs,
-        unit: "kg",
-    };
+    let kg = Scale::kg(fs);
     let mut bx = EMPTY;
     let (order, mut space_of_half) = outline(t, g, ext)?;
     let n_ext = order.len().max(1);

@@ -74,10 +74,7 @@ pub(crate) fn joint_polygons(
     maxload: f64,
 ) -> Result<(CaseResult, [f64; 4]), ConstructionError> {
     let fs = dr.force_scale;
-    let kg = Scale {
-        per_mm: fs,
-        unit: "kg",
-    };
+    let kg = Scale::kg(fs);
     let k = t.joints.len();
     let mut members_at: Vec<Vec<usize>> = vec![Vec::new(); k];
     for (m, mem) in t.members.iter().enumerate() {
