@@ -369,11 +369,9 @@ impl BeamProblem {
         let d = &self.drawing;
         crate::render::FigureMeta {
             title: self.title.clone(),
-            source: format!(
-                "{}{}pole distance H = {} kg",
-                self.source,
-                if self.source.is_empty() { "" } else { " — " },
-                num(d.pole_distance, 6)
+            source: super::source_line(
+                &self.source,
+                &format!("pole distance H = {} kg", num(d.pole_distance, 6)),
             ),
             scales: vec![
                 super::bars::length(d.length_scale, "m"),

@@ -540,6 +540,15 @@ impl AnyProblem {
     }
 }
 
+/// The line under a figure's title: the book reference, then what the figure is drawn with.
+fn source_line(source: &str, detail: &str) -> String {
+    if source.is_empty() {
+        detail.to_string()
+    } else {
+        format!("{source} — {detail}")
+    }
+}
+
 /// Checks that every scale or pole given (`Some`) is a positive, finite number.
 fn optional_positive(origin: &str, fields: &[(&str, Option<f64>)]) -> Result<(), SceneError> {
     for &(name, v) in fields {

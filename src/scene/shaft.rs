@@ -242,13 +242,14 @@ impl ShaftProblem {
         let ms = d.length_scale / 1000.0 * d.pole_distance;
         crate::render::FigureMeta {
             title: self.title.clone(),
-            source: format!(
-                "{}{}planes at {}°, α0 = {}, pole distance H = {} kg",
-                self.source,
-                if self.source.is_empty() { "" } else { " — " },
-                num(self.shaft.angle_deg, 3),
-                num(self.shaft.alpha0, 3),
-                num(d.pole_distance, 6)
+            source: super::source_line(
+                &self.source,
+                &format!(
+                    "planes at {}°, α0 = {}, pole distance H = {} kg",
+                    num(self.shaft.angle_deg, 3),
+                    num(self.shaft.alpha0, 3),
+                    num(d.pole_distance, 6)
+                ),
             ),
             scales: vec![
                 super::bars::length(d.length_scale, "m"),

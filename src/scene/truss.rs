@@ -826,10 +826,9 @@ impl TrussProblem {
         let d = &self.drawing;
         crate::render::FigureMeta {
             title: self.title.clone(),
-            source: format!(
-                "{}{}force plan (Kräfteplan), tension +, compression −",
-                self.source,
-                if self.source.is_empty() { "" } else { " — " },
+            source: super::source_line(
+                &self.source,
+                "force plan (Kräfteplan), tension +, compression −",
             ),
             scales: vec![
                 super::bars::length(d.length_scale, "m"),
