@@ -343,28 +343,14 @@ fn draw_object(board: &Board, f: &Frame, obj: &Object, g: Group) -> Group {
         Geom::Point { .. } => {}
         Geom::Line { .. } => {
             if let Some((a, b)) = line_ends(obj).and_then(|(a, b)| f.clip_segment(a, b)) {
-                g = g.add(
-                    SLine::new()
-                        .set("class", class)
-                        .set("x1", f.x(&a))
-                        .set("y1", f.y(&a))
-                        .set("x2", f.x(&b))
-                        .set("y2", f.y(&b)),
-                );
+                g = g.add(sheet_line(f, class, a, b));
             }
         }
         Geom::Segment { segment } | Geom::Vector { segment } => {
             let (a, b) = (segment.a, segment.b);
             // A zero-length force (N at a dead centre) has no direction for its arrowhead.
             if (b - a).norm() > 1e-9 {
-                g = g.add(
-                    SLine::new()
-                        .set("class", class)
-                        .set("x1", f.x(&a))
-                        .set("y1", f.y(&a))
-                        .set("x2", f.x(&b))
-                        .set("y2", f.y(&b)),
-                );
+                g = g.add(sheet_line(f, class, a, b));
                 if obj.role == Role::Guide {
                     g = g.add(hatching(f, a, b));
                 }
@@ -464,17 +450,25 @@ fn draw_table(f: &Frame, at: Point, rows: &[Vec<String>], g: Group) -> Group {
         if i == 0 {
             let (w, _) = table_size(rows);
             let ly = at.y - TABLE_ROW * 1.05;
-            g = g.add(
-                SLine::new()
-                    .set("class", class_of(Role::Construction))
-                    .set("x1", f.x(&Point::new(at.x, ly)))
-                    .set("y1", f.y(&Point::new(at.x, ly)))
-                    .set("x2", f.x(&Point::new(at.x + w, ly)))
-                    .set("y2", f.y(&Point::new(at.x + w, ly))),
-            );
+            g = g.add(sheet_line(
+                f,
+                class_of(Role::Construction),
+                Point::new(at.x, ly),
+                Point::new(at.x + w, ly),
+            ));
         }
     }
     g
+}
+
+/// A straight line on the sheet from `a` to `b` in the given class.
+fn sheet_line(f: &Frame, class: &str, a: Point, b: Point) -> SLine {
+    SLine::new()
+        .set("class", class)
+        .set("x1", f.x(&a))
+        .set("y1", f.y(&a))
+        .set("x2", f.x(&b))
+        .set("y2", f.y(&b))
 }
 
 /// Short slanted strokes under a guide, on its right-hand side.
