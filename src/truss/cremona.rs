@@ -396,32 +396,23 @@ fn construct(
     row_top: &mut f64,
     slack: &[[usize; 2]],
 ) -> Result<Vec<CaseResult>, ConstructionError> {
-    let analysis = if dense {
-        matrix::analyse(t)
-    } else {
-        matrix::Analysis {
-            joints: t.joints.len(),
-            members: t.members.len(),
-            reactions: t.reaction_unknowns(),
-            count_excess: t.members.len() as i64 - (2 * t.joints.len() as i64 - 3),
-            rank: None,
-            determinacy: matrix::Determinacy::Determinate,
-        }
-    };
-    match analysis.determinacy {
-        matrix::Determinacy::Determinate => {}
-        matrix::Determinacy::Mechanism { joint, freedoms } => {
-            return Err(ConstructionError::Unsupported(format!(
-                "the truss is a mechanism ({freedoms} free motion(s)): joint {} can move",
-                t.joints[joint].name
-            )))
-        }
-        matrix::Determinacy::OverDeterminate { redundant } => {
-            return Err(ConstructionError::Unsupported(format!(
-                "the truss is over-determinate by {redundant} (s = {}, 2k − 3 = {}): the Cremona plan needs a determinate truss (split it as in LH B.5)",
-                t.members.len(),
-                2 * t.joints.len() as i64 - 3
-            )))
+    // The rank test goes with the dense solve; the plan alone finds out by stalling.
+    if dense {
+        match matrix::analyse(t).determinacy {
+            matrix::Determinacy::Determinate => {}
+            matrix::Determinacy::Mechanism { joint, freedoms } => {
+                return Err(ConstructionError::Unsupported(format!(
+                    "the truss is a mechanism ({freedoms} free motion(s)): joint {} can move",
+                    t.joints[joint].name
+                )))
+            }
+            matrix::Determinacy::OverDeterminate { redundant } => {
+                return Err(ConstructionError::Unsupported(format!(
+                    "the truss is over-determinate by {redundant} (s = {}, 2k − 3 = {}): the Cremona plan needs a determinate truss (split it as in LH B.5)",
+                    t.members.len(),
+                    2 * t.joints.len() as i64 - 3
+                )))
+            }
         }
     }
     // Members that cross leave no plane drawing for Bow's notation: the joint polygons are
@@ -782,7 +773,7 @@ fn construct_case(
         }
     };
     // The evaluation of the plan written beside it (LH B.4, "Auswertung").
-    let zero_kg = ZERO_FORCE_REL * maxload.max(ext_max(&external));
+    let zero_kg = ZERO_FORCE_REL * check_reference(maxload, &external);
     let mut rows = vec![vec![
         "Stab".to_string(),
         "Strecke mm".to_string(),
