@@ -69,35 +69,30 @@ pub fn construct_pairs(
     for case in cases {
         match mode {
             PairMode::SplitHalfLoads => {
-                let half = LoadCase {
-                    name: String::new(),
-                    loads: case
-                        .loads
-                        .iter()
-                        .map(|l| super::JointLoad {
-                            joint: l.joint,
-                            force: l.force * 0.5,
-                        })
-                        .collect(),
-                };
                 let mut forces = vec![0.0; n];
                 let mut plan = vec![0.0; n];
-                let mut reactions = vec![[0.0; 2]; t.supports.len()];
+                let mut reactions = vec![Vector::zeros(); t.supports.len()];
                 for (s, system) in ["a", "b"].iter().enumerate() {
                     let drop: Vec<usize> = pairs.iter().map(|p| p[1 - s]).collect();
                     let (sub, keep) = without(t, &drop);
-                    let c = LoadCase {
+                    let half = LoadCase {
                         name: format!("{}, system {system} (half loads)", case.name),
-                        loads: half.loads.clone(),
+                        loads: case
+                            .loads
+                            .iter()
+                            .map(|l| super::JointLoad {
+                                joint: l.joint,
+                                force: l.force * 0.5,
+                            })
+                            .collect(),
                     };
-                    let r = construct_truss_rows(b, &sub, &[c], dr, &mut row, &[])?;
+                    let r = construct_truss_rows(b, &sub, &[half], dr, &mut row, &[])?;
                     for (i, &m) in keep.iter().enumerate() {
                         forces[m] += r[0].members[i].force;
                         plan[m] += r[0].members[i].plan_mm;
                     }
-                    for (k, rv) in r[0].reactions.iter().enumerate() {
-                        reactions[k][0] += rv[0];
-                        reactions[k][1] += rv[1];
+                    for (sum, rv) in reactions.iter_mut().zip(&r[0].reactions) {
+                        *sum += vector(*rv);
                     }
                 }
                 out.push(case_result(
@@ -107,7 +102,7 @@ pub fn construct_pairs(
                     &forces,
                     &plan,
                     &vec![None; n],
-                    &reactions.iter().map(|&r| vector(r)).collect::<Vec<_>>(),
+                    &reactions,
                 ));
             }
             PairMode::TensionOnly => {
