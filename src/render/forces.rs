@@ -31,6 +31,19 @@ fn kind(x: f64) -> &'static str {
     }
 }
 
+/// A reaction as magnitude and direction, "7640 ∠90°" (degrees counter-clockwise from +x).
+fn polar(f: [f64; 2]) -> String {
+    let m = f[0].hypot(f[1]);
+    if m <= ZERO_KG {
+        return "0".into();
+    }
+    let mut deg = f[1].atan2(f[0]).to_degrees();
+    if deg < 0.0 {
+        deg += 360.0;
+    }
+    format!("{} ∠{}°", num(m, 1), num(deg, 1))
+}
+
 /// The envelope as a Markdown table.
 pub fn envelope_markdown(results: &[CaseResult], rule: Option<&EnvelopeRule>) -> String {
     let mut out =
@@ -49,7 +62,8 @@ pub fn envelope_markdown(results: &[CaseResult], rule: Option<&EnvelopeRule>) ->
 }
 
 /// The table as Markdown: member, then per case the plan length (mm) and force (kg), then the
-/// combinations, then tension or compression of the last column.
+/// combinations, then tension or compression of the last column; below the members one row
+/// per support reaction, as magnitude and direction ("925 ∠90°").
 pub fn markdown(results: &[CaseResult], combos: &[Combination]) -> String {
     let mut head = vec!["member".to_string()];
     for r in results {
@@ -82,10 +96,26 @@ pub fn markdown(results: &[CaseResult], combos: &[Combination]) -> String {
         row.push(kind(last).into());
         out.push_str(&format!("| {} |\n", row.join(" | ")));
     }
+    // The support reactions, as magnitude and direction.
+    let k = results.first().map_or(0, |r| r.reactions.len());
+    for s in 0..k {
+        let r0 = &results[0].reactions[s];
+        let mut row = vec![format!("{} ({})", r0.support, r0.joint)];
+        for r in results {
+            row.push(num(r.reactions[s].plan_mm, 1));
+            row.push(polar(r.reactions[s].force));
+        }
+        for c in combos {
+            row.push(polar(c.reaction(results, s)));
+        }
+        row.push("Auflager".into());
+        out.push_str(&format!("| {} |\n", row.join(" | ")));
+    }
     out
 }
 
-/// The same as CSV (comma-separated, plain minus signs, one header line).
+/// The same as CSV (comma-separated, plain minus signs, one header line); each support
+/// reaction as two rows, its x and y components, with the plan column left empty.
 pub fn csv(results: &[CaseResult], combos: &[Combination]) -> String {
     let q = |s: &str| format!("\"{}\"", s.replace('"', "\"\""));
     let mut head = vec![q("member")];
@@ -108,6 +138,22 @@ pub fn csv(results: &[CaseResult], combos: &[Combination]) -> String {
             row.push(num(c.force(results, m), 3));
         }
         out.push_str(&(row.join(",") + "\n"));
+    }
+    // The support reactions as x and y components, with an empty plan column.
+    let k = results.first().map_or(0, |r| r.reactions.len());
+    for s in 0..k {
+        let r0 = &results[0].reactions[s];
+        for (axis, comp) in [("x", 0), ("y", 1)] {
+            let mut row = vec![q(&format!("{} ({}) {axis}", r0.support, r0.joint))];
+            for r in results {
+                row.push(String::new());
+                row.push(num(r.reactions[s].force[comp], 3));
+            }
+            for c in combos {
+                row.push(num(c.reaction(results, s)[comp], 3));
+            }
+            out.push_str(&(row.join(",") + "\n"));
+        }
     }
     out
 }

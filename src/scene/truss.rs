@@ -100,6 +100,9 @@ pub struct SupportSpec {
     /// Direction of a roller's reaction, degrees counter-clockwise from +x (90: vertical).
     #[serde(default)]
     pub direction_deg: Option<f64>,
+    /// The reaction's name in the tables (default "A", "B", "C" in the order of the supports).
+    #[serde(default)]
+    pub name: Option<String>,
 }
 
 /// Pin or roller.
@@ -180,7 +183,8 @@ pub struct CombinationSpec {
     pub cases: Vec<String>,
 }
 
-/// A load at a joint: `kg` downwards, or `kg` along `angle_deg`, or components `kg_xy`.
+/// A load at a joint: `kg` downwards, or `kg` along `angle_deg`, or `kg` pulling `toward`
+/// another joint (a rope's pull along the rope, LH Aufgabe 3), or components `kg_xy`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct JointLoadSpec {
@@ -192,20 +196,34 @@ pub struct JointLoadSpec {
     /// Direction, degrees counter-clockwise from +x; default 270 (down).
     #[serde(default)]
     pub angle_deg: Option<f64>,
+    /// Direction from this joint to the joint named, instead of `angle_deg`.
+    #[serde(default)]
+    pub toward: Option<String>,
     /// Components [Fx, Fy] (kg), instead of `kg`.
     #[serde(default)]
     pub kg_xy: Option<[f64; 2]>,
 }
 
 impl JointLoadSpec {
-    fn vector(&self) -> Option<Vector> {
-        match (self.kg, self.kg_xy) {
-            (Some(k), None) => {
-                let (s, c) = crate::kernel::angle::sin_cos_deg(self.angle_deg.unwrap_or(270.0));
-                Some(Vector::new(k * c, k * s))
+    /// The force, given where the joints are; `Err` says what is wrong with the spec.
+    fn vector(&self, at: &HashMap<&str, [f64; 2]>) -> Result<Vector, String> {
+        match (self.kg, self.kg_xy, self.angle_deg, &self.toward) {
+            (Some(k), None, a, None) => {
+                let (s, c) = crate::kernel::angle::sin_cos_deg(a.unwrap_or(270.0));
+                Ok(Vector::new(k * c, k * s))
             }
-            (None, Some([x, y])) if self.angle_deg.is_none() => Some(Vector::new(x, y)),
-            _ => None,
+            (Some(k), None, None, Some(to)) => {
+                let (Some(p), Some(q)) = (at.get(self.joint.as_str()), at.get(to.as_str())) else {
+                    return Err(format!("`toward` names joint `{to}`, which does not exist"));
+                };
+                let d = Vector::new(q[0] - p[0], q[1] - p[1]);
+                if d.norm() == 0.0 {
+                    return Err("`toward` names the loaded joint itself".into());
+                }
+                Ok(d * (k / d.norm()))
+            }
+            (None, Some([x, y]), None, None) => Ok(Vector::new(x, y)),
+            _ => Err("give `kg` (with an optional `angle_deg` or `toward`) or `kg_xy`".into()),
         }
     }
 }
@@ -392,6 +410,25 @@ impl TrussScene {
                 _ => {}
             }
         }
+        let mut reaction_names: HashMap<String, usize> = HashMap::new();
+        for s in 0..self.supports.len() {
+            let name = self.supports[s]
+                .name
+                .clone()
+                .unwrap_or_else(|| crate::truss::default_support_name(s));
+            if name.trim().is_empty() {
+                return Err(bad(
+                    format!("supports[{s}].name"),
+                    "a support's name must not be empty".into(),
+                ));
+            }
+            if let Some(first) = reaction_names.insert(name.clone(), s) {
+                return Err(bad(
+                    format!("supports[{s}].name"),
+                    format!("two supports are called `{name}` (supports[{first}])"),
+                ));
+            }
+        }
         let pins = self
             .supports
             .iter()
@@ -445,6 +482,7 @@ impl TrussScene {
                 }
             }
         }
+        let at = self.joint_positions();
         for (c, case) in self.load_cases.iter().enumerate() {
             for (l, load) in case.loads.iter().enumerate() {
                 if !index.contains_key(load.joint.as_str()) {
@@ -453,20 +491,15 @@ impl TrussScene {
                         format!("load at joint `{}`, which does not exist", load.joint),
                     ));
                 }
-                match load.vector() {
-                    Some(v) if v.x.is_finite() && v.y.is_finite() => {}
-                    Some(_) => {
+                match load.vector(&at) {
+                    Ok(v) if v.x.is_finite() && v.y.is_finite() => {}
+                    Ok(_) => {
                         return Err(bad(
                             format!("load_cases[{c}].loads[{l}]"),
                             "must be finite numbers".into(),
                         ))
                     }
-                    None => {
-                        return Err(bad(
-                            format!("load_cases[{c}].loads[{l}]"),
-                            "give `kg` (with an optional `angle_deg`) or `kg_xy`".into(),
-                        ))
-                    }
+                    Err(why) => return Err(bad(format!("load_cases[{c}].loads[{l}]"), why)),
                 }
             }
         }
@@ -678,7 +711,12 @@ impl TrussScene {
             supports: self
                 .supports
                 .iter()
-                .map(|s| Support {
+                .enumerate()
+                .map(|(i, s)| Support {
+                    name: s
+                        .name
+                        .clone()
+                        .unwrap_or_else(|| crate::truss::default_support_name(i)),
                     joint: index[s.joint.as_str()],
                     kind: match s.kind {
                         SupportKindSpec::Pinned => SupportKind::Pinned,
@@ -695,6 +733,13 @@ impl TrussScene {
         }
     }
 
+    fn joint_positions(&self) -> HashMap<&str, [f64; 2]> {
+        self.joints
+            .iter()
+            .map(|j| (j.name.as_str(), j.at_m))
+            .collect()
+    }
+
     /// The problem the scene describes.
     pub fn problem(&self) -> TrussProblem {
         let truss = self.truss();
@@ -704,6 +749,7 @@ impl TrussScene {
             .enumerate()
             .map(|(i, j)| (j.name.as_str(), i))
             .collect();
+        let at = self.joint_positions();
         let mut cases: Vec<LoadCase> = self.roof_cases(&truss);
         cases.extend(self.load_cases.iter().map(|c| {
             LoadCase {
@@ -713,7 +759,7 @@ impl TrussScene {
                     .iter()
                     .map(|l| JointLoad {
                         joint: index[l.joint.as_str()],
-                        force: l.vector().unwrap_or_else(Vector::zeros),
+                        force: l.vector(&at).unwrap_or_else(|_| Vector::zeros()),
                     })
                     .collect(),
             }

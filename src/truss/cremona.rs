@@ -183,13 +183,33 @@ pub struct TrussDrawing {
     pub force_scale: f64,
 }
 
+/// A support reaction as read off the force plan.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ReactionForce {
+    /// The support's name ("A", "B", or the scene's own).
+    pub support: String,
+    /// The joint it holds.
+    pub joint: String,
+    /// The force on the truss (kg), x to the right, y up.
+    pub force: [f64; 2],
+    /// Its length in the force plan (mm), |force| over the force scale.
+    pub plan_mm: f64,
+}
+
+impl ReactionForce {
+    /// The magnitude (kg).
+    pub fn magnitude(&self) -> f64 {
+        self.force[0].hypot(self.force[1])
+    }
+}
+
 /// The result of one load case.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CaseResult {
     /// Load case name.
     pub case: String,
-    /// Reaction forces (kg), one vector per support in the order of the supports.
-    pub reactions: Vec<[f64; 2]>,
+    /// Reaction forces, one per support in the order of the supports.
+    pub reactions: Vec<ReactionForce>,
     /// Member forces in the order of the members.
     pub members: Vec<MemberForce>,
     /// Largest out-of-balance force at any joint for the plan's forces (kg).
@@ -226,8 +246,17 @@ const ROMAN: [&str; 40] = [
 ];
 
 /// A joint named with a roman numeral keeps its name in the figure; others are K₁, K₂, ….
+/// Capital letters, the other names the books give joints (W for a winch, A for a support).
+const LETTERS: [&str; 26] = [
+    "A", "B", "C", "D", "E", "F", "G", "H", "I", "J", "K", "L", "M", "N", "O", "P", "Q", "R", "S",
+    "T", "U", "V", "W", "X", "Y", "Z",
+];
+
+/// A joint's label: its own name where it is a Roman numeral or a capital letter, else K with
+/// its number.
 fn joint_label(t: &Truss, j: usize) -> Label {
-    match ROMAN.iter().find(|r| **r == t.joints[j].name) {
+    let name = t.joints[j].name.as_str();
+    match ROMAN.iter().chain(&LETTERS).find(|r| **r == name) {
         Some(r) => Label::plain(r),
         None => Label::indexed("K", j as u32 + 1),
     }
@@ -313,8 +342,9 @@ fn supports(t: &Truss) -> Result<Supports, ConstructionError> {
 ///     joints: vec![j("I", 0.0, 0.0), j("II", 2.0, 0.0), j("III", 1.0, 1.0)],
 ///     members: vec![m("1", 0, 2), m("2", 2, 1), m("3", 0, 1)],
 ///     supports: vec![
-///         Support { joint: 0, kind: SupportKind::Pinned },
-///         Support { joint: 1, kind: SupportKind::Roller { dir: Vector::new(0.0, 1.0) } },
+///         Support { joint: 0, kind: SupportKind::Pinned, name: "A".into() },
+///         Support { joint: 1, kind: SupportKind::Roller { dir: Vector::new(0.0, 1.0) },
+///             name: "B".into() },
 ///     ],
 /// };
 /// let case = LoadCase { name: "P".into(),
@@ -795,12 +825,26 @@ fn construct_case(
             kind.to_string(),
         ]);
     }
+    // The reactions below the members, by magnitude (the book's "G" and "A" of Aufgabe 3).
+    for r in &result.reactions {
+        let f = r.magnitude();
+        rows.push(vec![
+            r.support.clone(),
+            crate::fmt::num(r.plan_mm, 1),
+            if f <= zero_kg {
+                "0".to_string()
+            } else {
+                crate::fmt::num(f, 0)
+            },
+            "Auflager".to_string(),
+        ]);
+    }
+    let n = rows.len() - 1;
     let corner = at.plan + Vector::new(plan_box[2] + 12.0, plan_box[3]);
     b.table(corner, rows, &[], N_TABLE);
     let mut plan_box = plan_box;
     // Room for the table: blocks of at most TABLE_BLOCK_ROWS rows side by side, each about
     // 75 mm wide, 3.6 mm per row.
-    let n = t.members.len();
     let blocks = n.div_ceil(TABLE_BLOCK_ROWS).max(1);
     plan_box[2] += 12.0 + 75.0 * blocks as f64;
     plan_box[1] = plan_box[1].min(plan_box[3] - 3.6 * (n.min(TABLE_BLOCK_ROWS) as f64 + 1.0));
@@ -1214,7 +1258,7 @@ fn cremona_plan(
             stuck.join(", ")
         )));
     }
-    Ok((plan_result(t, case, ext, &forces, &plan_mm, sol), bx))
+    Ok((plan_result(t, case, ext, &forces, &plan_mm, sol, dr), bx))
 }
 
 /// The result of a plan, either way it was drawn: the forces found, the dense solve beside
@@ -1226,6 +1270,7 @@ pub(crate) fn plan_result(
     forces: &[Option<f64>],
     plan_mm: &[f64],
     sol: Option<&Solution>,
+    dr: &TrussDrawing,
 ) -> CaseResult {
     let members: Vec<f64> = forces.iter().map(|f| f.unwrap_or(0.0)).collect();
     let matrix: Vec<Option<f64>> = (0..members.len())
@@ -1234,11 +1279,11 @@ pub(crate) fn plan_result(
     let mut result = case_result(
         t,
         case,
-        case.name.clone(),
         &members,
         plan_mm,
         &matrix,
         &ext.reactions,
+        dr,
     );
     result.matrix_residual = sol.map(|s| matrix::max_residual(t, case, &s.members, &s.reactions));
     result
@@ -1274,11 +1319,11 @@ pub(crate) fn check_member(
 pub(crate) fn case_result(
     t: &Truss,
     case: &LoadCase,
-    name: String,
     forces: &[f64],
     plan_mm: &[f64],
     matrix: &[Option<f64>],
     reactions: &[Vector],
+    dr: &TrussDrawing,
 ) -> CaseResult {
     // Reaction components in the solve's order.
     let mut rc = Vec::new();
@@ -1289,8 +1334,18 @@ pub(crate) fn case_result(
         }
     }
     CaseResult {
-        case: name,
-        reactions: reactions.iter().map(|r| [r.x, r.y]).collect(),
+        case: case.name.clone(),
+        reactions: t
+            .supports
+            .iter()
+            .zip(reactions)
+            .map(|(sup, r)| ReactionForce {
+                support: sup.name.clone(),
+                joint: t.joints[sup.joint].name.clone(),
+                force: [r.x, r.y],
+                plan_mm: r.norm() / dr.force_scale,
+            })
+            .collect(),
         members: t
             .members
             .iter()

@@ -28,6 +28,14 @@ impl Combination {
             .map(|&i| results[i].members[m].force)
             .sum()
     }
+
+    /// The reaction of support `k` under the sum (kg, x and y).
+    pub fn reaction(&self, results: &[CaseResult], k: usize) -> [f64; 2] {
+        self.cases.iter().fold([0.0, 0.0], |acc, &i| {
+            let f = results[i].reactions[k].force;
+            [acc[0] + f[0], acc[1] + f[1]]
+        })
+    }
 }
 
 /// Which cases are permanent and which exclude each other (indices into the cases).

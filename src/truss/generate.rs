@@ -93,12 +93,14 @@ pub fn parallel_chord(web: Web, n: usize, panel: f64, height: f64) -> Truss {
             Support {
                 joint: 0,
                 kind: SupportKind::Pinned,
+                name: "A".into(),
             },
             Support {
                 joint: n,
                 kind: SupportKind::Roller {
                     dir: Vector::new(0.0, 1.0),
                 },
+                name: "B".into(),
             },
         ],
     }

@@ -232,7 +232,7 @@ pub(crate) fn joint_polygons(
             t.members[m].name
         )));
     }
-    let result = plan_result(t, case, ext, &force, &plan_mm, sol);
+    let result = plan_result(t, case, ext, &force, &plan_mm, sol, dr);
     if !bx[0].is_finite() {
         bx = [0.0; 4];
     }

@@ -55,12 +55,25 @@ pub enum SupportKind {
 }
 
 /// A support at a joint.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Support {
     /// The joint (index).
     pub joint: usize,
     /// Pin or roller.
     pub kind: SupportKind,
+    /// The reaction's name in tables and the plan ("A", "B", or the book's own, e.g. "G" for
+    /// the counterweight of LH Aufgabe 3).
+    pub name: String,
+}
+
+/// The book's names for the reactions of supports that have none of their own: A, B, C, …
+/// in the order of the supports (LH B.4: A the left support, B the right).
+pub fn default_support_name(i: usize) -> String {
+    const NAMES: &[u8] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZ";
+    match NAMES.get(i) {
+        Some(&c) => (c as char).to_string(),
+        None => format!("R{}", i + 1),
+    }
 }
 
 /// A load at a joint (kg), x to the right, y up.

@@ -92,17 +92,17 @@ pub fn construct_pairs(
                         plan[m] += r[0].members[i].plan_mm;
                     }
                     for (sum, rv) in reactions.iter_mut().zip(&r[0].reactions) {
-                        *sum += vector(*rv);
+                        *sum += vector(rv.force);
                     }
                 }
                 out.push(case_result(
                     t,
                     case,
-                    case.name.clone(),
                     &forces,
                     &plan,
                     &vec![None; n],
                     &reactions,
+                    dr,
                 ));
             }
             PairMode::TensionOnly => {
@@ -161,15 +161,15 @@ pub fn construct_pairs(
                     out.push(case_result(
                         t,
                         case,
-                        case.name.clone(),
                         &forces,
                         &plan,
                         &mat,
                         &r[0]
                             .reactions
                             .iter()
-                            .map(|&v| vector(v))
+                            .map(|v| vector(v.force))
                             .collect::<Vec<_>>(),
+                        dr,
                     ));
                     break;
                 }
