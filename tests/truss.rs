@@ -103,7 +103,8 @@ fn load_scene(file: &str) -> graphostatik::scene::TrussProblem {
 fn aufgabe_4_against_the_book_table() {
     let p = load_scene("lh_aufgabe4_shed_roof.json");
     let (b, r) = p.construct(true).unwrap();
-    assert_eq!(all_checks_pass(&b), 4 * (3 + 7));
+    // Per case: three reaction components, by moments and by the dense solve; 7 members.
+    assert_eq!(all_checks_pass(&b), 4 * (2 * 3 + 7));
     let book: [(&str, [f64; 7]); 4] = [
         (
             "dead load",
@@ -201,8 +202,9 @@ fn aufgabe_4_against_the_book_table() {
 fn aufgabe_3_crane_against_the_book_table() {
     let p = load_scene("lh_aufgabe3_slewing_crane.json");
     let (b, r) = p.construct(true).unwrap();
-    // 7 members and the two reactions (G as a pin: two components), all checked.
-    assert_eq!(all_checks_pass(&b), 7 + 3);
+    // 7 members and the two reactions (G as a pin: two components), all checked, the
+    // reactions both by moments and against the dense solve.
+    assert_eq!(all_checks_pass(&b), 7 + 2 * 3);
     let r = &r[0];
     let book_members: [f64; 5] = [2900.0, -7100.0, -2250.0, 3000.0, -2000.0];
     let book_mm = [29.0, 71.0, 22.5, 30.0, 20.0];
@@ -335,6 +337,15 @@ fn two_thousand_joints_by_the_plan_alone() {
     // Mid-span chord force ≈ q L² / (8 h) with q = 100 kg/m, L = 1000 m.
     assert!((fmax / (100.0 * 1e6 / 8.0) - 1.0).abs() < 0.01, "{fmax}");
     assert!(r[0].plan_residual <= 1e-9 * fmax, "{}", r[0].plan_residual);
+    // The reactions are still checked, by moments: three components, all passing.
+    let by_moments: Vec<_> = b
+        .steps()
+        .iter()
+        .flat_map(|s| &s.checks)
+        .filter(|c| c.quantity.contains("by moments"))
+        .collect();
+    assert_eq!(by_moments.len(), 3);
+    assert!(by_moments.iter().all(|c| c.passed), "{by_moments:?}");
 }
 
 #[test]
@@ -605,7 +616,7 @@ fn double_diagonals_split_into_two_systems_with_half_loads() {
     let p = pairs_problem("split_half_loads");
     let (b, r) = p.construct(true).unwrap();
     // Two sub-trusses per case, each checked against its own dense solve.
-    assert_eq!(all_checks_pass(&b), 2 * 2 * (3 + 13));
+    assert_eq!(all_checks_pass(&b), 2 * 2 * (2 * 3 + 13));
     for c in &r {
         // The sum is in balance at every joint of the whole truss.
         assert!(c.plan_residual < 1e-9 * 3000.0, "{}", c.plan_residual);
@@ -1045,14 +1056,15 @@ fn three_rollers_by_culmanns_line() {
         },
     ];
     let (b, r) = run(&t, &case(loads));
-    // Three reactions read along their lines and checked, Culmann's line drawn.
+    // Three reactions read along their lines and checked by moments about the meeting point
+    // of the other two lines and by the dense solve; Culmann's line drawn.
     let roller_checks = b
         .steps()
         .iter()
         .flat_map(|s| &s.checks)
         .filter(|c| c.quantity.starts_with("roller reaction"))
         .count();
-    assert_eq!(roller_checks, 3);
+    assert_eq!(roller_checks, 6);
     assert!(b.steps().iter().any(|s| s.caption.starts_with("Culmann")));
     assert!(r[0].plan_residual < 1e-9 * 1000.0);
     // A couple on three rollers has no resultant to cut: a clear refusal.
@@ -1069,4 +1081,81 @@ fn three_rollers_by_culmanns_line() {
     let mut b = Board::new(400.0, true);
     let e = construct_truss(&mut b, &t, &case(couple), &D).unwrap_err();
     assert!(e.to_string().contains("couple"), "{e}");
+}
+
+/// The reactions by moments (LH C.2) agree with the dense solve for three rollers of which
+/// two are parallel (moments are then taken as forces across them), for a roller at an
+/// angle, and are refused (`None`) for a roller whose line passes through the pin.
+#[test]
+fn reactions_by_moments_agree_with_the_dense_solve() {
+    use graphostatik::truss::matrix::solve;
+    use graphostatik::truss::reactions::by_moments;
+    let roller = |j: usize, deg: f64| {
+        let (s, c) = graphostatik::kernel::angle::sin_cos_deg(deg);
+        Support {
+            joint: j,
+            kind: SupportKind::Roller {
+                dir: Vector::new(c, s),
+            },
+            name: default_support_name(j),
+        }
+    };
+    let mut t = small(
+        &[(0.0, 0.0), (4.0, 0.0), (2.0, 3.0)],
+        &[(0, 2), (2, 1), (0, 1)],
+        90.0,
+    );
+    let loads = vec![
+        JointLoad {
+            joint: 2,
+            force: Vector::new(300.0, -900.0),
+        },
+        down(1, 250.0),
+    ];
+    let lc = LoadCase {
+        name: "P".into(),
+        loads: loads.clone(),
+    };
+    let cases: [Vec<Support>; 2] = [
+        // Vertical at I and II (parallel), horizontal at III.
+        vec![roller(0, 90.0), roller(1, 90.0), roller(2, 0.0)],
+        // Pin at I, roller at 120° at II.
+        vec![
+            Support {
+                joint: 0,
+                kind: SupportKind::Pinned,
+                name: "A".into(),
+            },
+            roller(1, 120.0),
+        ],
+    ];
+    for supports in cases {
+        t.supports = supports;
+        let m = by_moments(&t, &loads).unwrap();
+        let sol = solve(&t, &lc).unwrap();
+        let mut col = 0;
+        for (s, sup) in t.supports.iter().enumerate() {
+            match sup.kind {
+                SupportKind::Pinned => {
+                    assert!((m[s].x - sol.reactions[col]).abs() < 1e-9);
+                    assert!((m[s].y - sol.reactions[col + 1]).abs() < 1e-9);
+                    col += 2;
+                }
+                SupportKind::Roller { dir } => {
+                    assert!((m[s].dot(&dir) - sol.reactions[col]).abs() < 1e-9);
+                    col += 1;
+                }
+            }
+        }
+    }
+    // A roller whose line passes through the pin cannot be resolved by moments.
+    t.supports = vec![
+        Support {
+            joint: 0,
+            kind: SupportKind::Pinned,
+            name: "A".into(),
+        },
+        roller(1, 0.0),
+    ];
+    assert!(by_moments(&t, &loads).is_none());
 }

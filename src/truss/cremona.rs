@@ -642,7 +642,8 @@ fn construct_case(
     for &[i, j] in slack {
         b.segment(&jp[i], &jp[j], Label::NONE, Role::Auxiliary, N_SLACK);
     }
-    // Supports lettered A, B, C from the left.
+    // Supports by their names where these are capital letters (the scene's, or A, B, C in
+    // their order), else lettered A, B, C from the left.
     let mut by_x: Vec<usize> = (0..t.supports.len()).collect();
     by_x.sort_by(|&a, &c| {
         let (pa, pc) = (
@@ -654,6 +655,11 @@ fn construct_case(
     let mut letter = vec![""; t.supports.len()];
     for (rank, &si) in by_x.iter().enumerate() {
         letter[si] = ["A", "B", "C"].get(rank).copied().unwrap_or("S");
+    }
+    for (si, sup) in t.supports.iter().enumerate() {
+        if let Some(l) = LETTERS.iter().find(|l| **l == sup.name) {
+            letter[si] = l;
+        }
     }
     // Each support's reaction line (a roller's) or point (a pin's).
     let mut rlines: Vec<Option<H<Line>>> = vec![None; t.supports.len()];
@@ -780,7 +786,17 @@ fn construct_case(
                 reactions[si] = (to.g - from.g) * fs;
             }
         }
-        read_reactions(b, t, &segs, &rlines, sol, maxload, fs)?;
+        let by_moments = super::reactions::by_moments(t, &loads);
+        read_reactions(
+            b,
+            t,
+            &segs,
+            &rlines,
+            sol,
+            by_moments.as_deref(),
+            maxload,
+            fs,
+        )?;
     }
     // The external forces at their joints: loads, then the reactions.
     let mut ext: Vec<(usize, Vector)> = loads.iter().map(|l| (l.joint, l.force)).collect();
@@ -964,19 +980,23 @@ fn culmann(
     ])
 }
 
-/// Reads each reaction off the force plan and checks it against the dense solve: a roller's
-/// along its line, a pin's by its horizontal and vertical parts.
+/// Reads each reaction off the force plan and checks it by the moment equations of the whole
+/// truss (LH C.2) and against the dense solve: a roller's along its line, a pin's by its
+/// horizontal and vertical parts.
+#[allow(clippy::too_many_arguments)]
 fn read_reactions(
     b: &mut Board,
     t: &Truss,
     segs: &[Option<(H<Point>, H<Point>)>],
     rlines: &[Option<H<Line>>],
     sol: Option<&Solution>,
+    by_moments: Option<&[Vector]>,
     reference: f64,
     fs: f64,
 ) -> Result<(), ConstructionError> {
     let kg = Scale::kg(fs);
     let f = "joint equilibrium, dense LU (nalgebra)";
+    let fm = "moments about the other supports (LH C.2)";
     let mut col = 0;
     for (si, sup) in t.supports.iter().enumerate() {
         let first_col = col;
@@ -991,6 +1011,16 @@ fn read_reactions(
             SupportKind::Roller { .. } => {
                 let line = rlines[si].expect("a roller has a line");
                 let v = b.measure(&from, &to, &line, kg, Label::quiet("R", 0), N_REACT);
+                if let (Some(m), SupportKind::Roller { dir }) = (by_moments, sup.kind) {
+                    b.check(
+                        &v,
+                        "roller reaction by moments",
+                        "kg",
+                        fm,
+                        reference,
+                        || m[si].dot(&dir),
+                    );
+                }
                 if let Some(sol) = sol {
                     b.check(
                         &v,
@@ -1019,6 +1049,24 @@ fn read_reactions(
                 )?;
                 let ax = b.measure(&from, &to, &xa, kg, Label::quiet("Ax", 0), N_REACT);
                 let ay = b.measure(&from, &to, &ya, kg, Label::quiet("Ay", 0), N_REACT);
+                if let Some(m) = by_moments {
+                    b.check(
+                        &ax,
+                        "pin reaction by moments, horizontal",
+                        "kg",
+                        fm,
+                        reference,
+                        || m[si].x,
+                    );
+                    b.check(
+                        &ay,
+                        "pin reaction by moments, vertical",
+                        "kg",
+                        fm,
+                        reference,
+                        || m[si].y,
+                    );
+                }
                 if let Some(sol) = sol {
                     b.check(&ax, "pin reaction, horizontal", "kg", f, reference, || {
                         sol.reactions[first_col]
@@ -1276,15 +1324,7 @@ pub(crate) fn plan_result(
     let matrix: Vec<Option<f64>> = (0..members.len())
         .map(|m| sol.map(|s| s.members[m]))
         .collect();
-    let mut result = case_result(
-        t,
-        case,
-        &members,
-        plan_mm,
-        &matrix,
-        &ext.reactions,
-        dr,
-    );
+    let mut result = case_result(t, case, &members, plan_mm, &matrix, &ext.reactions, dr);
     result.matrix_residual = sol.map(|s| matrix::max_residual(t, case, &s.members, &s.reactions));
     result
 }

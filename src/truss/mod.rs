@@ -9,7 +9,8 @@
 //!   determinate or over-determinate?) and the dense solve that every plan is checked against;
 //! - [`faces`]: the truss drawn as a plane graph, its faces, and the outer boundary along
 //!   which the external forces are named (Bow's notation);
-//! - [`cremona`]: the reactions and the combined Cremona plan, every joint polygon a step.
+//! - [`cremona`]: the reactions and the combined Cremona plan, every joint polygon a step;
+//! - [`reactions`]: the reactions by the moment equations, the check on the graphic ones.
 
 pub mod cremona;
 pub mod envelope;
@@ -17,6 +18,7 @@ pub mod faces;
 pub mod generate;
 mod joints;
 pub mod matrix;
+pub mod reactions;
 pub mod redundant;
 pub mod roof;
 
