@@ -85,6 +85,18 @@ fn small(joints: &[(f64, f64)], members: &[(usize, usize)], roller_deg: f64) -> 
     }
 }
 
+/// A roller at joint `j` whose reaction acts at `deg` degrees, named by the joint's index.
+fn roller(j: usize, deg: f64) -> Support {
+    let (s, c) = graphostatik::kernel::angle::sin_cos_deg(deg);
+    Support {
+        joint: j,
+        kind: SupportKind::Roller {
+            dir: Vector::new(c, s),
+        },
+        name: default_support_name(j),
+    }
+}
+
 fn load_scene(file: &str) -> graphostatik::scene::TrussProblem {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("scenes")
@@ -1126,16 +1138,6 @@ fn three_rollers_by_culmanns_line() {
         &[(0, 2), (2, 1), (0, 1)],
         90.0,
     );
-    let roller = |j: usize, deg: f64| {
-        let (s, c) = graphostatik::kernel::angle::sin_cos_deg(deg);
-        Support {
-            joint: j,
-            kind: SupportKind::Roller {
-                dir: Vector::new(c, s),
-            },
-            name: graphostatik::truss::default_support_name(j),
-        }
-    };
     t.supports = vec![roller(0, 90.0), roller(1, 120.0), roller(2, 0.0)];
     assert_eq!(analyse(&t).determinacy, Determinacy::Determinate);
     let loads = vec![
@@ -1180,16 +1182,6 @@ fn three_rollers_by_culmanns_line() {
 fn reactions_by_moments_agree_with_the_dense_solve() {
     use graphostatik::truss::matrix::solve;
     use graphostatik::truss::reactions::by_moments;
-    let roller = |j: usize, deg: f64| {
-        let (s, c) = graphostatik::kernel::angle::sin_cos_deg(deg);
-        Support {
-            joint: j,
-            kind: SupportKind::Roller {
-                dir: Vector::new(c, s),
-            },
-            name: default_support_name(j),
-        }
-    };
     let mut t = small(
         &[(0.0, 0.0), (4.0, 0.0), (2.0, 3.0)],
         &[(0, 2), (2, 1), (0, 1)],
