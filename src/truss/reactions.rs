@@ -18,9 +18,9 @@
 use super::{JointLoad, SupportKind, Truss};
 use crate::kernel::{cross, Point, Vector};
 
-/// A lever arm (or a sine between two reaction lines, times the truss size) below this
-/// fraction of the truss's size counts as zero: the supports then cannot be resolved by
-/// moments. Relative to the largest joint coordinate spread, like the kernel's lengths.
+/// A lever arm below this fraction of the truss's size ([`Truss::size`], like the kernel's
+/// lengths), or a sine between two reaction lines below it, counts as zero: the supports
+/// then cannot be resolved by moments.
 pub const LEVER_REL: f64 = 1e-12;
 
 /// The reaction of every support (in the order of the supports) from the moment and force
@@ -54,8 +54,7 @@ pub fn by_moments(t: &Truss, loads: &[JointLoad]) -> Option<Vec<Vector>> {
             .map(|l| cross(&(at(l.joint) - q), &l.force))
             .sum()
     };
-    let size = size(t);
-    let small = LEVER_REL * size;
+    let small = LEVER_REL * t.size();
     let pins: Vec<usize> = (0..t.supports.len())
         .filter(|&s| t.supports[s].kind == SupportKind::Pinned)
         .collect();
@@ -86,7 +85,7 @@ pub fn by_moments(t: &Truss, loads: &[JointLoad]) -> Option<Vec<Vector>> {
                     at(t.supports[k].joint),
                 );
                 let sine = cross(&di, &dj);
-                let r = if sine.abs() * size <= small {
+                let r = if sine.abs() <= LEVER_REL {
                     // Parallel lines i and j: the forces across them.
                     let n = Vector::new(-di.y, di.x);
                     let across = dk.dot(&n);
@@ -110,17 +109,4 @@ pub fn by_moments(t: &Truss, loads: &[JointLoad]) -> Option<Vec<Vector>> {
         _ => return None,
     }
     Some(out)
-}
-
-/// The spread of the joints (m): the scale of lengths and lever arms.
-fn size(t: &Truss) -> f64 {
-    let (mut lo, mut hi) = (
-        Vector::repeat(f64::INFINITY),
-        Vector::repeat(f64::NEG_INFINITY),
-    );
-    for j in &t.joints {
-        lo = lo.inf(&j.at.coords);
-        hi = hi.sup(&j.at.coords);
-    }
-    (hi - lo).amax().max(f64::MIN_POSITIVE)
 }
