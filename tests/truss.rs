@@ -69,18 +69,8 @@ fn small(joints: &[(f64, f64)], members: &[(usize, usize)], roller_deg: f64) -> 
             })
             .collect(),
         supports: vec![
-            Support {
-                joint: 0,
-                kind: SupportKind::Pinned,
-                name: "A".into(),
-            },
-            Support {
-                joint: 1,
-                kind: SupportKind::Roller {
-                    dir: Vector::new(c, s),
-                },
-                name: "B".into(),
-            },
+            Support::pinned(0, "A"),
+            Support::roller(1, Vector::new(c, s), "B"),
         ],
     }
 }
@@ -88,13 +78,7 @@ fn small(joints: &[(f64, f64)], members: &[(usize, usize)], roller_deg: f64) -> 
 /// A roller at joint `j` whose reaction acts at `deg` degrees, named by the joint's index.
 fn roller(j: usize, deg: f64) -> Support {
     let (s, c) = graphostatik::kernel::angle::sin_cos_deg(deg);
-    Support {
-        joint: j,
-        kind: SupportKind::Roller {
-            dir: Vector::new(c, s),
-        },
-        name: default_support_name(j),
-    }
+    Support::roller(j, Vector::new(c, s), default_support_name(j))
 }
 
 fn load_scene(file: &str) -> graphostatik::scene::TrussProblem {
@@ -1202,14 +1186,7 @@ fn reactions_by_moments_agree_with_the_dense_solve() {
         // Vertical at I and II (parallel), horizontal at III.
         vec![roller(0, 90.0), roller(1, 90.0), roller(2, 0.0)],
         // Pin at I, roller at 120° at II.
-        vec![
-            Support {
-                joint: 0,
-                kind: SupportKind::Pinned,
-                name: "A".into(),
-            },
-            roller(1, 120.0),
-        ],
+        vec![Support::pinned(0, "A"), roller(1, 120.0)],
     ];
     for supports in cases {
         t.supports = supports;
@@ -1231,13 +1208,6 @@ fn reactions_by_moments_agree_with_the_dense_solve() {
         }
     }
     // A roller whose line passes through the pin cannot be resolved by moments.
-    t.supports = vec![
-        Support {
-            joint: 0,
-            kind: SupportKind::Pinned,
-            name: "A".into(),
-        },
-        roller(1, 0.0),
-    ];
+    t.supports = vec![Support::pinned(0, "A"), roller(1, 0.0)];
     assert!(by_moments(&t, &loads).is_none());
 }

@@ -9,7 +9,7 @@ use crate::truss::envelope::{Combination, EnvelopeRule};
 use crate::truss::matrix::{self, Determinacy};
 use crate::truss::redundant::{self, PairMode};
 use crate::truss::roof;
-use crate::truss::{Joint, JointLoad, LoadCase, Member, Support, SupportKind, Truss};
+use crate::truss::{Joint, JointLoad, LoadCase, Member, Support, Truss};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
@@ -103,6 +103,15 @@ pub struct SupportSpec {
     /// The reaction's name in the tables (default "A", "B", "C" in the order of the supports).
     #[serde(default)]
     pub name: Option<String>,
+}
+
+impl SupportSpec {
+    /// The reaction's name: its own, or the book's A, B, C by its place `i` in the list.
+    fn reaction_name(&self, i: usize) -> String {
+        self.name
+            .clone()
+            .unwrap_or_else(|| crate::truss::default_support_name(i))
+    }
 }
 
 /// Pin or roller.
@@ -411,11 +420,8 @@ impl TrussScene {
             }
         }
         let mut reaction_names: HashMap<String, usize> = HashMap::new();
-        for s in 0..self.supports.len() {
-            let name = self.supports[s]
-                .name
-                .clone()
-                .unwrap_or_else(|| crate::truss::default_support_name(s));
+        for (s, sup) in self.supports.iter().enumerate() {
+            let name = sup.reaction_name(s);
             if name.trim().is_empty() {
                 return Err(bad(
                     format!("supports[{s}].name"),
@@ -712,22 +718,16 @@ impl TrussScene {
                 .supports
                 .iter()
                 .enumerate()
-                .map(|(i, s)| Support {
-                    name: s
-                        .name
-                        .clone()
-                        .unwrap_or_else(|| crate::truss::default_support_name(i)),
-                    joint: index[s.joint.as_str()],
-                    kind: match s.kind {
-                        SupportKindSpec::Pinned => SupportKind::Pinned,
+                .map(|(i, s)| {
+                    let (joint, name) = (index[s.joint.as_str()], s.reaction_name(i));
+                    match s.kind {
+                        SupportKindSpec::Pinned => Support::pinned(joint, name),
                         SupportKindSpec::Roller => {
                             let (sn, c) =
                                 crate::kernel::angle::sin_cos_deg(s.direction_deg.unwrap_or(90.0));
-                            SupportKind::Roller {
-                                dir: Vector::new(c, sn),
-                            }
+                            Support::roller(joint, Vector::new(c, sn), name)
                         }
-                    },
+                    }
                 })
                 .collect(),
         }

@@ -342,9 +342,8 @@ fn supports(t: &Truss) -> Result<Supports, ConstructionError> {
 ///     joints: vec![j("I", 0.0, 0.0), j("II", 2.0, 0.0), j("III", 1.0, 1.0)],
 ///     members: vec![m("1", 0, 2), m("2", 2, 1), m("3", 0, 1)],
 ///     supports: vec![
-///         Support { joint: 0, kind: SupportKind::Pinned, name: "A".into() },
-///         Support { joint: 1, kind: SupportKind::Roller { dir: Vector::new(0.0, 1.0) },
-///             name: "B".into() },
+///         Support::pinned(0, "A"),
+///         Support::roller(1, Vector::new(0.0, 1.0), "B"),
 ///     ],
 /// };
 /// let case = LoadCase { name: "P".into(),

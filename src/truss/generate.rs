@@ -4,7 +4,7 @@
 //! Joints are named B0 … Bn along the bottom chord and T… along the top; members are
 //! numbered from 1.
 
-use super::{Joint, Member, Support, SupportKind, Truss};
+use super::{Joint, Member, Support, Truss};
 use crate::kernel::{Point, Vector};
 
 /// The web of a parallel-chord truss.
@@ -90,18 +90,8 @@ pub fn parallel_chord(web: Web, n: usize, panel: f64, height: f64) -> Truss {
         joints,
         members,
         supports: vec![
-            Support {
-                joint: 0,
-                kind: SupportKind::Pinned,
-                name: "A".into(),
-            },
-            Support {
-                joint: n,
-                kind: SupportKind::Roller {
-                    dir: Vector::new(0.0, 1.0),
-                },
-                name: "B".into(),
-            },
+            Support::pinned(0, "A"),
+            Support::roller(n, Vector::new(0.0, 1.0), "B"),
         ],
     }
 }

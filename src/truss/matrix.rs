@@ -115,9 +115,8 @@ pub fn equilibrium_matrix(t: &Truss) -> DMatrix<f64> {
 ///     joints: vec![j("I", 0.0, 0.0), j("II", 2.0, 0.0), j("III", 1.0, 1.0)],
 ///     members: vec![m("1", 0, 1), m("2", 1, 2), m("3", 2, 0)],
 ///     supports: vec![
-///         Support { joint: 0, kind: SupportKind::Pinned, name: "A".into() },
-///         Support { joint: 1, kind: SupportKind::Roller { dir: Vector::new(0.0, 1.0) },
-///             name: "B".into() },
+///         Support::pinned(0, "A"),
+///         Support::roller(1, Vector::new(0.0, 1.0), "B"),
 ///     ],
 /// };
 /// assert_eq!(analyse(&t).determinacy, Determinacy::Determinate);

@@ -68,6 +68,27 @@ pub struct Support {
     pub name: String,
 }
 
+impl Support {
+    /// A pin (festes Auflager) at `joint`.
+    pub fn pinned(joint: usize, name: impl Into<String>) -> Support {
+        Support {
+            joint,
+            kind: SupportKind::Pinned,
+            name: name.into(),
+        }
+    }
+
+    /// A roller (bewegliches Auflager) at `joint` whose reaction acts along the unit vector
+    /// `dir`.
+    pub fn roller(joint: usize, dir: Vector, name: impl Into<String>) -> Support {
+        Support {
+            joint,
+            kind: SupportKind::Roller { dir },
+            name: name.into(),
+        }
+    }
+}
+
 /// The book's names for the reactions of supports that have none of their own: A, B, C, …
 /// in the order of the supports (LH B.4: A the left support, B the right).
 pub fn default_support_name(i: usize) -> String {

@@ -36,9 +36,8 @@ pub const LEVER_REL: f64 = 1e-12;
 ///     joints: vec![joint("I", 0.0, 0.0), joint("II", 6.0, 0.0), joint("III", 2.0, 2.0)],
 ///     members: vec![],
 ///     supports: vec![
-///         Support { joint: 0, kind: SupportKind::Pinned, name: "A".into() },
-///         Support { joint: 1, kind: SupportKind::Roller { dir: Vector::new(0.0, 1.0) },
-///             name: "B".into() },
+///         Support::pinned(0, "A"),
+///         Support::roller(1, Vector::new(0.0, 1.0), "B"),
 ///     ],
 /// };
 /// // 600 kg at a third of the span: B takes a third, A two thirds.
