@@ -26,7 +26,7 @@
 
 use super::faces::{self, dest, origin, PlaneGraph};
 use super::matrix::{self, Solution};
-use super::{JointLoad, LoadCase, MemberForce, SupportKind, Truss};
+use super::{JointLoad, LoadCase, MemberForce, SupportKind, Truss, LETTERS};
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{
     note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H, TABLE_BLOCK_ROWS,
@@ -245,13 +245,6 @@ const ROMAN: [&str; 40] = [
     "XXXVIII", "XXXIX", "XL",
 ];
 
-/// A joint named with a roman numeral keeps its name in the figure; others are K₁, K₂, ….
-/// Capital letters, the other names the books give joints (W for a winch, A for a support).
-const LETTERS: [&str; 26] = [
-    "A", "B", "C", "D", "E", "F", "G", "H", "I", "J", "K", "L", "M", "N", "O", "P", "Q", "R", "S",
-    "T", "U", "V", "W", "X", "Y", "Z",
-];
-
 /// A joint's label: its own name where it is a Roman numeral or a capital letter, else K with
 /// its number.
 fn joint_label(t: &Truss, j: usize) -> Label {
@@ -259,6 +252,16 @@ fn joint_label(t: &Truss, j: usize) -> Label {
     match ROMAN.iter().chain(&LETTERS).find(|r| **r == name) {
         Some(r) => Label::plain(r),
         None => Label::indexed("K", j as u32 + 1),
+    }
+}
+
+/// A support's label: its name where that is a capital letter (the scene's own, or the
+/// default A, B, C, …), else R with its number, as [`default_support_name`](super::default_support_name) names those
+/// beyond Z.
+fn support_label(t: &Truss, si: usize) -> Label {
+    match LETTERS.iter().find(|l| **l == t.supports[si].name) {
+        Some(l) => Label::plain(l),
+        None => Label::indexed("R", si as u32 + 1),
     }
 }
 
@@ -641,25 +644,6 @@ fn construct_case(
     for &[i, j] in slack {
         b.segment(&jp[i], &jp[j], Label::NONE, Role::Auxiliary, N_SLACK);
     }
-    // Supports by their names where these are capital letters (the scene's, or A, B, C in
-    // their order), else lettered A, B, C from the left.
-    let mut by_x: Vec<usize> = (0..t.supports.len()).collect();
-    by_x.sort_by(|&a, &c| {
-        let (pa, pc) = (
-            t.joints[t.supports[a].joint].at,
-            t.joints[t.supports[c].joint].at,
-        );
-        pa.x.total_cmp(&pc.x).then(a.cmp(&c))
-    });
-    let mut letter = vec![""; t.supports.len()];
-    for (rank, &si) in by_x.iter().enumerate() {
-        letter[si] = ["A", "B", "C"].get(rank).copied().unwrap_or("S");
-    }
-    for (si, sup) in t.supports.iter().enumerate() {
-        if let Some(l) = LETTERS.iter().find(|l| **l == sup.name) {
-            letter[si] = l;
-        }
-    }
     // Each support's reaction line (a roller's) or point (a pin's).
     let mut rlines: Vec<Option<H<Line>>> = vec![None; t.supports.len()];
     for (si, s) in t.supports.iter().enumerate() {
@@ -668,18 +652,13 @@ fn construct_case(
                 rlines[si] = Some(b.line_dir(
                     &jp[s.joint],
                     dir,
-                    Label::plain(letter[si]),
+                    support_label(t, si),
                     Role::Guide,
                     N_SUPPORT,
                 )?);
             }
             SupportKind::Pinned => {
-                b.point(
-                    jp[s.joint].g,
-                    Label::plain(letter[si]),
-                    Role::Guide,
-                    N_SUPPORT,
-                );
+                b.point(jp[s.joint].g, support_label(t, si), Role::Guide, N_SUPPORT);
             }
         }
     }
@@ -781,7 +760,7 @@ fn construct_case(
         // its horizontal and vertical parts.
         for (si, seg) in segs.iter().enumerate() {
             if let Some((from, to)) = seg {
-                b.segment(from, to, Label::plain(letter[si]), Role::Force, N_REACT);
+                b.segment(from, to, support_label(t, si), Role::Force, N_REACT);
                 reactions[si] = (to.g - from.g) * fs;
             }
         }
@@ -1007,10 +986,10 @@ fn read_reactions(
             continue;
         };
         match sup.kind {
-            SupportKind::Roller { .. } => {
+            SupportKind::Roller { dir } => {
                 let line = rlines[si].expect("a roller has a line");
                 let v = b.measure(&from, &to, &line, kg, Label::quiet("R", 0), N_REACT);
-                if let (Some(m), SupportKind::Roller { dir }) = (by_moments, sup.kind) {
+                if let Some(m) = by_moments {
                     b.check(
                         &v,
                         "roller reaction by moments",

@@ -89,12 +89,17 @@ impl Support {
     }
 }
 
+/// Capital letters: the books' names of supports (A, B) and of some joints (W, a winch).
+pub(crate) const LETTERS: [&str; 26] = [
+    "A", "B", "C", "D", "E", "F", "G", "H", "I", "J", "K", "L", "M", "N", "O", "P", "Q", "R", "S",
+    "T", "U", "V", "W", "X", "Y", "Z",
+];
+
 /// The book's names for the reactions of supports that have none of their own: A, B, C, …
-/// in the order of the supports (LH B.4: A the left support, B the right).
+/// in the order of the supports (LH B.4: A the left support, B the right), R27 on.
 pub fn default_support_name(i: usize) -> String {
-    const NAMES: &[u8] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZ";
-    match NAMES.get(i) {
-        Some(&c) => (c as char).to_string(),
+    match LETTERS.get(i) {
+        Some(l) => l.to_string(),
         None => format!("R{}", i + 1),
     }
 }
