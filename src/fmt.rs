@@ -42,3 +42,27 @@ pub fn sci(x: f64) -> String {
         format!("{:.2e}", x)
     }
 }
+
+/// A user's string as an error message quotes it: on one line (control characters escaped)
+/// and at most `max` characters, an ellipsis marking the cut.
+///
+/// ```
+/// use graphostatik::fmt::clip;
+/// assert_eq!(clip("U1\nU2", 10), "U1\\nU2");
+/// assert_eq!(clip("abcdefgh", 4), "abcd…");
+/// ```
+pub fn clip(s: &str, max: usize) -> String {
+    let mut out = String::new();
+    for (k, c) in s.chars().enumerate() {
+        if k == max {
+            out.push('…');
+            break;
+        }
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}

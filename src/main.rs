@@ -3,7 +3,7 @@
 use clap::{Parser, Subcommand};
 use graphostatik::io::write_atomic;
 use graphostatik::render;
-use graphostatik::scene::{AnyProblem, AnyScene};
+use graphostatik::scene::{AnyProblem, AnyScene, TrussScene, REGISTRY};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -57,6 +57,8 @@ enum Command {
     },
     /// Print the JSON Schema of the scene format.
     Schema,
+    /// List the procedures a scene can name, with what each constructs and its outputs.
+    Procedures,
 }
 
 /// Formats of the member-force table.
@@ -189,7 +191,7 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
         }
         Command::Forces { scene, format } => {
             let p = load(&scene)?;
-            let AnyProblem::Truss(t) = &p else {
+            let Some(t) = p.get::<TrussScene>() else {
                 return Err(Fail(format!(
                     "{}: `forces` needs a truss scene (\"procedure\": \"truss\")",
                     scene.display()
@@ -211,6 +213,17 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
                     forces::json(&results, &t.combinations, t.envelope.as_ref()) + "\n"
                 }
             };
+            say(&text)?;
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Procedures => {
+            let mut text = String::new();
+            for e in REGISTRY {
+                text += &format!("{:<14} {}\n", e.name, e.about);
+                if !e.outputs.is_empty() {
+                    text += &format!("{:<14} outputs: {}\n", "", e.outputs.join(", "));
+                }
+            }
             say(&text)?;
             Ok(ExitCode::SUCCESS)
         }

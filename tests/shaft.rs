@@ -1,7 +1,7 @@
 //! Shafts (LH C.7-8): moments in two planes and the ideal moment against Gl. 13.
 
 use graphostatik::protocol::Board;
-use graphostatik::scene::AnyScene;
+use graphostatik::scene::{AnyScene, ShaftScene};
 use graphostatik::statics::shaft::*;
 use graphostatik::statics::{BeamDrawing, PointLoad};
 use proptest::prelude::*;
@@ -141,9 +141,8 @@ fn bundled_transmission_shaft_scenes() {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("scenes")
             .join(file);
-        let AnyScene::Shaft(scene) = AnyScene::load(&path).unwrap() else {
-            panic!("not a shaft")
-        };
+        let any = AnyScene::load(&path).unwrap();
+        let scene: &ShaftScene = any.get().expect("a shaft scene");
         let p = scene.problem();
         let (_, rows) = p.construct(true).unwrap();
         let at = rows.iter().find(|r| (r.x - 0.45).abs() < 1e-12).unwrap();
@@ -164,9 +163,8 @@ fn aufgabe_7_crankshaft_reproduces_the_printed_ordinates_and_diameters() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("scenes")
         .join("lh_aufgabe7_crankshaft.json");
-    let AnyScene::Shaft(scene) = AnyScene::load(&path).unwrap() else {
-        panic!("not a shaft")
-    };
+    let any = AnyScene::load(&path).unwrap();
+    let scene: &ShaftScene = any.get().expect("a shaft scene");
     let p = scene.problem();
     let (board, rows) = p.construct(true).unwrap();
     assert!(board

@@ -3,7 +3,7 @@
 
 use graphostatik::kernel::{Point, Vector};
 use graphostatik::protocol::Board;
-use graphostatik::scene::AnyScene;
+use graphostatik::scene::{AnyScene, TrussScene};
 use graphostatik::truss::cremona::{construct_plan, construct_truss, CaseResult, TrussDrawing};
 use graphostatik::truss::generate::{parallel_chord, Web};
 use graphostatik::truss::matrix::{analyse, Determinacy};
@@ -85,10 +85,9 @@ fn load_scene(file: &str) -> graphostatik::scene::TrussProblem {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("scenes")
         .join(file);
-    match AnyScene::load(&path).unwrap() {
-        AnyScene::Truss(s) => s.problem(),
-        _ => panic!("not a truss"),
-    }
+    let any = AnyScene::load(&path).unwrap();
+    let scene: &TrussScene = any.get().expect("a truss scene");
+    scene.problem()
 }
 
 /// LH Aufgabe 4, table of member forces (kg, tension +). The book reads its plans at an
@@ -531,9 +530,8 @@ fn a_moving_load_gives_one_case_per_position_and_an_envelope() {
         "supports": [ { "joint": "B0", "kind": "pinned" }, { "joint": "B3", "kind": "roller", "direction_deg": 90 } ],
         "load_cases": [ { "name": "dead", "loads": [ { "joint": "B1", "kg": 500 }, { "joint": "B2", "kg": 500 } ] } ],
         "moving_loads": [ { "name": "crane", "path": ["B0", "B1", "B2", "B3"], "loads_kg": [3000, 1000] } ] }"#;
-    let AnyScene::Truss(s) = AnyScene::from_json(scene, "m.json").unwrap() else {
-        panic!()
-    };
+    let any = AnyScene::from_json(scene, "m.json").unwrap();
+    let s: &TrussScene = any.get().expect("a truss scene");
     let p = s.problem();
     // The train of two loads takes three positions on four joints.
     let names: Vec<_> = p.cases.iter().map(|c| c.name.as_str()).collect();
@@ -601,10 +599,9 @@ fn double_diagonal_scene(mode: &str) -> String {
 }
 
 fn pairs_problem(mode: &str) -> graphostatik::scene::TrussProblem {
-    match AnyScene::from_json(&double_diagonal_scene(mode), "d.json").unwrap() {
-        AnyScene::Truss(s) => s.problem(),
-        _ => panic!(),
-    }
+    let any = AnyScene::from_json(&double_diagonal_scene(mode), "d.json").unwrap();
+    let scene: &TrussScene = any.get().expect("a truss scene");
+    scene.problem()
 }
 
 #[test]
@@ -688,9 +685,8 @@ fn aufgabe_4_loads_from_the_roof_formulas() {
         "bay_m": 3, "truss_kg_per_m2": 50, "wind_k_kg_per_m2": 150,
         "slopes": [ { "joints": ["I", "II"], "cover_kg_per_m2": 30 },
                     { "joints": ["II", "III", "IV"], "cover_kg_per_m2": 40 } ] });
-    let AnyScene::Truss(s) = AnyScene::from_json(&v.to_string(), "roof.json").unwrap() else {
-        panic!()
-    };
+    let any = AnyScene::from_json(&v.to_string(), "roof.json").unwrap();
+    let s: &TrussScene = any.get().expect("a truss scene");
     let p = s.problem();
     let names: Vec<_> = p.cases.iter().map(|c| c.name.as_str()).collect();
     assert_eq!(names, ["dead load", "wind left", "wind right", "snow"]);

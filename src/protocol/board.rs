@@ -100,6 +100,12 @@ pub struct Board {
     tolerance: Tolerance,
     #[serde(skip)]
     recording: bool,
+    /// The tolerance follows the extent of the construction (no figure size was given).
+    #[serde(skip)]
+    follows_extent: bool,
+    /// Bounding box of what has been placed, where the tolerance follows it.
+    #[serde(skip)]
+    extent: Option<[f64; 4]>,
     #[serde(skip)]
     context: Option<std::sync::Arc<str>>,
     #[serde(skip)]
@@ -109,10 +115,30 @@ pub struct Board {
 }
 
 impl Board {
-    /// A board for a figure of the given size (mm); `recording` keeps steps and checks.
+    /// A board that records every step, object and check, its length tolerance taken from
+    /// the construction: relative to the extent of what has been placed on it so far.
+    pub fn recording() -> Board {
+        Board::sized(None, true)
+    }
+
+    /// A board that only computes (nothing recorded, no checks evaluated): the fast path of
+    /// the same procedure code. Its tolerance follows the construction as on
+    /// [`Board::recording`].
+    pub fn silent() -> Board {
+        Board::sized(None, false)
+    }
+
+    /// A board for a figure of a known size (mm on the sheet), which fixes its length
+    /// tolerance up front; `recording` keeps steps and checks.
     pub fn new(figure_size: f64, recording: bool) -> Board {
+        Board::sized(Some(figure_size), recording)
+    }
+
+    fn sized(figure_size: Option<f64>, recording: bool) -> Board {
         Board {
-            tolerance: Tolerance::for_figure(figure_size),
+            tolerance: Tolerance::for_figure(figure_size.unwrap_or(0.0)),
+            follows_extent: figure_size.is_none(),
+            extent: None,
             recording,
             context: None,
             next_step: 0,
@@ -126,9 +152,43 @@ impl Board {
         self.tolerance
     }
 
+    /// Grows the extent by a point, where the tolerance follows the construction.
+    fn grow(&mut self, p: &Point) {
+        if !(self.follows_extent && p.x.is_finite() && p.y.is_finite()) {
+            return;
+        }
+        let e = self.extent.get_or_insert([p.x, p.y, p.x, p.y]);
+        *e = [e[0].min(p.x), e[1].min(p.y), e[2].max(p.x), e[3].max(p.y)];
+        self.tolerance = Tolerance::for_figure((e[2] - e[0]).max(e[3] - e[1]));
+    }
+
     /// Whether steps are recorded.
     pub fn is_recording(&self) -> bool {
         self.recording
+    }
+
+    /// Every analytic check on the board, in step order.
+    ///
+    /// ```
+    /// use graphostatik::protocol::{note, Board, Label, Role, Scale, Topic};
+    /// use graphostatik::kernel::Point;
+    /// let mut b = Board::recording();
+    /// let n = note("a length", None, "", Topic::Setup);
+    /// let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, n);
+    /// let a = b.point(Point::new(3.0, 4.0), Label::plain("A"), Role::Given, n);
+    /// let x = b.line_through(&o, &a, Label::NONE, Role::Construction, n).unwrap();
+    /// let d = b.measure(&o, &a, &x, Scale { per_mm: 1.0, unit: "mm" }, Label::plain("d"), n);
+    /// b.check(&d, "OA", "mm", "Pythagoras", 5.0, || 5.0);
+    /// assert_eq!(b.checks().count(), 1);
+    /// assert!(b.all_passed());
+    /// ```
+    pub fn checks(&self) -> impl Iterator<Item = &Check> {
+        self.steps.iter().flat_map(|s| s.checks.iter())
+    }
+
+    /// Whether every check on the board passed (true for a board without checks).
+    pub fn all_passed(&self) -> bool {
+        self.checks().all(|c| c.passed)
     }
 
     /// The recorded steps.
@@ -253,6 +313,7 @@ impl Board {
 
     /// A given point.
     pub fn point(&mut self, p: Point, label: Label, role: Role, note: Note) -> H<Point> {
+        self.grow(&p);
         self.begin(StepKind::Given, note, &[]);
         let id = self.add(label, role, || Geom::Point { at: p });
         H { id, g: p }
@@ -350,6 +411,8 @@ impl Board {
         note: Note,
     ) -> Result<H<Circle>, ConstructionError> {
         let c = self.prim(Circle::new(center.g, radius), note)?;
+        self.grow(&(c.center + Vector::new(c.radius, c.radius)));
+        self.grow(&(c.center - Vector::new(c.radius, c.radius)));
         let kind = if note.topic == Topic::Setup {
             StepKind::Given
         } else {
@@ -447,6 +510,7 @@ impl Board {
             });
         }
         let p = from.g + along.g.dir * length;
+        self.grow(&p);
         self.begin(StepKind::LayOff, note, &[from.id, along.id]);
         let a = from.g;
         let id = self.add(label, Role::Given, || Geom::Point { at: p });

@@ -4,9 +4,11 @@
 //! every view (figure, check table, walk-through, benchmark) reads it.
 
 mod board;
+mod figure;
 mod step;
 
 pub use board::{Board, ConstructionError, Cut, Scale, H};
+pub use figure::{FigureMeta, ScaleBar};
 pub use step::{
     note, Check, Geom, Ids, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Topic,
     TABLE_BLOCK_ROWS,

@@ -4,33 +4,13 @@ use super::style::class as class_of;
 use super::style::*;
 use crate::fmt::num;
 use crate::kernel::{Point, Vector};
-use crate::protocol::{Board, Geom, Label, Object, Role, Step, StepId, TABLE_BLOCK_ROWS};
+use crate::protocol::{
+    Board, FigureMeta, Geom, Label, Object, Role, Step, StepId, TABLE_BLOCK_ROWS,
+};
 use svg::node::element::{
     Circle as SCircle, Definitions, Group, Line as SLine, Marker, Path, Style, TSpan, Text, Title,
 };
 use svg::Document;
-
-/// A scale bar written under the figure: `per_mm` quantity units per mm of sheet.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ScaleBar {
-    /// Name written before the bar ("Längenmaßstab 1 : 10").
-    pub name: String,
-    /// Quantity per mm of sheet.
-    pub per_mm: f64,
-    /// Unit written at the bar's end ("mm", "kg", "m/s").
-    pub unit: String,
-}
-
-/// What the sheet says besides the construction: title, source, scales.
-#[derive(Debug, Clone, PartialEq)]
-pub struct FigureMeta {
-    /// The title.
-    pub title: String,
-    /// The book reference.
-    pub source: String,
-    /// The scale bars.
-    pub scales: Vec<ScaleBar>,
-}
 
 /// Sheet coordinates (mm, y up) to SVG user units (mm, y down), and the drawn region.
 struct Frame {

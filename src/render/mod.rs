@@ -8,6 +8,7 @@ mod style;
 mod table;
 mod walkthrough;
 
-pub use figure::{figure, FigureMeta, ScaleBar};
+pub use crate::protocol::{FigureMeta, ScaleBar};
+pub use figure::figure;
 pub use table::{check_rows, check_table_json, check_table_text, CheckRow};
 pub use walkthrough::{walkthrough, Page, MAX_PAGES};

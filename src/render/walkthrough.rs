@@ -1,7 +1,8 @@
 //! Walk-through pages: one cumulative SVG per step and an offline `index.html` that pages
 //! through them with their captions.
 
-use super::figure::{figure, FigureMeta};
+use super::figure::figure;
+use crate::protocol::FigureMeta;
 use crate::protocol::{Board, Step};
 
 /// A file of the walk-through: its name and contents.

@@ -2,43 +2,33 @@
 
 use super::defaults::nice_at_least;
 use super::{optional_positive, SceneError};
-use crate::protocol::{Board, ConstructionError};
+use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::{self, Beam, BeamDrawing, BeamRequest, BeamResults, PointLoad, UniformLoad};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-/// A beam scene: `"procedure": "beam"`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct BeamScene {
-    /// Must be `"beam"`.
-    pub procedure: String,
-    /// Title written on the figure.
-    pub title: String,
-    /// Book reference written under the title.
-    #[serde(default)]
-    pub source: Option<String>,
-    /// Free notes on where the numbers come from (not drawn).
-    #[serde(default)]
-    pub notes: Option<String>,
-    /// The beam and its supports.
-    pub beam: BeamSpec,
-    /// Point loads.
-    #[serde(default)]
-    pub point_loads: Vec<PointLoadSpec>,
-    /// Uniformly distributed loads.
-    #[serde(default)]
-    pub uniform_loads: Vec<UniformLoadSpec>,
-    /// Panel points (m) of stringers that carry the loads to the beam (indirect loading,
-    /// LH Abb. 35); absent for loads acting on the beam directly.
-    #[serde(default)]
-    pub stringers_m: Option<Vec<f64>>,
-    /// What to construct besides the reactions: `moment_area`, `shear_diagram`.
-    #[serde(default)]
-    pub outputs: Vec<BeamOutput>,
-    /// Scales and the pole; any left out are chosen.
-    #[serde(default)]
-    pub drawing: Option<BeamDrawingSpec>,
+super::header::scene_struct! {
+    /// A beam scene: `"procedure": "beam"`.
+    pub struct BeamScene {
+        /// The beam and its supports.
+        pub beam: BeamSpec,
+        /// Point loads.
+        #[serde(default)]
+        pub point_loads: Vec<PointLoadSpec>,
+        /// Uniformly distributed loads.
+        #[serde(default)]
+        pub uniform_loads: Vec<UniformLoadSpec>,
+        /// Panel points (m) of stringers that carry the loads to the beam (indirect loading,
+        /// LH Abb. 35); absent for loads acting on the beam directly.
+        #[serde(default)]
+        pub stringers_m: Option<Vec<f64>>,
+        /// What to construct besides the reactions: `moment_area`, `shear_diagram`.
+        #[serde(default)]
+        pub outputs: Vec<BeamOutput>,
+        /// Scales and the pole; any left out are chosen.
+        #[serde(default)]
+        pub drawing: Option<BeamDrawingSpec>,
+    }
 }
 
 /// The beam: its supports and, if it overhangs them, its ends.
@@ -126,7 +116,7 @@ pub struct BeamProblem {
 pub const MAX_LOADS: usize = 2000;
 
 impl BeamScene {
-    pub(super) fn validate(&self, origin: &str) -> Result<(), SceneError> {
+    fn check_values(&self, origin: &str) -> Result<(), SceneError> {
         let bad = |field: &str, message: String| SceneError::Invalid {
             origin: origin.to_string(),
             field: field.to_string(),
@@ -139,12 +129,6 @@ impl BeamScene {
                 Err(bad(field, format!("must be a finite number, got {x}")))
             }
         };
-        if self.procedure != "beam" {
-            return Err(bad(
-                "procedure",
-                format!("unknown procedure `{}`", self.procedure),
-            ));
-        }
         let [a, b] = self.beam.supports_m;
         finite("beam.supports_m[0]", a)?;
         finite("beam.supports_m[1]", b)?;
@@ -364,20 +348,44 @@ impl BeamProblem {
     }
 
     /// Title, source and scale bars of the figure.
-    pub fn figure_meta(&self) -> crate::render::FigureMeta {
+    pub fn figure_meta(&self) -> FigureMeta {
         use crate::fmt::num;
         let d = &self.drawing;
-        crate::render::FigureMeta {
+        FigureMeta {
             title: self.title.clone(),
             source: super::source_line(
                 &self.source,
                 &format!("pole distance H = {} kg", num(d.pole_distance, 6)),
             ),
             scales: vec![
-                super::bars::length(d.length_scale, "m"),
-                super::bars::force(d.force_scale),
-                super::bars::moment(d.length_scale / 1000.0 * d.pole_distance),
+                ScaleBar::length(d.length_scale, "m"),
+                ScaleBar::force(d.force_scale),
+                ScaleBar::moment(d.length_scale / 1000.0 * d.pole_distance),
             ],
         }
+    }
+}
+
+impl super::Procedure for BeamScene {
+    const NAME: &'static str = "beam";
+    const ABOUT: &'static str = "a beam on two supports: reactions by the closing line, moment area, shear, parabola by tangents (LH I C.4-6)";
+    const OUTPUTS: &'static [&'static str] = &["reactions", "moment_area", "shear_diagram"];
+    type Problem = BeamProblem;
+    type Results = statics::BeamResults;
+
+    fn validate(&self, origin: &str) -> Result<(), SceneError> {
+        self.check_values(origin)
+    }
+    fn problem(&self) -> BeamProblem {
+        BeamScene::problem(self)
+    }
+    fn construct(
+        problem: &BeamProblem,
+        recording: bool,
+    ) -> Result<(Board, statics::BeamResults), ConstructionError> {
+        problem.construct(recording)
+    }
+    fn figure_meta(problem: &BeamProblem) -> FigureMeta {
+        problem.figure_meta()
     }
 }

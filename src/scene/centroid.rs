@@ -3,33 +3,23 @@
 
 use super::defaults::nice_at_least;
 use super::{optional_positive, SceneError};
-use crate::protocol::{Board, ConstructionError};
+use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::centroid::{self, CentroidDrawing, CentroidResults};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-/// A centroid scene: `"procedure": "centroid"`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct CentroidScene {
-    /// Must be `"centroid"`.
-    pub procedure: String,
-    /// Title written on the figure.
-    pub title: String,
-    /// Book reference written under the title.
-    #[serde(default)]
-    pub source: Option<String>,
-    /// Free notes (not drawn).
-    #[serde(default)]
-    pub notes: Option<String>,
-    /// The vertices [x, y] (m), in order round the polygon; it must not cross itself.
-    pub polygon_m: Vec<[f64; 2]>,
-    /// The vertex (from 0) the triangles fan out from; default 0.
-    #[serde(default)]
-    pub fan_from: usize,
-    /// Scales; any left out are chosen.
-    #[serde(default)]
-    pub drawing: Option<CentroidDrawingSpec>,
+super::header::scene_struct! {
+    /// A centroid scene: `"procedure": "centroid"`.
+    pub struct CentroidScene {
+        /// The vertices [x, y] (m), in order round the polygon; it must not cross itself.
+        pub polygon_m: Vec<[f64; 2]>,
+        /// The vertex (from 0) the triangles fan out from; default 0.
+        #[serde(default)]
+        pub fan_from: usize,
+        /// Scales; any left out are chosen.
+        #[serde(default)]
+        pub drawing: Option<CentroidDrawingSpec>,
+    }
 }
 
 /// Scales of a centroid scene.
@@ -58,18 +48,12 @@ pub struct CentroidProblem {
 }
 
 impl CentroidScene {
-    pub(super) fn validate(&self, origin: &str) -> Result<(), SceneError> {
+    fn check_values(&self, origin: &str) -> Result<(), SceneError> {
         let bad = |field: &str, message: String| SceneError::Invalid {
             origin: origin.to_string(),
             field: field.to_string(),
             message,
         };
-        if self.procedure != "centroid" {
-            return Err(bad(
-                "procedure",
-                format!("unknown procedure `{}`", self.procedure),
-            ));
-        }
         let n = self.polygon_m.len();
         if !(3..=1000).contains(&n) {
             return Err(bad("polygon_m", format!("{n} vertices: give 3 to 1000")));
@@ -161,15 +145,39 @@ impl CentroidProblem {
     }
 
     /// Title, source and scale bars.
-    pub fn figure_meta(&self) -> crate::render::FigureMeta {
+    pub fn figure_meta(&self) -> FigureMeta {
         let d = &self.drawing;
-        crate::render::FigureMeta {
+        FigureMeta {
             title: self.title.clone(),
             source: self.source.clone(),
             scales: vec![
-                super::bars::length(d.length_scale, "m"),
-                super::bars::area(d.area_scale),
+                ScaleBar::length(d.length_scale, "m"),
+                ScaleBar::area(d.area_scale),
             ],
         }
+    }
+}
+
+impl super::Procedure for CentroidScene {
+    const NAME: &'static str = "centroid";
+    const ABOUT: &'static str = "the centroid of a polygon by two funicular polygons (LH I C.3)";
+    const OUTPUTS: &'static [&'static str] = &[];
+    type Problem = CentroidProblem;
+    type Results = CentroidResults;
+
+    fn validate(&self, origin: &str) -> Result<(), SceneError> {
+        self.check_values(origin)
+    }
+    fn problem(&self) -> CentroidProblem {
+        CentroidScene::problem(self)
+    }
+    fn construct(
+        problem: &CentroidProblem,
+        recording: bool,
+    ) -> Result<(Board, CentroidResults), ConstructionError> {
+        problem.construct(recording)
+    }
+    fn figure_meta(problem: &CentroidProblem) -> FigureMeta {
+        problem.figure_meta()
     }
 }

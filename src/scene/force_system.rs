@@ -3,37 +3,27 @@
 
 use super::defaults::nice_at_least;
 use super::{optional_positive, SceneError};
-use crate::protocol::{Board, ConstructionError};
+use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::funicular::{self, Force, Resolution, SystemDrawing, SystemResults};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-/// A force-system scene: `"procedure": "force_system"`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct ForceSystemScene {
-    /// Must be `"force_system"`.
-    pub procedure: String,
-    /// Title written on the figure.
-    pub title: String,
-    /// Book reference written under the title.
-    #[serde(default)]
-    pub source: Option<String>,
-    /// Free notes on where the numbers come from (not drawn).
-    #[serde(default)]
-    pub notes: Option<String>,
-    /// The forces, in the order they are laid off.
-    pub forces: Vec<ForceSpec>,
-    /// Forces to resolve along two given directions.
-    #[serde(default)]
-    pub resolve: Vec<ResolveSpec>,
-    /// Draw the resultant of two parallel forces by two equal and opposite auxiliary forces of
-    /// this size (kg) instead of the funicular polygon (LH C.1, Abb. 21).
-    #[serde(default)]
-    pub auxiliary_force_kg: Option<f64>,
-    /// Scales and the pole; any left out are chosen.
-    #[serde(default)]
-    pub drawing: Option<ForceDrawingSpec>,
+super::header::scene_struct! {
+    /// A force-system scene: `"procedure": "force_system"`.
+    pub struct ForceSystemScene {
+        /// The forces, in the order they are laid off.
+        pub forces: Vec<ForceSpec>,
+        /// Forces to resolve along two given directions.
+        #[serde(default)]
+        pub resolve: Vec<ResolveSpec>,
+        /// Draw the resultant of two parallel forces by two equal and opposite auxiliary forces of
+        /// this size (kg) instead of the funicular polygon (LH C.1, Abb. 21).
+        #[serde(default)]
+        pub auxiliary_force_kg: Option<f64>,
+        /// Scales and the pole; any left out are chosen.
+        #[serde(default)]
+        pub drawing: Option<ForceDrawingSpec>,
+    }
 }
 
 /// A force: where it acts, and either its components or its magnitude and direction.
@@ -114,18 +104,12 @@ pub struct ForceSystemProblem {
 }
 
 impl ForceSystemScene {
-    pub(super) fn validate(&self, origin: &str) -> Result<(), SceneError> {
+    fn check_values(&self, origin: &str) -> Result<(), SceneError> {
         let bad = |field: &str, message: String| SceneError::Invalid {
             origin: origin.to_string(),
             field: field.to_string(),
             message,
         };
-        if self.procedure != "force_system" {
-            return Err(bad(
-                "procedure",
-                format!("unknown procedure `{}`", self.procedure),
-            ));
-        }
         if self.forces.is_empty() {
             return Err(bad("forces", "give at least one force".into()));
         }
@@ -276,15 +260,39 @@ impl ForceSystemProblem {
     }
 
     /// Title, source and scale bars.
-    pub fn figure_meta(&self) -> crate::render::FigureMeta {
+    pub fn figure_meta(&self) -> FigureMeta {
         let d = &self.drawing;
-        crate::render::FigureMeta {
+        FigureMeta {
             title: self.title.clone(),
             source: self.source.clone(),
             scales: vec![
-                super::bars::length(d.length_scale, "m"),
-                super::bars::force(d.force_scale),
+                ScaleBar::length(d.length_scale, "m"),
+                ScaleBar::force(d.force_scale),
             ],
         }
+    }
+}
+
+impl super::Procedure for ForceSystemScene {
+    const NAME: &'static str = "force_system";
+    const ABOUT: &'static str = "forces in the plane: force and funicular polygons, resultant, couple, resolution along two lines (LH I A, C.1-2)";
+    const OUTPUTS: &'static [&'static str] = &[];
+    type Problem = ForceSystemProblem;
+    type Results = Option<funicular::SystemResults>;
+
+    fn validate(&self, origin: &str) -> Result<(), SceneError> {
+        self.check_values(origin)
+    }
+    fn problem(&self) -> ForceSystemProblem {
+        ForceSystemScene::problem(self)
+    }
+    fn construct(
+        problem: &ForceSystemProblem,
+        recording: bool,
+    ) -> Result<(Board, Option<funicular::SystemResults>), ConstructionError> {
+        problem.construct(recording)
+    }
+    fn figure_meta(problem: &ForceSystemProblem) -> FigureMeta {
+        problem.figure_meta()
     }
 }

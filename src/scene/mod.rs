@@ -23,6 +23,8 @@ mod centroid;
 mod defaults;
 mod error;
 mod force_system;
+mod header;
+mod procedure;
 mod shaft;
 mod truss;
 mod types;
@@ -36,13 +38,16 @@ pub use error::SceneError;
 pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,
 };
+pub use procedure::{
+    parse_scene, schema_json, AnyProblem, AnyScene, Entry, Procedure, SceneHeader, REGISTRY,
+};
 pub use shaft::{ShaftProblem, ShaftScene, TorqueSpec};
 pub use truss::{TrussProblem, TrussScene};
 pub use types::*;
 
 use crate::crank::{self, Angles, CrankDrive, CrankResults, Drawing, PistonForce, Request};
 use crate::kernel::tolerance::MAX_DIVISIONS;
-use crate::protocol::{Board, ConstructionError};
+use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 
 /// A validated scene, ready to construct.
 #[derive(Debug, Clone, PartialEq)]
@@ -62,13 +67,10 @@ pub struct Problem {
 }
 
 impl Scene {
-    /// Parses and validates a scene; `origin` (a file name) prefixes every error message.
+    /// Parses and validates a slider-crank scene; `origin` (a file name) prefixes every error
+    /// message.
     pub fn from_json(text: &str, origin: &str) -> Result<Scene, SceneError> {
-        let de = &mut serde_json::Deserializer::from_str(text);
-        let scene: Scene =
-            serde_path_to_error::deserialize(de).map_err(|e| json_error(e, origin))?;
-        scene.validate(origin)?;
-        Ok(scene)
+        parse_scene(text, origin)
     }
 
     /// Reads, parses and validates a scene file.
@@ -80,17 +82,12 @@ impl Scene {
         Scene::from_json(&text, &path.display().to_string())
     }
 
-    fn validate(&self, origin: &str) -> Result<(), SceneError> {
+    fn check_values(&self, origin: &str) -> Result<(), SceneError> {
         let bad = |field: &str, message: String| SceneError::Invalid {
             origin: origin.to_string(),
             field: field.to_string(),
             message,
         };
-        if let Some(p) = &self.procedure {
-            if p != "slider_crank" {
-                return Err(bad("procedure", format!("unknown procedure `{p}`")));
-            }
-        }
         let positive = |field: &str, x: f64| {
             if x.is_finite() && x > 0.0 {
                 Ok(())
@@ -337,15 +334,15 @@ impl Scene {
 
 impl Problem {
     /// What the sheet writes besides the construction: title, source and the scale bars.
-    pub fn figure_meta(&self) -> crate::render::FigureMeta {
+    pub fn figure_meta(&self) -> FigureMeta {
         let d = &self.drawing;
         let r = &self.request;
-        let mut scales = vec![bars::length(d.length_scale, "mm")];
+        let mut scales = vec![ScaleBar::length(d.length_scale, "mm")];
         if r.velocity_parallel || r.velocity_instant_centre {
-            scales.push(bars::velocity(d.velocity_scale));
+            scales.push(ScaleBar::velocity(d.velocity_scale));
         }
         if r.rod_force || r.guide_force || r.tangential_force || r.radial_force {
-            scales.push(bars::force(d.force_scale));
+            scales.push(ScaleBar::force(d.force_scale));
         }
         let rod = if self.drive.finite_rod {
             format!(
@@ -369,7 +366,7 @@ impl Problem {
                 crate::fmt::num(self.drive.crank_pin_speed, 4)
             )
         };
-        crate::render::FigureMeta {
+        FigureMeta {
             title: self.title.clone(),
             source,
             scales,
@@ -399,147 +396,6 @@ impl Problem {
     }
 }
 
-/// serde_json appends " at line L column C" to its messages; the error reports those apart.
-fn strip_position(msg: &str) -> String {
-    match msg.rfind(" at line ") {
-        Some(k) => msg[..k].to_string(),
-        None => msg.to_string(),
-    }
-}
-
-/// The JSON Schema of the scene format, pretty-printed: one of the procedures' scenes.
-pub fn schema_json() -> String {
-    let schema = schemars::schema_for!(AnySceneSchema);
-    serde_json::to_string_pretty(&schema).expect("a schema is plain JSON")
-}
-
-/// The scene format as a whole: a slider-crank scene (`"procedure": "slider_crank"`, the
-/// default), a beam scene (`"procedure": "beam"`), a force system
-/// (`"procedure": "force_system"`), a centroid (`"procedure": "centroid"`), a shaft
-/// (`"procedure": "shaft"`) or a truss (`"procedure": "truss"`).
-#[derive(schemars::JsonSchema)]
-#[serde(untagged)]
-#[allow(dead_code)]
-enum AnySceneSchema {
-    /// A slider-crank scene.
-    SliderCrank(Scene),
-    /// A beam scene.
-    Beam(BeamScene),
-    /// A force-system scene.
-    ForceSystem(ForceSystemScene),
-    /// A centroid scene.
-    Centroid(CentroidScene),
-    /// A shaft scene.
-    Shaft(ShaftScene),
-    /// A truss scene.
-    Truss(TrussScene),
-}
-
-/// A scene of any procedure, validated.
-#[derive(Debug, Clone, PartialEq)]
-pub enum AnyScene {
-    /// Slider-crank (LH II, KG XIV B).
-    SliderCrank(Scene),
-    /// Beam (LH I C).
-    Beam(BeamScene),
-    /// Forces in the plane (LH I A, C.2).
-    ForceSystem(ForceSystemScene),
-    /// Centroid of a polygon (LH I C.3).
-    Centroid(CentroidScene),
-    /// Shaft with loads in two planes and a torque (LH I C.7-8).
-    Shaft(ShaftScene),
-    /// Truss with load cases (LH I B).
-    Truss(TrussScene),
-}
-
-/// A constructible problem of any procedure.
-#[derive(Debug, Clone, PartialEq)]
-pub enum AnyProblem {
-    /// Slider-crank.
-    SliderCrank(Problem),
-    /// Beam.
-    Beam(BeamProblem),
-    /// Forces in the plane.
-    ForceSystem(ForceSystemProblem),
-    /// Centroid of a polygon.
-    Centroid(CentroidProblem),
-    /// Shaft.
-    Shaft(ShaftProblem),
-    /// Truss.
-    Truss(TrussProblem),
-}
-
-#[derive(serde::Deserialize)]
-struct ProcedureProbe {
-    #[serde(default)]
-    procedure: Option<String>,
-}
-
-impl AnyScene {
-    /// Parses and validates a scene of any procedure, by its `procedure` field.
-    pub fn from_json(text: &str, origin: &str) -> Result<AnyScene, SceneError> {
-        // A first look for the procedure only; the real parse keeps line and column.
-        let probe: Option<ProcedureProbe> = serde_json::from_str(text).ok();
-        match probe.and_then(|p| p.procedure).as_deref() {
-            Some("beam") => parse_as::<BeamScene>(text, origin).map(AnyScene::Beam),
-            Some("force_system") => {
-                parse_as::<ForceSystemScene>(text, origin).map(AnyScene::ForceSystem)
-            }
-            Some("centroid") => parse_as::<CentroidScene>(text, origin).map(AnyScene::Centroid),
-            Some("shaft") => parse_as::<ShaftScene>(text, origin).map(AnyScene::Shaft),
-            Some("truss") => parse_as::<TrussScene>(text, origin).map(AnyScene::Truss),
-            _ => Scene::from_json(text, origin).map(AnyScene::SliderCrank),
-        }
-    }
-
-    /// Reads, parses and validates a scene file of any procedure.
-    pub fn load(path: &std::path::Path) -> Result<AnyScene, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
-            path: path.display().to_string(),
-            message: e.to_string(),
-        })?;
-        AnyScene::from_json(&text, &path.display().to_string())
-    }
-
-    /// The problem the scene describes.
-    pub fn problem(&self) -> AnyProblem {
-        match self {
-            AnyScene::SliderCrank(s) => AnyProblem::SliderCrank(s.problem()),
-            AnyScene::Beam(s) => AnyProblem::Beam(s.problem()),
-            AnyScene::ForceSystem(s) => AnyProblem::ForceSystem(s.problem()),
-            AnyScene::Centroid(s) => AnyProblem::Centroid(s.problem()),
-            AnyScene::Shaft(s) => AnyProblem::Shaft(s.problem()),
-            AnyScene::Truss(s) => AnyProblem::Truss(s.problem()),
-        }
-    }
-}
-
-impl AnyProblem {
-    /// Constructs the problem on a fresh board (the results are in the protocol).
-    pub fn construct(&self, recording: bool) -> Result<Board, ConstructionError> {
-        match self {
-            AnyProblem::SliderCrank(p) => p.construct(recording).map(|(b, _)| b),
-            AnyProblem::Beam(p) => p.construct(recording).map(|(b, _)| b),
-            AnyProblem::ForceSystem(p) => p.construct(recording).map(|(b, _)| b),
-            AnyProblem::Centroid(p) => p.construct(recording).map(|(b, _)| b),
-            AnyProblem::Shaft(p) => p.construct(recording).map(|(b, _)| b),
-            AnyProblem::Truss(p) => p.construct(recording).map(|(b, _)| b),
-        }
-    }
-
-    /// Title, source and scale bars of the figure.
-    pub fn figure_meta(&self) -> crate::render::FigureMeta {
-        match self {
-            AnyProblem::SliderCrank(p) => p.figure_meta(),
-            AnyProblem::Beam(p) => p.figure_meta(),
-            AnyProblem::ForceSystem(p) => p.figure_meta(),
-            AnyProblem::Centroid(p) => p.figure_meta(),
-            AnyProblem::Shaft(p) => p.figure_meta(),
-            AnyProblem::Truss(p) => p.figure_meta(),
-        }
-    }
-}
-
 /// The line under a figure's title: the book reference, then what the figure is drawn with.
 fn source_line(source: &str, detail: &str) -> String {
     if source.is_empty() {
@@ -565,96 +421,33 @@ fn optional_positive(origin: &str, fields: &[(&str, Option<f64>)]) -> Result<(),
     Ok(())
 }
 
-/// The scale bars a sheet writes: length 1 : n (machine unit per mm shown in m or mm), force,
-/// moment, area, velocity. German names as the books write them.
-mod bars {
-    use crate::fmt::num;
-    use crate::render::ScaleBar;
+impl Procedure for Scene {
+    const NAME: &'static str = "slider_crank";
+    const ABOUT: &'static str = "the slider-crank: piston path, piston velocity, rod, guide, radial and tangential forces (LH II, KG XIV B)";
+    const OUTPUTS: &'static [&'static str] = &[
+        "piston_path",
+        "velocity",
+        "rod_force",
+        "guide_force",
+        "tangential_force",
+        "radial_force",
+    ];
+    type Problem = Problem;
+    type Results = CrankResults;
 
-    /// Längenmaßstab 1 : n, the bar in `unit` ("m" or "mm").
-    pub fn length(n: f64, unit: &str) -> ScaleBar {
-        let per_mm = if unit == "m" { n / 1000.0 } else { n };
-        ScaleBar {
-            name: format!("Längenmaßstab 1 : {}", num(n, 6)),
-            per_mm,
-            unit: unit.into(),
-        }
+    fn validate(&self, origin: &str) -> Result<(), SceneError> {
+        self.check_values(origin)
     }
-    /// Kräftemaßstab 1 mm = f kg.
-    pub fn force(f: f64) -> ScaleBar {
-        ScaleBar {
-            name: format!("Kräftemaßstab 1 mm = {} kg", num(f, 6)),
-            per_mm: f,
-            unit: "kg".into(),
-        }
+    fn problem(&self) -> Problem {
+        Scene::problem(self)
     }
-    /// Momentenmaßstab 1 mm = m kg·m.
-    pub fn moment(m: f64) -> ScaleBar {
-        ScaleBar {
-            name: format!("Momentenmaßstab 1 mm = {} kg·m", num(m, 6)),
-            per_mm: m,
-            unit: "kg·m".into(),
-        }
+    fn construct(
+        problem: &Problem,
+        recording: bool,
+    ) -> Result<(Board, CrankResults), ConstructionError> {
+        problem.construct(recording)
     }
-    /// Flächenmaßstab 1 mm = a m².
-    pub fn area(a: f64) -> ScaleBar {
-        ScaleBar {
-            name: format!("Flächenmaßstab 1 mm = {} m²", num(a, 6)),
-            per_mm: a,
-            unit: "m²".into(),
-        }
-    }
-    /// Geschwindigkeitsmaßstab 1 mm = v m/s.
-    pub fn velocity(v: f64) -> ScaleBar {
-        ScaleBar {
-            name: format!("Geschwindigkeitsmaßstab 1 mm = {} m/s", num(v, 6)),
-            per_mm: v,
-            unit: "m/s".into(),
-        }
-    }
-}
-
-/// A scene type that checks its own values after parsing.
-trait Validate {
-    fn validate(&self, origin: &str) -> Result<(), SceneError>;
-}
-
-macro_rules! validate_by_method {
-    ($($t:ty),*) => {$(
-        impl Validate for $t {
-            fn validate(&self, origin: &str) -> Result<(), SceneError> {
-                <$t>::validate(self, origin)
-            }
-        }
-    )*};
-}
-validate_by_method!(
-    BeamScene,
-    ForceSystemScene,
-    CentroidScene,
-    ShaftScene,
-    TrussScene
-);
-
-/// Parses a scene of one procedure, keeping field path, line and column, then validates it.
-fn parse_as<T: serde::de::DeserializeOwned + Validate>(
-    text: &str,
-    origin: &str,
-) -> Result<T, SceneError> {
-    let de = &mut serde_json::Deserializer::from_str(text);
-    let scene: T = serde_path_to_error::deserialize(de).map_err(|e| json_error(e, origin))?;
-    scene.validate(origin)?;
-    Ok(scene)
-}
-
-fn json_error(e: serde_path_to_error::Error<serde_json::Error>, origin: &str) -> SceneError {
-    let field = e.path().to_string();
-    let inner = e.into_inner();
-    SceneError::Json {
-        origin: origin.to_string(),
-        line: inner.line(),
-        column: inner.column(),
-        field: if field == "." { String::new() } else { field },
-        message: strip_position(&inner.to_string()),
+    fn figure_meta(problem: &Problem) -> FigureMeta {
+        problem.figure_meta()
     }
 }

@@ -3,49 +3,39 @@
 use super::beam::BeamDrawingSpec;
 use super::defaults::nice_at_least;
 use super::{optional_positive, SceneError};
-use crate::protocol::{Board, ConstructionError};
+use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::shaft::{self, Shaft, ShaftRow, Torque};
 use crate::statics::{BeamDrawing, PointLoad};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-/// A shaft scene: `"procedure": "shaft"`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct ShaftScene {
-    /// Must be `"shaft"`.
-    pub procedure: String,
-    /// Title written on the figure.
-    pub title: String,
-    /// Book reference written under the title.
-    #[serde(default)]
-    pub source: Option<String>,
-    /// Free notes (not drawn).
-    #[serde(default)]
-    pub notes: Option<String>,
-    /// Supports and ends, as for a beam.
-    pub shaft: super::BeamSpec,
-    /// Loads in the first plane.
-    #[serde(default)]
-    pub plane_1_loads: Vec<super::PointLoadSpec>,
-    /// Loads in the second plane.
-    #[serde(default)]
-    pub plane_2_loads: Vec<super::PointLoadSpec>,
-    /// Angle between the two load planes (degrees, 0 < α ≤ 180), default 90.
-    #[serde(default)]
-    pub angle_between_planes_deg: Option<f64>,
-    /// A torque acting over a stretch of the shaft.
-    #[serde(default)]
-    pub torque: Option<TorqueSpec>,
-    /// Bach's ratio α0 weighting the torque in the ideal moment (default 1).
-    #[serde(default)]
-    pub alpha0: Option<f64>,
-    /// Allowed bending stress k_b (kg/cm²): each section then reports the diameter it needs.
-    #[serde(default)]
-    pub kb_kg_per_cm2: Option<f64>,
-    /// Scales and the pole distance, as for a beam.
-    #[serde(default)]
-    pub drawing: Option<BeamDrawingSpec>,
+super::header::scene_struct! {
+    /// A shaft scene: `"procedure": "shaft"`.
+    pub struct ShaftScene {
+        /// Supports and ends, as for a beam.
+        pub shaft: super::BeamSpec,
+        /// Loads in the first plane.
+        #[serde(default)]
+        pub plane_1_loads: Vec<super::PointLoadSpec>,
+        /// Loads in the second plane.
+        #[serde(default)]
+        pub plane_2_loads: Vec<super::PointLoadSpec>,
+        /// Angle between the two load planes (degrees, 0 < α ≤ 180), default 90.
+        #[serde(default)]
+        pub angle_between_planes_deg: Option<f64>,
+        /// A torque acting over a stretch of the shaft.
+        #[serde(default)]
+        pub torque: Option<TorqueSpec>,
+        /// Bach's ratio α0 weighting the torque in the ideal moment (default 1).
+        #[serde(default)]
+        pub alpha0: Option<f64>,
+        /// Allowed bending stress k_b (kg/cm²): each section then reports the diameter it needs.
+        #[serde(default)]
+        pub kb_kg_per_cm2: Option<f64>,
+        /// Scales and the pole distance, as for a beam.
+        #[serde(default)]
+        pub drawing: Option<BeamDrawingSpec>,
+    }
 }
 
 /// A torque over a stretch of the shaft.
@@ -78,18 +68,12 @@ pub struct ShaftProblem {
 }
 
 impl ShaftScene {
-    pub(super) fn validate(&self, origin: &str) -> Result<(), SceneError> {
+    fn check_values(&self, origin: &str) -> Result<(), SceneError> {
         let bad = |field: &str, message: String| SceneError::Invalid {
             origin: origin.to_string(),
             field: field.to_string(),
             message,
         };
-        if self.procedure != "shaft" {
-            return Err(bad(
-                "procedure",
-                format!("unknown procedure `{}`", self.procedure),
-            ));
-        }
         let [a, b] = self.shaft.supports_m;
         if !(a.is_finite() && b.is_finite()) || a >= b {
             return Err(bad(
@@ -236,11 +220,11 @@ impl ShaftProblem {
     }
 
     /// Title, source and scale bars.
-    pub fn figure_meta(&self) -> crate::render::FigureMeta {
+    pub fn figure_meta(&self) -> FigureMeta {
         use crate::fmt::num;
         let d = &self.drawing;
         let ms = d.length_scale / 1000.0 * d.pole_distance;
-        crate::render::FigureMeta {
+        FigureMeta {
             title: self.title.clone(),
             source: super::source_line(
                 &self.source,
@@ -252,10 +236,35 @@ impl ShaftProblem {
                 ),
             ),
             scales: vec![
-                super::bars::length(d.length_scale, "m"),
-                super::bars::force(d.force_scale),
-                super::bars::moment(ms),
+                ScaleBar::length(d.length_scale, "m"),
+                ScaleBar::force(d.force_scale),
+                ScaleBar::moment(ms),
             ],
         }
+    }
+}
+
+impl super::Procedure for ShaftScene {
+    const NAME: &'static str = "shaft";
+    const ABOUT: &'static str =
+        "a shaft: moments in two planes, torque, ideal moment and diameter (LH I C.7-8)";
+    const OUTPUTS: &'static [&'static str] = &[];
+    type Problem = ShaftProblem;
+    type Results = Vec<ShaftRow>;
+
+    fn validate(&self, origin: &str) -> Result<(), SceneError> {
+        self.check_values(origin)
+    }
+    fn problem(&self) -> ShaftProblem {
+        ShaftScene::problem(self)
+    }
+    fn construct(
+        problem: &ShaftProblem,
+        recording: bool,
+    ) -> Result<(Board, Vec<ShaftRow>), ConstructionError> {
+        problem.construct(recording)
+    }
+    fn figure_meta(problem: &ShaftProblem) -> FigureMeta {
+        problem.figure_meta()
     }
 }

@@ -3,41 +3,30 @@
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-/// A slider-crank scene: mechanism, speed, piston force, crank angles, effects and outputs.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct Scene {
-    /// `"slider_crank"` (the default when absent).
-    #[serde(default)]
-    pub procedure: Option<String>,
-    /// Title written on the figure.
-    pub title: String,
-    /// Book reference written under the title, e.g. "LH Abb. 43, 49, 53, 65".
-    #[serde(default)]
-    pub source: Option<String>,
-    /// Free notes on where the numbers come from (not drawn).
-    #[serde(default)]
-    pub notes: Option<String>,
-    /// The mechanism.
-    pub mechanism: Mechanism,
-    /// How fast the crank turns.
-    pub speed: Speed,
-    /// The driving piston force; required when a force is among the outputs.
-    #[serde(default)]
-    pub piston_force: Option<PistonForceSpec>,
-    /// Which crank positions to construct.
-    pub angles: AngleSpec,
-    /// The physical effects to include.
-    #[serde(default)]
-    pub effects: Option<Effects>,
-    /// What to construct; only what these depend on is constructed.
-    pub outputs: Vec<Output>,
-    /// Construction(s) of the piston velocity, default `["parallel"]`.
-    #[serde(default)]
-    pub velocity_methods: Option<Vec<VelocityMethod>>,
-    /// Scales of the drawing; any left out are chosen to give a figure about 250 mm wide.
-    #[serde(default)]
-    pub drawing: Option<DrawingSpec>,
+super::header::scene_struct! {
+    /// A slider-crank scene: mechanism, speed, piston force, crank angles, effects and outputs.
+    pub struct Scene {
+        /// The mechanism.
+        pub mechanism: Mechanism,
+        /// How fast the crank turns.
+        pub speed: Speed,
+        /// The driving piston force; required when a force is among the outputs.
+        #[serde(default)]
+        pub piston_force: Option<PistonForceSpec>,
+        /// Which crank positions to construct.
+        pub angles: AngleSpec,
+        /// The physical effects to include.
+        #[serde(default)]
+        pub effects: Option<Effects>,
+        /// What to construct; only what these depend on is constructed.
+        pub outputs: Vec<Output>,
+        /// Construction(s) of the piston velocity, default `["parallel"]`.
+        #[serde(default)]
+        pub velocity_methods: Option<Vec<VelocityMethod>>,
+        /// Scales of the drawing; any left out are chosen to give a figure about 250 mm wide.
+        #[serde(default)]
+        pub drawing: Option<DrawingSpec>,
+    }
 }
 
 /// The straight slider-crank (gerader Schubkurbeltrieb).

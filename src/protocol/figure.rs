@@ -1,0 +1,105 @@
+//! What a sheet writes besides the construction: the title, the book reference and the scale
+//! bars. Data only: a procedure fills it in, the renderer draws it.
+
+use crate::fmt::num;
+
+/// A scale bar written under the figure: `per_mm` quantity units per mm of sheet.
+///
+/// The constructors write the books' German names:
+///
+/// ```
+/// use graphostatik::protocol::ScaleBar;
+/// let bar = ScaleBar::force(100.0); // LH Aufgabe 1: 1 mm = 100 kg
+/// assert_eq!(bar.name, "Kräftemaßstab 1 mm = 100 kg");
+/// assert_eq!(ScaleBar::length(50.0, "m").per_mm, 0.05); // 1 : 50, read in metres
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScaleBar {
+    /// Name written before the bar ("Längenmaßstab 1 : 10").
+    pub name: String,
+    /// Quantity per mm of sheet.
+    pub per_mm: f64,
+    /// Unit written at the bar's end ("mm", "kg", "m/s").
+    pub unit: String,
+}
+
+impl ScaleBar {
+    /// Längenmaßstab 1 : n, the bar read in `unit` (`"m"` or `"mm"` of the machine).
+    pub fn length(n: f64, unit: &str) -> ScaleBar {
+        let per_mm = if unit == "m" { n / 1000.0 } else { n };
+        ScaleBar {
+            name: format!("Längenmaßstab 1 : {}", num(n, 6)),
+            per_mm,
+            unit: unit.into(),
+        }
+    }
+
+    /// Kräftemaßstab 1 mm = f kg.
+    pub fn force(f: f64) -> ScaleBar {
+        ScaleBar {
+            name: format!("Kräftemaßstab 1 mm = {} kg", num(f, 6)),
+            per_mm: f,
+            unit: "kg".into(),
+        }
+    }
+
+    /// Momentenmaßstab 1 mm = m kg·m.
+    pub fn moment(m: f64) -> ScaleBar {
+        ScaleBar {
+            name: format!("Momentenmaßstab 1 mm = {} kg·m", num(m, 6)),
+            per_mm: m,
+            unit: "kg·m".into(),
+        }
+    }
+
+    /// Flächenmaßstab 1 mm = a m².
+    pub fn area(a: f64) -> ScaleBar {
+        ScaleBar {
+            name: format!("Flächenmaßstab 1 mm = {} m²", num(a, 6)),
+            per_mm: a,
+            unit: "m²".into(),
+        }
+    }
+
+    /// Geschwindigkeitsmaßstab 1 mm = v m/s.
+    pub fn velocity(v: f64) -> ScaleBar {
+        ScaleBar {
+            name: format!("Geschwindigkeitsmaßstab 1 mm = {} m/s", num(v, 6)),
+            per_mm: v,
+            unit: "m/s".into(),
+        }
+    }
+}
+
+/// What the sheet says besides the construction: title, source, scales.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct FigureMeta {
+    /// The title.
+    pub title: String,
+    /// The book reference.
+    pub source: String,
+    /// The scale bars.
+    pub scales: Vec<ScaleBar>,
+}
+
+impl FigureMeta {
+    /// A sheet with a title and nothing else yet.
+    pub fn titled(title: impl Into<String>) -> FigureMeta {
+        FigureMeta {
+            title: title.into(),
+            ..FigureMeta::default()
+        }
+    }
+
+    /// Sets the book reference written under the title.
+    pub fn source(mut self, source: impl Into<String>) -> FigureMeta {
+        self.source = source.into();
+        self
+    }
+
+    /// Adds a scale bar.
+    pub fn scale(mut self, bar: ScaleBar) -> FigureMeta {
+        self.scales.push(bar);
+        self
+    }
+}
