@@ -21,6 +21,7 @@ pub mod crank;
 pub mod fmt;
 pub mod io;
 pub mod kernel;
+pub mod prelude;
 pub mod protocol;
 pub mod render;
 pub mod scene;

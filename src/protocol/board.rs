@@ -29,7 +29,7 @@ pub enum ConstructionError {
         /// The step number it would have had.
         step: StepId,
         /// Its caption.
-        caption: &'static str,
+        caption: Text,
         /// The cause.
         source: PrimitiveError,
     },
@@ -43,7 +43,7 @@ pub enum ConstructionError {
         /// The step number it would have had.
         step: StepId,
         /// Its caption.
-        caption: &'static str,
+        caption: Text,
         /// The geometric case found instead.
         outcome: String,
     },
@@ -73,6 +73,11 @@ pub struct Scale {
 }
 
 impl Scale {
+    /// `per_mm` units of `unit` per mm of the sheet.
+    pub const fn new(per_mm: f64, unit: &'static str) -> Scale {
+        Scale { per_mm, unit }
+    }
+
     /// A force scale: `per_mm` kg per mm of the sheet (the books' "1 mm = 100 kg").
     pub const fn kg(per_mm: f64) -> Scale {
         Scale { per_mm, unit: "kg" }
@@ -85,10 +90,10 @@ impl Scale {
 /// same procedure code runs on both, so the benchmark can show what recording costs.
 ///
 /// ```
-/// use graphostatik::protocol::{Board, Label, Note, Role, Topic};
+/// use graphostatik::protocol::{note, Board, Label, Note, Role, Topic};
 /// use graphostatik::kernel::{Point, Vector};
-/// const N: Note = Note { caption: "given", term_de: None, book: "", topic: Topic::Setup };
-/// let mut b = Board::new(100.0, true);
+/// const N: Note = note("given", None, "", Topic::Setup);
+/// let mut b = Board::recording();
 /// let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, N);
 /// let axis = b.line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, N).unwrap();
 /// assert_eq!(b.steps().len(), 2);
@@ -170,17 +175,17 @@ impl Board {
     /// Every analytic check on the board, in step order.
     ///
     /// ```
-    /// use graphostatik::protocol::{note, Board, Label, Role, Scale, Topic};
-    /// use graphostatik::kernel::Point;
+    /// use graphostatik::prelude::*;
     /// let mut b = Board::recording();
-    /// let n = note("a length", None, "", Topic::Setup);
-    /// let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, n);
-    /// let a = b.point(Point::new(3.0, 4.0), Label::plain("A"), Role::Given, n);
-    /// let x = b.line_through(&o, &a, Label::NONE, Role::Construction, n).unwrap();
-    /// let d = b.measure(&o, &a, &x, Scale { per_mm: 1.0, unit: "mm" }, Label::plain("d"), n);
+    /// let n = Note::new("a length", Topic::Custom("demo"));
+    /// let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, n.clone());
+    /// let a = b.point(Point::new(3.0, 4.0), Label::plain("A"), Role::Given, n.clone());
+    /// let x = b.line_through(&o, &a, Label::NONE, Role::Construction, n.clone())?;
+    /// let d = b.measure(&o, &a, &x, Scale::new(1.0, "mm"), Label::plain("d"), n);
     /// b.check(&d, "OA", "mm", "Pythagoras", 5.0, || 5.0);
     /// assert_eq!(b.checks().count(), 1);
     /// assert!(b.all_passed());
+    /// # Ok::<(), ConstructionError>(())
     /// ```
     pub fn checks(&self) -> impl Iterator<Item = &Check> {
         self.steps.iter().flat_map(|s| s.checks.iter())
@@ -232,16 +237,16 @@ impl Board {
         StepId(self.next_step + 1)
     }
 
-    fn begin(&mut self, kind: StepKind, note: Note, inputs: &[ObjId]) {
+    fn begin(&mut self, kind: StepKind, note: &Note, inputs: &[ObjId]) {
         self.next_step += 1;
         if self.recording {
             self.steps.push(Step {
                 id: StepId(self.next_step),
                 kind,
                 topic: note.topic,
-                caption: note.caption,
-                term_de: note.term_de,
-                book: note.book,
+                caption: note.caption.clone(),
+                term_de: note.term_de.clone(),
+                book: note.book.clone(),
                 context: self.context.clone(),
                 inputs: Ids::from_slice(inputs),
                 outputs: Ids::new(),
@@ -303,10 +308,10 @@ impl Board {
         }
     }
 
-    fn prim<T>(&self, r: Result<T, PrimitiveError>, note: Note) -> Result<T, ConstructionError> {
+    fn prim<T>(&self, r: Result<T, PrimitiveError>, note: &Note) -> Result<T, ConstructionError> {
         r.map_err(|source| ConstructionError::Primitive {
             step: self.step_id_next(),
-            caption: note.caption,
+            caption: note.caption.clone(),
             source,
         })
     }
@@ -314,7 +319,7 @@ impl Board {
     /// A given point.
     pub fn point(&mut self, p: Point, label: Label, role: Role, note: Note) -> H<Point> {
         self.grow(&p);
-        self.begin(StepKind::Given, note, &[]);
+        self.begin(StepKind::Given, &note, &[]);
         let id = self.add(label, role, || Geom::Point { at: p });
         H { id, g: p }
     }
@@ -329,13 +334,13 @@ impl Board {
         role: Role,
         note: Note,
     ) -> Result<H<Line>, ConstructionError> {
-        let line = self.prim(Line::new(p.g, dir), note)?;
+        let line = self.prim(Line::new(p.g, dir), &note)?;
         let kind = if p.id == ObjId::NONE || note.topic == Topic::Setup {
             StepKind::Given
         } else {
             StepKind::Line
         };
-        self.begin(kind, note, &[p.id]);
+        self.begin(kind, &note, &[p.id]);
         let id = self.add(label, role, || Geom::Line {
             line,
             extent: [0.0, 0.0],
@@ -352,8 +357,8 @@ impl Board {
         role: Role,
         note: Note,
     ) -> Result<H<Line>, ConstructionError> {
-        let line = self.prim(Line::through(a.g, b.g, self.tolerance.length), note)?;
-        self.begin(StepKind::Line, note, &[a.id, b.id]);
+        let line = self.prim(Line::through(a.g, b.g, self.tolerance.length), &note)?;
+        self.begin(StepKind::Line, &note, &[a.id, b.id]);
         let tb = line.param_of(&b.g);
         let id = self.add(label, role, || Geom::Line {
             line,
@@ -372,7 +377,7 @@ impl Board {
         note: Note,
     ) -> H<Line> {
         let g = construct::parallel_through(&line.g, p.g);
-        self.begin(StepKind::Parallel, note, &[line.id, p.id]);
+        self.begin(StepKind::Parallel, &note, &[line.id, p.id]);
         let id = self.add(label, role, || Geom::Line {
             line: g,
             extent: [0.0, 0.0],
@@ -390,7 +395,7 @@ impl Board {
         note: Note,
     ) -> H<Line> {
         let g = construct::perpendicular_through(&line.g, p.g);
-        self.begin(StepKind::Perpendicular, note, &[line.id, p.id]);
+        self.begin(StepKind::Perpendicular, &note, &[line.id, p.id]);
         let id = self.add(label, role, || Geom::Line {
             line: g,
             extent: [0.0, 0.0],
@@ -410,7 +415,7 @@ impl Board {
         role: Role,
         note: Note,
     ) -> Result<H<Circle>, ConstructionError> {
-        let c = self.prim(Circle::new(center.g, radius), note)?;
+        let c = self.prim(Circle::new(center.g, radius), &note)?;
         self.grow(&(c.center + Vector::new(c.radius, c.radius)));
         self.grow(&(c.center - Vector::new(c.radius, c.radius)));
         let kind = if note.topic == Topic::Setup {
@@ -418,7 +423,7 @@ impl Board {
         } else {
             StepKind::Circle
         };
-        self.begin(kind, note, &[center.id]);
+        self.begin(kind, &note, &[center.id]);
         let id = self.add(label, role, || Geom::Circle {
             circle: c,
             full,
@@ -438,7 +443,7 @@ impl Board {
         note: Note,
     ) -> H<Point> {
         let p = circle.g.point_at_deg(deg);
-        self.begin(StepKind::Divide, note, &[circle.id]);
+        self.begin(StepKind::Divide, &note, &[circle.id]);
         let id = self.add(label, Role::Given, || Geom::Point { at: p });
         let c = circle.g.center;
         self.add(Label::NONE, role, || Geom::Segment {
@@ -459,7 +464,7 @@ impl Board {
         note: Note,
     ) -> Vec<H<Point>> {
         let pts = construct::divide_circle(&circle.g, start_deg, n, clockwise);
-        self.begin(StepKind::Divide, note, &[circle.id]);
+        self.begin(StepKind::Divide, &note, &[circle.id]);
         let mut out = Vec::with_capacity(pts.len());
         for (k, p) in pts.into_iter().enumerate() {
             let id = self.add(Label::indexed(label, k as u32), Role::Given, || {
@@ -481,7 +486,7 @@ impl Board {
         note: Note,
     ) -> H<Segment> {
         let s = Segment { a: a.g, b: b.g };
-        self.begin(StepKind::LayOff, note, &[a.id, b.id]);
+        self.begin(StepKind::LayOff, &note, &[a.id, b.id]);
         let id = self.add(label, role, || match role {
             Role::Force | Role::Velocity => Geom::Vector { segment: s },
             _ => Geom::Segment { segment: s },
@@ -505,13 +510,13 @@ impl Board {
         if !length.is_finite() {
             return Err(ConstructionError::Primitive {
                 step: self.step_id_next(),
-                caption: note.caption,
+                caption: note.caption.clone(),
                 source: PrimitiveError::NotFinite,
             });
         }
         let p = from.g + along.g.dir * length;
         self.grow(&p);
-        self.begin(StepKind::LayOff, note, &[from.id, along.id]);
+        self.begin(StepKind::LayOff, &note, &[from.id, along.id]);
         let a = from.g;
         let id = self.add(label, Role::Given, || Geom::Point { at: p });
         self.add(Label::NONE, role, || match role {
@@ -536,7 +541,7 @@ impl Board {
         note: Note,
     ) -> H<Point> {
         let f = construct::foot_on_line(&line.g, &p.g);
-        self.begin(StepKind::Foot, note, &[line.id, p.id]);
+        self.begin(StepKind::Foot, &note, &[line.id, p.id]);
         let id = self.add(label, Role::Given, || Geom::Point { at: f });
         let a = p.g;
         self.add(Label::NONE, role, || Geom::Segment {
@@ -549,7 +554,7 @@ impl Board {
     /// Intersects two lines; a parallel or coincident pair is recorded as its named case.
     pub fn meet(&mut self, a: &H<Line>, b: &H<Line>, label: Label, note: Note) -> Cut {
         let r = intersect_line_line(&a.g, &b.g, &self.tolerance);
-        self.begin(StepKind::IntersectLineLine, note, &[a.id, b.id]);
+        self.begin(StepKind::IntersectLineLine, &note, &[a.id, b.id]);
         match r {
             LineLine::Point {
                 point,
@@ -591,11 +596,12 @@ impl Board {
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
         let step = self.step_id_next();
+        let caption = note.caption.clone();
         match self.meet(a, b, label, note) {
             Cut::Point(p, _) => Ok(p),
             Cut::Parallel { distance } => Err(ConstructionError::NoIntersection {
                 step,
-                caption: note.caption,
+                caption: caption.clone(),
                 outcome: format!(
                     "the lines are parallel ({} mm apart) and do not meet",
                     crate::fmt::num(distance, 6)
@@ -603,7 +609,7 @@ impl Board {
             }),
             Cut::Coincident => Err(ConstructionError::NoIntersection {
                 step,
-                caption: note.caption,
+                caption: caption.clone(),
                 outcome: "the lines coincide: the intersection is undetermined".into(),
             }),
         }
@@ -620,7 +626,7 @@ impl Board {
     ) -> Result<H<Point>, ConstructionError> {
         let r = intersect_line_circle(&line.g, &circle.g, &self.tolerance);
         let step = self.step_id_next();
-        self.begin(StepKind::IntersectLineCircle, note, &[line.id, circle.id]);
+        self.begin(StepKind::IntersectLineCircle, &note, &[line.id, circle.id]);
         let (p, cond, br) = match r {
             LineCircle::Two {
                 points,
@@ -635,20 +641,20 @@ impl Board {
                     "the circle misses the line by {} mm",
                     crate::fmt::num(gap, 6)
                 );
-                return Err(self.fail_cut(step, note, outcome));
+                return Err(self.fail_cut(step, &note, outcome));
             }
         };
         Ok(self.finish_cut(p, cond, br, [line.id, circle.id], label))
     }
 
     /// Records a cut that has no point and returns the error naming its case.
-    fn fail_cut(&mut self, step: StepId, note: Note, outcome: String) -> ConstructionError {
+    fn fail_cut(&mut self, step: StepId, note: &Note, outcome: String) -> ConstructionError {
         if let Some(s) = self.last_step() {
             s.outcome = Some(outcome.clone());
         }
         ConstructionError::NoIntersection {
             step,
-            caption: note.caption,
+            caption: note.caption.clone(),
             outcome,
         }
     }
@@ -688,7 +694,7 @@ impl Board {
     ) -> Result<H<Point>, ConstructionError> {
         let r = intersect_circle_circle(&a.g, &b.g, &self.tolerance);
         let step = self.step_id_next();
-        self.begin(StepKind::IntersectCircleCircle, note, &[a.id, b.id]);
+        self.begin(StepKind::IntersectCircleCircle, &note, &[a.id, b.id]);
         let (p, cond, br) = match r {
             CircleCircle::Two {
                 points,
@@ -709,7 +715,7 @@ impl Board {
                     CircleCircle::Concentric => "the circles are concentric".into(),
                     _ => "the circles coincide".into(),
                 };
-                return Err(self.fail_cut(step, note, outcome));
+                return Err(self.fail_cut(step, &note, outcome));
             }
         };
         Ok(self.finish_cut(p, cond, br, [a.id, b.id], label))
@@ -728,7 +734,7 @@ impl Board {
     ) -> H<f64> {
         let mm = (to.g - from.g).dot(&axis.g.dir);
         let value = mm * scale.per_mm;
-        self.begin(StepKind::Measure, note, &[from.id, to.id, axis.id]);
+        self.begin(StepKind::Measure, &note, &[from.id, to.id, axis.id]);
         let unit = scale.unit;
         let id = self.add(label, Role::Result, || Geom::Scalar { value, unit });
         H { id, g: value }
@@ -740,7 +746,7 @@ impl Board {
         if !self.recording {
             return;
         }
-        self.begin(StepKind::Measure, note, inputs);
+        self.begin(StepKind::Measure, &note, inputs);
         self.add(Label::NONE, Role::Result, || Geom::Table { at, rows });
     }
 
@@ -760,7 +766,7 @@ impl Board {
             };
         }
         let ids: Vec<ObjId> = points.iter().map(|p| p.id).collect();
-        self.begin(StepKind::Curve, note, &ids);
+        self.begin(StepKind::Curve, &note, &ids);
         let pts: Vec<Point> = points.iter().map(|p| p.g).collect();
         let id = self.add(label, role, || Geom::Curve {
             points: pts,
@@ -780,7 +786,7 @@ impl Board {
         note: Note,
     ) -> Vec<H<Point>> {
         let pts = construct::divide_segment(&Segment { a: a.g, b: b.g }, n);
-        self.begin(StepKind::Divide, note, &[a.id, b.id]);
+        self.begin(StepKind::Divide, &note, &[a.id, b.id]);
         let last = pts.len() - 1;
         let mut out = Vec::with_capacity(pts.len());
         for (k, p) in pts.into_iter().enumerate() {
@@ -803,9 +809,9 @@ impl Board {
     pub fn check(
         &mut self,
         value: &H<f64>,
-        quantity: &'static str,
-        unit: &'static str,
-        formula: &'static str,
+        quantity: impl Into<Text>,
+        unit: impl Into<Text>,
+        formula: impl Into<Text>,
         reference: f64,
         closed_form: impl FnOnce() -> f64,
     ) {
@@ -820,11 +826,11 @@ impl Board {
             let idx = step.0 as usize - 1;
             if let Some(s) = self.steps.get_mut(idx) {
                 s.checks.push(Check {
-                    quantity,
-                    unit,
+                    quantity: quantity.into(),
+                    unit: unit.into(),
                     constructed: value.g,
                     closed_form: closed,
-                    formula,
+                    formula: formula.into(),
                     error,
                     tolerance,
                     reference,

@@ -10,6 +10,6 @@ mod step;
 pub use board::{Board, ConstructionError, Cut, Scale, H};
 pub use figure::{FigureMeta, ScaleBar};
 pub use step::{
-    note, Check, Geom, Ids, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Topic,
+    note, Check, Geom, Ids, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Text, Topic,
     TABLE_BLOCK_ROWS,
 };

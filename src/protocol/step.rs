@@ -2,6 +2,12 @@
 
 use crate::kernel::{Arc, Circle, Conditioning, Line, Point, Segment};
 use serde::{Serialize, Serializer};
+use std::borrow::Cow;
+
+/// Text on the board: a caption, a label, a book reference. Borrowed from a literal in the
+/// procedures (a board that does not record allocates nothing), owned where a scene or a
+/// user names it at run time.
+pub type Text = Cow<'static, str>;
 
 /// The id of an object on the board (`o1`, `o2`, …); `NONE` when nothing is recorded.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -99,6 +105,8 @@ pub enum Topic {
     Truss,
     /// The Cremona plan: one point per space of Bow's notation, every member once.
     Cremona,
+    /// A part of a construction a user makes on a board of their own, by their name for it.
+    Custom(&'static str),
 }
 
 /// How an object is drawn: the textbook's hierarchy of lines.
@@ -124,10 +132,10 @@ pub enum Role {
 }
 
 /// The name written at an object: `base` with an optional index (`B₃`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 pub struct Label {
-    /// The letter(s).
-    pub base: &'static str,
+    /// The letter(s), or the name a scene gives (`U1`).
+    pub base: Text,
     /// The index, written as a subscript.
     pub index: Option<u32>,
     /// Whether the figure writes it (construction points keep their name in the protocol
@@ -139,15 +147,48 @@ impl Label {
     /// A label without index.
     pub const fn plain(base: &'static str) -> Label {
         Label {
-            base,
+            base: Cow::Borrowed(base),
             index: None,
             shown: true,
+        }
+    }
+    /// A label made at run time (a member or joint named in a scene), without index.
+    pub fn named(base: impl Into<Text>) -> Label {
+        Label {
+            base: base.into(),
+            index: None,
+            shown: true,
+        }
+    }
+    /// The label of a name a scene gives, written as the books write it: letters followed by
+    /// a number become the letters with the number as index (`"U1"` is U₁, `"B0"` is B₀);
+    /// any other name is written as it is (`"II"`, `"W"`, `"U01"`, `"Stab a"`).
+    ///
+    /// ```
+    /// use graphostatik::protocol::Label;
+    /// assert_eq!(Label::from_name("U12"), Label::indexed("U", 12));
+    /// assert_eq!(Label::from_name("III"), Label::plain("III"));
+    /// assert_eq!(Label::from_name("U01").index, None);
+    /// ```
+    pub fn from_name(name: &str) -> Label {
+        let split = name.trim_end_matches(|c: char| c.is_ascii_digit()).len();
+        let (base, digits) = name.split_at(split);
+        let canonical = !digits.is_empty() && (digits == "0" || !digits.starts_with('0'));
+        match digits.parse::<u32>() {
+            Ok(i) if canonical && !base.is_empty() && base.chars().all(char::is_alphabetic) => {
+                Label {
+                    base: Cow::Owned(base.to_string()),
+                    index: Some(i),
+                    shown: true,
+                }
+            }
+            _ => Label::named(name.to_string()),
         }
     }
     /// A label with an index.
     pub const fn indexed(base: &'static str, index: u32) -> Label {
         Label {
-            base,
+            base: Cow::Borrowed(base),
             index: Some(index),
             shown: true,
         }
@@ -155,14 +196,14 @@ impl Label {
     /// A name kept in the protocol but not written in the figure.
     pub const fn quiet(base: &'static str, index: u32) -> Label {
         Label {
-            base,
+            base: Cow::Borrowed(base),
             index: Some(index),
             shown: false,
         }
     }
     /// No label.
     pub const NONE: Label = Label {
-        base: "",
+        base: Cow::Borrowed(""),
         index: None,
         shown: false,
     };
@@ -182,17 +223,48 @@ impl std::fmt::Display for Label {
 }
 
 /// The words of a step: an English caption, the German book term, the book reference, and the
-/// topic it belongs to. Static, so that a board that does not record allocates nothing.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// topic it belongs to. The procedures' notes are `const` (borrowed text, so that a board that
+/// does not record allocates nothing); a user's construction can make its own at run time.
+///
+/// ```
+/// use graphostatik::protocol::{Note, Topic};
+/// let n = Note::new(format!("resultant of {} forces", 3), Topic::Custom("my resultant"))
+///     .term("Mittelkraft")
+///     .book("LH Abb. 22");
+/// assert_eq!(n.caption, "resultant of 3 forces");
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Note {
     /// Short English caption ("arc with the rod length about the crank pin").
-    pub caption: &'static str,
+    pub caption: Text,
     /// The German book term, where the books have one ("Schubstangenkreisbogen").
-    pub term_de: Option<&'static str>,
+    pub term_de: Option<Text>,
     /// Book reference ("KG Abb. 1047; LH Abb. 49").
-    pub book: &'static str,
+    pub book: Text,
     /// The part of the procedure.
     pub topic: Topic,
+}
+
+impl Note {
+    /// A note with a caption (any string) and a topic; no German term, no book reference.
+    pub fn new(caption: impl Into<Text>, topic: Topic) -> Note {
+        Note {
+            caption: caption.into(),
+            term_de: None,
+            book: Cow::Borrowed(""),
+            topic,
+        }
+    }
+    /// With the German book term.
+    pub fn term(mut self, term_de: impl Into<Text>) -> Note {
+        self.term_de = Some(term_de.into());
+        self
+    }
+    /// With the book reference.
+    pub fn book(mut self, book: impl Into<Text>) -> Note {
+        self.book = book.into();
+        self
+    }
 }
 
 /// A [`Note`] in one line, for the `const` notes of the procedures.
@@ -203,9 +275,12 @@ pub const fn note(
     topic: Topic,
 ) -> Note {
     Note {
-        caption,
-        term_de,
-        book,
+        caption: Cow::Borrowed(caption),
+        term_de: match term_de {
+            Some(t) => Some(Cow::Borrowed(t)),
+            None => None,
+        },
+        book: Cow::Borrowed(book),
         topic,
     }
 }
@@ -298,15 +373,15 @@ pub struct Object {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Check {
     /// The quantity ("piston path x").
-    pub quantity: &'static str,
+    pub quantity: Text,
     /// Its unit.
-    pub unit: &'static str,
+    pub unit: Text,
     /// The value read off the construction at its scale.
     pub constructed: f64,
     /// The closed-form value.
     pub closed_form: f64,
     /// The formula it comes from ("KG (285), LH Gl. 20").
-    pub formula: &'static str,
+    pub formula: Text,
     /// |constructed − closed form|.
     pub error: f64,
     /// The tolerance: `CHECK_REL × max(|closed form|, reference)`.
@@ -327,12 +402,12 @@ pub struct Step {
     /// The part of the procedure.
     pub topic: Topic,
     /// English caption.
-    pub caption: &'static str,
+    pub caption: Text,
     /// German book term.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub term_de: Option<&'static str>,
+    pub term_de: Option<Text>,
     /// Book reference.
-    pub book: &'static str,
+    pub book: Text,
     /// The situation the step is made in ("θ = 30°"), shared by the steps made in it.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub context: Option<std::sync::Arc<str>>,

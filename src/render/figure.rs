@@ -274,7 +274,9 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
 }
 
 fn label_text(f: &Frame, at: &Point, label: &Label) -> Text {
-    let mut t = Text::new(label.base).set("x", f.x(at)).set("y", f.y(at));
+    let mut t = Text::new(label.base.clone())
+        .set("x", f.x(at))
+        .set("y", f.y(at));
     if let Some(i) = label.index {
         t = t.add(
             TSpan::new(i.to_string())

@@ -139,13 +139,16 @@ show(0);
 /// outcome and checks.
 fn step_line(step: &Step) -> String {
     let mut detail = String::new();
-    if let Some(de) = step.term_de {
-        detail.push_str(&format!(" <span class=\"de\">({})</span>", html_escape(de)));
+    if let Some(de) = &step.term_de {
+        detail.push_str(&format!(
+            " <span class=\"de\">({})</span>",
+            html_escape(de)
+        ));
     }
     if !step.book.is_empty() {
         detail.push_str(&format!(
             " <span class=\"book\">{}</span>",
-            html_escape(step.book)
+            html_escape(&step.book)
         ));
     }
     if let Some(c) = &step.conditioning {
@@ -165,9 +168,9 @@ fn step_line(step: &Step) -> String {
         detail.push_str(&format!(
             " <span class=\"check {}\">{} = {} {} (closed form {}, error {})</span>",
             if c.passed { "ok" } else { "fail" },
-            html_escape(c.quantity),
+            html_escape(&c.quantity),
             crate::fmt::num(c.constructed, 6),
-            html_escape(c.unit),
+            html_escape(&c.unit),
             crate::fmt::num(c.closed_form, 6),
             crate::fmt::sci(c.error)
         ));
@@ -175,7 +178,7 @@ fn step_line(step: &Step) -> String {
     format!(
         "<b>{}</b> {}{}{}",
         step.id,
-        html_escape(step.caption),
+        html_escape(&step.caption),
         step.context
             .as_ref()
             .map(|c| format!(" <i>{}</i>", html_escape(c)))

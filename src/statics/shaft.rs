@@ -288,7 +288,7 @@ fn torque_ordinate(
         let par = b.parallel(&line_p, &foot, Label::NONE, Role::Construction, N_TQ_PAR);
         let c1 = b.meet_point(&ray_top, &par, Label::NONE, N_TQ_CUT)?;
         let c2 = b.meet_point(&ray_bottom, &par, Label::NONE, N_TQ_CUT)?;
-        b.segment(&c1, &c2, Label::NONE, Role::Result, n_x);
+        b.segment(&c1, &c2, Label::NONE, Role::Result, n_x.clone());
         let x = b.measure(&c1, &c2, &line_p, mscale, Label::quiet("Md", 0), n_x);
         b.check(
             &x,

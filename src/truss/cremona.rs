@@ -26,7 +26,7 @@
 
 use super::faces::{self, dest, origin, PlaneGraph};
 use super::matrix::{self, Solution};
-use super::{JointLoad, LoadCase, MemberForce, SupportKind, Truss, LETTERS};
+use super::{JointLoad, LoadCase, MemberForce, SupportKind, Truss};
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{
     note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H, TABLE_BLOCK_ROWS,
@@ -232,37 +232,25 @@ fn space_label(i: usize) -> Label {
     }
 }
 
+/// A member's label: `S` with its number where the scene numbers its members as the books do
+/// (`"7"` is S₇), else the scene's own name (`"U1"` is U₁, see [`Label::from_name`]).
 pub(crate) fn member_label(t: &Truss, m: usize) -> Label {
-    let n = t.members[m].name.parse::<u32>().unwrap_or(m as u32 + 1);
-    Label::indexed("S", n)
+    let name = &t.members[m].name;
+    match name.parse::<u32>() {
+        Ok(n) => Label::indexed("S", n),
+        Err(_) => Label::from_name(name),
+    }
 }
 
-/// Roman numerals, for joints named as in the books.
-const ROMAN: [&str; 40] = [
-    "I", "II", "III", "IV", "V", "VI", "VII", "VIII", "IX", "X", "XI", "XII", "XIII", "XIV", "XV",
-    "XVI", "XVII", "XVIII", "XIX", "XX", "XXI", "XXII", "XXIII", "XXIV", "XXV", "XXVI", "XXVII",
-    "XXVIII", "XXIX", "XXX", "XXXI", "XXXII", "XXXIII", "XXXIV", "XXXV", "XXXVI", "XXXVII",
-    "XXXVIII", "XXXIX", "XL",
-];
-
-/// A joint's label: its own name where it is a Roman numeral or a capital letter, else K with
-/// its number.
+/// A joint's label: the scene's name for it (the books' Roman numerals, or any other; see
+/// [`Label::from_name`]).
 fn joint_label(t: &Truss, j: usize) -> Label {
-    let name = t.joints[j].name.as_str();
-    match ROMAN.iter().chain(&LETTERS).find(|r| **r == name) {
-        Some(r) => Label::plain(r),
-        None => Label::indexed("K", j as u32 + 1),
-    }
+    Label::from_name(&t.joints[j].name)
 }
 
-/// A support's label: its name where that is a capital letter (the scene's own, or the
-/// default A, B, C, …), else R with its number, as [`default_support_name`](super::default_support_name) names those
-/// beyond Z.
+/// A support's label: the scene's name for its reaction (A, B, … by default).
 fn support_label(t: &Truss, si: usize) -> Label {
-    match LETTERS.iter().find(|l| **l == t.supports[si].name) {
-        Some(l) => Label::plain(l),
-        None => Label::indexed("R", si as u32 + 1),
-    }
+    Label::from_name(&t.supports[si].name)
 }
 
 /// Everything the truss drawing needs per case, computed without a board.
