@@ -10,6 +10,8 @@ use crate::kernel::{
 };
 use serde::Serialize;
 
+pub use super::error::{ConstructionError, CutOutcome};
+
 /// A handle to an object on the board: its id and its geometry.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct H<T> {
@@ -17,36 +19,6 @@ pub struct H<T> {
     pub id: ObjId,
     /// The geometry or value.
     pub g: T,
-}
-
-/// Why a step could not be made: the geometric case that stopped it, named.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[non_exhaustive]
-pub enum ConstructionError {
-    /// A primitive could not be formed (coincident points, zero radius, non-finite value).
-    #[error("step {step} ({caption}): {source}")]
-    Primitive {
-        /// The step number it would have had.
-        step: StepId,
-        /// Its caption.
-        caption: Text,
-        /// The cause.
-        source: PrimitiveError,
-    },
-    /// The input asks for a construction the procedure does not make (a point load inside a
-    /// uniform load, supports in the wrong order).
-    #[error("{0}")]
-    Unsupported(String),
-    /// An intersection has no point where the construction needs one.
-    #[error("step {step} ({caption}): {outcome}")]
-    NoIntersection {
-        /// The step number it would have had.
-        step: StepId,
-        /// Its caption.
-        caption: Text,
-        /// The geometric case found instead.
-        outcome: String,
-    },
 }
 
 /// The outcome of a line–line intersection on the board: a point, or the named degenerate case.
@@ -601,16 +573,13 @@ impl Board {
             Cut::Point(p, _) => Ok(p),
             Cut::Parallel { distance } => Err(ConstructionError::NoIntersection {
                 step,
-                caption: caption.clone(),
-                outcome: format!(
-                    "the lines are parallel ({} mm apart) and do not meet",
-                    crate::fmt::num(distance, 6)
-                ),
+                caption,
+                outcome: CutOutcome::Parallel { distance },
             }),
             Cut::Coincident => Err(ConstructionError::NoIntersection {
                 step,
-                caption: caption.clone(),
-                outcome: "the lines coincide: the intersection is undetermined".into(),
+                caption,
+                outcome: CutOutcome::Coincident,
             }),
         }
     }
@@ -637,20 +606,16 @@ impl Board {
             }
             LineCircle::Tangent { point } => (point, Conditioning::from_angle(0.0), None),
             LineCircle::Disjoint { gap } => {
-                let outcome = format!(
-                    "the circle misses the line by {} mm",
-                    crate::fmt::num(gap, 6)
-                );
-                return Err(self.fail_cut(step, &note, outcome));
+                return Err(self.fail_cut(step, &note, CutOutcome::Misses { gap }));
             }
         };
         Ok(self.finish_cut(p, cond, br, [line.id, circle.id], label))
     }
 
     /// Records a cut that has no point and returns the error naming its case.
-    fn fail_cut(&mut self, step: StepId, note: &Note, outcome: String) -> ConstructionError {
+    fn fail_cut(&mut self, step: StepId, note: &Note, outcome: CutOutcome) -> ConstructionError {
         if let Some(s) = self.last_step() {
-            s.outcome = Some(outcome.clone());
+            s.outcome = Some(outcome.to_string());
         }
         ConstructionError::NoIntersection {
             step,
@@ -705,15 +670,10 @@ impl Board {
             }
             other => {
                 let outcome = match other {
-                    CircleCircle::Separate { gap } => {
-                        format!("the circles lie {} mm apart", crate::fmt::num(gap, 6))
-                    }
-                    CircleCircle::Contained { gap } => format!(
-                        "one circle lies inside the other, {} mm clear",
-                        crate::fmt::num(gap, 6)
-                    ),
-                    CircleCircle::Concentric => "the circles are concentric".into(),
-                    _ => "the circles coincide".into(),
+                    CircleCircle::Separate { gap } => CutOutcome::CirclesApart { gap },
+                    CircleCircle::Contained { gap } => CutOutcome::CircleInside { gap },
+                    CircleCircle::Concentric => CutOutcome::Concentric,
+                    _ => CutOutcome::CirclesCoincide,
                 };
                 return Err(self.fail_cut(step, &note, outcome));
             }

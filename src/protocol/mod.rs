@@ -4,10 +4,12 @@
 //! every view (figure, check table, walk-through, benchmark) reads it.
 
 mod board;
+mod error;
 mod figure;
 mod step;
 
-pub use board::{Board, ConstructionError, Cut, Scale, H};
+pub use board::{Board, Cut, Scale, H};
+pub use error::{ConstructionError, CutOutcome};
 pub use figure::{FigureMeta, ScaleBar};
 pub use step::{
     note, Check, Geom, Ids, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Text, Topic,

@@ -140,10 +140,7 @@ show(0);
 fn step_line(step: &Step) -> String {
     let mut detail = String::new();
     if let Some(de) = &step.term_de {
-        detail.push_str(&format!(
-            " <span class=\"de\">({})</span>",
-            html_escape(de)
-        ));
+        detail.push_str(&format!(" <span class=\"de\">({})</span>", html_escape(de)));
     }
     if !step.book.is_empty() {
         detail.push_str(&format!(

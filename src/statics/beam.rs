@@ -440,12 +440,13 @@ pub fn construct_beam_at(
 ) -> Result<BeamResults, ConstructionError> {
     for &x in extra_sections {
         if !(x >= beam.ends[0] && x <= beam.ends[1]) {
-            return Err(ConstructionError::Unsupported(format!(
-                "section x = {x} m lies off the beam"
-            )));
+            return Err(ConstructionError::unsupported(
+                "sections",
+                format!("section x = {x} m lies off the beam"),
+            ));
         }
         if beam.uniform_loads.iter().any(|u| x > u.from && x < u.to) {
-            return Err(ConstructionError::Unsupported(format!(
+            return Err(ConstructionError::unsupported("sections", format!(
                 "section x = {x} m lies inside a uniform load: its moments are read off the parabola"
             )));
         }
@@ -1282,17 +1283,19 @@ pub fn panel_loads(
             .windows(2)
             .any(|w| w[0].partial_cmp(&w[1]) != Some(std::cmp::Ordering::Less))
     {
-        return Err(ConstructionError::Unsupported(
-            "panel points: give at least two, increasing".into(),
+        return Err(ConstructionError::unsupported(
+            "stringers",
+            "panel points: give at least two, increasing",
         ));
     }
     let (first, last) = (panel_points[0], panel_points[panel_points.len() - 1]);
     let mut out: Vec<f64> = vec![0.0; panel_points.len()];
     let mut carry = |x: f64, p: f64| -> Result<(), ConstructionError> {
         if x < first || x > last {
-            return Err(ConstructionError::Unsupported(format!(
-                "a load at {x} m lies outside the stringers [{first}, {last}] m"
-            )));
+            return Err(ConstructionError::unsupported(
+                "point_loads",
+                format!("a load at {x} m lies outside the stringers [{first}, {last}] m"),
+            ));
         }
         let i = panel_points
             .partition_point(|&s| s <= x)
@@ -1309,10 +1312,13 @@ pub fn panel_loads(
     }
     for u in &beam.uniform_loads {
         if u.from < first || u.to > last {
-            return Err(ConstructionError::Unsupported(format!(
+            return Err(ConstructionError::unsupported(
+                "uniform_loads",
+                format!(
                 "a uniform load over [{}, {}] m reaches outside the stringers [{first}, {last}] m",
                 u.from, u.to
-            )));
+            ),
+            ));
         }
         // Each panel's share of the uniform load, as its resultant at the share's middle.
         for w in panel_points.windows(2) {
@@ -1438,34 +1444,39 @@ pub fn construct_beam_indirect(
 fn check_layout(beam: &Beam) -> Result<(), ConstructionError> {
     let [a, b] = beam.supports;
     if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
-        return Err(ConstructionError::Unsupported(format!(
-            "support A ({a} m) must lie left of support B ({b} m)"
-        )));
+        return Err(ConstructionError::unsupported(
+            "supports",
+            format!("support A ({a} m) must lie left of support B ({b} m)"),
+        ));
     }
     for (i, u) in beam.uniform_loads.iter().enumerate() {
         let inside = |x: f64| x > u.from && x < u.to;
         if u.from.partial_cmp(&u.to) != Some(std::cmp::Ordering::Less) {
-            return Err(ConstructionError::Unsupported(format!(
-                "uniform load {i} must end after it starts"
-            )));
+            return Err(ConstructionError::unsupported(
+                format!("uniform_loads[{i}]"),
+                format!("uniform load {i} must end after it starts"),
+            ));
         }
         if inside(a) || inside(b) {
-            return Err(ConstructionError::Unsupported(format!(
-                "uniform load {i} straddles a support: split it there"
-            )));
+            return Err(ConstructionError::unsupported(
+                format!("uniform_loads[{i}]"),
+                format!("uniform load {i} straddles a support: split it there"),
+            ));
         }
         if beam.point_loads.iter().any(|l| inside(l.x)) {
-            return Err(ConstructionError::Unsupported(format!(
-                "a point load lies inside uniform load {i}: split the uniform load there"
-            )));
+            return Err(ConstructionError::unsupported(
+                format!("uniform_loads[{i}]"),
+                format!("a point load lies inside uniform load {i}: split the uniform load there"),
+            ));
         }
         if beam.uniform_loads[i + 1..]
             .iter()
             .any(|w| w.from < u.to && w.to > u.from)
         {
-            return Err(ConstructionError::Unsupported(format!(
-                "uniform load {i} overlaps another: add their intensities"
-            )));
+            return Err(ConstructionError::unsupported(
+                format!("uniform_loads[{i}]"),
+                format!("uniform load {i} overlaps another: add their intensities"),
+            ));
         }
     }
     Ok(())

@@ -180,19 +180,20 @@ pub fn construct_centroid(
 ) -> Result<CentroidResults, ConstructionError> {
     let n = pts.len();
     if n < 3 {
-        return Err(ConstructionError::Unsupported(
-            "a polygon needs at least three vertices".into(),
+        return Err(ConstructionError::unsupported(
+            "polygon",
+            "a polygon needs at least three vertices",
         ));
     }
     if let Some((i, j)) = self_intersection(pts) {
-        return Err(ConstructionError::Unsupported(format!(
+        return Err(ConstructionError::unsupported("polygon", format!(
             "the polygon is not simple: edge {i} (vertex {i} to {}) meets edge {j} (vertex {j} to {})",
             (i + 1) % n,
             (j + 1) % n
         )));
     }
     let (area, exact) = polygon_centroid(pts)
-        .ok_or_else(|| ConstructionError::Unsupported("the polygon has zero area".into()))?;
+        .ok_or_else(|| ConstructionError::unsupported("polygon", "the polygon has zero area"))?;
     let k = 1000.0 / dr.length_scale;
     let size = pts
         .iter()
@@ -274,8 +275,9 @@ pub fn construct_centroid(
     sd.plan_at = Some([xmax + 30.0 + 0.6 * total_mm + 20.0, ymax + 0.5 * total_mm]);
     let r2 = construct_system(b, &second, &sd, &[])?;
     let (Some(l1), Some(l2)) = (r1.resultant_line, r2.resultant_line) else {
-        return Err(ConstructionError::Unsupported(
-            "the polygon has zero area".into(),
+        return Err(ConstructionError::unsupported(
+            "polygon",
+            "the polygon has zero area",
         ));
     };
     let s = b.meet_point(&l1, &l2, Label::plain("S"), N_CENTROID)?;

@@ -304,8 +304,9 @@ pub fn construct_system(
     resolutions: &[Resolution],
 ) -> Result<SystemResults, ConstructionError> {
     if forces.is_empty() {
-        return Err(ConstructionError::Unsupported(
-            "a force system needs at least one force".into(),
+        return Err(ConstructionError::unsupported(
+            "forces",
+            "a force system needs at least one force",
         ));
     }
     let k = 1000.0 / dr.length_scale;
@@ -322,10 +323,13 @@ pub fn construct_system(
         let v = Vector::new(f.f[0], f.f[1]);
         let len = v.norm();
         if len == 0.0 {
-            return Err(ConstructionError::Unsupported(format!(
-                "force {} has no direction: a zero force has no line of action (leave it out)",
-                i + 1
-            )));
+            return Err(ConstructionError::unsupported(
+                format!("forces[{i}]"),
+                format!(
+                    "force {} has no direction: a zero force has no line of action (leave it out)",
+                    i + 1
+                ),
+            ));
         }
         let a = b.point(
             sp(f.at),
@@ -415,9 +419,12 @@ pub fn construct_system(
         rays.push(
             b.line_through(&pole, p, Label::NONE, Role::Construction, N_RAY)
                 .map_err(|_| {
-                    ConstructionError::Unsupported(format!(
-                        "the pole lies on corner {i} of the force polygon: choose another pole"
-                    ))
+                    ConstructionError::unsupported(
+                        "pole",
+                        format!(
+                            "the pole lies on corner {i} of the force polygon: choose another pole"
+                        ),
+                    )
                 })?,
         );
     }
@@ -434,7 +441,7 @@ pub fn construct_system(
     for i in 0..n {
         if i > 0 {
             corner = b.meet_point(&strings[i], &lines[i], Label::quiet("II", i as u32), N_CORNER).map_err(|_| {
-                ConstructionError::Unsupported(format!(
+                ConstructionError::unsupported("pole", format!(
                     "string {i} runs parallel to the line of action of force {}: the pole lies on that side of the force polygon; choose another pole",
                     i + 1
                 ))
@@ -553,10 +560,10 @@ pub fn construct_system(
     let mut components = Vec::new();
     for (j, res) in resolutions.iter().enumerate() {
         let f = forces.get(res.force).ok_or_else(|| {
-            ConstructionError::Unsupported(format!(
-                "resolution {j} names force {} of {n}",
-                res.force + 1
-            ))
+            ConstructionError::unsupported(
+                format!("resolutions[{j}].force"),
+                format!("resolution {j} names force {} of {n}", res.force + 1),
+            )
         })?;
         let (s1, c1) = crate::kernel::angle::sin_cos_deg(res.along[0]);
         let (s2, c2) = crate::kernel::angle::sin_cos_deg(res.along[1]);
@@ -587,9 +594,10 @@ pub fn construct_system(
         let cpt = b
             .meet_point(&l1, &l2, Label::quiet("K", j as u32), N_RESOLVE_CUT)
             .map_err(|_| {
-                ConstructionError::Unsupported(format!(
-                    "resolution {j}: the two directions are parallel"
-                ))
+                ConstructionError::unsupported(
+                    format!("resolutions[{j}].along"),
+                    format!("resolution {j}: the two directions are parallel"),
+                )
             })?;
         let k1 = b.measure(
             &tail,
@@ -778,8 +786,9 @@ pub fn parallel_pair_by_auxiliary_forces(
         || v2.norm() == 0.0
         || crate::kernel::cross(&v1, &v2).abs() > 1e-12 * v1.norm() * v2.norm()
     {
-        return Err(ConstructionError::Unsupported(
-            "the auxiliary-force construction takes two parallel, non-zero forces".into(),
+        return Err(ConstructionError::unsupported(
+            "forces",
+            "the auxiliary-force construction takes two parallel, non-zero forces",
         ));
     }
     let k = 1000.0 / dr.length_scale;
@@ -822,8 +831,9 @@ pub fn parallel_pair_by_auxiliary_forces(
     let x = b
         .meet_point(&partial[0].2, &partial[1].2, Label::plain("X"), N_AUX_X)
         .map_err(|_| {
-            ConstructionError::Unsupported(
-                "equal and opposite forces: a couple, no single resultant".into(),
+            ConstructionError::unsupported(
+                "forces",
+                "equal and opposite forces: a couple, no single resultant",
             )
         })?;
     // The resultant runs parallel to the forces (to K1's line of action), through X.

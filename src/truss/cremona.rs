@@ -305,7 +305,7 @@ fn supports(t: &Truss) -> Result<Supports, ConstructionError> {
             dir: rollers[0].1,
         }),
         (0, 3) => Ok(Supports::Rollers([rollers[0], rollers[1], rollers[2]])),
-        _ => Err(ConstructionError::Unsupported(format!(
+        _ => Err(ConstructionError::unsupported("supports", format!(
             "the graphic reactions need one pin and one roller, or three rollers; the truss has {} pin(s) and {} roller(s)",
             pins.len(),
             rollers.len()
@@ -421,17 +421,17 @@ fn construct(
         match matrix::analyse(t).determinacy {
             matrix::Determinacy::Determinate => {}
             matrix::Determinacy::Mechanism { joint, freedoms } => {
-                return Err(ConstructionError::Unsupported(format!(
-                    "the truss is a mechanism ({freedoms} free motion(s)): joint {} can move",
-                    t.joints[joint].name
-                )))
+                return Err(ConstructionError::Mechanism {
+                    joint: t.joints[joint].name.clone(),
+                    freedoms,
+                })
             }
             matrix::Determinacy::OverDeterminate { redundant } => {
-                return Err(ConstructionError::Unsupported(format!(
-                    "the truss is over-determinate by {redundant} (s = {}, 2k − 3 = {}): the Cremona plan needs a determinate truss (split it as in LH B.5)",
-                    t.members.len(),
-                    2 * t.joints.len() as i64 - 3
-                )))
+                return Err(ConstructionError::OverDeterminate {
+                    redundant,
+                    members: t.members.len(),
+                    needed: 2 * t.joints.len() as i64 - 3,
+                })
             }
         }
     }
@@ -441,10 +441,9 @@ fn construct(
         Ok(g) => Some(g),
         Err(faces::GraphError::Crossing) => None,
         Err(faces::GraphError::Disconnected { joint }) => {
-            return Err(ConstructionError::Unsupported(format!(
-                "joint {} is not connected to the truss",
-                t.joints[joint].name
-            )))
+            return Err(ConstructionError::Disconnected {
+                joint: t.joints[joint].name.clone(),
+            })
         }
     };
     let sup = supports(t)?;
@@ -904,8 +903,8 @@ fn culmann(
         .map(|f| (f.g - fh[0].g).norm())
         .fold(0.0, f64::max);
     if rv.norm() <= 1e-9 * span.max(f64::MIN_POSITIVE) {
-        return Err(ConstructionError::Unsupported(
-            "the loads form a couple (their force polygon closes): three rollers need a resultant to cut".into(),
+        return Err(ConstructionError::unsupported("loads", 
+            "the loads form a couple (their force polygon closes): three rollers need a resultant to cut",
         ));
     }
     let on_r = b.meet_point(first, last_string, Label::quiet("R", 0), N_RESULTANT)?;
@@ -1060,8 +1059,9 @@ fn outline(
     let mut placed = vec![false; ext.forces.len()];
     let outer = &g.faces[g.outer];
     if outer.is_empty() {
-        return Err(ConstructionError::Unsupported(
-            "a truss needs members".into(),
+        return Err(ConstructionError::unsupported(
+            "members",
+            "a truss needs members",
         ));
     }
     let mut at_joint: std::collections::BTreeMap<usize, Vec<usize>> = Default::default();
@@ -1113,7 +1113,7 @@ fn outline(
     }
     if let Some(fi) = placed.iter().position(|p| !p) {
         let j = ext.forces[fi].0;
-        return Err(ConstructionError::Unsupported(format!(
+        return Err(ConstructionError::unsupported("loads", format!(
             "joint {} carries an external force but its line of action does not leave the truss on the outside: Bow's notation needs external forces at outer joints",
             t.joints[j].name
         )));
@@ -1261,16 +1261,20 @@ fn cremona_plan(
     }
     b.set_context(|| case.name.clone());
     if let Some(m) = forces.iter().position(|f| f.is_none()) {
-        let stuck: Vec<&str> = (0..t.joints.len())
+        let stuck: Vec<String> = (0..t.joints.len())
             .filter(|&v| g.around[v].iter().any(|&h| forces[h / 2].is_none()))
-            .map(|v| t.joints[v].name.as_str())
+            .map(|v| t.joints[v].name.clone())
             .take(6)
             .collect();
-        return Err(ConstructionError::Unsupported(format!(
-            "the Cremona plan stalls before member {}: at joints {} three or more member forces are unknown, and no section through three members with two unknown spaces between them gives one of them (Ritter, LH B.4)",
-            t.members[m].name,
-            stuck.join(", ")
-        )));
+        return Err(ConstructionError::PlanStalls {
+            member: t.members[m].name.clone(),
+            reason: format!(
+                "the Cremona plan stalls before member {}: at joints {} three or more member forces are unknown, and no section through three members with two unknown spaces between them gives one of them (Ritter, LH B.4)",
+                t.members[m].name,
+                stuck.join(", ")
+            ),
+            joints: stuck,
+        });
     }
     Ok((plan_result(t, case, ext, &forces, &plan_mm, sol, dr), bx))
 }

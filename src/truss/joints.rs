@@ -227,10 +227,14 @@ pub(crate) fn joint_polygons(
     }
     b.set_context(|| case.name.clone());
     if let Some(m) = force.iter().position(|f| f.is_none()) {
-        return Err(ConstructionError::Unsupported(format!(
-            "the joint polygons stall before member {}: every joint left has three or more unknown member forces (or two in line)",
-            t.members[m].name
-        )));
+        return Err(ConstructionError::PlanStalls {
+            member: t.members[m].name.clone(),
+            joints: Vec::new(),
+            reason: format!(
+                "the joint polygons stall before member {}: every joint left has three or more unknown member forces (or two in line)",
+                t.members[m].name
+            ),
+        });
     }
     let result = plan_result(t, case, ext, &force, &plan_mm, sol, dr);
     if !bx[0].is_finite() {

@@ -110,10 +110,13 @@ pub fn construct_pairs(
                 let mut tried = std::collections::BTreeSet::new();
                 loop {
                     if !tried.insert(working.clone()) {
-                        return Err(ConstructionError::Unsupported(format!(
+                        return Err(ConstructionError::unsupported(
+                            "diagonals",
+                            format!(
                             "{}: no choice of the tension-only diagonals has them all in tension",
                             case.name
-                        )));
+                        ),
+                        ));
                     }
                     let drop: Vec<usize> =
                         pairs.iter().zip(&working).map(|(p, &w)| p[1 - w]).collect();
