@@ -30,6 +30,11 @@ pub const GLANCING_ANGLE: f64 = 15.0 * std::f64::consts::PI / 180.0;
 /// at figure scale where the value itself passes through zero (dead centres).
 pub const CHECK_REL: f64 = 1e-9;
 
+/// Relative slack when a chosen scale is rounded up to a nice one: a wanted scale within this
+/// fraction above a nice value (2.5000000000001 from a quotient) takes that value instead of
+/// jumping to the next one.
+pub const NICE_SCALE_SLACK: f64 = 1e-12;
+
 /// Largest number of equal divisions of a segment, arc or crank circle a scene may ask for.
 /// A drafter divides into 8 to 36 parts; 3,600 is a benchmark size, 100,000 is absurd for a
 /// figure and would write a figure of hundreds of megabytes.

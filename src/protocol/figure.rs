@@ -2,6 +2,7 @@
 //! bars. Data only: a procedure fills it in, the renderer draws it.
 
 use crate::fmt::num;
+use crate::kernel::tolerance::NICE_SCALE_SLACK;
 
 /// A scale bar written under the figure: `per_mm` quantity units per mm of sheet.
 ///
@@ -102,4 +103,27 @@ impl FigureMeta {
         self.scales.push(bar);
         self
     }
+}
+
+/// The next "nice" scale (1, 2, 2.5, 5 × 10ᵏ) at or above `x`: how a drafter picks a scale
+/// for a figure of a wanted size. A non-positive or non-finite `x` gives 1.
+///
+/// ```
+/// use graphostatik::protocol::nice_at_least;
+/// assert_eq!(nice_at_least(13.0), 20.0);
+/// assert_eq!(nice_at_least(0.3), 0.5);
+/// assert_eq!(nice_at_least(250.0), 250.0);
+/// ```
+pub fn nice_at_least(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return 1.0;
+    }
+    let k = x.log10().floor();
+    let base = 10f64.powf(k);
+    for m in [1.0, 2.0, 2.5, 5.0, 10.0] {
+        if m * base >= x * (1.0 - NICE_SCALE_SLACK) {
+            return m * base;
+        }
+    }
+    10.0 * base
 }

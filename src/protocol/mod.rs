@@ -10,7 +10,7 @@ mod step;
 
 pub use board::{Board, Cut, Scale, H};
 pub use error::{ConstructionError, CutOutcome};
-pub use figure::{FigureMeta, ScaleBar};
+pub use figure::{nice_at_least, FigureMeta, ScaleBar};
 pub use step::{
     note, Check, Geom, Ids, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Text, Topic,
     TABLE_BLOCK_ROWS,

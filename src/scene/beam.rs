@@ -4,7 +4,6 @@ use super::defaults::nice_at_least;
 use super::{optional_positive, SceneError};
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::{self, Beam, BeamDrawing, BeamRequest, BeamResults, PointLoad, UniformLoad};
-use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
@@ -32,7 +31,8 @@ super::header::scene_struct! {
 }
 
 /// The beam: its supports and, if it overhangs them, its ends.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct BeamSpec {
     /// Positions of the supports A and B along the beam (m).
@@ -44,7 +44,8 @@ pub struct BeamSpec {
 }
 
 /// A point load.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct PointLoadSpec {
     /// Position (m).
@@ -54,7 +55,8 @@ pub struct PointLoadSpec {
 }
 
 /// A uniformly distributed load.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct UniformLoadSpec {
     /// Start (m).
@@ -66,7 +68,8 @@ pub struct UniformLoadSpec {
 }
 
 /// An output of a beam scene (the reactions are always constructed).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum BeamOutput {
     /// Reactions by the closing line (always constructed).
@@ -78,7 +81,8 @@ pub enum BeamOutput {
 }
 
 /// Scales and the pole.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct BeamDrawingSpec {
     /// Length scale 1 : n.

@@ -5,7 +5,6 @@ use super::defaults::nice_at_least;
 use super::{optional_positive, SceneError};
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::centroid::{self, CentroidDrawing, CentroidResults};
-use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
@@ -23,7 +22,8 @@ super::header::scene_struct! {
 }
 
 /// Scales of a centroid scene.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct CentroidDrawingSpec {
     /// Length scale 1 : n.

@@ -10,20 +10,7 @@ const TARGET_FORCE_MM: f64 = 40.0;
 /// The crank-pin speed on the sheet as a fraction of the drawn crank radius (LH chose v = r).
 const TARGET_VELOCITY_OF_RADIUS: f64 = 1.0;
 
-/// The next "nice" scale (1, 2, 2.5, 5 × 10ᵏ) at or above `x`.
-pub fn nice_at_least(x: f64) -> f64 {
-    if !(x.is_finite() && x > 0.0) {
-        return 1.0;
-    }
-    let k = x.log10().floor();
-    let base = 10f64.powf(k);
-    for m in [1.0, 2.0, 2.5, 5.0, 10.0] {
-        if m * base >= x * (1.0 - 1e-12) {
-            return m * base;
-        }
-    }
-    10.0 * base
-}
+pub use crate::protocol::nice_at_least;
 
 /// The drawing scales: the scene's, or chosen.
 pub fn drawing(spec: Option<&DrawingSpec>, d: &CrankDrive) -> Drawing {

@@ -5,7 +5,6 @@ use super::defaults::nice_at_least;
 use super::{optional_positive, SceneError};
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::funicular::{self, Force, Resolution, SystemDrawing, SystemResults};
-use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
@@ -27,7 +26,8 @@ super::header::scene_struct! {
 }
 
 /// A force: where it acts, and either its components or its magnitude and direction.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct ForceSpec {
     /// Point of application [x, y] (m).
@@ -59,7 +59,8 @@ impl ForceSpec {
 }
 
 /// A resolution of one force along two directions.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct ResolveSpec {
     /// Number of the force, from 1.
@@ -72,7 +73,8 @@ pub struct ResolveSpec {
 }
 
 /// Scales and the pole.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct ForceDrawingSpec {
     /// Length scale 1 : n.

@@ -38,8 +38,10 @@ pub use error::SceneError;
 pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,
 };
+#[cfg(feature = "schema")]
+pub use procedure::schema_json;
 pub use procedure::{
-    parse_scene, schema_json, AnyProblem, AnyScene, Entry, Procedure, SceneHeader, REGISTRY,
+    parse_scene, AnyProblem, AnyScene, Entry, Procedure, SceneHeader, SchemaType, REGISTRY,
 };
 pub use shaft::{ShaftProblem, ShaftScene, TorqueSpec};
 pub use truss::{TrussProblem, TrussScene};

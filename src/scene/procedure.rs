@@ -2,7 +2,7 @@
 //! ([`AnyScene`], [`AnyProblem`]) that the command line works with.
 //!
 //! A procedure is one scene type that implements [`Procedure`]: its header fields come from
-//! [`scene_struct!`](crate::scene_struct), its checks of the values from
+//! the crate-internal `scene_struct!` macro, its checks of the values from
 //! [`Procedure::validate`], and its construction, figure metadata and outputs from the other
 //! items. Adding a procedure is its own module and one line in [`REGISTRY`].
 
@@ -11,7 +11,8 @@ use crate::protocol::{Board, ConstructionError, FigureMeta};
 use std::any::Any;
 use std::fmt::Debug;
 
-/// The header every scene starts with, declared once by [`scene_struct!`](crate::scene_struct).
+/// The header every scene starts with (`procedure`, `title`, `source`, `notes`), declared once
+/// by the crate-internal `scene_struct!` macro that every scene struct is written in.
 pub trait SceneHeader {
     /// The `procedure` field as written (absent for a slider-crank scene that leaves it out).
     fn procedure_field(&self) -> Option<&str>;
@@ -22,6 +23,19 @@ pub trait SceneHeader {
     /// Free notes on where the numbers come from (not drawn).
     fn notes(&self) -> Option<&str>;
 }
+
+/// A type with a JSON Schema where the `schema` feature is on (the default, with `cli`);
+/// every type otherwise, so that a library user does not compile `schemars`.
+#[cfg(feature = "schema")]
+pub trait SchemaType: schemars::JsonSchema {}
+#[cfg(feature = "schema")]
+impl<T: schemars::JsonSchema> SchemaType for T {}
+/// A type with a JSON Schema where the `schema` feature is on; every type here, where it is
+/// off.
+#[cfg(not(feature = "schema"))]
+pub trait SchemaType {}
+#[cfg(not(feature = "schema"))]
+impl<T> SchemaType for T {}
 
 /// One book procedure as the scene format sees it: what the scene is called, how its values
 /// are checked, what it constructs and what the sheet writes besides the construction.
@@ -42,14 +56,7 @@ pub trait SceneHeader {
 /// assert!((results.reactions.0 - 400.0).abs() < 1e-9); // A = 600·4/6 (LH C.4)
 /// ```
 pub trait Procedure:
-    SceneHeader
-    + serde::de::DeserializeOwned
-    + schemars::JsonSchema
-    + Debug
-    + Clone
-    + Send
-    + Sync
-    + 'static
+    SceneHeader + serde::de::DeserializeOwned + SchemaType + Debug + Clone + Send + Sync + 'static
 {
     /// The value of the scene's `procedure` field (`"beam"`).
     const NAME: &'static str;
@@ -124,9 +131,11 @@ pub struct Entry {
     pub about: &'static str,
     /// The outputs a scene of it can ask for.
     pub outputs: &'static [&'static str],
-    /// The Rust type of its scene (the schema's definition name).
-    pub scene_type: fn() -> String,
     parse: fn(&str, &str) -> Result<AnyScene, SceneError>,
+    /// The Rust type of its scene (the schema's definition name).
+    #[cfg(feature = "schema")]
+    scene_type: fn() -> String,
+    #[cfg(feature = "schema")]
     schema: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
 }
 
@@ -137,8 +146,10 @@ impl Entry {
             name: P::NAME,
             about: P::ABOUT,
             outputs: P::OUTPUTS,
-            scene_type: || P::schema_name().into_owned(),
             parse: |text, origin| parse_scene::<P>(text, origin).map(|s| AnyScene(Box::new(s))),
+            #[cfg(feature = "schema")]
+            scene_type: || P::schema_name().into_owned(),
+            #[cfg(feature = "schema")]
             schema: |g| g.subschema_for::<P>(),
         }
     }
@@ -358,6 +369,7 @@ impl AnyProblem {
     }
 }
 
+#[cfg(feature = "schema")]
 /// The JSON Schema of the scene format, pretty-printed: any of the registered procedures'
 /// scenes, each with its `procedure` value as a constant.
 pub fn schema_json() -> String {
@@ -390,6 +402,7 @@ pub fn schema_json() -> String {
     serde_json::to_string_pretty(&root).expect("a schema is plain JSON")
 }
 
+#[cfg(feature = "schema")]
 /// Writes the procedure's name into its scene's schema as the constant its `procedure` field
 /// must have (required, except for the default procedure).
 fn pin_procedure(def: &mut serde_json::Value, name: &str, default: bool) {
@@ -406,6 +419,7 @@ fn pin_procedure(def: &mut serde_json::Value, name: &str, default: bool) {
     }
 }
 
+#[cfg(feature = "schema")]
 fn name_value(s: &str) -> serde_json::Value {
     serde_json::Value::String(s.to_string())
 }
@@ -452,6 +466,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "schema")]
     fn schema_pins_each_procedure() {
         let s: serde_json::Value = serde_json::from_str(&schema_json()).unwrap();
         assert_eq!(s["anyOf"].as_array().unwrap().len(), REGISTRY.len());

@@ -6,7 +6,6 @@ use super::{optional_positive, SceneError};
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::shaft::{self, Shaft, ShaftRow, Torque};
 use crate::statics::{BeamDrawing, PointLoad};
-use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
@@ -39,7 +38,8 @@ super::header::scene_struct! {
 }
 
 /// A torque over a stretch of the shaft.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct TorqueSpec {
     /// Start of the stretch (m).

@@ -10,7 +10,6 @@ use crate::truss::matrix::{self, Determinacy};
 use crate::truss::redundant::{self, PairMode};
 use crate::truss::roof;
 use crate::truss::{Joint, JointLoad, LoadCase, Member, Support, Truss};
-use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
 
@@ -60,7 +59,8 @@ super::header::scene_struct! {
 }
 
 /// A joint.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct JointSpec {
     /// Name ("I", "II", …).
@@ -70,7 +70,8 @@ pub struct JointSpec {
 }
 
 /// A member.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct MemberSpec {
     /// Name ("1", "2", …).
@@ -80,7 +81,8 @@ pub struct MemberSpec {
 }
 
 /// A support.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct SupportSpec {
     /// The joint, by name.
@@ -105,7 +107,8 @@ impl SupportSpec {
 }
 
 /// Pin or roller.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum SupportKindSpec {
     /// Festes Auflager.
@@ -115,7 +118,8 @@ pub enum SupportKindSpec {
 }
 
 /// A load case.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct LoadCaseSpec {
     /// Name ("dead load", "wind left", …).
@@ -125,7 +129,8 @@ pub struct LoadCaseSpec {
 }
 
 /// A train of vertical loads on consecutive joints of a path, moved one joint at a time.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct MovingLoadSpec {
     /// Name; the positions are named "name at joint".
@@ -137,7 +142,8 @@ pub struct MovingLoadSpec {
 }
 
 /// The roof whose loads the truss carries (LH B.3, Gl. 3-10).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct RoofSpec {
     /// Spacing of the trusses a (m).
@@ -151,7 +157,8 @@ pub struct RoofSpec {
 }
 
 /// One slope of the roof.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct SlopeSpec {
     /// Joints along the slope, by name, in order.
@@ -161,7 +168,8 @@ pub struct SlopeSpec {
 }
 
 /// Which load cases are permanent and which exclude each other, by name.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct EnvelopeSpec {
     /// Cases always present (dead load).
@@ -173,7 +181,8 @@ pub struct EnvelopeSpec {
 }
 
 /// A sum of load cases, by name.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct CombinationSpec {
     /// Its name ("total").
@@ -184,7 +193,8 @@ pub struct CombinationSpec {
 
 /// A load at a joint: `kg` downwards, or `kg` along `angle_deg`, or `kg` pulling `toward`
 /// another joint (a rope's pull along the rope, LH Aufgabe 3), or components `kg_xy`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct JointLoadSpec {
     /// The joint, by name.
@@ -228,7 +238,8 @@ impl JointLoadSpec {
 }
 
 /// Scales.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct TrussDrawingSpec {
     /// Length scale 1 : n.

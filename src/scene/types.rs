@@ -1,6 +1,5 @@
 //! The serde types of a scene. Doc comments here become the JSON Schema's descriptions.
 
-use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
@@ -30,7 +29,8 @@ super::header::scene_struct! {
 }
 
 /// The straight slider-crank (gerader Schubkurbeltrieb).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct Mechanism {
     /// Crank radius R in mm (give this or `stroke_mm`).
@@ -45,7 +45,8 @@ pub struct Mechanism {
 
 /// The connecting rod: its length, or its length in crank radii (the books' R/L = 1/5 is
 /// `{"l_over_r": 5}`).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub enum Rod {
     /// Rod length L in mm.
@@ -57,7 +58,8 @@ pub enum Rod {
 }
 
 /// The speed of the crank.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub enum Speed {
     /// Revolutions per minute n.
@@ -77,7 +79,8 @@ pub enum Speed {
 }
 
 /// The driving piston force P, positive when it pushes the piston the way it moves.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub enum PistonForceSpec {
     /// A constant force in kg.
@@ -92,7 +95,8 @@ pub enum PistonForceSpec {
 }
 
 /// Pressure on a piston.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct Pressure {
     /// Net pressure p in at (kg/cm²).
@@ -113,7 +117,8 @@ impl Pressure {
 }
 
 /// Crank positions.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub enum AngleSpec {
     /// Divide the crank circle into n equal parts from the inner dead centre (2 ≤ n ≤ 3600).
@@ -126,7 +131,8 @@ pub enum AngleSpec {
 }
 
 /// Physical effects to include.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct Effects {
     /// Finite rod length (default true); false treats the rod as infinitely long
@@ -146,7 +152,8 @@ impl Default for Effects {
 }
 
 /// An output of the slider-crank procedures.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum Output {
     /// Piston path by the arc with the rod length (KG Abb. 1047, LH Abb. 49).
@@ -174,7 +181,8 @@ impl Output {
 }
 
 /// A construction of the piston velocity.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum VelocityMethod {
     /// Parallel to the rod through the end of v laid off on the crank ray (KG Abb. 1049).
@@ -184,7 +192,8 @@ pub enum VelocityMethod {
 }
 
 /// Scales of the drawing. Any left out are chosen (1, 2, 2.5 or 5 times a power of ten).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct DrawingSpec {
     /// Length scale 1 : n, machine mm per mm of sheet.

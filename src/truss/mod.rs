@@ -12,6 +12,7 @@
 //! - [`cremona`]: the reactions and the combined Cremona plan, every joint polygon a step;
 //! - [`reactions`]: the reactions by the moment equations, the check on the graphic ones.
 
+pub mod builder;
 pub mod cremona;
 pub mod envelope;
 pub mod faces;
@@ -21,6 +22,8 @@ pub mod matrix;
 pub mod reactions;
 pub mod redundant;
 pub mod roof;
+
+pub use builder::{TrussBuilder, TrussError};
 
 use crate::kernel::{Point, Vector};
 use serde::Serialize;

@@ -17,9 +17,8 @@ use crate::protocol::{Board, ConstructionError};
 use serde::Serialize;
 
 /// How the pairs of diagonals are treated.
-#[derive(
-    Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize, schemars::JsonSchema,
-)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum PairMode {
     /// Two systems with half the loads each, added (Abb. 19 a, b).
