@@ -82,7 +82,7 @@ fn solve(beam: &Beam, d: &BeamDrawing, recording: bool) -> f64 {
         .unwrap()
         .max_moment
         .unwrap()
-        .0
+        .moment
 }
 
 fn bench(c: &mut Criterion) {

@@ -52,8 +52,8 @@ fn lh_gl_11_single_load() {
     // A·a = y·h: M under a load P at a on a span l is P·a·b/l.
     let (b, r) = run(&simple(&[(3.0, 1000.0)]), 800.0);
     all_pass(&b);
-    assert!((r.reactions.0 - 700.0).abs() < 1e-9);
-    let (m, x) = r.max_moment.unwrap();
+    assert!((r.reactions.a - 700.0).abs() < 1e-9);
+    let MaxMoment { moment: m, x } = r.max_moment.unwrap();
     assert!((m - 1000.0 * 3.0 * 7.0 / 10.0).abs() < 1e-9 && (x - 3.0).abs() < 1e-12);
 }
 
@@ -69,8 +69,10 @@ fn the_pole_distance_changes_the_drawing_not_the_results() {
         })
         .collect();
     for r in &results[1..] {
-        assert!((r.reactions.0 - results[0].reactions.0).abs() < 1e-9);
-        assert!((r.max_moment.unwrap().0 - results[0].max_moment.unwrap().0).abs() < 1e-8);
+        assert!((r.reactions.a - results[0].reactions.a).abs() < 1e-9);
+        assert!(
+            (r.max_moment.unwrap().moment - results[0].max_moment.unwrap().moment).abs() < 1e-8
+        );
     }
 }
 
@@ -78,9 +80,9 @@ fn the_pole_distance_changes_the_drawing_not_the_results() {
 fn load_at_a_support_goes_straight_into_it() {
     let (b, r) = run(&simple(&[(0.0, 500.0), (10.0, 300.0), (5.0, 200.0)]), 500.0);
     all_pass(&b);
-    assert!((r.reactions.0 - 600.0).abs() < 1e-9);
-    assert!((r.reactions.1 - 400.0).abs() < 1e-9);
-    assert!((r.max_moment.unwrap().0 - 500.0).abs() < 1e-9);
+    assert!((r.reactions.a - 600.0).abs() < 1e-9);
+    assert!((r.reactions.b - 400.0).abs() < 1e-9);
+    assert!((r.max_moment.unwrap().moment - 500.0).abs() < 1e-9);
 }
 
 #[test]
@@ -91,24 +93,24 @@ fn two_equal_maxima_of_a_symmetric_load() {
     let p7 = r.sections.iter().find(|s| s.what == "P2").unwrap().moment;
     assert!((p3 - 3000.0).abs() < 1e-9 && (p7 - 3000.0).abs() < 1e-9);
     // The shear is zero between the loads: both are maxima; the first is reported.
-    assert!((r.max_moment.unwrap().0 - 3000.0).abs() < 1e-9);
+    assert!((r.max_moment.unwrap().moment - 3000.0).abs() < 1e-9);
 }
 
 #[test]
 fn a_single_load_at_mid_span() {
     let (b, r) = run(&simple(&[(5.0, 800.0)]), 400.0);
     all_pass(&b);
-    assert_eq!(r.reactions.0, r.reactions.1);
-    assert!((r.max_moment.unwrap().0 - 2000.0).abs() < 1e-9);
+    assert_eq!(r.reactions.a, r.reactions.b);
+    assert!((r.max_moment.unwrap().moment - 2000.0).abs() < 1e-9);
 }
 
 #[test]
 fn zero_loads_give_zero_everything_and_no_nan() {
     let (b, r) = run(&simple(&[(2.0, 0.0), (6.0, 0.0)]), 100.0);
     all_pass(&b);
-    assert_eq!(r.reactions, (0.0, 0.0));
+    assert_eq!((r.reactions.a, r.reactions.b), (0.0, 0.0));
     assert!(r.sections.iter().all(|s| s.moment == 0.0));
-    assert!(r.shear.iter().all(|&(_, a, b)| a == 0.0 && b == 0.0));
+    assert!(r.shear.iter().all(|s| s.left == 0.0 && s.right == 0.0));
 }
 
 #[test]
@@ -124,12 +126,12 @@ fn overhang_of_lh_abb_34_is_undercut() {
     };
     let (b, r) = run(&beam, 1000.0);
     all_pass(&b);
-    assert!((r.reactions.0 - 400.0).abs() < 1e-9 && (r.reactions.1 - 1400.0).abs() < 1e-9);
+    assert!((r.reactions.a - 400.0).abs() < 1e-9 && (r.reactions.b - 1400.0).abs() < 1e-9);
     let mb = r.sections.iter().find(|s| s.what == "B").unwrap().moment;
     assert!((mb + 1600.0).abs() < 1e-9);
     assert_eq!(r.zero_moments.len(), 1);
     assert!((r.zero_moments[0] - 10.0 / 3.0).abs() < 1e-9);
-    assert!((r.max_moment.unwrap().0 + 1600.0).abs() < 1e-9);
+    assert!((r.max_moment.unwrap().moment + 1600.0).abs() < 1e-9);
 }
 
 #[test]
@@ -159,7 +161,7 @@ fn parabola_points_lie_on_the_exact_moment_curve() {
         for s in &r.sections {
             assert!((s.moment - cf::moment(&beam, s.x)).abs() < 1e-9 * 700.0 * 4.0 * 6.0);
         }
-        let (mm, x) = r.max_moment.unwrap();
+        let MaxMoment { moment: mm, x } = r.max_moment.unwrap();
         assert!((x - 3.0).abs() < 1e-12);
         assert!((mm - cf::max_abs_moment(&beam).0).abs() < 1e-9);
     }
@@ -191,7 +193,7 @@ fn a_thousand_loads() {
     let (b, r) = run(&simple(&loads), 5000.0);
     all_pass(&b);
     let (ra, rb) = cf::reactions(&simple(&loads));
-    assert!((r.reactions.0 - ra).abs() < 1e-9 * (ra + rb));
+    assert!((r.reactions.a - ra).abs() < 1e-9 * (ra + rb));
 }
 
 fn err(text: &str) -> String {
@@ -302,7 +304,7 @@ proptest! {
         for c in b.steps().iter().flat_map(|s| &s.checks) {
             prop_assert!(c.passed, "{}: {} vs {} ({:e} > {:e})", c.quantity, c.constructed, c.closed_form, c.error, c.tolerance);
         }
-        let (ra, rb) = r.reactions;
+        let (ra, rb) = (r.reactions.a, r.reactions.b);
         let loads_total: f64 = beam.point_loads.iter().map(|l| l.p).sum::<f64>()
             + beam.uniform_loads.iter().map(|u| u.resultant()).sum::<f64>();
         let scale = beam.point_loads.iter().map(|l| l.p.abs()).sum::<f64>()
@@ -336,7 +338,7 @@ fn a_beam_drawn_elsewhere_on_the_sheet_gives_the_same_results() {
     let mut b = Board::new(500.0, true);
     let there = construct_beam(&mut b, &beam, &d, &ALL).unwrap();
     all_pass(&b);
-    assert!((here.reactions.0 - there.reactions.0).abs() < 1e-9);
+    assert!((here.reactions.a - there.reactions.a).abs() < 1e-9);
     assert_eq!(here.sections.len(), there.sections.len());
     for (a, c) in here.sections.iter().zip(&there.sections) {
         assert!((a.moment - c.moment).abs() < 1e-8 && (a.x - c.x).abs() < 1e-9);
@@ -363,7 +365,7 @@ fn indirect_loading_of_lh_abb_35() {
     let mut b = Board::new(500.0, true);
     let r = construct_beam_indirect(&mut b, &beam, &panels, &drawing(1500.0), &ALL).unwrap();
     all_pass(&b);
-    assert!((r.max_moment.unwrap().0 - 2250.0).abs() < 1e-9);
+    assert!((r.max_moment.unwrap().moment - 2250.0).abs() < 1e-9);
     // A load reaching past the last stringer is refused, not cut off.
     assert!(panel_loads(&beam, &[0.0, 5.0]).is_err());
 }

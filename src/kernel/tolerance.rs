@@ -35,6 +35,23 @@ pub const CHECK_REL: f64 = 1e-9;
 /// jumping to the next one.
 pub const NICE_SCALE_SLACK: f64 = 1e-12;
 
+/// Two positions along a beam or a line (m) closer than `REL_POSITION_EPS × span` are one
+/// place: a section asked for at a load is the load's section, two events of the shear
+/// diagram at one x are one event. At 1e-12 it sits three digits above f64's rounding of a
+/// position given in the scene.
+pub const REL_POSITION_EPS: f64 = 1e-12;
+
+/// A crossing (a zero moment) counts as inside a stretch of the beam only when it lies more
+/// than `REL_STRETCH_EPS × span` inside its ends: a crossing at an end is the neighbouring
+/// stretch's, and a computed intersection of two nearly parallel lines carries more error than
+/// a given position (1e-9 leaves room for a conditioning of 1e6).
+pub const REL_STRETCH_EPS: f64 = 1e-9;
+
+/// Two candidates for a largest value (the largest |M| of a beam) within `REL_TIE_EPS` times
+/// their reference are a tie, and the first found is kept: the order of the construction,
+/// not rounding, decides which section is named.
+pub const REL_TIE_EPS: f64 = 1e-12;
+
 /// Largest number of equal divisions of a segment, arc or crank circle a scene may ask for.
 /// A drafter divides into 8 to 36 parts; 3,600 is a benchmark size, 100,000 is absurd for a
 /// figure and would write a figure of hundreds of megabytes.

@@ -53,7 +53,7 @@ impl<T> SchemaType for T {}
 /// let problem = BeamScene::problem(&scene);
 /// let (board, results) = BeamScene::construct(&problem, true).unwrap();
 /// assert!(board.all_passed());
-/// assert!((results.reactions.0 - 400.0).abs() < 1e-9); // A = 600·4/6 (LH C.4)
+/// assert!((results.reactions.a - 400.0).abs() < 1e-9); // A = 600·4/6 (LH C.4)
 /// ```
 pub trait Procedure:
     SceneHeader + serde::de::DeserializeOwned + SchemaType + Debug + Clone + Send + Sync + 'static

@@ -16,7 +16,7 @@ pub mod sizing;
 
 pub use beam::{
     construct_beam, construct_beam_at, construct_beam_indirect, panel_loads, BeamDrawing,
-    BeamRequest, BeamResults, SectionRow,
+    BeamRequest, BeamResults, MaxMoment, Reactions, SectionRow, ShearRow,
 };
 
 use serde::Serialize;

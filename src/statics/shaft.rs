@@ -418,7 +418,7 @@ pub fn construct_shaft(
     let mut plane = |b: &mut Board, bm: &Beam| -> Result<BeamResults, ConstructionError> {
         if bm.point_loads.is_empty() {
             return Ok(BeamResults {
-                reactions: (0.0, 0.0),
+                reactions: super::beam::Reactions { a: 0.0, b: 0.0 },
                 sections: xs
                     .iter()
                     .map(|&x| super::SectionRow {

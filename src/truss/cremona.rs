@@ -31,6 +31,7 @@ use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{
     note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H, TABLE_BLOCK_ROWS,
 };
+use crate::statics::funicular::polygon::{self, StringStyle};
 use serde::Serialize;
 
 const N_JOINT: Note = note(
@@ -53,41 +54,15 @@ const N_FP: Note = note(
     "LH C.2",
     Topic::ForcePlan,
 );
-const N_POLE: Note = note("pole O", Some("Pol"), "LH C.2", Topic::ForcePlan);
-const N_RAY: Note = note("pole ray", Some("Polstrahl"), "LH C.2", Topic::ForcePlan);
 const N_LOA: Note = note(
     "line of action of the load",
     Some("Wirkungslinie"),
     "LH C.2",
     Topic::Funicular,
 );
-const N_STRING: Note = note(
-    "string parallel to the pole ray",
-    Some("Seilstrahl"),
-    "LH C.2",
-    Topic::Funicular,
-);
-const N_STRING_CUT: Note = note(
-    "string cuts the next line of action",
-    Some("Seileck"),
-    "LH C.2",
-    Topic::Funicular,
-);
 const N_B_CUT: Note = note(
     "last string cuts the reaction line of B",
     Some("Seileck"),
-    "LH C.2",
-    Topic::Reactions,
-);
-const N_CLOSING: Note = note(
-    "closing line from A",
-    Some("Schlusslinie"),
-    "LH C.2",
-    Topic::Reactions,
-);
-const N_CLOSING_RAY: Note = note(
-    "closing line carried through the pole",
-    Some("Schlusslinie"),
     "LH C.2",
     Topic::Reactions,
 );
@@ -695,28 +670,25 @@ fn construct_case(
             )?;
             fh.push(p);
         }
-        let o = b.point(pole, Label::plain("O"), Role::Given, N_POLE);
+        let polygon::Rays { pole: o, rays } = polygon::pole_and_rays(b, pole, &fh)?;
         for p in fh.iter().map(|h| h.g).chain([pole]) {
             grow(&mut boxes[1], p, at.polygon);
         }
-        let rays: Vec<H<Line>> = fh
-            .iter()
-            .map(|f| b.line_through(&o, f, Label::NONE, Role::Construction, N_RAY))
-            .collect::<Result<_, _>>()?;
-        let first = b.parallel(
-            &rays[0],
+        let strings = polygon::strings(
+            b,
+            &rays,
             &jp[start],
-            Label::NONE,
-            Role::Construction,
-            N_STRING,
-        );
-        let mut s = first;
-        for (i, l) in loads.iter().enumerate() {
-            let loa = b.line_dir(&jp[l.joint], l.force, Label::NONE, Role::Auxiliary, N_LOA)?;
-            let c = b.meet_point(&s, &loa, Label::NONE, N_STRING_CUT)?;
+            false,
+            StringStyle::CONSTRUCTION,
+            |b, j| {
+                let l = &loads[j];
+                b.line_dir(&jp[l.joint], l.force, Label::NONE, Role::Auxiliary, N_LOA)
+            },
+        )?;
+        for c in &strings.corners {
             grow(&mut boxes[0], c.g, at.truss);
-            s = b.parallel(&rays[i + 1], &c, Label::NONE, Role::Construction, N_STRING);
         }
+        let (first, s) = (strings.strings[0], strings.strings[loads.len()]);
         let last = fh[loads.len()];
         let mut segs: Vec<Option<(H<Point>, H<Point>)>> = vec![None; t.supports.len()];
         match sup {
@@ -725,10 +697,16 @@ fn construct_case(
                 let rline = rlines[ri].expect("a roller has a line");
                 let bcut = b.meet_point(&s, &rline, Label::quiet("b", 0), N_B_CUT)?;
                 grow(&mut boxes[0], bcut.g, at.truss);
-                let closing =
-                    b.line_through(&jp[pin], &bcut, Label::NONE, Role::Construction, N_CLOSING)?;
-                let through_o =
-                    b.parallel(&closing, &o, Label::NONE, Role::Construction, N_CLOSING_RAY);
+                let through_o = polygon::closing(
+                    b,
+                    &jp[pin],
+                    &bcut,
+                    &o,
+                    Label::NONE,
+                    Role::Construction,
+                    Role::Construction,
+                )?
+                .ray;
                 let bl = b.parallel(&rline, &last, Label::NONE, Role::Auxiliary, N_B_DIR);
                 let x = b.meet_point(&through_o, &bl, Label::quiet("X", 0), N_SPLIT)?;
                 grow(&mut boxes[1], x.g, at.polygon);

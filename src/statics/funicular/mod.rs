@@ -12,8 +12,11 @@
 //! R = 0 they are parallel: a couple of moment |ray 0| × their distance, or, if they coincide,
 //! equilibrium (force polygon and funicular polygon both closed).
 
+pub mod polygon;
+
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};
+use polygon::StringStyle;
 use serde::Serialize;
 
 const N_APPLICATION: Note = note(
@@ -82,28 +85,9 @@ const N_AXIS_Y: Note = note(
     "LH A.4",
     Topic::ForcePlan,
 );
-const N_POLE: Note = note("pole O", Some("Pol"), "LH C.2, Abb. 22", Topic::ForcePlan);
-const N_RAY: Note = note(
-    "pole ray",
-    Some("Polstrahl"),
-    "LH C.2, Abb. 22",
-    Topic::ForcePlan,
-);
 const N_STRING_START: Note = note(
     "start of the funicular polygon on the first line of action",
     Some("Seilpolygon"),
-    "LH Abb. 22",
-    Topic::Funicular,
-);
-const N_STRING: Note = note(
-    "string parallel to the pole ray",
-    Some("Seilseite"),
-    "LH Abb. 22",
-    Topic::Funicular,
-);
-const N_CORNER: Note = note(
-    "string cuts the next line of action",
-    Some("Seileck"),
     "LH Abb. 22",
     Topic::Funicular,
 );
@@ -413,21 +397,7 @@ pub fn construct_system(
         Some(p) => p0.g + Vector::new(p[0], p[1]) / fs,
         None => default_pole(&pts.iter().map(|p| p.g).collect::<Vec<_>>(), fmax / fs),
     };
-    let pole = b.point(pole_at, Label::plain("O"), Role::Given, N_POLE);
-    let mut rays = Vec::with_capacity(n + 1);
-    for (i, p) in pts.iter().enumerate() {
-        rays.push(
-            b.line_through(&pole, p, Label::NONE, Role::Construction, N_RAY)
-                .map_err(|_| {
-                    ConstructionError::unsupported(
-                        "pole",
-                        format!(
-                            "the pole lies on corner {i} of the force polygon: choose another pole"
-                        ),
-                    )
-                })?,
-        );
-    }
+    let polygon::Rays { pole, rays } = polygon::pole_and_rays(b, pole_at, &pts)?;
 
     // --- Funicular polygon ------------------------------------------------------------
     let start = b.point(
@@ -436,19 +406,10 @@ pub fn construct_system(
         Role::Given,
         N_STRING_START,
     );
-    let mut strings = vec![b.parallel(&rays[0], &start, Label::NONE, Role::Result, N_STRING)];
-    let mut corner = start;
-    for i in 0..n {
-        if i > 0 {
-            corner = b.meet_point(&strings[i], &lines[i], Label::quiet("II", i as u32), N_CORNER).map_err(|_| {
-                ConstructionError::unsupported("pole", format!(
-                    "string {i} runs parallel to the line of action of force {}: the pole lies on that side of the force polygon; choose another pole",
-                    i + 1
-                ))
-            })?;
-        }
-        strings.push(b.parallel(&rays[i + 1], &corner, Label::NONE, Role::Result, N_STRING));
-    }
+    let strings = polygon::strings(b, &rays, &start, true, StringStyle::RESULT, |_, j| {
+        Ok(lines[j])
+    })?
+    .strings;
     let mscale = Scale {
         per_mm: fs / k,
         unit: "kg·m",

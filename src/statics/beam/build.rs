@@ -1,0 +1,499 @@
+//! The demand-driven construction of a beam: each part (position plan, force plan, funicular
+//! polygon, reactions, moments, parabolas, shear) is built once, when something needs it.
+
+use super::notes::*;
+use super::{
+    BeamDrawing, BeamResults, MaxMoment, Reactions, SectionRow, ShearRow, ARROW_MM, GAP_MM,
+    SUPPORT_MM,
+};
+use crate::kernel::{Line, Point, Vector};
+use crate::protocol::{Board, ConstructionError, Label, Role, Scale, H};
+use crate::statics::closed_form as cf;
+use crate::statics::funicular::polygon::{self, StringStyle};
+use crate::statics::Beam;
+
+/// A force of the funicular polygon: a point load, or a uniform load by its resultant.
+#[derive(Clone, Copy)]
+pub(super) enum Kind {
+    Point(usize),
+    Uniform(usize),
+}
+
+/// A force of the polygon on its line of action (m), with its load (kg, down positive).
+#[derive(Clone, Copy)]
+pub(super) struct Force {
+    pub(super) x: f64,
+    pub(super) p: f64,
+    pub(super) kind: Kind,
+}
+
+/// The verticals through the two ends of a uniform load.
+pub(super) type EndVerticals = (H<Line>, H<Line>);
+
+/// The beam drawn to scale with its supports, loads and their verticals (Lageplan).
+pub(super) struct Plan {
+    pub(super) left: H<Point>,
+    pub(super) axis: H<Line>,
+    pub(super) supports: Vec<H<Point>>,
+    pub(super) support_verticals: Vec<H<Line>>,
+    /// The vertical of each force of the polygon, in the order of the forces.
+    pub(super) verticals: Vec<H<Line>>,
+    /// The verticals through the ends of each uniform load.
+    pub(super) end_verticals: Vec<EndVerticals>,
+}
+
+/// The load line with the loads laid off, the pole and its rays (Kräfteplan).
+pub(super) struct ForcePlan {
+    pub(super) load_line: H<Line>,
+    /// Corner k of the load line: after the first k forces.
+    pub(super) pts: Vec<H<Point>>,
+    pub(super) pole: H<Point>,
+    pub(super) rays: Vec<H<Line>>,
+}
+
+/// The funicular polygon: its start, strings and corners on the verticals.
+pub(super) struct Funicular {
+    pub(super) start: H<Point>,
+    pub(super) strings: Vec<H<Line>>,
+    pub(super) corners: Vec<H<Point>>,
+}
+
+/// The closing line, the point C it gives on the load line, and the reactions.
+#[derive(Clone, Copy)]
+pub(super) struct Reacted {
+    pub(super) ia: H<Point>,
+    pub(super) ib: H<Point>,
+    pub(super) closing: H<Line>,
+    pub(super) c: H<Point>,
+    pub(super) values: Reactions,
+}
+
+/// A uniform load's parabola: its force index, the two tangent points and the polygon corner
+/// between them.
+#[derive(Clone, Copy)]
+pub(super) struct Parabola {
+    pub(super) force: usize,
+    pub(super) t1: H<Point>,
+    pub(super) corner: H<Point>,
+    pub(super) t2: H<Point>,
+}
+
+/// A beam's construction on a board, built part by part on demand.
+pub(super) struct BeamConstruction<'a, 'b> {
+    pub(super) b: &'b mut Board,
+    pub(super) beam: &'a Beam,
+    pub(super) dr: &'a BeamDrawing,
+    /// Sheet mm per m of beam.
+    pub(super) k: f64,
+    pub(super) kg: Scale,
+    pub(super) moment_scale: Scale,
+    pub(super) ra: f64,
+    pub(super) rb: f64,
+    pub(super) cf: cf::Sections<'a>,
+    pub(super) total: f64,
+    /// The largest load or reaction: the reference of the force checks.
+    pub(super) pref: f64,
+    pub(super) span: f64,
+    /// `pref × span`: the reference of the moment checks.
+    pub(super) mref: f64,
+    pub(super) forces: Vec<Force>,
+    plan: Option<Plan>,
+    force_plan: Option<ForcePlan>,
+    funicular: Option<Funicular>,
+    reacted: Option<Reacted>,
+    pub(super) sections: Vec<SectionRow>,
+    /// The measured moment of each section, to attach further checks to.
+    pub(super) handles: Vec<H<f64>>,
+    pub(super) zero_moments: Vec<f64>,
+    pub(super) parabolas: Vec<Parabola>,
+    pub(super) shear_diagram: Option<super::shear::ShearDiagram>,
+}
+
+impl<'a, 'b> BeamConstruction<'a, 'b> {
+    /// The closed forms and scales of the beam; nothing is drawn yet.
+    pub(super) fn new(b: &'b mut Board, beam: &'a Beam, dr: &'a BeamDrawing) -> Self {
+        let (ra, rb) = cf::reactions(beam);
+        let total: f64 = beam.point_loads.iter().map(|l| l.p).sum::<f64>()
+            + beam
+                .uniform_loads
+                .iter()
+                .map(|u| u.resultant())
+                .sum::<f64>();
+        let pref = beam
+            .point_loads
+            .iter()
+            .map(|l| l.p.abs())
+            .chain(beam.uniform_loads.iter().map(|u| u.resultant().abs()))
+            .fold(0.0, f64::max)
+            .max(ra.abs())
+            .max(rb.abs());
+        let span = beam.ends[1] - beam.ends[0];
+        BeamConstruction {
+            b,
+            beam,
+            dr,
+            k: 1000.0 / dr.length_scale,
+            kg: Scale::kg(dr.force_scale),
+            moment_scale: Scale::new(dr.length_scale / 1000.0 * dr.pole_distance, "kg·m"),
+            ra,
+            rb,
+            cf: cf::Sections::new(beam),
+            total,
+            pref,
+            span,
+            mref: pref * span,
+            forces: polygon_forces(beam),
+            plan: None,
+            force_plan: None,
+            funicular: None,
+            reacted: None,
+            sections: Vec::new(),
+            handles: Vec::new(),
+            zero_moments: Vec::new(),
+            parabolas: Vec::new(),
+            shear_diagram: None,
+        }
+    }
+
+    /// Sheet x of the beam's x (m).
+    pub(super) fn sx(&self, x: f64) -> f64 {
+        x * self.k + self.dr.origin[0]
+    }
+
+    /// Sheet y of a height above the beam (mm).
+    pub(super) fn sy(&self, y: f64) -> f64 {
+        y + self.dr.origin[1]
+    }
+
+    /// The position plan, drawn on first demand.
+    pub(super) fn plan(&mut self) -> Result<&Plan, ConstructionError> {
+        if self.plan.is_none() {
+            let p = self.draw_plan()?;
+            self.plan = Some(p);
+        }
+        Ok(self.plan.as_ref().expect("just drawn"))
+    }
+
+    fn draw_plan(&mut self) -> Result<Plan, ConstructionError> {
+        let (beam, y0) = (self.beam, self.sy(0.0));
+        let (x0, x1) = (self.sx(beam.ends[0]), self.sx(beam.ends[1]));
+        let b = &mut *self.b;
+        let left = b.point(Point::new(x0, y0), Label::NONE, Role::Given, N_BEAM_START);
+        let axis = b.line_dir(
+            &left,
+            Vector::new(1.0, 0.0),
+            Label::NONE,
+            Role::Axis,
+            N_BEAM_AXIS,
+        )?;
+        let right = b.point(Point::new(x1, y0), Label::NONE, Role::Given, N_BEAM_END);
+        b.segment(&left, &right, Label::NONE, Role::Result, N_BEAM);
+        let mut supports = Vec::new();
+        let mut support_verticals = Vec::new();
+        for (i, &x) in beam.supports.iter().enumerate() {
+            let (p, v) = self.draw_support(i, x)?;
+            supports.push(p);
+            support_verticals.push(v);
+        }
+        let mut verticals = Vec::with_capacity(self.forces.len());
+        let mut end_verticals = Vec::new();
+        for j in 0..self.forces.len() {
+            let (v, ends) = self.draw_load(j)?;
+            verticals.push(v);
+            end_verticals.extend(ends);
+        }
+        Ok(Plan {
+            left,
+            axis,
+            supports,
+            support_verticals,
+            verticals,
+            end_verticals,
+        })
+    }
+
+    /// Support A (`i = 0`) or B at x: its point, symbol and vertical.
+    fn draw_support(&mut self, i: usize, x: f64) -> Result<(H<Point>, H<Line>), ConstructionError> {
+        let name = if i == 0 { "A" } else { "B" };
+        let (xs, y0, yl) = (self.sx(x), self.sy(0.0), self.sy(-1.5));
+        let b = &mut *self.b;
+        let p = b.point(
+            Point::new(xs, y0),
+            Label::plain(name),
+            Role::Given,
+            N_SUPPORT,
+        );
+        let l = super::b_point(b, xs - SUPPORT_MM, yl, N_SUPPORT_SYMBOL);
+        let r = super::b_point(b, xs + SUPPORT_MM, yl, N_SUPPORT_SYMBOL);
+        b.segment(&l, &r, Label::NONE, Role::Guide, N_SUPPORT_SYMBOL);
+        let down = Vector::new(0.0, -1.0);
+        let v = b.line_dir(
+            &p,
+            down,
+            Label::NONE,
+            Role::Construction,
+            N_SUPPORT_VERTICAL,
+        )?;
+        Ok((p, v))
+    }
+
+    /// Force `j` of the polygon drawn at its place: a point load's arrow, or a uniform load's
+    /// outline, resultant and end verticals; then its vertical.
+    fn draw_load(
+        &mut self,
+        j: usize,
+    ) -> Result<(H<Line>, Option<EndVerticals>), ConstructionError> {
+        let f = self.forces[j];
+        let (xs, y0) = (self.sx(f.x), self.sy(0.0));
+        let down = Vector::new(0.0, -1.0);
+        let at = self.b.point(
+            Point::new(xs, y0),
+            Label::quiet("L", j as u32 + 1),
+            Role::Given,
+            N_LOAD,
+        );
+        let ends = match f.kind {
+            Kind::Point(i) => {
+                let y = self.sy(ARROW_MM * f.p.signum());
+                let b = &mut *self.b;
+                let label = Label::indexed("P", i as u32 + 1);
+                let tail = b.point(Point::new(xs, y), label, Role::Given, N_LOAD_ARROW);
+                b.segment(&tail, &at, Label::NONE, Role::Force, N_LOAD_ARROW);
+                None
+            }
+            Kind::Uniform(i) => Some(self.draw_uniform(i, &at)?),
+        };
+        let v = self
+            .b
+            .line_dir(&at, down, Label::NONE, Role::Construction, N_LOAD_VERTICAL)?;
+        Ok((v, ends))
+    }
+
+    /// Uniform load `i`: its outline, its resultant Q at `at`, the verticals of its ends.
+    fn draw_uniform(
+        &mut self,
+        i: usize,
+        at: &H<Point>,
+    ) -> Result<(H<Line>, H<Line>), ConstructionError> {
+        let u = self.beam.uniform_loads[i];
+        let hgt = 0.5 * ARROW_MM;
+        let (xa, xb, y0, yh) = (self.sx(u.from), self.sx(u.to), self.sy(0.0), self.sy(hgt));
+        let corners = [
+            Point::new(xa, y0),
+            Point::new(xa, yh),
+            Point::new(xb, yh),
+            Point::new(xb, y0),
+        ];
+        let outline: Vec<H<Point>> = corners
+            .iter()
+            .map(|c| H {
+                id: crate::protocol::ObjId::NONE,
+                g: *c,
+            })
+            .collect();
+        let ytail = self.sy(ARROW_MM * 1.4);
+        let b = &mut *self.b;
+        let a = b.point(corners[0], Label::NONE, Role::Given, N_UNIFORM);
+        let bb = b.point(corners[3], Label::NONE, Role::Given, N_UNIFORM);
+        let q = Label::indexed("q", i as u32 + 1);
+        b.curve(&outline, false, q, Role::Given, N_UNIFORM);
+        let label = Label::indexed("Q", i as u32 + 1);
+        let tail = b.point(
+            Point::new(at.g.x, ytail),
+            label,
+            Role::Given,
+            N_UNIFORM_RESULTANT,
+        );
+        b.segment(&tail, at, Label::NONE, Role::Auxiliary, N_UNIFORM_RESULTANT);
+        let down = Vector::new(0.0, -1.0);
+        let va = b.line_dir(&a, down, Label::NONE, Role::Construction, N_END_VERTICAL)?;
+        let vb = b.line_dir(&bb, down, Label::NONE, Role::Construction, N_END_VERTICAL)?;
+        Ok((va, vb))
+    }
+
+    /// The force plan: the loads laid off on the load line, the pole at the pole distance H
+    /// right of it at mid-height of the loads (so that the polygon sags), and its rays.
+    pub(super) fn force_plan(&mut self) -> Result<&ForcePlan, ConstructionError> {
+        if self.force_plan.is_none() {
+            self.plan()?;
+            let p = self.draw_force_plan()?;
+            self.force_plan = Some(p);
+        }
+        Ok(self.force_plan.as_ref().expect("just drawn"))
+    }
+
+    fn draw_force_plan(&mut self) -> Result<ForcePlan, ConstructionError> {
+        let fs = self.dr.force_scale;
+        let total_mm = self.forces.iter().map(|f| f.p.abs()).sum::<f64>() / fs;
+        let x_fp = self.sx(self.beam.ends[1]) + GAP_MM;
+        let top = self.sy(0.5 * total_mm);
+        let b = &mut *self.b;
+        let p0 = b.point(
+            Point::new(x_fp, top),
+            Label::plain("0"),
+            Role::Given,
+            N_LOAD_LINE_START,
+        );
+        let down = Vector::new(0.0, -1.0);
+        let load_line = b.line_dir(&p0, down, Label::NONE, Role::Construction, N_LOAD_LINE)?;
+        let mut pts = vec![p0];
+        for (j, f) in self.forces.iter().enumerate() {
+            let label = Label::indexed("", j as u32 + 1);
+            let next = b.lay_off(&pts[j], &load_line, f.p / fs, label, Role::Force, N_LAY_OFF)?;
+            pts.push(next);
+        }
+        let pole_at = Point::new(
+            x_fp + self.dr.pole_distance / fs,
+            top - 0.5 * self.total / fs,
+        );
+        let polygon::Rays { pole, rays } = polygon::pole_and_rays(b, pole_at, &pts)?;
+        Ok(ForcePlan {
+            load_line,
+            pts,
+            pole,
+            rays,
+        })
+    }
+
+    /// The funicular polygon below the beam, from the leftmost vertical (support or load).
+    pub(super) fn funicular(&mut self) -> Result<&Funicular, ConstructionError> {
+        if self.funicular.is_none() {
+            let rays = self.force_plan()?.rays.clone();
+            let verticals = self.plan()?.verticals.clone();
+            let y_f = self.sy(-(GAP_MM + 0.5 * ARROW_MM));
+            let x_first = self
+                .forces
+                .first()
+                .map_or(self.beam.supports[0], |f| f.x)
+                .min(self.beam.supports[0]);
+            let start = self.b.point(
+                Point::new(self.sx(x_first), y_f),
+                Label::plain("I"),
+                Role::Given,
+                N_START,
+            );
+            let s = polygon::strings(self.b, &rays, &start, false, StringStyle::RESULT, |_, j| {
+                Ok(verticals[j])
+            })?;
+            self.funicular = Some(Funicular {
+                start,
+                strings: s.strings,
+                corners: s.corners,
+            });
+        }
+        Ok(self.funicular.as_ref().expect("just drawn"))
+    }
+
+    /// The closing line from the first string on vertical A to the last on vertical B, its
+    /// parallel through the pole cutting the load line in C, and the reactions A = 0C and
+    /// B = Cn read off and drawn at the supports (LH C.4, Abb. 24).
+    pub(super) fn reactions(&mut self) -> Result<Reacted, ConstructionError> {
+        if let Some(r) = self.reacted {
+            return Ok(r);
+        }
+        let (first, last) = {
+            let f = self.funicular()?;
+            (f.strings[0], f.strings[f.strings.len() - 1])
+        };
+        let (sv, supports) = {
+            let p = self.plan()?;
+            (p.support_verticals.clone(), p.supports.clone())
+        };
+        let (load_line, p0, pn, pole) = {
+            let fp = self.force_plan()?;
+            (fp.load_line, fp.pts[0], fp.pts[fp.pts.len() - 1], fp.pole)
+        };
+        let b = &mut *self.b;
+        let ia = b.meet_point(&first, &sv[0], Label::quiet("IA", 0), N_END_STRING_CUT)?;
+        let ib = b.meet_point(&last, &sv[1], Label::quiet("IB", 0), N_END_STRING_CUT)?;
+        let s = Label::plain("s");
+        let cl = polygon::closing(b, &ia, &ib, &pole, s, Role::Given, Role::Auxiliary)?;
+        let c = b.meet_point(&cl.ray, &load_line, Label::plain("C"), N_C)?;
+        let kg = self.kg;
+        let a_val = b.measure(&p0, &c, &load_line, kg, Label::quiet("A", 0), N_REACTION_A);
+        let (ra, rb, pref) = (self.ra, self.rb, self.pref);
+        b.check(&a_val, "reaction A", "kg", "ΣM_B = 0", pref, || ra);
+        let b_val = b.measure(&c, &pn, &load_line, kg, Label::quiet("B", 0), N_REACTION_B);
+        b.check(&b_val, "reaction B", "kg", "ΣV = 0", pref, || rb);
+        for (i, s) in supports.iter().enumerate() {
+            let r = if i == 0 { a_val.g } else { b_val.g };
+            let len = ARROW_MM * r.signum();
+            let tail = b.lay_off(
+                s,
+                &sv[i],
+                len,
+                Label::NONE,
+                Role::Construction,
+                N_REACTION_ARROW,
+            )?;
+            b.segment(&tail, s, Label::NONE, Role::Force, N_REACTION_ARROW);
+        }
+        let r = Reacted {
+            ia,
+            ib,
+            closing: cl.line,
+            c,
+            values: Reactions {
+                a: a_val.g,
+                b: b_val.g,
+            },
+        };
+        self.reacted = Some(r);
+        Ok(r)
+    }
+
+    /// The reactions, once drawn (every part after them reads them here).
+    pub(super) fn reactions_drawn(&self) -> Reacted {
+        self.reacted.expect("the reactions are drawn first")
+    }
+
+    /// Parts already drawn, for the later parts (each is drawn before it is read here).
+    pub(super) fn drawn(&self) -> (&Plan, &ForcePlan, &Funicular) {
+        (
+            self.plan.as_ref().expect("drawn first"),
+            self.force_plan.as_ref().expect("drawn first"),
+            self.funicular.as_ref().expect("drawn first"),
+        )
+    }
+
+    /// The results, the sections ordered by x.
+    pub(super) fn finish(
+        self,
+        reactions: Reactions,
+        shear: Vec<ShearRow>,
+        max_moment: Option<MaxMoment>,
+    ) -> BeamResults {
+        let mut order: Vec<usize> = (0..self.sections.len()).collect();
+        order.sort_by(|&i, &j| self.sections[i].x.total_cmp(&self.sections[j].x));
+        BeamResults {
+            reactions,
+            sections: order.iter().map(|&i| self.sections[i].clone()).collect(),
+            zero_moments: self.zero_moments,
+            shear,
+            max_moment,
+            moment_handles: order.iter().map(|&i| self.handles[i]).collect(),
+        }
+    }
+}
+
+/// The forces of the polygon by their lines of action: point loads, and uniform loads by
+/// their resultants at their middles, ordered by x.
+fn polygon_forces(beam: &Beam) -> Vec<Force> {
+    let mut forces: Vec<Force> = beam
+        .point_loads
+        .iter()
+        .enumerate()
+        .map(|(i, l)| Force {
+            x: l.x,
+            p: l.p,
+            kind: Kind::Point(i),
+        })
+        .chain(beam.uniform_loads.iter().enumerate().map(|(i, u)| Force {
+            x: u.centre(),
+            p: u.resultant(),
+            kind: Kind::Uniform(i),
+        }))
+        .collect();
+    forces.sort_by(|a, b| a.x.total_cmp(&b.x));
+    forces
+}

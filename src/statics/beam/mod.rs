@@ -1,0 +1,262 @@
+//! Beams by the funicular polygon: reactions by the closing line (LH C.4, Abb. 24), the moment
+//! area M = y·H (C.5, Gl. 11), the shear diagram from the force plan (C.6, Abb. 25), overhangs
+//! with their undercut moment area (Aufgabe 6, Abb. 34), and the parabola of a uniform load
+//! drawn by its tangents (Abb. 36, 37).
+//!
+//! # The construction
+//! The loads are laid off head to tail on the load line; the pole O lies at the pole distance
+//! H to the right of it. The strings of the funicular polygon run parallel to the pole rays
+//! between the verticals of the loads (a uniform load acts, for the polygon, as its resultant
+//! at its centre). The **first** string (before every load), extended, cuts the vertical of
+//! support A, and the **last** string cuts the vertical of support B: the line through these
+//! two points is the closing line. Its parallel through O cuts the load line in C, which divides
+//! it into A and B. The moment at a section is H times the ordinate from the polygon to the
+//! closing line — on an overhang, to the first or last string instead, so that with overhangs
+//! the moment area is undercut (*hinterschnitten*). Over a uniform load the polygon's corner is
+//! replaced by the parabola that touches the two strings at the verticals of the load's ends:
+//! both tangents are divided into equal parts, the joins 1–1, 2–2, … are tangents of the
+//! parabola, and each touches it at the point dividing it in the same ratio.
+
+mod build;
+mod indirect;
+mod moment;
+mod notes;
+mod shear;
+
+pub use indirect::{construct_beam_indirect, panel_loads};
+
+use super::Beam;
+use crate::kernel::Point;
+use crate::protocol::{Board, ConstructionError, H};
+use build::BeamConstruction;
+use serde::Serialize;
+
+/// Length of a load arrow in the position plan (mm): the plan shows position and sense only.
+const ARROW_MM: f64 = 12.0;
+/// Gap between the beam and the force plan, and between the figure's parts (mm).
+const GAP_MM: f64 = 25.0;
+/// Half width of a drawn support (mm).
+const SUPPORT_MM: f64 = 4.0;
+
+/// Scales and choices of the drawing.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct BeamDrawing {
+    /// Length scale 1 : n (m of beam per m of sheet).
+    pub length_scale: f64,
+    /// kg per mm of sheet.
+    pub force_scale: f64,
+    /// Pole distance H (kg).
+    pub pole_distance: f64,
+    /// Equal parts each tangent of a uniform load's parabola is divided into (≥ 2).
+    pub parabola_divisions: usize,
+    /// Where x = 0 of the beam lies on the sheet (mm), so that several beams (the two planes
+    /// of a shaft) can share one sheet.
+    pub origin: [f64; 2],
+}
+
+/// What to construct beyond the reactions (which everything needs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+pub struct BeamRequest {
+    /// The moment area: M at every load, support and parabola point, zero moments.
+    pub moment_area: bool,
+    /// The shear diagram and the largest moment where the shear changes sign.
+    pub shear_diagram: bool,
+}
+
+/// Constructed values at one section of the beam.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SectionRow {
+    /// Position (m).
+    pub x: f64,
+    /// What is there ("P1", "A", "q1 2/8").
+    pub what: String,
+    /// Bending moment (kg·m).
+    pub moment: f64,
+}
+
+/// The support reactions read off the force plan (kg, positive upwards).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Reactions {
+    /// Reaction A, at the left support.
+    pub a: f64,
+    /// Reaction B, at the right support.
+    pub b: f64,
+}
+
+/// The shear force on either side of an event of the beam (an end, a support, a load, the
+/// end of a uniform load).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ShearRow {
+    /// Position (m).
+    pub x: f64,
+    /// Shear just left of x (kg); zero left of the beam's left end.
+    pub left: f64,
+    /// Shear just right of x (kg); zero right of the beam's right end.
+    pub right: f64,
+}
+
+/// The largest bending moment in magnitude, found where the shear changes sign (LH C.6).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct MaxMoment {
+    /// The moment (kg·m), with its sign.
+    pub moment: f64,
+    /// Where it acts (m).
+    pub x: f64,
+}
+
+/// The results of [`construct_beam`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BeamResults {
+    /// Reactions A and B (kg).
+    pub reactions: Reactions,
+    /// Moments at the sections, ordered by x.
+    pub sections: Vec<SectionRow>,
+    /// Zero moments between the supports (m).
+    pub zero_moments: Vec<f64>,
+    /// The shear on both sides of each event, if the shear diagram was asked for.
+    pub shear: Vec<ShearRow>,
+    /// Largest |M| and where, if the shear diagram was asked for.
+    pub max_moment: Option<MaxMoment>,
+    /// The measured moment of each section, in the order of `sections`, for further checks.
+    #[serde(skip)]
+    pub moment_handles: Vec<H<f64>>,
+}
+
+/// Constructs reactions, moment area and shear diagram of a beam on `board`.
+///
+/// # Errors
+/// A [`ConstructionError`] if a step has no solution (a pole on the load line); a validated
+/// scene never produces one.
+///
+/// ```
+/// use graphostatik::statics::*;
+/// use graphostatik::protocol::Board;
+/// let beam = Beam { supports: [0.0, 6.0], ends: [0.0, 6.0],
+///     point_loads: vec![PointLoad { x: 2.0, p: 600.0 }], uniform_loads: vec![] };
+/// let drawing = BeamDrawing { length_scale: 50.0, force_scale: 20.0, pole_distance: 500.0,
+///     parabola_divisions: 8, origin: [0.0, 0.0] };
+/// let mut board = Board::recording();
+/// let r = construct_beam(&mut board, &beam, &drawing,
+///     &BeamRequest { moment_area: true, shear_diagram: true }).unwrap();
+/// assert!((r.reactions.a - 400.0).abs() < 1e-9 && (r.reactions.b - 200.0).abs() < 1e-9);
+/// // M under the load = A·a = 400 kg · 2 m (LH Gl. 11).
+/// assert!((r.max_moment.unwrap().moment - 800.0).abs() < 1e-9);
+/// assert!(board.all_passed());
+/// ```
+pub fn construct_beam(
+    b: &mut Board,
+    beam: &Beam,
+    dr: &BeamDrawing,
+    req: &BeamRequest,
+) -> Result<BeamResults, ConstructionError> {
+    construct_beam_at(b, beam, dr, req, &[])
+}
+
+/// [`construct_beam`], with the moment also measured at the given sections (m): a vertical
+/// through the section cuts the polygon and the closing line (LH Abb. 24, section C). Sections
+/// at a load or support are there already; sections inside a uniform load are refused (its
+/// moment line is the parabola, read off at its division points).
+///
+/// # Errors
+/// As [`construct_beam`], and [`ConstructionError::Unsupported`] for a section off the beam or
+/// inside a uniform load.
+pub fn construct_beam_at(
+    b: &mut Board,
+    beam: &Beam,
+    dr: &BeamDrawing,
+    req: &BeamRequest,
+    extra_sections: &[f64],
+) -> Result<BeamResults, ConstructionError> {
+    check_sections(beam, extra_sections)?;
+    check_layout(beam)?;
+    // About 40 steps and 60 objects per load when everything is drawn.
+    let nloads = beam.point_loads.len() + beam.uniform_loads.len() * (dr.parabola_divisions + 4);
+    b.reserve(64 + 40 * nloads, 64 + 60 * nloads);
+    let mut c = BeamConstruction::new(b, beam, dr);
+    let reactions = c.reactions()?.values;
+    if req.moment_area || req.shear_diagram {
+        c.moment_area()?;
+        for &x in extra_sections {
+            c.section(x)?;
+        }
+        c.zero_moments()?;
+    }
+    let (shear, max_moment) = if req.shear_diagram {
+        let rows = c.shear()?;
+        (rows, c.max_moment()?)
+    } else {
+        (Vec::new(), None)
+    };
+    Ok(c.finish(reactions, shear, max_moment))
+}
+
+/// Sections must lie on the beam and outside the uniform loads.
+fn check_sections(beam: &Beam, extra_sections: &[f64]) -> Result<(), ConstructionError> {
+    for &x in extra_sections {
+        if !(x >= beam.ends[0] && x <= beam.ends[1]) {
+            return Err(ConstructionError::unsupported(
+                "sections",
+                format!("section x = {x} m lies off the beam"),
+            ));
+        }
+        if beam.uniform_loads.iter().any(|u| x > u.from && x < u.to) {
+            return Err(ConstructionError::unsupported("sections", format!(
+                "section x = {x} m lies inside a uniform load: its moments are read off the parabola"
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// The layouts the construction handles: A left of B, uniform loads that neither overlap nor
+/// straddle a support nor hold a point load (split them there: the result is the same).
+fn check_layout(beam: &Beam) -> Result<(), ConstructionError> {
+    let [a, b] = beam.supports;
+    if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
+        return Err(ConstructionError::unsupported(
+            "supports",
+            format!("support A ({a} m) must lie left of support B ({b} m)"),
+        ));
+    }
+    for (i, u) in beam.uniform_loads.iter().enumerate() {
+        let inside = |x: f64| x > u.from && x < u.to;
+        if u.from.partial_cmp(&u.to) != Some(std::cmp::Ordering::Less) {
+            return Err(ConstructionError::unsupported(
+                format!("uniform_loads[{i}]"),
+                format!("uniform load {i} must end after it starts"),
+            ));
+        }
+        if inside(a) || inside(b) {
+            return Err(ConstructionError::unsupported(
+                format!("uniform_loads[{i}]"),
+                format!("uniform load {i} straddles a support: split it there"),
+            ));
+        }
+        if beam.point_loads.iter().any(|l| inside(l.x)) {
+            return Err(ConstructionError::unsupported(
+                format!("uniform_loads[{i}]"),
+                format!("a point load lies inside uniform load {i}: split the uniform load there"),
+            ));
+        }
+        if beam.uniform_loads[i + 1..]
+            .iter()
+            .any(|w| w.from < u.to && w.to > u.from)
+        {
+            return Err(ConstructionError::unsupported(
+                format!("uniform_loads[{i}]"),
+                format!("uniform load {i} overlaps another: add their intensities"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// A given point of the figure, unnamed.
+fn b_point(b: &mut Board, x: f64, y: f64, note: crate::protocol::Note) -> H<Point> {
+    b.point(
+        Point::new(x, y),
+        crate::protocol::Label::NONE,
+        crate::protocol::Role::Given,
+        note,
+    )
+}
