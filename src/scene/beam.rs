@@ -1,7 +1,8 @@
 //! The beam scene: a beam on two supports with point and uniform loads (LH C.4-6, Aufgabe 6).
 
 use super::defaults::nice_at_least;
-use super::{optional_positive, SceneError};
+use super::error::SceneError;
+use super::fields::optional_positive;
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::{self, Beam, BeamDrawing, BeamRequest, BeamResults, PointLoad, UniformLoad};
 use serde::{Deserialize, Serialize};
@@ -357,7 +358,7 @@ impl BeamProblem {
         let d = &self.drawing;
         FigureMeta {
             title: self.title.clone(),
-            source: super::source_line(
+            source: super::fields::source_line(
                 &self.source,
                 &format!("pole distance H = {} kg", num(d.pole_distance, 6)),
             ),

@@ -2,7 +2,8 @@
 //! (LH C.3, Abb. 23).
 
 use super::defaults::nice_at_least;
-use super::{optional_positive, SceneError};
+use super::error::SceneError;
+use super::fields::optional_positive;
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::centroid::{self, CentroidDrawing, CentroidResults};
 use serde::{Deserialize, Serialize};

@@ -1,6 +1,6 @@
 //! Scales chosen for a scene that leaves them out.
 
-use super::DrawingSpec;
+use super::types::DrawingSpec;
 use crate::crank::{CrankDrive, Drawing};
 
 /// Mechanism length (2R + L) on the sheet when the length scale is chosen (mm).

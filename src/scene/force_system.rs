@@ -2,7 +2,8 @@
 //! resolutions along two lines (LH A.1-4, C.2, Aufgabe 2).
 
 use super::defaults::nice_at_least;
-use super::{optional_positive, SceneError};
+use super::error::SceneError;
+use super::fields::optional_positive;
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::funicular::{self, Force, Resolution, SystemDrawing, SystemResults};
 use serde::{Deserialize, Serialize};

@@ -30,7 +30,7 @@ macro_rules! scene_struct {
             $($(#[$fm])* pub $field: $ty,)*
         }
 
-        impl $crate::scene::SceneHeader for $name {
+        impl $crate::scene::procedure::SceneHeader for $name {
             fn procedure_field(&self) -> Option<&str> {
                 self.procedure.as_deref()
             }

@@ -2,7 +2,8 @@
 
 use super::beam::BeamDrawingSpec;
 use super::defaults::nice_at_least;
-use super::{optional_positive, SceneError};
+use super::error::SceneError;
+use super::fields::optional_positive;
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::shaft::{self, Shaft, ShaftRow, Torque};
 use crate::statics::{BeamDrawing, PointLoad};
@@ -226,7 +227,7 @@ impl ShaftProblem {
         let ms = d.length_scale / 1000.0 * d.pole_distance;
         FigureMeta {
             title: self.title.clone(),
-            source: super::source_line(
+            source: super::fields::source_line(
                 &self.source,
                 &format!(
                     "planes at {}°, α0 = {}, pole distance H = {} kg",

@@ -1,7 +1,8 @@
 //! The truss scene: joints, members, supports and load cases (LH I B, Aufgaben 3-5).
 
 use super::defaults::nice_at_least;
-use super::{optional_positive, SceneError};
+use super::error::SceneError;
+use super::fields::optional_positive;
 use crate::kernel::{Point, Vector};
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::truss::cremona::{self, CaseResult, TrussDrawing};
@@ -867,7 +868,7 @@ impl TrussProblem {
         let d = &self.drawing;
         FigureMeta {
             title: self.title.clone(),
-            source: super::source_line(
+            source: super::fields::source_line(
                 &self.source,
                 "force plan (Kräfteplan), tension +, compression −",
             ),

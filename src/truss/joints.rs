@@ -9,11 +9,10 @@
 //! its side of the polygon: pointing away from the joint it pulls (tension, Regel 1).
 //! Every member is found once, so it is drawn in one joint polygon and read there.
 
-use super::cremona::{
-    check_member, check_reference, grow, member_label, plan_result, CaseResult, External,
-    TrussDrawing, EMPTY,
-};
+use super::labels::member_label;
+use super::layout::{grow, EMPTY};
 use super::matrix::Solution;
+use super::plan::{check_member, check_reference, plan_result, CaseResult, External, TrussDrawing};
 use super::{LoadCase, Truss};
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};

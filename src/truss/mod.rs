@@ -12,15 +12,22 @@
 //! - [`cremona`]: the reactions and the combined Cremona plan, every joint polygon a step;
 //! - [`reactions`]: the reactions by the moment equations, the check on the graphic ones.
 
+mod bow;
 pub mod builder;
 pub mod cremona;
 pub mod envelope;
 pub mod faces;
 pub mod generate;
+mod graphic_reactions;
 mod joints;
+mod labels;
+mod layout;
 pub mod matrix;
+mod notes;
+mod plan;
 pub mod reactions;
 pub mod redundant;
+mod ritter;
 pub mod roof;
 
 pub use builder::{TrussBuilder, TrussError};

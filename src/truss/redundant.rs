@@ -10,7 +10,8 @@
 //!   is switched to the other, and the plan is drawn again, until all working diagonals pull.
 //!   The book: "man verfährt so, als wenn die zweite Diagonale nicht vorhanden wäre".
 
-use super::cremona::{case_result, construct_plan, construct_truss_rows, CaseResult, TrussDrawing};
+use super::cremona::{construct_plan, construct_truss_rows, CaseResult, TrussDrawing};
+use super::plan::case_result;
 use super::{LoadCase, Truss};
 use crate::kernel::Vector;
 use crate::protocol::{Board, ConstructionError};

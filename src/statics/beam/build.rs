@@ -2,7 +2,7 @@
 //! polygon, reactions, moments, parabolas, shear) is built once, when something needs it.
 
 use super::notes::*;
-use super::{
+use super::types::{
     BeamDrawing, BeamResults, MaxMoment, Reactions, SectionRow, ShearRow, ARROW_MM, GAP_MM,
     SUPPORT_MM,
 };
@@ -78,6 +78,18 @@ pub(super) struct Parabola {
     pub(super) t2: H<Point>,
 }
 
+/// The drawn shear diagram, kept for the largest moment.
+pub(super) struct ShearDiagram {
+    pub(super) base0: H<Point>,
+    pub(super) base: H<Line>,
+    /// The events (m), ordered: ends, supports, point loads, ends of uniform loads.
+    pub(super) events: Vec<f64>,
+    /// The shear on both sides of each event.
+    pub(super) rows: Vec<ShearRow>,
+    /// Two ordinate ends per event: left, then right of it.
+    pub(super) ordinates: Vec<H<Point>>,
+}
+
 /// A beam's construction on a board, built part by part on demand.
 pub(super) struct BeamConstruction<'a, 'b> {
     pub(super) b: &'b mut Board,
@@ -106,7 +118,7 @@ pub(super) struct BeamConstruction<'a, 'b> {
     pub(super) handles: Vec<H<f64>>,
     pub(super) zero_moments: Vec<f64>,
     pub(super) parabolas: Vec<Parabola>,
-    pub(super) shear_diagram: Option<super::shear::ShearDiagram>,
+    pub(super) shear_diagram: Option<ShearDiagram>,
 }
 
 impl<'a, 'b> BeamConstruction<'a, 'b> {
@@ -223,8 +235,8 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
             Role::Given,
             N_SUPPORT,
         );
-        let l = super::b_point(b, xs - SUPPORT_MM, yl, N_SUPPORT_SYMBOL);
-        let r = super::b_point(b, xs + SUPPORT_MM, yl, N_SUPPORT_SYMBOL);
+        let l = b_point(b, xs - SUPPORT_MM, yl, N_SUPPORT_SYMBOL);
+        let r = b_point(b, xs + SUPPORT_MM, yl, N_SUPPORT_SYMBOL);
         b.segment(&l, &r, Label::NONE, Role::Guide, N_SUPPORT_SYMBOL);
         let down = Vector::new(0.0, -1.0);
         let v = b.line_dir(
@@ -496,4 +508,14 @@ fn polygon_forces(beam: &Beam) -> Vec<Force> {
         .collect();
     forces.sort_by(|a, b| a.x.total_cmp(&b.x));
     forces
+}
+
+/// A given point of the figure, unnamed.
+pub(super) fn b_point(b: &mut Board, x: f64, y: f64, note: crate::protocol::Note) -> H<Point> {
+    b.point(
+        Point::new(x, y),
+        crate::protocol::Label::NONE,
+        crate::protocol::Role::Given,
+        note,
+    )
 }

@@ -1,7 +1,8 @@
 //! Indirect loading: stringers carry the loads to the cross beams (LH Aufgabe 6, Abb. 35).
 
+use super::construct_beam_at;
 use super::notes::*;
-use super::{construct_beam_at, BeamDrawing, BeamRequest, BeamResults, ARROW_MM};
+use super::types::{BeamDrawing, BeamRequest, BeamResults, ARROW_MM};
 use crate::kernel::Point;
 use crate::protocol::{Board, ConstructionError, Label, Role, H};
 use crate::statics::closed_form as cf;

@@ -4,7 +4,7 @@
 
 use super::build::{BeamConstruction, Kind, Parabola};
 use super::notes::*;
-use super::SectionRow;
+use super::types::SectionRow;
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{ConstructionError, Cut, Label, Role, Scale, H};
 

@@ -2,24 +2,12 @@
 //! the shear changes sign: at an event, or inside a uniform load, found on its parabola by the
 //! ratio of the zero shear (Abb. 36).
 
-use super::build::{BeamConstruction, Kind, Parabola};
+use super::build::{b_point, BeamConstruction, Kind, Parabola, ShearDiagram};
 use super::notes::*;
-use super::{MaxMoment, ShearRow, GAP_MM};
+use super::types::{MaxMoment, ShearRow, GAP_MM};
 use crate::kernel::tolerance::REL_POSITION_EPS;
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{ConstructionError, Label, Role, Scale, H};
-
-/// The drawn shear diagram, kept for the largest moment.
-pub(super) struct ShearDiagram {
-    base0: H<Point>,
-    base: H<Line>,
-    /// The events (m), ordered: ends, supports, point loads, ends of uniform loads.
-    events: Vec<f64>,
-    /// The shear on both sides of each event.
-    rows: Vec<ShearRow>,
-    /// Two ordinate ends per event: left, then right of it.
-    ordinates: Vec<H<Point>>,
-}
 
 /// Where the force plan's corners stand for the shear: the loads left of a section are a
 /// prefix of the load line (no point load lies inside a uniform load), counted by binary
@@ -137,7 +125,7 @@ impl BeamConstruction<'_, '_> {
         let (mut ordinates, mut rows) = (Vec::new(), Vec::new());
         for (e, &x) in events.iter().enumerate() {
             let (sx, sy) = (self.sx(x), self.sy(0.0));
-            let on_beam = super::b_point(self.b, sx, sy, N_SHEAR_FOOT);
+            let on_beam = b_point(self.b, sx, sy, N_SHEAR_FOOT);
             let down = Vector::new(0.0, -1.0);
             let foot_v = self.b.line_dir(
                 &on_beam,

@@ -1,0 +1,363 @@
+//! The registry of every procedure, and the scene of any procedure ([`AnyScene`],
+//! [`AnyProblem`]) that the command line works with. Adding a procedure is one line in
+//! [`REGISTRY`].
+
+use super::error::SceneError;
+use super::procedure::{parse_scene, syntax_error, Procedure};
+use crate::protocol::{Board, ConstructionError, FigureMeta};
+use std::any::Any;
+use std::fmt::Debug;
+
+/// A registered procedure: its name, its line of description, and the type-erased parser and
+/// schema of its scene.
+pub struct Entry {
+    /// The `procedure` value.
+    pub name: &'static str,
+    /// What it constructs and where the books have it.
+    pub about: &'static str,
+    /// The outputs a scene of it can ask for.
+    pub outputs: &'static [&'static str],
+    parse: fn(&str, &str) -> Result<AnyScene, SceneError>,
+    /// The Rust type of its scene (the schema's definition name).
+    #[cfg(feature = "schema")]
+    scene_type: fn() -> String,
+    #[cfg(feature = "schema")]
+    schema: fn(&mut schemars::SchemaGenerator) -> schemars::Schema,
+}
+
+impl Entry {
+    /// The entry of procedure `P`.
+    pub const fn of<P: Procedure>() -> Entry {
+        Entry {
+            name: P::NAME,
+            about: P::ABOUT,
+            outputs: P::OUTPUTS,
+            parse: |text, origin| parse_scene::<P>(text, origin).map(|s| AnyScene(Box::new(s))),
+            #[cfg(feature = "schema")]
+            scene_type: || P::schema_name().into_owned(),
+            #[cfg(feature = "schema")]
+            schema: |g| g.subschema_for::<P>(),
+        }
+    }
+}
+
+impl Debug for Entry {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Entry").field("name", &self.name).finish()
+    }
+}
+
+/// Every procedure a scene can name, the default (`slider_crank`, for a scene without a
+/// `procedure` field) first. Adding a procedure is one line here.
+pub static REGISTRY: &[Entry] = &[
+    Entry::of::<super::types::Scene>(),
+    Entry::of::<super::beam::BeamScene>(),
+    Entry::of::<super::force_system::ForceSystemScene>(),
+    Entry::of::<super::centroid::CentroidScene>(),
+    Entry::of::<super::shaft::ShaftScene>(),
+    Entry::of::<super::truss::TrussScene>(),
+];
+
+/// The registered procedure of this name.
+pub fn entry(name: &str) -> Option<&'static Entry> {
+    REGISTRY.iter().find(|e| e.name == name)
+}
+
+/// The names of every registered procedure, for messages: `slider_crank, beam, …`.
+fn known_names() -> String {
+    REGISTRY
+        .iter()
+        .map(|e| e.name)
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// A scene of a procedure, type-erased.
+trait DynScene: Debug + Send + Sync {
+    fn name(&self) -> &'static str;
+    fn problem(&self) -> AnyProblem;
+    fn as_any(&self) -> &dyn Any;
+    fn clone_box(&self) -> Box<dyn DynScene>;
+}
+
+impl<P: Procedure> DynScene for P {
+    fn name(&self) -> &'static str {
+        P::NAME
+    }
+    fn problem(&self) -> AnyProblem {
+        AnyProblem(Box::new(ProblemOf::<P>(Procedure::problem(self))))
+    }
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+    fn clone_box(&self) -> Box<dyn DynScene> {
+        Box::new(self.clone())
+    }
+}
+
+/// A problem of a procedure, type-erased.
+trait DynProblem: Debug + Send + Sync {
+    fn name(&self) -> &'static str;
+    fn construct(&self, recording: bool) -> Result<Board, ConstructionError>;
+    fn figure_meta(&self) -> FigureMeta;
+    fn as_any(&self) -> &dyn Any;
+    fn clone_box(&self) -> Box<dyn DynProblem>;
+}
+
+struct ProblemOf<P: Procedure>(P::Problem);
+
+impl<P: Procedure> Debug for ProblemOf<P> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.0.fmt(f)
+    }
+}
+
+impl<P: Procedure> DynProblem for ProblemOf<P> {
+    fn name(&self) -> &'static str {
+        P::NAME
+    }
+    fn construct(&self, recording: bool) -> Result<Board, ConstructionError> {
+        P::construct(&self.0, recording).map(|(b, _)| b)
+    }
+    fn figure_meta(&self) -> FigureMeta {
+        P::figure_meta(&self.0)
+    }
+    fn as_any(&self) -> &dyn Any {
+        &self.0
+    }
+    fn clone_box(&self) -> Box<dyn DynProblem> {
+        Box::new(ProblemOf::<P>(self.0.clone()))
+    }
+}
+
+/// A validated scene of any registered procedure.
+///
+/// ```
+/// use graphostatik::scene::{AnyScene, TrussScene};
+/// let e = AnyScene::from_json(r#"{"procedure": "bridge", "title": "?"}"#, "x.json").unwrap_err();
+/// assert!(e.to_string().starts_with("x.json: procedure: unknown procedure `bridge`"));
+/// assert!(e.to_string().contains("truss"));
+/// ```
+#[derive(Debug)]
+pub struct AnyScene(Box<dyn DynScene>);
+
+impl Clone for AnyScene {
+    fn clone(&self) -> Self {
+        AnyScene(self.0.clone_box())
+    }
+}
+
+/// What the dispatcher reads before the real parse: only the `procedure` field.
+#[derive(serde::Deserialize)]
+struct ProcedureProbe {
+    #[serde(default)]
+    procedure: Option<serde_json::Value>,
+}
+
+impl AnyScene {
+    /// Parses and validates a scene of any procedure, by its `procedure` field (absent:
+    /// `slider_crank`). Malformed JSON is reported at its line and column, an unknown
+    /// procedure with the list of known ones.
+    pub fn from_json(text: &str, origin: &str) -> Result<AnyScene, SceneError> {
+        let name = Self::procedure_of(text, origin)?;
+        let e = match name {
+            None => &REGISTRY[0],
+            Some(n) => entry(&n).ok_or_else(|| SceneError::Invalid {
+                origin: origin.to_string(),
+                field: "procedure".into(),
+                message: format!(
+                    "unknown procedure `{}`; known: {}",
+                    crate::fmt::clip(&n, 60),
+                    known_names()
+                ),
+            })?,
+        };
+        (e.parse)(text, origin)
+    }
+
+    /// The `procedure` field alone; a syntax error anywhere in the file is reported here, at
+    /// its own line and column, before any procedure's fields are looked at.
+    fn procedure_of(text: &str, origin: &str) -> Result<Option<String>, SceneError> {
+        let de = &mut serde_json::Deserializer::from_str(text);
+        let probe: ProcedureProbe = serde::Deserialize::deserialize(&mut *de)
+            .and_then(|p| de.end().map(|_| p))
+            .map_err(|e| syntax_error(e, origin))?;
+        match probe.procedure {
+            None => Ok(None),
+            Some(serde_json::Value::String(s)) => Ok(Some(s)),
+            Some(other) => Err(SceneError::Invalid {
+                origin: origin.to_string(),
+                field: "procedure".into(),
+                message: format!(
+                    "must be a string naming the procedure ({}), got {}",
+                    known_names(),
+                    crate::fmt::clip(&other.to_string(), 60)
+                ),
+            }),
+        }
+    }
+
+    /// Reads, parses and validates a scene file of any procedure.
+    pub fn load(path: &std::path::Path) -> Result<AnyScene, SceneError> {
+        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
+            path: path.display().to_string(),
+            message: e.to_string(),
+        })?;
+        AnyScene::from_json(&text, &path.display().to_string())
+    }
+
+    /// The procedure's name (`"truss"`).
+    pub fn procedure(&self) -> &'static str {
+        self.0.name()
+    }
+
+    /// The scene as its own type, if it is one: `scene.get::<TrussScene>()`.
+    pub fn get<P: Procedure>(&self) -> Option<&P> {
+        self.0.as_any().downcast_ref::<P>()
+    }
+
+    /// The problem the scene describes.
+    pub fn problem(&self) -> AnyProblem {
+        self.0.problem()
+    }
+}
+
+/// A constructible problem of any registered procedure.
+#[derive(Debug)]
+pub struct AnyProblem(Box<dyn DynProblem>);
+
+impl Clone for AnyProblem {
+    fn clone(&self) -> Self {
+        AnyProblem(self.0.clone_box())
+    }
+}
+
+impl AnyProblem {
+    /// The procedure's name.
+    pub fn procedure(&self) -> &'static str {
+        self.0.name()
+    }
+
+    /// The problem as its own type, if it is one: `problem.get::<TrussScene>()` gives the
+    /// `TrussProblem`.
+    pub fn get<P: Procedure>(&self) -> Option<&P::Problem> {
+        self.0.as_any().downcast_ref::<P::Problem>()
+    }
+
+    /// Constructs the problem on a fresh board (the results are in the protocol).
+    pub fn construct(&self, recording: bool) -> Result<Board, ConstructionError> {
+        self.0.construct(recording)
+    }
+
+    /// Title, source and scale bars of the figure.
+    pub fn figure_meta(&self) -> FigureMeta {
+        self.0.figure_meta()
+    }
+}
+
+#[cfg(feature = "schema")]
+/// The JSON Schema of the scene format, pretty-printed: any of the registered procedures'
+/// scenes, each with its `procedure` value as a constant.
+pub fn schema_json() -> String {
+    let mut g = schemars::SchemaGenerator::default();
+    let branches: Vec<serde_json::Value> = REGISTRY
+        .iter()
+        .map(|e| {
+            let mut s = serde_json::Value::from((e.schema)(&mut g));
+            s["description"] = format!("{}: {}", e.name, e.about).into();
+            s
+        })
+        .collect();
+    let mut defs = g.take_definitions(true);
+    for (k, e) in REGISTRY.iter().enumerate() {
+        if let Some(def) = defs.get_mut(&(e.scene_type)()) {
+            pin_procedure(def, e.name, k == 0);
+        }
+    }
+    let root = serde_json::json!({
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "title": "Scene",
+        "description": format!(
+            "A graphostatik scene. Its `procedure` field picks the book procedure: {} \
+             (`slider_crank` when absent).",
+            known_names()
+        ),
+        "anyOf": branches,
+        "$defs": defs,
+    });
+    serde_json::to_string_pretty(&root).expect("a schema is plain JSON")
+}
+
+#[cfg(feature = "schema")]
+/// Writes the procedure's name into its scene's schema as the constant its `procedure` field
+/// must have (required, except for the default procedure).
+fn pin_procedure(def: &mut serde_json::Value, name: &str, default: bool) {
+    def["properties"]["procedure"] = serde_json::json!({
+        "description": format!("`\"{name}\"`{}", if default { " (the default when absent)" } else { "" }),
+        "const": name,
+    });
+    if !default {
+        if let Some(req) = def.get_mut("required").and_then(|r| r.as_array_mut()) {
+            req.insert(0, name_value("procedure"));
+        } else {
+            def["required"] = serde_json::json!(["procedure"]);
+        }
+    }
+}
+
+#[cfg(feature = "schema")]
+fn name_value(s: &str) -> serde_json::Value {
+    serde_json::Value::String(s.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn registry_names_are_unique_and_parse_their_own_scenes_only() {
+        let mut names: Vec<_> = REGISTRY.iter().map(|e| e.name).collect();
+        names.sort();
+        names.dedup();
+        assert_eq!(names.len(), REGISTRY.len());
+        assert_eq!(REGISTRY[0].name, "slider_crank");
+    }
+
+    #[test]
+    fn syntax_errors_are_reported_where_they_are_whatever_the_procedure() {
+        let text = "{\n  \"procedure\": \"beam\",\n  \"title\": \"t\",\n  \"beam\": {\"supports_m\": [0, 6],}\n}";
+        let e = AnyScene::from_json(text, "b.json").unwrap_err().to_string();
+        assert!(e.starts_with("b.json:4:"), "{e}");
+        assert!(!e.contains("unknown field"), "{e}");
+    }
+
+    #[test]
+    fn trailing_data_is_refused() {
+        let e = AnyScene::from_json("{\"title\": \"t\"} {}", "t.json")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("trailing characters"), "{e}");
+    }
+
+    #[test]
+    fn procedure_must_be_a_known_string() {
+        let e = AnyScene::from_json("{\"procedure\": 3}", "p.json")
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with("p.json: procedure: must be a string"), "{e}");
+        let e = AnyScene::from_json("{\"procedure\": \"crane\"}", "p.json")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("known: slider_crank, beam"), "{e}");
+    }
+
+    #[test]
+    #[cfg(feature = "schema")]
+    fn schema_pins_each_procedure() {
+        let s: serde_json::Value = serde_json::from_str(&schema_json()).unwrap();
+        assert_eq!(s["anyOf"].as_array().unwrap().len(), REGISTRY.len());
+        let beam = &s["$defs"]["BeamScene"];
+        assert_eq!(beam["properties"]["procedure"]["const"], "beam");
+        assert_eq!(beam["required"][0], "procedure");
+    }
+}

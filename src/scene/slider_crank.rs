@@ -1,0 +1,388 @@
+//! The slider-crank scene (LH II, KG XIV B): its validation, its problem in machine units and
+//! the figure's metadata.
+
+use super::defaults;
+use super::error::SceneError;
+use super::procedure::{parse_scene, Procedure};
+use super::types::*;
+use crate::crank::{self, Angles, CrankDrive, CrankResults, Drawing, PistonForce, Request};
+use crate::kernel::tolerance::MAX_DIVISIONS;
+use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
+
+/// A validated scene, ready to construct.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Problem {
+    /// Title written on the figure.
+    pub title: String,
+    /// Book reference written under the title.
+    pub source: String,
+    /// The mechanism in machine units.
+    pub drive: CrankDrive,
+    /// The scales of the drawing (given or chosen).
+    pub drawing: Drawing,
+    /// Crank angles.
+    pub angles: Angles,
+    /// What to construct.
+    pub request: Request,
+}
+
+impl Scene {
+    /// Parses and validates a slider-crank scene; `origin` (a file name) prefixes every error
+    /// message.
+    pub fn from_json(text: &str, origin: &str) -> Result<Scene, SceneError> {
+        parse_scene(text, origin)
+    }
+
+    /// Reads, parses and validates a scene file.
+    pub fn load(path: &std::path::Path) -> Result<Scene, SceneError> {
+        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
+            path: path.display().to_string(),
+            message: e.to_string(),
+        })?;
+        Scene::from_json(&text, &path.display().to_string())
+    }
+
+    fn check_values(&self, origin: &str) -> Result<(), SceneError> {
+        let bad = |field: &str, message: String| SceneError::Invalid {
+            origin: origin.to_string(),
+            field: field.to_string(),
+            message,
+        };
+        let positive = |field: &str, x: f64| {
+            if x.is_finite() && x > 0.0 {
+                Ok(())
+            } else {
+                Err(bad(
+                    field,
+                    format!("must be a positive length or number, got {x}"),
+                ))
+            }
+        };
+        let m = &self.mechanism;
+        let r = match (m.crank_radius_mm, m.stroke_mm) {
+            (Some(r), None) => {
+                positive("mechanism.crank_radius_mm", r)?;
+                r
+            }
+            (None, Some(s)) => {
+                positive("mechanism.stroke_mm", s)?;
+                s / 2.0
+            }
+            (Some(_), Some(_)) => {
+                return Err(bad(
+                    "mechanism",
+                    "give either crank_radius_mm or stroke_mm, not both".into(),
+                ))
+            }
+            (None, None) => {
+                return Err(bad(
+                    "mechanism",
+                    "missing field `crank_radius_mm` (or `stroke_mm`)".into(),
+                ))
+            }
+        };
+        match m.rod {
+            Rod::LengthMm(l) => {
+                positive("mechanism.rod.length_mm", l)?;
+                if l <= r {
+                    return Err(bad(
+                        "mechanism.rod.length_mm",
+                        format!(
+                            "the rod (L = {l} mm) must be longer than the crank (R = {r} mm): \
+                             otherwise the mechanism locks where the crank stands perpendicular \
+                             to the piston line"
+                        ),
+                    ));
+                }
+            }
+            Rod::LOverR(k) => {
+                positive("mechanism.rod.l_over_r", k)?;
+                if k <= 1.0 {
+                    return Err(bad(
+                        "mechanism.rod.l_over_r",
+                        format!(
+                            "L/R = {k}: the rod must be longer than the crank (L/R > 1), \
+                             otherwise the mechanism locks"
+                        ),
+                    ));
+                }
+            }
+        }
+        match &self.speed {
+            Speed::Rpm(n) => positive("speed.rpm", *n)?,
+            Speed::CrankPinMS(v) => positive("speed.crank_pin_m_s", *v)?,
+            Speed::Train {
+                km_h,
+                wheel_diameter_mm,
+            } => {
+                positive("speed.train.km_h", *km_h)?;
+                positive("speed.train.wheel_diameter_mm", *wheel_diameter_mm)?;
+            }
+        }
+        let n_angles = match &self.angles {
+            AngleSpec::Divisions(n) => {
+                if *n < 2 || *n > MAX_DIVISIONS {
+                    return Err(bad(
+                        "angles.divisions",
+                        format!("{n} divisions: give between 2 and {MAX_DIVISIONS}"),
+                    ));
+                }
+                *n
+            }
+            AngleSpec::Degrees(v) => {
+                if v.is_empty() || v.len() > MAX_DIVISIONS {
+                    return Err(bad(
+                        "angles.degrees",
+                        format!("{} angles: give between 1 and {MAX_DIVISIONS}", v.len()),
+                    ));
+                }
+                for (k, a) in v.iter().enumerate() {
+                    if !(a.is_finite() && (0.0..360.0).contains(a)) {
+                        return Err(bad(
+                            &format!("angles.degrees[{k}]"),
+                            format!("crank angle {a}° is out of range: give 0 ≤ θ < 360"),
+                        ));
+                    }
+                }
+                v.len()
+            }
+        };
+        if self.outputs.is_empty() {
+            return Err(bad("outputs", "ask for at least one output".into()));
+        }
+        let needs_force = self.outputs.iter().any(|o| o.is_force());
+        match (&self.piston_force, needs_force) {
+            (None, true) => {
+                return Err(bad(
+                    "piston_force",
+                    "missing: the outputs ask for forces, so the piston force is needed".into(),
+                ))
+            }
+            (Some(PistonForceSpec::Kg(p)), _) => {
+                if !p.is_finite() {
+                    return Err(bad("piston_force.kg", "must be a finite number".into()));
+                }
+            }
+            (Some(PistonForceSpec::Pressure(p)), _) => {
+                positive("piston_force.pressure.bore_mm", p.bore_mm)?;
+                if !p.at.is_finite() {
+                    return Err(bad(
+                        "piston_force.pressure.at",
+                        "must be a finite number".into(),
+                    ));
+                }
+                if !(p.rod_diameter_mm.is_finite()
+                    && p.rod_diameter_mm >= 0.0
+                    && p.rod_diameter_mm < p.bore_mm)
+                {
+                    return Err(bad(
+                        "piston_force.pressure.rod_diameter_mm",
+                        format!(
+                            "must lie in [0, bore) = [0, {}), got {}",
+                            p.bore_mm, p.rod_diameter_mm
+                        ),
+                    ));
+                }
+            }
+            (Some(PistonForceSpec::PerAngleKg(v)), _) => {
+                if v.len() != n_angles {
+                    return Err(bad(
+                        "piston_force.per_angle_kg",
+                        format!("{} forces for {n_angles} crank angles", v.len()),
+                    ));
+                }
+                if let Some(k) = v.iter().position(|x| !x.is_finite()) {
+                    return Err(bad(
+                        &format!("piston_force.per_angle_kg[{k}]"),
+                        "must be a finite number".into(),
+                    ));
+                }
+            }
+            (None, false) => {}
+        }
+        if let Some(d) = &self.drawing {
+            for (name, v) in [
+                ("drawing.length_scale", d.length_scale),
+                ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
+                (
+                    "drawing.velocity_scale_m_s_per_mm",
+                    d.velocity_scale_m_s_per_mm,
+                ),
+            ] {
+                if let Some(v) = v {
+                    positive(name, v)?;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The crank radius in mm.
+    pub fn crank_radius(&self) -> f64 {
+        self.mechanism
+            .crank_radius_mm
+            .unwrap_or_else(|| self.mechanism.stroke_mm.unwrap_or(0.0) / 2.0)
+    }
+
+    /// Maps the validated scene to the problem the crank procedures solve.
+    pub fn problem(&self) -> Problem {
+        let r = self.crank_radius();
+        let l = match self.mechanism.rod {
+            Rod::LengthMm(l) => l,
+            Rod::LOverR(k) => k * r,
+        };
+        let v = match &self.speed {
+            Speed::Rpm(n) => 2.0 * std::f64::consts::PI * (r / 1000.0) * n / 60.0,
+            Speed::CrankPinMS(v) => *v,
+            // LH: v = v₁ · s / D₁ (crank pin against the wheel rim, same angular speed).
+            Speed::Train {
+                km_h,
+                wheel_diameter_mm,
+            } => km_h / 3.6 * (2.0 * r) / wheel_diameter_mm,
+        };
+        let angles = match &self.angles {
+            AngleSpec::Divisions(n) => Angles::Divisions(*n),
+            AngleSpec::Degrees(v) => Angles::Degrees(v.clone()),
+        };
+        let piston_force = match &self.piston_force {
+            None => PistonForce::Constant(0.0),
+            Some(PistonForceSpec::Kg(p)) => PistonForce::Constant(*p),
+            Some(PistonForceSpec::Pressure(p)) => PistonForce::Constant(p.force_kg()),
+            Some(PistonForceSpec::PerAngleKg(v)) => PistonForce::PerAngle(v.clone()),
+        };
+        let effects = self.effects.unwrap_or_default();
+        let drive = CrankDrive {
+            crank_radius: r,
+            rod_length: l,
+            finite_rod: effects.finite_rod,
+            crank_pin_speed: v,
+            piston_force,
+        };
+        let mut request = Request::default();
+        for o in &self.outputs {
+            match o {
+                Output::PistonPath => request.piston_path = true,
+                Output::Velocity => {
+                    let methods = self
+                        .velocity_methods
+                        .clone()
+                        .unwrap_or_else(|| vec![VelocityMethod::Parallel]);
+                    for m in methods {
+                        match m {
+                            VelocityMethod::Parallel => request.velocity_parallel = true,
+                            VelocityMethod::InstantCentre => request.velocity_instant_centre = true,
+                        }
+                    }
+                }
+                Output::RodForce => request.rod_force = true,
+                Output::GuideForce => request.guide_force = true,
+                Output::TangentialForce => request.tangential_force = true,
+                Output::RadialForce => request.radial_force = true,
+            }
+        }
+        let drawing = defaults::drawing(self.drawing.as_ref(), &drive);
+        Problem {
+            title: self.title.clone(),
+            source: self.source.clone().unwrap_or_default(),
+            drive,
+            drawing,
+            angles,
+            request,
+        }
+    }
+}
+
+impl Problem {
+    /// What the sheet writes besides the construction: title, source and the scale bars.
+    pub fn figure_meta(&self) -> FigureMeta {
+        let d = &self.drawing;
+        let r = &self.request;
+        let mut scales = vec![ScaleBar::length(d.length_scale, "mm")];
+        if r.velocity_parallel || r.velocity_instant_centre {
+            scales.push(ScaleBar::velocity(d.velocity_scale));
+        }
+        if r.rod_force || r.guide_force || r.tangential_force || r.radial_force {
+            scales.push(ScaleBar::force(d.force_scale));
+        }
+        let rod = if self.drive.finite_rod {
+            format!(
+                "R = {} mm, L = {} mm (R/L = 1/{})",
+                crate::fmt::num(self.drive.crank_radius, 3),
+                crate::fmt::num(self.drive.rod_length, 3),
+                crate::fmt::num(self.drive.rod_length / self.drive.crank_radius, 3)
+            )
+        } else {
+            format!(
+                "R = {} mm, infinitely long rod",
+                crate::fmt::num(self.drive.crank_radius, 3)
+            )
+        };
+        let source = if self.source.is_empty() {
+            rod
+        } else {
+            format!(
+                "{} — {rod}, v = {} m/s",
+                self.source,
+                crate::fmt::num(self.drive.crank_pin_speed, 4)
+            )
+        };
+        FigureMeta {
+            title: self.title.clone(),
+            source,
+            scales,
+        }
+    }
+
+    /// The size of the figure on the sheet (mm), for the tolerance.
+    pub fn figure_size(&self) -> f64 {
+        let d = &self.drawing;
+        let pmax = self.drive.piston_force.max_abs();
+        (2.0 * self.drive.crank_radius + self.drive.rod_length) / d.length_scale
+            + 3.0 * pmax / d.force_scale
+            + self.drive.crank_pin_speed / d.velocity_scale
+    }
+
+    /// Constructs the problem on a fresh board (`recording`: keep steps and checks).
+    pub fn construct(&self, recording: bool) -> Result<(Board, CrankResults), ConstructionError> {
+        let mut board = Board::new(self.figure_size(), recording);
+        let res = crank::construct(
+            &mut board,
+            &self.drive,
+            &self.drawing,
+            &self.angles,
+            &self.request,
+        )?;
+        Ok((board, res))
+    }
+}
+
+impl Procedure for Scene {
+    const NAME: &'static str = "slider_crank";
+    const ABOUT: &'static str = "the slider-crank: piston path, piston velocity, rod, guide, radial and tangential forces (LH II, KG XIV B)";
+    const OUTPUTS: &'static [&'static str] = &[
+        "piston_path",
+        "velocity",
+        "rod_force",
+        "guide_force",
+        "tangential_force",
+        "radial_force",
+    ];
+    type Problem = Problem;
+    type Results = CrankResults;
+
+    fn validate(&self, origin: &str) -> Result<(), SceneError> {
+        self.check_values(origin)
+    }
+    fn problem(&self) -> Problem {
+        Scene::problem(self)
+    }
+    fn construct(
+        problem: &Problem,
+        recording: bool,
+    ) -> Result<(Board, CrankResults), ConstructionError> {
+        problem.construct(recording)
+    }
+    fn figure_meta(problem: &Problem) -> FigureMeta {
+        problem.figure_meta()
+    }
+}

@@ -1,0 +1,292 @@
+//! The Cremona plan in Bow's notation (LH B.4, Abb. 17): the external forces clockwise round
+//! the outline, then every joint with two unknown members, Ritter's section where none is
+//! left.
+
+use super::faces::{self, dest, origin, PlaneGraph};
+use super::labels::*;
+use super::layout::*;
+use super::matrix::Solution;
+use super::notes::*;
+use super::plan::*;
+use super::ritter::*;
+use super::{LoadCase, Truss};
+use crate::kernel::{Line, Point};
+use crate::protocol::{Board, ConstructionError, Cut, Label, Role, Scale, H};
+
+/// Assigns every external force to its place on the outline, clockwise, and every outer
+/// half-edge to the space on its left.
+pub(super) fn outline(
+    t: &Truss,
+    g: &PlaneGraph,
+    ext: &External,
+) -> Result<(Vec<usize>, Vec<usize>), ConstructionError> {
+    let nh = g.next.len();
+    let mut space_of_half = vec![usize::MAX; nh];
+    let mut order = Vec::with_capacity(ext.forces.len());
+    let mut placed = vec![false; ext.forces.len()];
+    let outer = &g.faces[g.outer];
+    if outer.is_empty() {
+        return Err(ConstructionError::unsupported(
+            "members",
+            "a truss needs members",
+        ));
+    }
+    let mut at_joint: std::collections::BTreeMap<usize, Vec<usize>> = Default::default();
+    for (fi, &(j, _)) in ext.forces.iter().enumerate() {
+        at_joint.entry(j).or_default().push(fi);
+    }
+    // The outline's half-edges in order: h_in = u → v, then h_out = v → w.
+    let mut space = 0;
+    for (idx, &h_in) in outer.iter().enumerate() {
+        space_of_half[h_in] = space;
+        let h_out = outer[(idx + 1) % outer.len()];
+        let v = dest(t, h_in);
+        let back = g.angle[h_in ^ 1];
+        let span = if h_out == h_in ^ 1 {
+            std::f64::consts::TAU
+        } else {
+            faces::cw(back, g.angle[h_out])
+        };
+        // Forces at v whose line of action leaves into this sector, clockwise.
+        let mut here: Vec<(f64, usize)> = Vec::new();
+        for &fi in at_joint.get(&v).map_or(&[][..], |v| v.as_slice()) {
+            let f = ext.forces[fi].1;
+            if placed[fi] {
+                continue;
+            }
+            // The line of action drawn on the outside: the arrow coming in towards the joint
+            // (−f) if that side is outside, else going out (+f).
+            let a_in = (-f.y).atan2(-f.x);
+            let a_out = f.y.atan2(f.x);
+            let inside = |a: f64| {
+                let c = faces::cw(back, a);
+                c > 0.0 && c < span
+            };
+            let a = if inside(a_in) {
+                a_in
+            } else if inside(a_out) {
+                a_out
+            } else {
+                continue;
+            };
+            here.push((faces::cw(back, a), fi));
+        }
+        here.sort_by(|a, c| a.0.total_cmp(&c.0).then(a.1.cmp(&c.1)));
+        for (_, fi) in here {
+            placed[fi] = true;
+            order.push(fi);
+            space += 1;
+        }
+    }
+    if let Some(fi) = placed.iter().position(|p| !p) {
+        let j = ext.forces[fi].0;
+        return Err(ConstructionError::unsupported("loads", format!(
+            "joint {} carries an external force but its line of action does not leave the truss on the outside: Bow's notation needs external forces at outer joints",
+            t.joints[j].name
+        )));
+    }
+    // The space after the last force is the first one again.
+    let n = order.len().max(1);
+    for s in &mut space_of_half {
+        if *s != usize::MAX {
+            *s %= n;
+        }
+    }
+    Ok((order, space_of_half))
+}
+
+#[allow(clippy::too_many_arguments)]
+pub(super) fn cremona_plan(
+    b: &mut Board,
+    t: &Truss,
+    g: &PlaneGraph,
+    case: &LoadCase,
+    ext: &External,
+    sol: Option<&Solution>,
+    dr: &TrussDrawing,
+    at: Point,
+    mline: &[H<Line>],
+    maxload: f64,
+) -> Result<(CaseResult, [f64; 4]), ConstructionError> {
+    let fs = dr.force_scale;
+    let kg = Scale::kg(fs);
+    let mut bx = EMPTY;
+    let (order, mut space_of_half) = outline(t, g, ext)?;
+    let n_ext = order.len().max(1);
+    // Inner faces become spaces after the outer ones.
+    let mut space_of_face = vec![usize::MAX; g.faces.len()];
+    let mut n_spaces = n_ext;
+    for (f, sp) in space_of_face.iter_mut().enumerate() {
+        if f != g.outer {
+            *sp = n_spaces;
+            n_spaces += 1;
+        }
+    }
+    let mut face_of_space = vec![g.outer; n_spaces];
+    for (f, &sp) in space_of_face.iter().enumerate() {
+        if sp != usize::MAX {
+            face_of_space[sp] = f;
+        }
+    }
+    for h in 0..space_of_half.len() {
+        if g.face_of[h] != g.outer {
+            space_of_half[h] = space_of_face[g.face_of[h]];
+        }
+    }
+    let mut pt: Vec<Option<H<Point>>> = vec![None; n_spaces];
+    // The external force polygon, clockwise round the truss.
+    let start = b.point(at, space_label(0), Role::Given, N_START);
+    grow(&mut bx, at, at);
+    pt[0] = Some(start);
+    let mut cur = start;
+    for (i, &fi) in order.iter().enumerate() {
+        let f = ext.forces[fi].1;
+        let along = b.line_dir(&cur, f, Label::NONE, Role::Auxiliary, N_EXT)?;
+        let lab = if i + 1 < order.len() {
+            space_label(i + 1)
+        } else {
+            Label::NONE
+        };
+        let next = b.lay_off(&cur, &along, f.norm() / fs, lab, Role::Force, N_EXT)?;
+        grow(&mut bx, next.g, at);
+        if i + 1 < order.len() {
+            pt[i + 1] = Some(next);
+        }
+        cur = next;
+    }
+    // Joints touching each space, to revisit when it becomes known.
+    let mut joints_of_space: Vec<Vec<usize>> = vec![Vec::new(); n_spaces];
+    for (h, &s) in space_of_half.iter().enumerate() {
+        joints_of_space[s].push(origin(t, h));
+    }
+    for js in &mut joints_of_space {
+        js.sort_unstable();
+        js.dedup();
+    }
+    let mut forces: Vec<Option<f64>> = vec![None; t.members.len()];
+    let mut plan_mm = vec![0.0; t.members.len()];
+    let mut queue: std::collections::VecDeque<usize> = (0..t.joints.len()).collect();
+    let mut queued = vec![true; t.joints.len()];
+    let reference = check_reference(maxload, ext);
+    // Draws every member whose two spaces are known and that is not drawn yet.
+    let settle = |b: &mut Board,
+                  pt: &[Option<H<Point>>],
+                  forces: &mut Vec<Option<f64>>,
+                  plan_mm: &mut Vec<f64>,
+                  members: &mut dyn Iterator<Item = usize>| {
+        for m in members {
+            if forces[m].is_some() {
+                continue;
+            }
+            let (l, r) = (space_of_half[2 * m], space_of_half[2 * m + 1]);
+            if let (Some(pl), Some(pr)) = (pt[l], pt[r]) {
+                b.segment(&pl, &pr, member_label(t, m), Role::Result, N_FORCE);
+                let v = b.measure(&pl, &pr, &mline[m], kg, member_label(t, m), N_FORCE);
+                check_member(b, &v, m, sol, reference);
+                forces[m] = Some(v.g);
+                plan_mm[m] = (pr.g - pl.g).norm();
+            }
+        }
+    };
+    // Members on the outline are known from the external polygon already.
+    settle(b, &pt, &mut forces, &mut plan_mm, &mut (0..t.members.len()));
+    let spaces = Spaces {
+        of_half: &space_of_half,
+        face_of: &face_of_space,
+        n_ext,
+    };
+    loop {
+        let fixed = match queue.pop_front() {
+            Some(v) => {
+                queued[v] = false;
+                joint_polygon(b, t, g, v, &spaces, &mut pt, mline, case)
+            }
+            None if pt.iter().all(|p| p.is_some()) => break,
+            // No joint with two unknown members is left: Ritter's section.
+            None => match ritter(b, t, g, &spaces, &mut pt, ext, mline, case, fs) {
+                Some(u) => Some(u),
+                None => break,
+            },
+        };
+        let Some(u) = fixed else {
+            continue;
+        };
+        grow(&mut bx, pt[u].expect("just fixed").g, at);
+        settle(
+            b,
+            &pt,
+            &mut forces,
+            &mut plan_mm,
+            &mut g.faces[face_of_space[u]].iter().map(|h| h / 2),
+        );
+        for &j in &joints_of_space[u] {
+            if !queued[j] {
+                queued[j] = true;
+                queue.push_back(j);
+            }
+        }
+    }
+    b.set_context(|| case.name.clone());
+    if let Some(m) = forces.iter().position(|f| f.is_none()) {
+        let stuck: Vec<String> = (0..t.joints.len())
+            .filter(|&v| g.around[v].iter().any(|&h| forces[h / 2].is_none()))
+            .map(|v| t.joints[v].name.clone())
+            .take(6)
+            .collect();
+        return Err(ConstructionError::PlanStalls {
+            member: t.members[m].name.clone(),
+            reason: format!(
+                "the Cremona plan stalls before member {}: at joints {} three or more member forces are unknown, and no section through three members with two unknown spaces between them gives one of them (Ritter, LH B.4)",
+                t.members[m].name,
+                stuck.join(", ")
+            ),
+            joints: stuck,
+        });
+    }
+    Ok((plan_result(t, case, ext, &forces, &plan_mm, sol, dr), bx))
+}
+
+/// The polygon of joint `v` if only one space round it is unknown: the parallels to the two
+/// members bounding that space, through the points of the spaces beyond them, meet in its
+/// point (Regel 2). Returns the space fixed.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn joint_polygon(
+    b: &mut Board,
+    t: &Truss,
+    g: &PlaneGraph,
+    v: usize,
+    sp: &Spaces,
+    pt: &mut [Option<H<Point>>],
+    mline: &[H<Line>],
+    case: &LoadCase,
+) -> Option<usize> {
+    let around = &g.around[v];
+    let d = around.len();
+    if d < 2 {
+        return None;
+    }
+    let unknown: Vec<usize> = (0..d)
+        .filter(|&i| pt[sp.of_half[around[i]]].is_none())
+        .collect();
+    let mut spaces: Vec<usize> = unknown.iter().map(|&i| sp.of_half[around[i]]).collect();
+    spaces.dedup();
+    if spaces.len() != 1 || unknown.len() != 1 {
+        return None;
+    }
+    let i = unknown[0];
+    let (ha, hb) = (around[i], around[(i + 1) % d]);
+    let u = sp.of_half[ha];
+    let (px, py) = (pt[sp.of_half[ha ^ 1]]?, pt[sp.of_half[hb]]?);
+    let name = &t.joints[v].name;
+    b.set_context(|| format!("{}: joint {name}", case.name));
+    let la = b.parallel(&mline[ha / 2], &px, Label::NONE, Role::Construction, N_PAR);
+    let lb = b.parallel(&mline[hb / 2], &py, Label::NONE, Role::Construction, N_PAR);
+    match b.meet(&la, &lb, space_label(u), N_SPACE) {
+        Cut::Point(p, _) => {
+            pt[u] = Some(p);
+            Some(u)
+        }
+        // Two members in line at this joint: another joint has to fix the space.
+        _ => None,
+    }
+}

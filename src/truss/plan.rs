@@ -1,0 +1,172 @@
+//! The plan context shared by Bow's notation, the joint polygons and Ritter's sections: the
+//! drawing's scales, the external forces, the result of a case and the check of a member.
+
+use super::matrix::{self, Solution};
+use super::{LoadCase, MemberForce, SupportKind, Truss};
+use crate::kernel::Vector;
+use crate::protocol::{Board, H};
+use serde::Serialize;
+
+/// A member force at most this fraction of the largest external force is a zero-force
+/// member (Nullstab): the plan is exact to about 1e-12 of the loads, so 1e-9 separates
+/// rounding from a real force with room on both sides.
+pub const ZERO_FORCE_REL: f64 = 1e-9;
+
+/// Scales and where the figure's blocks go.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct TrussDrawing {
+    /// Length scale 1 : n of the truss drawing.
+    pub length_scale: f64,
+    /// Force scale, kg per mm.
+    pub force_scale: f64,
+}
+
+/// A support reaction as read off the force plan.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ReactionForce {
+    /// The support's name ("A", "B", or the scene's own).
+    pub support: String,
+    /// The joint it holds.
+    pub joint: String,
+    /// The force on the truss (kg), x to the right, y up.
+    pub force: [f64; 2],
+    /// Its length in the force plan (mm), |force| over the force scale.
+    pub plan_mm: f64,
+}
+
+impl ReactionForce {
+    /// The magnitude (kg).
+    pub fn magnitude(&self) -> f64 {
+        self.force[0].hypot(self.force[1])
+    }
+}
+
+/// The result of one load case.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CaseResult {
+    /// Load case name.
+    pub case: String,
+    /// Reaction forces, one per support in the order of the supports.
+    pub reactions: Vec<ReactionForce>,
+    /// Member forces in the order of the members.
+    pub members: Vec<MemberForce>,
+    /// Largest out-of-balance force at any joint for the plan's forces (kg).
+    pub plan_residual: f64,
+    /// The same for the dense solve, where it was made.
+    pub matrix_residual: Option<f64>,
+}
+
+/// Everything the truss drawing needs per case, computed without a board.
+pub(crate) struct External {
+    /// (joint, force) of every external force, loads first, then reactions.
+    pub(crate) forces: Vec<(usize, Vector)>,
+    /// Reaction vectors per support.
+    pub(crate) reactions: Vec<Vector>,
+}
+
+pub(super) fn ext_max(ext: &External) -> f64 {
+    ext.forces.iter().map(|(_, f)| f.norm()).fold(0.0, f64::max)
+}
+
+/// The result of a plan, either way it was drawn: the forces found, the dense solve beside
+/// them, and the balance of both at every joint.
+pub(crate) fn plan_result(
+    t: &Truss,
+    case: &LoadCase,
+    ext: &External,
+    forces: &[Option<f64>],
+    plan_mm: &[f64],
+    sol: Option<&Solution>,
+    dr: &TrussDrawing,
+) -> CaseResult {
+    let members: Vec<f64> = forces.iter().map(|f| f.unwrap_or(0.0)).collect();
+    let matrix: Vec<Option<f64>> = (0..members.len())
+        .map(|m| sol.map(|s| s.members[m]))
+        .collect();
+    let mut result = case_result(t, case, &members, plan_mm, &matrix, &ext.reactions, dr);
+    result.matrix_residual = sol.map(|s| matrix::max_residual(t, case, &s.members, &s.reactions));
+    result
+}
+
+/// The scale of the checks: the largest load or reaction of the case (kg).
+pub(crate) fn check_reference(maxload: f64, ext: &External) -> f64 {
+    maxload.max(ext_max(ext))
+}
+
+/// Checks a member force read off a plan against the dense solve, if it was made.
+pub(crate) fn check_member(
+    b: &mut Board,
+    value: &H<f64>,
+    m: usize,
+    sol: Option<&Solution>,
+    reference: f64,
+) {
+    if let Some(sol) = sol {
+        b.check(
+            value,
+            "member force (tension +)",
+            "kg",
+            "joint equilibrium, dense LU (nalgebra)",
+            reference,
+            || sol.members[m],
+        );
+    }
+}
+
+/// The result of a case from its member forces and reactions (one per support), with the balance
+/// of every joint of `t` under them.
+pub(crate) fn case_result(
+    t: &Truss,
+    case: &LoadCase,
+    forces: &[f64],
+    plan_mm: &[f64],
+    matrix: &[Option<f64>],
+    reactions: &[Vector],
+    dr: &TrussDrawing,
+) -> CaseResult {
+    // Reaction components in the solve's order.
+    let mut rc = Vec::new();
+    for (sup, r) in t.supports.iter().zip(reactions) {
+        match sup.kind {
+            SupportKind::Pinned => rc.extend([r.x, r.y]),
+            SupportKind::Roller { dir } => rc.push(r.dot(&dir)),
+        }
+    }
+    CaseResult {
+        case: case.name.clone(),
+        reactions: t
+            .supports
+            .iter()
+            .zip(reactions)
+            .map(|(sup, r)| ReactionForce {
+                support: sup.name.clone(),
+                joint: t.joints[sup.joint].name.clone(),
+                force: [r.x, r.y],
+                plan_mm: r.norm() / dr.force_scale,
+            })
+            .collect(),
+        members: t
+            .members
+            .iter()
+            .enumerate()
+            .map(|(m, mem)| MemberForce {
+                member: mem.name.clone(),
+                plan_mm: plan_mm[m],
+                force: forces[m],
+                matrix: matrix[m],
+            })
+            .collect(),
+        plan_residual: matrix::max_residual(t, case, forces, &rc),
+        matrix_residual: None,
+    }
+}
+
+/// The spaces of Bow's notation.
+pub(super) struct Spaces<'a> {
+    /// The space left of every half-edge.
+    pub(super) of_half: &'a [usize],
+    /// The face of every inner space (the outer face for outer spaces).
+    pub(super) face_of: &'a [usize],
+    /// Spaces below this index are outside the truss.
+    pub(super) n_ext: usize,
+}
