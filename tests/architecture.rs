@@ -1,0 +1,254 @@
+//! The shape of the source tree, checked: the layers of the crate docs use only the layers
+//! before them, no two modules import each other (directly or round a loop), and no function
+//! of a procedure runs over the length at which it should be split.
+//!
+//! An edge A → B is a path from a file of module A into module B: `crate::…`, `super::…`,
+//! `self::…`, or a child module's name. A parent's re-exports (`pub use child::X;`) declare
+//! its face and are not uses; test modules are left out.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+type Module = Vec<String>;
+
+fn modules() -> BTreeMap<Module, PathBuf> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut out = BTreeMap::new();
+    let mut stack = vec![root.clone()];
+    while let Some(dir) = stack.pop() {
+        for e in std::fs::read_dir(&dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|x| x == "rs") {
+                let rel = p.strip_prefix(&root).unwrap().with_extension("");
+                let mut m: Module = rel.iter().map(|s| s.to_string_lossy().into()).collect();
+                if matches!(m.last().map(String::as_str), Some("mod" | "lib" | "main")) {
+                    m.pop();
+                }
+                out.insert(m, p);
+            }
+        }
+    }
+    out
+}
+
+/// The source a module depends on: comments, re-exports and test modules taken out.
+fn uses_of(text: &str) -> String {
+    let text = text.split("#[cfg(test)]").next().unwrap_or("");
+    let mut out = String::new();
+    for line in text.lines() {
+        let code = line.split("//").next().unwrap_or("");
+        if !code.trim_start().starts_with("pub use ") {
+            out.push_str(code);
+            out.push('\n');
+        }
+    }
+    out
+}
+
+/// Every `a::b::c` path in the text (identifiers joined by `::`), with its start.
+fn paths(text: &str) -> Vec<Vec<String>> {
+    let mut out = Vec::new();
+    let b = text.as_bytes();
+    let ident = |c: u8| c.is_ascii_alphanumeric() || c == b'_';
+    let mut i = 0;
+    while i < b.len() {
+        if ident(b[i]) && (i == 0 || !(ident(b[i - 1]) || b[i - 1] == b':')) {
+            let mut segs = Vec::new();
+            let mut j = i;
+            loop {
+                let s = j;
+                while j < b.len() && ident(b[j]) {
+                    j += 1;
+                }
+                segs.push(text[s..j].to_string());
+                if text[j..].starts_with("::") && j + 2 < b.len() && ident(b[j + 2]) {
+                    j += 2;
+                } else if text[j..].starts_with("::{") {
+                    // A use group: each member continues the path.
+                    let end = text[j..].find('}').map_or(b.len(), |e| j + e);
+                    for item in text[j + 3..end].split(',') {
+                        let first = item.trim().split("::").next().unwrap_or("").trim();
+                        if !first.is_empty() && first != "self" {
+                            let mut p = segs.clone();
+                            p.push(first.to_string());
+                            out.push(p);
+                        }
+                    }
+                    j = end;
+                    break;
+                } else {
+                    break;
+                }
+            }
+            if segs.len() > 1 {
+                out.push(segs);
+            }
+            i = j.max(i + 1);
+        } else {
+            i += 1;
+        }
+    }
+    out
+}
+
+fn resolve(mods: &BTreeMap<Module, PathBuf>, cur: &Module, path: &[String]) -> Option<Module> {
+    let (mut base, rest): (Module, &[String]) = match path[0].as_str() {
+        "crate" => (vec![], &path[1..]),
+        "self" => (cur.clone(), &path[1..]),
+        "super" => {
+            let mut b = cur.clone();
+            let mut k = 0;
+            while k < path.len() && path[k] == "super" {
+                b.pop();
+                k += 1;
+            }
+            (b, &path[k..])
+        }
+        first => {
+            let mut child = cur.clone();
+            child.push(first.to_string());
+            if !mods.contains_key(&child) {
+                return None;
+            }
+            (cur.clone(), path)
+        }
+    };
+    let mut best = base.clone();
+    for seg in rest {
+        base.push(seg.clone());
+        if mods.contains_key(&base) {
+            best = base.clone();
+        } else {
+            break;
+        }
+    }
+    Some(best)
+}
+
+fn edges(mods: &BTreeMap<Module, PathBuf>) -> BTreeMap<Module, BTreeSet<Module>> {
+    let mut out = BTreeMap::new();
+    for (m, p) in mods {
+        let text = uses_of(&std::fs::read_to_string(p).unwrap());
+        let mut to = BTreeSet::new();
+        for path in paths(&text) {
+            if let Some(t) = resolve(mods, m, &path) {
+                if &t != m && mods.contains_key(&t) {
+                    to.insert(t);
+                }
+            }
+        }
+        out.insert(m.clone(), to);
+    }
+    out
+}
+
+/// The layer of a module, as the crate docs list them.
+fn layer(m: &Module) -> usize {
+    match m.first().map(String::as_str) {
+        None => 6, // lib.rs, main.rs: the crate root and the command line
+        Some("kernel" | "fmt" | "io") => 0,
+        Some("protocol") => 1,
+        Some("crank" | "statics" | "truss") => 2,
+        Some("scene") => 3,
+        Some("render") => 4,
+        Some("prelude") => 5,
+        Some(other) => panic!("module {other} is in no layer: add it to the layer list"),
+    }
+}
+
+#[test]
+fn every_layer_uses_only_the_layers_before_it() {
+    let mods = modules();
+    let mut wrong = Vec::new();
+    for (a, to) in edges(&mods) {
+        for b in to {
+            if layer(&b) > layer(&a) {
+                wrong.push(format!("{} -> {}", a.join("::"), b.join("::")));
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "imports against the layers: {wrong:#?}");
+}
+
+#[test]
+fn no_module_imports_another_round_a_loop() {
+    let mods = modules();
+    let e = edges(&mods);
+    // Tarjan's strongly connected components.
+    struct St<'a> {
+        e: &'a BTreeMap<Module, BTreeSet<Module>>,
+        index: BTreeMap<Module, usize>,
+        low: BTreeMap<Module, usize>,
+        stack: Vec<Module>,
+        on: BTreeSet<Module>,
+        next: usize,
+        loops: Vec<Vec<String>>,
+    }
+    fn visit(s: &mut St, v: &Module) {
+        s.index.insert(v.clone(), s.next);
+        s.low.insert(v.clone(), s.next);
+        s.next += 1;
+        s.stack.push(v.clone());
+        s.on.insert(v.clone());
+        for w in s.e[v].clone() {
+            if !s.index.contains_key(&w) {
+                visit(s, &w);
+                let l = s.low[v].min(s.low[&w]);
+                s.low.insert(v.clone(), l);
+            } else if s.on.contains(&w) {
+                let l = s.low[v].min(s.index[&w]);
+                s.low.insert(v.clone(), l);
+            }
+        }
+        if s.low[v] == s.index[v] {
+            let mut comp = Vec::new();
+            loop {
+                let w = s.stack.pop().unwrap();
+                s.on.remove(&w);
+                comp.push(w.join("::"));
+                if &w == v {
+                    break;
+                }
+            }
+            if comp.len() > 1 {
+                s.loops.push(comp);
+            }
+        }
+    }
+    let mut s = St {
+        e: &e,
+        index: BTreeMap::new(),
+        low: BTreeMap::new(),
+        stack: Vec::new(),
+        on: BTreeSet::new(),
+        next: 0,
+        loops: Vec::new(),
+    };
+    for v in mods.keys() {
+        if !s.index.contains_key(v) {
+            visit(&mut s, v);
+        }
+    }
+    assert!(
+        s.loops.is_empty(),
+        "modules that import each other: {:#?}",
+        s.loops
+    );
+    assert!(e.len() > 60, "the tree was read: {} modules", e.len());
+}
+
+#[test]
+fn the_checker_finds_a_loop_and_a_layer_breach() {
+    // The resolver on a made-up tree: a -> b through `super::b`, b -> a through `crate::a`.
+    let mut mods = BTreeMap::new();
+    for m in [vec![], vec!["a".to_string()], vec!["b".to_string()]] {
+        mods.insert(m, PathBuf::new());
+    }
+    let a = vec!["a".to_string()];
+    let p = paths("use super::b::{X, Y};\nlet z = crate::a::f();");
+    assert_eq!(resolve(&mods, &a, &p[0]), Some(vec!["b".to_string()]));
+    assert_eq!(resolve(&mods, &a, &p[p.len() - 1]), Some(a.clone()));
+    assert!(layer(&vec!["render".to_string()]) > layer(&vec!["scene".to_string()]));
+}
