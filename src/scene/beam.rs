@@ -2,7 +2,7 @@
 
 use super::defaults::nice_at_least;
 use super::error::SceneError;
-use super::fields::optional_positive;
+use super::fields::{optional_positive, Fields};
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::{self, Beam, BeamDrawing, BeamRequest, BeamResults, PointLoad, UniformLoad};
 use serde::{Deserialize, Serialize};
@@ -122,134 +122,11 @@ pub const MAX_LOADS: usize = 2000;
 
 impl BeamScene {
     fn check_values(&self, origin: &str) -> Result<(), SceneError> {
-        let bad = |field: &str, message: String| SceneError::Invalid {
-            origin: origin.to_string(),
-            field: field.to_string(),
-            message,
-        };
-        let finite = |field: &str, x: f64| {
-            if x.is_finite() {
-                Ok(())
-            } else {
-                Err(bad(field, format!("must be a finite number, got {x}")))
-            }
-        };
-        let [a, b] = self.beam.supports_m;
-        finite("beam.supports_m[0]", a)?;
-        finite("beam.supports_m[1]", b)?;
-        if a == b {
-            return Err(bad(
-                "beam.supports_m",
-                format!(
-                    "both supports at one point ({a} m): the beam is not supported against turning"
-                ),
-            ));
-        }
-        if a > b {
-            return Err(bad(
-                "beam.supports_m",
-                format!("support A ({a} m) must lie left of support B ({b} m)"),
-            ));
-        }
-        let [e0, e1] = self.beam.ends_m.unwrap_or([a, b]);
-        finite("beam.ends_m[0]", e0)?;
-        finite("beam.ends_m[1]", e1)?;
-        if e0 > a || e1 < b {
-            return Err(bad(
-                "beam.ends_m",
-                format!("the beam [{e0}, {e1}] m must reach over both supports [{a}, {b}] m"),
-            ));
-        }
-        let on_beam = |field: &str, x: f64| {
-            if x < e0 || x > e1 {
-                Err(bad(field, format!("x = {x} m lies outside the beam [{e0}, {e1}] m: declare the overhang with beam.ends_m")))
-            } else {
-                Ok(())
-            }
-        };
-        if self.point_loads.len() + self.uniform_loads.len() > MAX_LOADS {
-            return Err(bad("point_loads", format!("more than {MAX_LOADS} loads")));
-        }
-        for (i, l) in self.point_loads.iter().enumerate() {
-            finite(&format!("point_loads[{i}].x_m"), l.x_m)?;
-            finite(&format!("point_loads[{i}].kg"), l.kg)?;
-            on_beam(&format!("point_loads[{i}].x_m"), l.x_m)?;
-        }
-        for (i, u) in self.uniform_loads.iter().enumerate() {
-            let f = |n: &str| format!("uniform_loads[{i}].{n}");
-            finite(&f("from_m"), u.from_m)?;
-            finite(&f("to_m"), u.to_m)?;
-            finite(&f("kg_per_m"), u.kg_per_m)?;
-            if u.to_m <= u.from_m {
-                return Err(bad(
-                    &f("to_m"),
-                    format!(
-                        "the load must end ({} m) after it starts ({} m)",
-                        u.to_m, u.from_m
-                    ),
-                ));
-            }
-            on_beam(&f("from_m"), u.from_m)?;
-            on_beam(&f("to_m"), u.to_m)?;
-            for (s, x) in [("A", a), ("B", b)] {
-                if x > u.from_m && x < u.to_m {
-                    return Err(bad(&f("to_m"), format!("the load straddles support {s} at {x} m: split it there into two uniform loads (the result is the same)")));
-                }
-            }
-            if let Some(k) = self
-                .point_loads
-                .iter()
-                .position(|l| l.x_m > u.from_m && l.x_m < u.to_m)
-            {
-                return Err(bad(&format!("point_loads[{k}].x_m"), format!("the point load lies inside uniform load {i}: split the uniform load there (the result is the same)")));
-            }
-            for (j, w) in self.uniform_loads.iter().enumerate().skip(i + 1) {
-                if w.from_m < u.to_m && w.to_m > u.from_m {
-                    return Err(bad(
-                        &format!("uniform_loads[{j}]"),
-                        format!("overlaps uniform load {i}: add their intensities instead"),
-                    ));
-                }
-            }
-        }
-        if let Some(st) = &self.stringers_m {
-            if st.len() < 2 || st.len() > MAX_LOADS {
-                return Err(bad(
-                    "stringers_m",
-                    format!("{} panel points: give 2 to {MAX_LOADS}", st.len()),
-                ));
-            }
-            for (i, x) in st.iter().enumerate() {
-                finite(&format!("stringers_m[{i}]"), *x)?;
-                on_beam(&format!("stringers_m[{i}]"), *x)?;
-                if i > 0 && *x <= st[i - 1] {
-                    return Err(bad(
-                        &format!("stringers_m[{i}]"),
-                        "panel points must increase".into(),
-                    ));
-                }
-            }
-            let (first, last) = (st[0], st[st.len() - 1]);
-            for (i, l) in self.point_loads.iter().enumerate() {
-                if l.x_m < first || l.x_m > last {
-                    return Err(bad(
-                        &format!("point_loads[{i}].x_m"),
-                        format!(
-                            "x = {} m lies outside the stringers [{first}, {last}] m",
-                            l.x_m
-                        ),
-                    ));
-                }
-            }
-            for (i, u) in self.uniform_loads.iter().enumerate() {
-                if u.from_m < first || u.to_m > last {
-                    return Err(bad(
-                        &format!("uniform_loads[{i}]"),
-                        format!("the load reaches outside the stringers [{first}, {last}] m"),
-                    ));
-                }
-            }
-        }
+        let f = Fields { origin };
+        let ends = self.check_supports(f)?;
+        self.check_point_loads(f, ends)?;
+        self.check_uniform_loads(f, ends)?;
+        self.check_stringers(f, ends)?;
         if let Some(d) = &self.drawing {
             optional_positive(
                 origin,
@@ -261,9 +138,138 @@ impl BeamScene {
             )?;
             if let Some(m) = d.parabola_divisions {
                 if !(2..=64).contains(&m) {
-                    return Err(bad(
-                        "drawing.parabola_divisions",
-                        format!("{m}: give 2 to 64"),
+                    return Err(f.bad("drawing.parabola_divisions", format!("{m}: give 2 to 64")));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The supports, A left of B, finite; the ends of the beam over both: the ends (m).
+    fn check_supports(&self, f: Fields) -> Result<[f64; 2], SceneError> {
+        let [a, b] = self.beam.supports_m;
+        f.finite("beam.supports_m[0]", a)?;
+        f.finite("beam.supports_m[1]", b)?;
+        if a == b {
+            return Err(f.bad(
+                "beam.supports_m",
+                format!(
+                    "both supports at one point ({a} m): the beam is not supported against turning"
+                ),
+            ));
+        }
+        if a > b {
+            return Err(f.bad(
+                "beam.supports_m",
+                format!("support A ({a} m) must lie left of support B ({b} m)"),
+            ));
+        }
+        let [e0, e1] = self.beam.ends_m.unwrap_or([a, b]);
+        f.finite("beam.ends_m[0]", e0)?;
+        f.finite("beam.ends_m[1]", e1)?;
+        if e0 > a || e1 < b {
+            return Err(f.bad(
+                "beam.ends_m",
+                format!("the beam [{e0}, {e1}] m must reach over both supports [{a}, {b}] m"),
+            ));
+        }
+        Ok([e0, e1])
+    }
+
+    /// At most MAX_LOADS loads; point loads finite and on the beam.
+    fn check_point_loads(&self, f: Fields, ends: [f64; 2]) -> Result<(), SceneError> {
+        if self.point_loads.len() + self.uniform_loads.len() > MAX_LOADS {
+            return Err(f.bad("point_loads", format!("more than {MAX_LOADS} loads")));
+        }
+        for (i, l) in self.point_loads.iter().enumerate() {
+            f.finite(&format!("point_loads[{i}].x_m"), l.x_m)?;
+            f.finite(&format!("point_loads[{i}].kg"), l.kg)?;
+            on_beam(f, &format!("point_loads[{i}].x_m"), l.x_m, ends)?;
+        }
+        Ok(())
+    }
+
+    /// Uniform loads finite, on the beam, ending after they start, straddling no support,
+    /// holding no point load, overlapping no other.
+    fn check_uniform_loads(&self, f: Fields, ends: [f64; 2]) -> Result<(), SceneError> {
+        let [a, b] = self.beam.supports_m;
+        for (i, u) in self.uniform_loads.iter().enumerate() {
+            let at = |n: &str| format!("uniform_loads[{i}].{n}");
+            f.finite(&at("from_m"), u.from_m)?;
+            f.finite(&at("to_m"), u.to_m)?;
+            f.finite(&at("kg_per_m"), u.kg_per_m)?;
+            if u.to_m <= u.from_m {
+                return Err(f.bad(
+                    &at("to_m"),
+                    format!(
+                        "the load must end ({} m) after it starts ({} m)",
+                        u.to_m, u.from_m
+                    ),
+                ));
+            }
+            on_beam(f, &at("from_m"), u.from_m, ends)?;
+            on_beam(f, &at("to_m"), u.to_m, ends)?;
+            for (s, x) in [("A", a), ("B", b)] {
+                if x > u.from_m && x < u.to_m {
+                    return Err(f.bad(&at("to_m"), format!("the load straddles support {s} at {x} m: split it there into two uniform loads (the result is the same)")));
+                }
+            }
+            if let Some(k) = self
+                .point_loads
+                .iter()
+                .position(|l| l.x_m > u.from_m && l.x_m < u.to_m)
+            {
+                return Err(f.bad(&format!("point_loads[{k}].x_m"), format!("the point load lies inside uniform load {i}: split the uniform load there (the result is the same)")));
+            }
+            for (j, w) in self.uniform_loads.iter().enumerate().skip(i + 1) {
+                if w.from_m < u.to_m && w.to_m > u.from_m {
+                    return Err(f.bad(
+                        &format!("uniform_loads[{j}]"),
+                        format!("overlaps uniform load {i}: add their intensities instead"),
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Panel points of the stringers: 2 to MAX_LOADS, increasing, on the beam, covering the
+    /// loads.
+    fn check_stringers(&self, f: Fields, ends: [f64; 2]) -> Result<(), SceneError> {
+        if let Some(st) = &self.stringers_m {
+            if st.len() < 2 || st.len() > MAX_LOADS {
+                return Err(f.bad(
+                    "stringers_m",
+                    format!("{} panel points: give 2 to {MAX_LOADS}", st.len()),
+                ));
+            }
+            for (i, x) in st.iter().enumerate() {
+                f.finite(&format!("stringers_m[{i}]"), *x)?;
+                on_beam(f, &format!("stringers_m[{i}]"), *x, ends)?;
+                if i > 0 && *x <= st[i - 1] {
+                    return Err(f.bad(
+                        &format!("stringers_m[{i}]"),
+                        "panel points must increase".into(),
+                    ));
+                }
+            }
+            let (first, last) = (st[0], st[st.len() - 1]);
+            for (i, l) in self.point_loads.iter().enumerate() {
+                if l.x_m < first || l.x_m > last {
+                    return Err(f.bad(
+                        &format!("point_loads[{i}].x_m"),
+                        format!(
+                            "x = {} m lies outside the stringers [{first}, {last}] m",
+                            l.x_m
+                        ),
+                    ));
+                }
+            }
+            for (i, u) in self.uniform_loads.iter().enumerate() {
+                if u.from_m < first || u.to_m > last {
+                    return Err(f.bad(
+                        &format!("uniform_loads[{i}]"),
+                        format!("the load reaches outside the stringers [{first}, {last}] m"),
                     ));
                 }
             }
@@ -392,5 +398,19 @@ impl super::Procedure for BeamScene {
     }
     fn figure_meta(problem: &BeamProblem) -> FigureMeta {
         problem.figure_meta()
+    }
+}
+
+/// `x` must lie on the beam between its `ends`.
+fn on_beam(f: Fields, field: &str, x: f64, [e0, e1]: [f64; 2]) -> Result<(), SceneError> {
+    if x < e0 || x > e1 {
+        Err(f.bad(
+            field,
+            format!(
+                "x = {x} m lies outside the beam [{e0}, {e1}] m: declare the overhang with beam.ends_m"
+            ),
+        ))
+    } else {
+        Ok(())
     }
 }

@@ -29,3 +29,42 @@ pub(super) fn optional_positive(
     }
     Ok(())
 }
+
+/// The fields of one scene file, for errors that name them.
+#[derive(Clone, Copy)]
+pub(super) struct Fields<'a> {
+    /// The file (the prefix of every error).
+    pub(super) origin: &'a str,
+}
+
+impl Fields<'_> {
+    /// A value that parses but is not allowed, at `field`.
+    pub(super) fn bad(&self, field: &str, message: String) -> SceneError {
+        SceneError::Invalid {
+            origin: self.origin.to_string(),
+            field: field.to_string(),
+            message,
+        }
+    }
+
+    /// `x` must be a finite number.
+    pub(super) fn finite(&self, field: &str, x: f64) -> Result<(), SceneError> {
+        if x.is_finite() {
+            Ok(())
+        } else {
+            Err(self.bad(field, format!("must be a finite number, got {x}")))
+        }
+    }
+
+    /// `x` must be a positive, finite length or number.
+    pub(super) fn positive(&self, field: &str, x: f64) -> Result<(), SceneError> {
+        if x.is_finite() && x > 0.0 {
+            Ok(())
+        } else {
+            Err(self.bad(
+                field,
+                format!("must be a positive length or number, got {x}"),
+            ))
+        }
+    }
+}

@@ -3,6 +3,7 @@
 
 use super::defaults;
 use super::error::SceneError;
+use super::fields::Fields;
 use super::procedure::{parse_scene, Procedure};
 use super::types::*;
 use crate::crank::{self, Angles, CrankDrive, CrankResults, Drawing, PistonForce, Request};
@@ -43,163 +44,12 @@ impl Scene {
     }
 
     fn check_values(&self, origin: &str) -> Result<(), SceneError> {
-        let bad = |field: &str, message: String| SceneError::Invalid {
-            origin: origin.to_string(),
-            field: field.to_string(),
-            message,
-        };
-        let positive = |field: &str, x: f64| {
-            if x.is_finite() && x > 0.0 {
-                Ok(())
-            } else {
-                Err(bad(
-                    field,
-                    format!("must be a positive length or number, got {x}"),
-                ))
-            }
-        };
-        let m = &self.mechanism;
-        let r = match (m.crank_radius_mm, m.stroke_mm) {
-            (Some(r), None) => {
-                positive("mechanism.crank_radius_mm", r)?;
-                r
-            }
-            (None, Some(s)) => {
-                positive("mechanism.stroke_mm", s)?;
-                s / 2.0
-            }
-            (Some(_), Some(_)) => {
-                return Err(bad(
-                    "mechanism",
-                    "give either crank_radius_mm or stroke_mm, not both".into(),
-                ))
-            }
-            (None, None) => {
-                return Err(bad(
-                    "mechanism",
-                    "missing field `crank_radius_mm` (or `stroke_mm`)".into(),
-                ))
-            }
-        };
-        match m.rod {
-            Rod::LengthMm(l) => {
-                positive("mechanism.rod.length_mm", l)?;
-                if l <= r {
-                    return Err(bad(
-                        "mechanism.rod.length_mm",
-                        format!(
-                            "the rod (L = {l} mm) must be longer than the crank (R = {r} mm): \
-                             otherwise the mechanism locks where the crank stands perpendicular \
-                             to the piston line"
-                        ),
-                    ));
-                }
-            }
-            Rod::LOverR(k) => {
-                positive("mechanism.rod.l_over_r", k)?;
-                if k <= 1.0 {
-                    return Err(bad(
-                        "mechanism.rod.l_over_r",
-                        format!(
-                            "L/R = {k}: the rod must be longer than the crank (L/R > 1), \
-                             otherwise the mechanism locks"
-                        ),
-                    ));
-                }
-            }
-        }
-        match &self.speed {
-            Speed::Rpm(n) => positive("speed.rpm", *n)?,
-            Speed::CrankPinMS(v) => positive("speed.crank_pin_m_s", *v)?,
-            Speed::Train {
-                km_h,
-                wheel_diameter_mm,
-            } => {
-                positive("speed.train.km_h", *km_h)?;
-                positive("speed.train.wheel_diameter_mm", *wheel_diameter_mm)?;
-            }
-        }
-        let n_angles = match &self.angles {
-            AngleSpec::Divisions(n) => {
-                if *n < 2 || *n > MAX_DIVISIONS {
-                    return Err(bad(
-                        "angles.divisions",
-                        format!("{n} divisions: give between 2 and {MAX_DIVISIONS}"),
-                    ));
-                }
-                *n
-            }
-            AngleSpec::Degrees(v) => {
-                if v.is_empty() || v.len() > MAX_DIVISIONS {
-                    return Err(bad(
-                        "angles.degrees",
-                        format!("{} angles: give between 1 and {MAX_DIVISIONS}", v.len()),
-                    ));
-                }
-                for (k, a) in v.iter().enumerate() {
-                    if !(a.is_finite() && (0.0..360.0).contains(a)) {
-                        return Err(bad(
-                            &format!("angles.degrees[{k}]"),
-                            format!("crank angle {a}° is out of range: give 0 ≤ θ < 360"),
-                        ));
-                    }
-                }
-                v.len()
-            }
-        };
-        if self.outputs.is_empty() {
-            return Err(bad("outputs", "ask for at least one output".into()));
-        }
-        let needs_force = self.outputs.iter().any(|o| o.is_force());
-        match (&self.piston_force, needs_force) {
-            (None, true) => {
-                return Err(bad(
-                    "piston_force",
-                    "missing: the outputs ask for forces, so the piston force is needed".into(),
-                ))
-            }
-            (Some(PistonForceSpec::Kg(p)), _) => {
-                if !p.is_finite() {
-                    return Err(bad("piston_force.kg", "must be a finite number".into()));
-                }
-            }
-            (Some(PistonForceSpec::Pressure(p)), _) => {
-                positive("piston_force.pressure.bore_mm", p.bore_mm)?;
-                if !p.at.is_finite() {
-                    return Err(bad(
-                        "piston_force.pressure.at",
-                        "must be a finite number".into(),
-                    ));
-                }
-                if !(p.rod_diameter_mm.is_finite()
-                    && p.rod_diameter_mm >= 0.0
-                    && p.rod_diameter_mm < p.bore_mm)
-                {
-                    return Err(bad(
-                        "piston_force.pressure.rod_diameter_mm",
-                        format!(
-                            "must lie in [0, bore) = [0, {}), got {}",
-                            p.bore_mm, p.rod_diameter_mm
-                        ),
-                    ));
-                }
-            }
-            (Some(PistonForceSpec::PerAngleKg(v)), _) => {
-                if v.len() != n_angles {
-                    return Err(bad(
-                        "piston_force.per_angle_kg",
-                        format!("{} forces for {n_angles} crank angles", v.len()),
-                    ));
-                }
-                if let Some(k) = v.iter().position(|x| !x.is_finite()) {
-                    return Err(bad(
-                        &format!("piston_force.per_angle_kg[{k}]"),
-                        "must be a finite number".into(),
-                    ));
-                }
-            }
-            (None, false) => {}
-        }
+        let f = Fields { origin };
+        let r = self.check_mechanism(f)?;
+        self.check_rod(f, r)?;
+        self.check_speed(f)?;
+        let n_angles = self.check_angles(f)?;
+        self.check_outputs_and_force(f, n_angles)?;
         if let Some(d) = &self.drawing {
             for (name, v) in [
                 ("drawing.length_scale", d.length_scale),
@@ -210,9 +60,174 @@ impl Scene {
                 ),
             ] {
                 if let Some(v) = v {
-                    positive(name, v)?;
+                    f.positive(name, v)?;
                 }
             }
+        }
+        Ok(())
+    }
+
+    /// The crank: its radius or its stroke, one of them, positive: the radius (mm).
+    fn check_mechanism(&self, f: Fields) -> Result<f64, SceneError> {
+        let m = &self.mechanism;
+        let r = match (m.crank_radius_mm, m.stroke_mm) {
+            (Some(r), None) => {
+                f.positive("mechanism.crank_radius_mm", r)?;
+                r
+            }
+            (None, Some(s)) => {
+                f.positive("mechanism.stroke_mm", s)?;
+                s / 2.0
+            }
+            (Some(_), Some(_)) => {
+                return Err(f.bad(
+                    "mechanism",
+                    "give either crank_radius_mm or stroke_mm, not both".into(),
+                ))
+            }
+            (None, None) => {
+                return Err(f.bad(
+                    "mechanism",
+                    "missing field `crank_radius_mm` (or `stroke_mm`)".into(),
+                ))
+            }
+        };
+        Ok(r)
+    }
+
+    /// The rod: positive and longer than the crank radius `r`.
+    fn check_rod(&self, f: Fields, r: f64) -> Result<(), SceneError> {
+        match self.mechanism.rod {
+            Rod::LengthMm(l) => {
+                f.positive("mechanism.rod.length_mm", l)?;
+                if l <= r {
+                    return Err(f.bad(
+                        "mechanism.rod.length_mm",
+                        format!(
+                            "the rod (L = {l} mm) must be longer than the crank (R = {r} mm): \
+                             otherwise the mechanism locks where the crank stands perpendicular \
+                             to the piston line"
+                        ),
+                    ));
+                }
+            }
+            Rod::LOverR(k) => {
+                f.positive("mechanism.rod.l_over_r", k)?;
+                if k <= 1.0 {
+                    return Err(f.bad(
+                        "mechanism.rod.l_over_r",
+                        format!(
+                            "L/R = {k}: the rod must be longer than the crank (L/R > 1), \
+                             otherwise the mechanism locks"
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The speed: positive numbers.
+    fn check_speed(&self, f: Fields) -> Result<(), SceneError> {
+        match &self.speed {
+            Speed::Rpm(n) => f.positive("speed.rpm", *n)?,
+            Speed::CrankPinMS(v) => f.positive("speed.crank_pin_m_s", *v)?,
+            Speed::Train {
+                km_h,
+                wheel_diameter_mm,
+            } => {
+                f.positive("speed.train.km_h", *km_h)?;
+                f.positive("speed.train.wheel_diameter_mm", *wheel_diameter_mm)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The crank angles: 2 to MAX_DIVISIONS divisions, or 1 to MAX_DIVISIONS angles in
+    /// [0°, 360°): their number.
+    fn check_angles(&self, f: Fields) -> Result<usize, SceneError> {
+        Ok(match &self.angles {
+            AngleSpec::Divisions(n) => {
+                if *n < 2 || *n > MAX_DIVISIONS {
+                    return Err(f.bad(
+                        "angles.divisions",
+                        format!("{n} divisions: give between 2 and {MAX_DIVISIONS}"),
+                    ));
+                }
+                *n
+            }
+            AngleSpec::Degrees(v) => {
+                if v.is_empty() || v.len() > MAX_DIVISIONS {
+                    return Err(f.bad(
+                        "angles.degrees",
+                        format!("{} angles: give between 1 and {MAX_DIVISIONS}", v.len()),
+                    ));
+                }
+                for (k, a) in v.iter().enumerate() {
+                    if !(a.is_finite() && (0.0..360.0).contains(a)) {
+                        return Err(f.bad(
+                            &format!("angles.degrees[{k}]"),
+                            format!("crank angle {a}° is out of range: give 0 ≤ θ < 360"),
+                        ));
+                    }
+                }
+                v.len()
+            }
+        })
+    }
+
+    /// At least one output; the piston force where a force is asked for, finite, and one per
+    /// angle where given per angle.
+    fn check_outputs_and_force(&self, f: Fields, n_angles: usize) -> Result<(), SceneError> {
+        if self.outputs.is_empty() {
+            return Err(f.bad("outputs", "ask for at least one output".into()));
+        }
+        let needs_force = self.outputs.iter().any(|o| o.is_force());
+        match (&self.piston_force, needs_force) {
+            (None, true) => {
+                return Err(f.bad(
+                    "piston_force",
+                    "missing: the outputs ask for forces, so the piston force is needed".into(),
+                ))
+            }
+            (Some(PistonForceSpec::Kg(p)), _) => {
+                if !p.is_finite() {
+                    return Err(f.bad("piston_force.kg", "must be a finite number".into()));
+                }
+            }
+            (Some(PistonForceSpec::Pressure(p)), _) => {
+                f.positive("piston_force.pressure.bore_mm", p.bore_mm)?;
+                if !p.at.is_finite() {
+                    return Err(f.bad("piston_force.pressure.at", "must be a finite number".into()));
+                }
+                if !(p.rod_diameter_mm.is_finite()
+                    && p.rod_diameter_mm >= 0.0
+                    && p.rod_diameter_mm < p.bore_mm)
+                {
+                    return Err(f.bad(
+                        "piston_force.pressure.rod_diameter_mm",
+                        format!(
+                            "must lie in [0, bore) = [0, {}), got {}",
+                            p.bore_mm, p.rod_diameter_mm
+                        ),
+                    ));
+                }
+            }
+            (Some(PistonForceSpec::PerAngleKg(v)), _) => {
+                if v.len() != n_angles {
+                    return Err(f.bad(
+                        "piston_force.per_angle_kg",
+                        format!("{} forces for {n_angles} crank angles", v.len()),
+                    ));
+                }
+                if let Some(k) = v.iter().position(|x| !x.is_finite()) {
+                    return Err(f.bad(
+                        &format!("piston_force.per_angle_kg[{k}]"),
+                        "must be a finite number".into(),
+                    ));
+                }
+            }
+            (None, false) => {}
         }
         Ok(())
     }

@@ -276,11 +276,38 @@ pub struct TrussProblem {
 
 impl TrussScene {
     fn check_values(&self, origin: &str) -> Result<(), SceneError> {
-        let bad = |field: String, message: String| SceneError::Invalid {
-            origin: origin.to_string(),
-            field,
-            message,
-        };
+        let index = self.check_joints(origin)?;
+        self.check_coincident_joints(origin)?;
+        let names = self.check_members(origin, &index)?;
+        self.check_supports(origin, &index)?;
+        self.check_loads(origin, &index)?;
+        let truss = self.truss();
+        self.check_case_names(origin, &truss)?;
+        if let Some(d) = &self.drawing {
+            optional_positive(
+                origin,
+                &[
+                    ("drawing.length_scale", d.length_scale),
+                    ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
+                ],
+            )?;
+        }
+        if !self.diagonal_pairs.is_empty() {
+            return self.check_pairs(origin, &names, &truss);
+        }
+        if self.diagonal_mode.is_some() {
+            return Err(invalid(
+                origin,
+                "diagonal_mode".into(),
+                "a mode without diagonal_pairs".into(),
+            ));
+        }
+        Self::check_stability(origin, &truss)
+    }
+
+    /// At least two joints, at finite places, each named once: the index of the names.
+    fn check_joints(&self, origin: &str) -> Result<HashMap<&str, usize>, SceneError> {
+        let bad = |field: String, message: String| invalid(origin, field, message);
         if self.joints.len() < 2 {
             return Err(bad(
                 "joints".into(),
@@ -308,7 +335,12 @@ impl TrussScene {
                 ));
             }
         }
-        // Coincident joints: sorted by position, neighbours compared (O(k log k)).
+        Ok(index)
+    }
+
+    /// No two joints at one place: sorted by position, neighbours compared (O(k log k)).
+    fn check_coincident_joints(&self, origin: &str) -> Result<(), SceneError> {
+        let bad = |field: String, message: String| invalid(origin, field, message);
         let size = {
             let xs = self.joints.iter().map(|j| j.at_m[0]);
             let ys = self.joints.iter().map(|j| j.at_m[1]);
@@ -338,6 +370,17 @@ impl TrussScene {
                 ));
             }
         }
+        Ok(())
+    }
+
+    /// Members between existing, distinct joints, none twice, each named once: the index of
+    /// their names.
+    fn check_members(
+        &self,
+        origin: &str,
+        index: &HashMap<&str, usize>,
+    ) -> Result<HashMap<&str, usize>, SceneError> {
+        let bad = |field: String, message: String| invalid(origin, field, message);
         let mut pairs: HashMap<(usize, usize), usize> = HashMap::new();
         let mut names: HashMap<&str, usize> = HashMap::new();
         for (m, mem) in self.members.iter().enumerate() {
@@ -379,6 +422,13 @@ impl TrussScene {
                 ));
             }
         }
+        Ok(names)
+    }
+
+    /// Supports at existing joints, one each, a direction for a roller only, their reactions
+    /// named once; one pin and one roller, or three rollers.
+    fn check_supports(&self, origin: &str, index: &HashMap<&str, usize>) -> Result<(), SceneError> {
+        let bad = |field: String, message: String| invalid(origin, field, message);
         let mut supported: HashMap<usize, usize> = HashMap::new();
         for (s, sup) in self.supports.iter().enumerate() {
             let j = *index.get(sup.joint.as_str()).ok_or_else(|| {
@@ -445,45 +495,20 @@ impl TrussScene {
                 ),
             ));
         }
+        Ok(())
+    }
+
+    /// At least one load case (or a roof, or a moving load); the roof's numbers, every load
+    /// at an existing joint with finite components, moving loads on existing paths.
+    fn check_loads(&self, origin: &str, index: &HashMap<&str, usize>) -> Result<(), SceneError> {
+        let bad = |field: String, message: String| invalid(origin, field, message);
         if self.load_cases.is_empty() && self.roof.is_none() && self.moving_loads.is_empty() {
             return Err(bad(
                 "load_cases".into(),
                 "give at least one load case (or a roof, or a moving load)".into(),
             ));
         }
-        if let Some(roof) = &self.roof {
-            for (f, v) in [
-                ("roof.bay_m", roof.bay_m),
-                ("roof.truss_kg_per_m2", roof.truss_kg_per_m2),
-                ("roof.wind_k_kg_per_m2", roof.wind_k_kg_per_m2),
-            ] {
-                if !(v.is_finite() && v >= 0.0) {
-                    return Err(bad(f.into(), format!("must be a number ≥ 0, got {v}")));
-                }
-            }
-            for (i, sl) in roof.slopes.iter().enumerate() {
-                if sl.joints.len() < 2 {
-                    return Err(bad(
-                        format!("roof.slopes[{i}].joints"),
-                        "a slope runs over at least two joints".into(),
-                    ));
-                }
-                for (k, j) in sl.joints.iter().enumerate() {
-                    if !index.contains_key(j.as_str()) {
-                        return Err(bad(
-                            format!("roof.slopes[{i}].joints[{k}]"),
-                            format!("joint `{j}` does not exist"),
-                        ));
-                    }
-                }
-                if !(sl.cover_kg_per_m2.is_finite() && sl.cover_kg_per_m2 >= 0.0) {
-                    return Err(bad(
-                        format!("roof.slopes[{i}].cover_kg_per_m2"),
-                        "must be a number ≥ 0".into(),
-                    ));
-                }
-            }
-        }
+        self.check_roof(origin, index)?;
         let at = self.joint_positions();
         for (c, case) in self.load_cases.iter().enumerate() {
             for (l, load) in case.loads.iter().enumerate() {
@@ -527,8 +552,52 @@ impl TrussScene {
                 ));
             }
         }
-        let truss = self.truss();
-        let case_names = self.case_names(&truss);
+        Ok(())
+    }
+
+    /// The roof's numbers, and its slopes over existing joints.
+    fn check_roof(&self, origin: &str, index: &HashMap<&str, usize>) -> Result<(), SceneError> {
+        let bad = |field: String, message: String| invalid(origin, field, message);
+        if let Some(roof) = &self.roof {
+            for (f, v) in [
+                ("roof.bay_m", roof.bay_m),
+                ("roof.truss_kg_per_m2", roof.truss_kg_per_m2),
+                ("roof.wind_k_kg_per_m2", roof.wind_k_kg_per_m2),
+            ] {
+                if !(v.is_finite() && v >= 0.0) {
+                    return Err(bad(f.into(), format!("must be a number ≥ 0, got {v}")));
+                }
+            }
+            for (i, sl) in roof.slopes.iter().enumerate() {
+                if sl.joints.len() < 2 {
+                    return Err(bad(
+                        format!("roof.slopes[{i}].joints"),
+                        "a slope runs over at least two joints".into(),
+                    ));
+                }
+                for (k, j) in sl.joints.iter().enumerate() {
+                    if !index.contains_key(j.as_str()) {
+                        return Err(bad(
+                            format!("roof.slopes[{i}].joints[{k}]"),
+                            format!("joint `{j}` does not exist"),
+                        ));
+                    }
+                }
+                if !(sl.cover_kg_per_m2.is_finite() && sl.cover_kg_per_m2 >= 0.0) {
+                    return Err(bad(
+                        format!("roof.slopes[{i}].cover_kg_per_m2"),
+                        "must be a number ≥ 0".into(),
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Combinations and the envelope name existing load cases.
+    fn check_case_names(&self, origin: &str, truss: &Truss) -> Result<(), SceneError> {
+        let bad = |field: String, message: String| invalid(origin, field, message);
+        let case_names = self.case_names(truss);
         let known = |n: &String| case_names.contains(n);
         for (c, combo) in self.combinations.iter().enumerate() {
             for (i, name) in combo.cases.iter().enumerate() {
@@ -560,72 +629,70 @@ impl TrussScene {
                 }
             }
         }
-        if let Some(d) = &self.drawing {
-            optional_positive(
-                origin,
-                &[
-                    ("drawing.length_scale", d.length_scale),
-                    ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
-                ],
-            )?;
-        }
-        // Pairs of diagonals: each system (one diagonal of every pair) must be determinate.
-        if !self.diagonal_pairs.is_empty() {
-            if self.diagonal_mode.is_none() {
-                return Err(bad(
-                    "diagonal_mode".into(),
-                    "give `split_half_loads` or `tension_only` for the diagonal pairs".into(),
-                ));
-            }
-            let mut seen: HashMap<&str, usize> = HashMap::new();
-            for (i, pair) in self.diagonal_pairs.iter().enumerate() {
-                for (k, name) in pair.iter().enumerate() {
-                    if !names.contains_key(name.as_str()) {
-                        return Err(bad(
-                            format!("diagonal_pairs[{i}][{k}]"),
-                            format!("no member is named `{name}`"),
-                        ));
-                    }
-                    if let Some(first) = seen.insert(name.as_str(), i) {
-                        return Err(bad(
-                            format!("diagonal_pairs[{i}][{k}]"),
-                            format!("member `{name}` is already in pair {first}"),
-                        ));
-                    }
-                }
-            }
-            let pairs = self.pair_indices();
-            for side in 0..2 {
-                let drop: Vec<usize> = pairs.iter().map(|p| p[1 - side]).collect();
-                let (sub, _) = redundant::without(&truss, &drop);
-                let a = matrix::analyse(&sub);
-                let why = match a.determinacy {
-                    Determinacy::Determinate => continue,
-                    Determinacy::OverDeterminate { redundant } => {
-                        format!("still over-determinate by {redundant}: pair the other double diagonals too")
-                    }
-                    Determinacy::Mechanism { joint, .. } => {
-                        format!("a mechanism: joint `{}` can move", sub.joints[joint].name)
-                    }
-                };
-                return Err(bad(
-                    "diagonal_pairs".into(),
-                    format!(
-                        "with the {} diagonal of every pair the truss is {why}",
-                        if side == 0 { "first" } else { "second" },
-                    ),
-                ));
-            }
-            return Ok(());
-        }
-        if self.diagonal_mode.is_some() {
+        Ok(())
+    }
+
+    /// Pairs of diagonals: a mode, existing members each in one pair, and each system (one
+    /// diagonal of every pair) determinate.
+    fn check_pairs(
+        &self,
+        origin: &str,
+        names: &HashMap<&str, usize>,
+        truss: &Truss,
+    ) -> Result<(), SceneError> {
+        let bad = |field: String, message: String| invalid(origin, field, message);
+        if self.diagonal_mode.is_none() {
             return Err(bad(
                 "diagonal_mode".into(),
-                "a mode without diagonal_pairs".into(),
+                "give `split_half_loads` or `tension_only` for the diagonal pairs".into(),
             ));
         }
-        // Stability: the rank of the equilibrium matrix (LH Gl. 2 and more).
-        match matrix::analyse(&truss).determinacy {
+        let mut seen: HashMap<&str, usize> = HashMap::new();
+        for (i, pair) in self.diagonal_pairs.iter().enumerate() {
+            for (k, name) in pair.iter().enumerate() {
+                if !names.contains_key(name.as_str()) {
+                    return Err(bad(
+                        format!("diagonal_pairs[{i}][{k}]"),
+                        format!("no member is named `{name}`"),
+                    ));
+                }
+                if let Some(first) = seen.insert(name.as_str(), i) {
+                    return Err(bad(
+                        format!("diagonal_pairs[{i}][{k}]"),
+                        format!("member `{name}` is already in pair {first}"),
+                    ));
+                }
+            }
+        }
+        let pairs = self.pair_indices();
+        for side in 0..2 {
+            let drop: Vec<usize> = pairs.iter().map(|p| p[1 - side]).collect();
+            let (sub, _) = redundant::without(truss, &drop);
+            let a = matrix::analyse(&sub);
+            let why = match a.determinacy {
+                Determinacy::Determinate => continue,
+                Determinacy::OverDeterminate { redundant } => {
+                    format!("still over-determinate by {redundant}: pair the other double diagonals too")
+                }
+                Determinacy::Mechanism { joint, .. } => {
+                    format!("a mechanism: joint `{}` can move", sub.joints[joint].name)
+                }
+            };
+            return Err(bad(
+                "diagonal_pairs".into(),
+                format!(
+                    "with the {} diagonal of every pair the truss is {why}",
+                    if side == 0 { "first" } else { "second" },
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Stability: the rank of the equilibrium matrix (LH Gl. 2 and more).
+    fn check_stability(origin: &str, truss: &Truss) -> Result<(), SceneError> {
+        let bad = |field: String, message: String| invalid(origin, field, message);
+        match matrix::analyse(truss).determinacy {
             Determinacy::Determinate => Ok(()),
             Determinacy::Mechanism { joint, freedoms } => Err(bad(
                 format!("joints[{joint}]"),
@@ -901,5 +968,14 @@ impl super::Procedure for TrussScene {
     }
     fn figure_meta(problem: &TrussProblem) -> FigureMeta {
         problem.figure_meta()
+    }
+}
+
+/// A value that parses but makes no truss, at its field.
+fn invalid(origin: &str, field: String, message: String) -> SceneError {
+    SceneError::Invalid {
+        origin: origin.to_string(),
+        field,
+        message,
     }
 }
