@@ -1,0 +1,142 @@
+//! The resultant of two parallel forces by two equal and opposite auxiliary forces (LH C.1,
+//! Abb. 21).
+
+use super::notes::*;
+use super::{Force, SystemDrawing};
+use crate::kernel::tolerance::PARALLEL_SIN_EPS;
+use crate::kernel::{Line, Point, Vector};
+use crate::protocol::{Board, ConstructionError, Label, Role, Scale, H};
+
+/// The resultant of two parallel forces by two equal and opposite auxiliary forces (LH C.1,
+/// Abb. 21): P′ at the first point of application, P″ = −P′ at the second, each combined with
+/// its force by the parallelogram; the two partial resultants meet on the resultant, which runs
+/// parallel to the forces and divides the distance of the points of application by the lever
+/// rule a : b = K₂ : K₁. `aux` is |P′| (kg), drawn across the forces.
+///
+/// # Errors
+/// [`ConstructionError::Unsupported`] if the forces are not parallel, or equal and opposite (a
+/// couple: the partial resultants are parallel and the step records it).
+///
+/// ```
+/// use graphostatik::statics::funicular::*;
+/// use graphostatik::protocol::Board;
+/// let k1 = Force { at: [0.0, 0.0], f: [0.0, -100.0] };
+/// let k2 = Force { at: [3.0, 0.0], f: [0.0, -200.0] };
+/// let d = SystemDrawing { length_scale: 50.0, force_scale: 10.0, pole: None, plan_at: None, unit: "kg" };
+/// let mut b = Board::recording();
+/// let a = parallel_pair_by_auxiliary_forces(&mut b, k1, k2, 150.0, &d).unwrap();
+/// assert!((a - 2.0).abs() < 1e-9); // a : b = 2 : 1 = K2 : K1
+/// assert!(b.steps().iter().flat_map(|s| &s.checks).all(|c| c.passed));
+/// ```
+pub fn parallel_pair_by_auxiliary_forces(
+    b: &mut Board,
+    k1: Force,
+    k2: Force,
+    aux: f64,
+    dr: &SystemDrawing,
+) -> Result<f64, ConstructionError> {
+    let v1 = Vector::new(k1.f[0], k1.f[1]);
+    let v2 = Vector::new(k2.f[0], k2.f[1]);
+    if v1.norm() == 0.0
+        || v2.norm() == 0.0
+        || crate::kernel::cross(&v1, &v2).abs() > PARALLEL_SIN_EPS * v1.norm() * v2.norm()
+    {
+        return Err(ConstructionError::unsupported(
+            "forces",
+            "the auxiliary-force construction takes two parallel, non-zero forces",
+        ));
+    }
+    let k = 1000.0 / dr.length_scale;
+    let fs = dr.force_scale;
+    let dir = v1 / v1.norm();
+    let mut partial = Vec::new();
+    for (i, (f, sense)) in [(k1, 1.0), (k2, -1.0)].into_iter().enumerate() {
+        partial.push(partial_resultant(b, i, f, sense * aux, dir, k, fs)?);
+    }
+    let x = b
+        .meet_point(&partial[0].line, &partial[1].line, Label::plain("X"), N_AUX_X)
+        .map_err(|_| {
+            ConstructionError::unsupported(
+                "forces",
+                "equal and opposite forces: a couple, no single resultant",
+            )
+        })?;
+    // The resultant runs parallel to the forces (to K1's line of action), through X.
+    let r_line = b.parallel(&partial[0].along, &x, Label::NONE, Role::Result, N_AUX_LINE);
+    let (a1, a2) = (partial[0].at, partial[1].at);
+    let join = b.line_through(&a1, &a2, Label::NONE, Role::Construction, N_AUX_FOOT)?;
+    let c = b.meet_point(&r_line, &join, Label::plain("R"), N_AUX_FOOT)?;
+    let a = b.measure(
+        &a1,
+        &c,
+        &join,
+        Scale {
+            per_mm: 1.0 / k,
+            unit: "m",
+        },
+        Label::quiet("a", 0),
+        N_AUX_A,
+    );
+    let (m1, m2) = (v1.dot(&dir), v2.dot(&dir));
+    let dist = ((k2.at[0] - k1.at[0]).powi(2) + (k2.at[1] - k1.at[1]).powi(2)).sqrt();
+    b.check(
+        &a,
+        "distance a of the resultant (lever rule a : b = K2 : K1)",
+        "m",
+        "LH C.1: a = l·K2/(K1 + K2)",
+        dist,
+        || dist * m2 / (m1 + m2),
+    );
+    Ok(a.g)
+}
+
+/// A force at its point of application, its line of action, and the line of its partial
+/// resultant with the auxiliary force.
+struct Partial {
+    at: H<Point>,
+    along: H<Line>,
+    line: H<Line>,
+}
+
+/// The partial resultant of force `f` (the `i`-th) and its auxiliary force of `aux` kg across
+/// it, by the parallelogram at its point of application: the point, the force's line, and
+/// the line of the partial resultant.
+fn partial_resultant(
+    b: &mut Board,
+    i: usize,
+    f: Force,
+    aux: f64,
+    dir: Vector,
+    k: f64,
+    fs: f64,
+) -> Result<Partial, ConstructionError> {
+    let across = Vector::new(-dir.y, dir.x);
+    let at = Point::new(f.at[0] * k, f.at[1] * k);
+    let a = b.point(
+        at,
+        Label::indexed("K", i as u32 + 1),
+        Role::Given,
+        N_APPLICATION,
+    );
+    let along = b.line_dir(&a, dir, Label::NONE, Role::Construction, N_LINE)?;
+    let fv = Vector::new(f.f[0], f.f[1]);
+    let e = b.lay_off(
+        &a,
+        &along,
+        fv.dot(&dir) / fs,
+        Label::NONE,
+        Role::Force,
+        N_AUX_FORCE,
+    )?;
+    let cross_line = b.line_dir(&a, across, Label::NONE, Role::Auxiliary, N_AUX)?;
+    let h = b.lay_off(&a, &cross_line, aux / fs, Label::NONE, Role::Force, N_AUX)?;
+    let p1 = b.parallel(&cross_line, &e, Label::NONE, Role::Auxiliary, N_AUX_PAR);
+    let p2 = b.parallel(&along, &h, Label::NONE, Role::Auxiliary, N_AUX_PAR);
+    let r_end = b.meet_point(&p1, &p2, Label::NONE, N_AUX_PAR)?;
+    let r_part = b.line_through(&a, &r_end, Label::NONE, Role::Construction, N_AUX_R)?;
+    Ok(Partial {
+        at: a,
+        along,
+        line: r_part,
+    })
+}
