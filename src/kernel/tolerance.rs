@@ -52,6 +52,11 @@ pub const REL_STRETCH_EPS: f64 = 1e-9;
 /// not rounding, decides which section is named.
 pub const REL_TIE_EPS: f64 = 1e-12;
 
+/// A support reaction below this fraction of the largest external force is no force at all
+/// (an unloaded roller): it is left out of the outline of Bow's notation. The plan is exact
+/// to about 1e-15 of the loads, three digits below.
+pub const REL_ZERO_REACTION: f64 = 1e-12;
+
 /// Largest number of equal divisions of a segment, arc or crank circle a scene may ask for.
 /// A drafter divides into 8 to 36 parts; 3,600 is a benchmark size, 100,000 is absurd for a
 /// figure and would write a figure of hundreds of megabytes.

@@ -5,12 +5,11 @@
 use super::faces::{self, dest, origin, PlaneGraph};
 use super::labels::*;
 use super::layout::*;
-use super::matrix::Solution;
 use super::notes::*;
 use super::plan::*;
 use super::ritter::*;
-use super::{LoadCase, Truss};
-use crate::kernel::{Line, Point};
+use super::Truss;
+use crate::kernel::Point;
 use crate::protocol::{Board, ConstructionError, Cut, Label, Role, Scale, H};
 
 /// Assigns every external force to its place on the outline, clockwise, and every outer
@@ -95,19 +94,21 @@ pub(super) fn outline(
     Ok((order, space_of_half))
 }
 
-#[allow(clippy::too_many_arguments)]
 pub(super) fn cremona_plan(
     b: &mut Board,
-    t: &Truss,
+    ctx: &PlanContext,
     g: &PlaneGraph,
-    case: &LoadCase,
-    ext: &External,
-    sol: Option<&Solution>,
-    dr: &TrussDrawing,
-    at: Point,
-    mline: &[H<Line>],
-    maxload: f64,
 ) -> Result<(CaseResult, [f64; 4]), ConstructionError> {
+    let PlanContext {
+        t,
+        case,
+        ext,
+        sol,
+        dr,
+        at,
+        mline,
+        maxload,
+    } = *ctx;
     let fs = dr.force_scale;
     let kg = Scale::kg(fs);
     let mut bx = EMPTY;
@@ -199,11 +200,11 @@ pub(super) fn cremona_plan(
         let fixed = match queue.pop_front() {
             Some(v) => {
                 queued[v] = false;
-                joint_polygon(b, t, g, v, &spaces, &mut pt, mline, case)
+                joint_polygon(b, ctx, g, v, &spaces, &mut pt)
             }
             None if pt.iter().all(|p| p.is_some()) => break,
             // No joint with two unknown members is left: Ritter's section.
-            None => match ritter(b, t, g, &spaces, &mut pt, ext, mline, case, fs) {
+            None => match ritter(b, ctx, g, &spaces, &mut pt) {
                 Some(u) => Some(u),
                 None => break,
             },
@@ -249,17 +250,15 @@ pub(super) fn cremona_plan(
 /// The polygon of joint `v` if only one space round it is unknown: the parallels to the two
 /// members bounding that space, through the points of the spaces beyond them, meet in its
 /// point (Regel 2). Returns the space fixed.
-#[allow(clippy::too_many_arguments)]
 pub(super) fn joint_polygon(
     b: &mut Board,
-    t: &Truss,
+    ctx: &PlanContext,
     g: &PlaneGraph,
     v: usize,
     sp: &Spaces,
     pt: &mut [Option<H<Point>>],
-    mline: &[H<Line>],
-    case: &LoadCase,
 ) -> Option<usize> {
+    let PlanContext { t, case, mline, .. } = *ctx;
     let around = &g.around[v];
     let d = around.len();
     if d < 2 {

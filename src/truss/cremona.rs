@@ -35,7 +35,6 @@ use super::plan::*;
 use super::{JointLoad, LoadCase, SupportKind, Truss};
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{Board, ConstructionError, Label, Role, H, TABLE_BLOCK_ROWS};
-use crate::statics::funicular::polygon::{self, StringStyle};
 
 pub use super::plan::{CaseResult, ReactionForce, TrussDrawing, ZERO_FORCE_REL};
 
@@ -182,21 +181,21 @@ fn construct(
     for (case, sol) in cases.iter().zip(sols) {
         // A scratch run fixes where the blocks go; the real run draws them there.
         let mut scratch = Board::new(b.tolerance().length * 1e6, false);
-        let dry = construct_case(
-            &mut scratch,
+        let mut c = Case {
             t,
-            g.as_ref(),
+            g: g.as_ref(),
             case,
-            sol.as_ref(),
+            sol: sol.as_ref(),
             dr,
-            Layout {
+            at: Layout {
                 truss: Point::origin(),
                 polygon: Point::origin(),
                 plan: Point::origin(),
             },
             sup,
             slack,
-        )?;
+        };
+        let dry = construct_case(&mut scratch, &c)?;
         let gap = 30.0;
         let [tx0, ty0, tx1, ty1] = dry.boxes[0];
         let [px0, py0, px1, py1] = dry.boxes[1];
@@ -205,21 +204,12 @@ fn construct(
         let polygon = Point::new(tx1 - tx0 + gap - px0, *row_top - py1);
         let plan = Point::new(tx1 - tx0 + gap + (px1 - px0) + gap - qx0, *row_top - qy1);
         b.set_context(|| case.name.clone());
-        let r = construct_case(
-            b,
-            t,
-            g.as_ref(),
-            case,
-            sol.as_ref(),
-            dr,
-            Layout {
-                truss,
-                polygon,
-                plan,
-            },
-            sup,
-            slack,
-        )?;
+        c.at = Layout {
+            truss,
+            polygon,
+            plan,
+        };
+        let r = construct_case(b, &c)?;
         b.clear_context();
         let height = (ty1 - ty0).max(py1 - py0).max(qy1 - qy0);
         *row_top -= height + 2.0 * gap;
@@ -228,19 +218,41 @@ fn construct(
     Ok(out)
 }
 
-#[allow(clippy::too_many_arguments)]
-fn construct_case(
-    b: &mut Board,
-    t: &Truss,
-    g: Option<&PlaneGraph>,
-    case: &LoadCase,
-    sol: Option<&Solution>,
-    dr: &TrussDrawing,
+/// One case as [`construct_case`] draws it: the truss, its plane drawing (if it has one),
+/// the case, the dense solve, the scales, where its parts go, the supports as the reaction
+/// construction takes them, and the members out of action.
+#[derive(Clone, Copy)]
+struct Case<'a> {
+    t: &'a Truss,
+    g: Option<&'a PlaneGraph>,
+    case: &'a LoadCase,
+    sol: Option<&'a Solution>,
+    dr: &'a TrussDrawing,
     at: Layout,
     sup: Supports,
-    slack: &[[usize; 2]],
-) -> Result<CaseOut, ConstructionError> {
-    let k = 1000.0 / dr.length_scale;
+    slack: &'a [[usize; 2]],
+}
+
+/// The truss drawing of a case: the joints, the members' lines, the rollers' reaction lines.
+struct Drawn {
+    jp: Vec<H<Point>>,
+    mline: Vec<H<Line>>,
+    rlines: Vec<Option<H<Line>>>,
+}
+
+/// One load case: the truss drawing with its loads, the reactions, the plan (in Bow's
+/// notation, or joint by joint), the table of member forces, the zero-force members.
+fn construct_case(b: &mut Board, c: &Case) -> Result<CaseOut, ConstructionError> {
+    let Case {
+        t,
+        g,
+        case,
+        sol,
+        dr,
+        at,
+        sup,
+        ..
+    } = *c;
     let fs = dr.force_scale;
     let maxload = case
         .loads
@@ -248,7 +260,60 @@ fn construct_case(
         .map(|l| l.force.norm())
         .fold(0.0, f64::max);
     let mut boxes = [EMPTY; 3];
-    // The truss drawing (Bauplan).
+    let drawn = draw_truss(b, c, &mut boxes)?;
+    let loads = draw_loads(b, c, &drawn.jp, &mut boxes);
+    let inp = ReactionInput {
+        t,
+        sup,
+        sol,
+        fs,
+        maxload,
+        jp: &drawn.jp,
+        rlines: &drawn.rlines,
+        loads: &loads,
+        at,
+    };
+    let reactions = draw_reactions(b, &inp, &mut boxes)?;
+    let external = External::of(t, &loads, reactions, maxload);
+    // Bow's notation needs a plane drawing and every external force on the outline;
+    // otherwise the joint polygons are drawn one by one (LH Abb. 17a).
+    let ctx = PlanContext {
+        t,
+        case,
+        ext: &external,
+        sol,
+        dr,
+        at: at.plan,
+        mline: &drawn.mline,
+        maxload,
+    };
+    let (result, plan_box) = match g.filter(|g| outline(t, g, &external).is_ok()) {
+        Some(g) => cremona_plan(b, &ctx, g)?,
+        None => super::joints::joint_polygons(b, &ctx)?,
+    };
+    let zero_kg = ZERO_FORCE_REL * check_reference(maxload, &external);
+    boxes[2] = write_table(b, &result, zero_kg, at.plan, plan_box);
+    mark_zero_members(b, t, &result, &drawn.jp, zero_kg);
+    for bx in &mut boxes {
+        if !bx[0].is_finite() {
+            *bx = [0.0; 4];
+        }
+    }
+    Ok(CaseOut { result, boxes })
+}
+
+/// The truss drawn to scale (Bauplan): joints, members (each the line through its joints,
+/// which the plan's parallels and readings refer to), the members out of action dashed, each
+/// support's reaction line (a roller's) or point (a pin's).
+fn draw_truss(
+    b: &mut Board,
+    c: &Case,
+    boxes: &mut [[f64; 4]; 3],
+) -> Result<Drawn, ConstructionError> {
+    let Case {
+        t, dr, at, slack, ..
+    } = *c;
+    let k = 1000.0 / dr.length_scale;
     let jp: Vec<H<Point>> = t
         .joints
         .iter()
@@ -259,36 +324,41 @@ fn construct_case(
             b.point(p, joint_label(t, i), Role::Given, N_JOINT)
         })
         .collect();
-    // Each member drawn as the line through its joints over their distance: the line (a → b)
-    // that the plan's parallels and readings refer to.
     let mut mline = Vec::with_capacity(t.members.len());
     for (m, mem) in t.members.iter().enumerate() {
         let [i, j] = mem.ends;
         mline.push(b.line_through(&jp[i], &jp[j], member_label(t, m), Role::Given, N_MEMBER)?);
     }
-    // Members out of action in this case, dashed.
     for &[i, j] in slack {
         b.segment(&jp[i], &jp[j], Label::NONE, Role::Auxiliary, N_SLACK);
     }
-    // Each support's reaction line (a roller's) or point (a pin's).
     let mut rlines: Vec<Option<H<Line>>> = vec![None; t.supports.len()];
     for (si, s) in t.supports.iter().enumerate() {
+        let label = support_label(t, si);
         match s.kind {
             SupportKind::Roller { dir } => {
-                rlines[si] = Some(b.line_dir(
-                    &jp[s.joint],
-                    dir,
-                    support_label(t, si),
-                    Role::Guide,
-                    N_SUPPORT,
-                )?);
+                let line = b.line_dir(&jp[s.joint], dir, label, Role::Guide, N_SUPPORT)?;
+                rlines[si] = Some(line);
             }
             SupportKind::Pinned => {
-                b.point(jp[s.joint].g, support_label(t, si), Role::Guide, N_SUPPORT);
+                b.point(jp[s.joint].g, label, Role::Guide, N_SUPPORT);
             }
         }
     }
-    // Loads, drawn as arrows ending at their joints, in the order of their joints.
+    Ok(Drawn { jp, mline, rlines })
+}
+
+/// The loads, drawn as arrows ending at their joints, in the order of their joints (left to
+/// right, then bottom to top): the order of the force polygon.
+fn draw_loads(
+    b: &mut Board,
+    c: &Case,
+    jp: &[H<Point>],
+    boxes: &mut [[f64; 4]; 3],
+) -> Vec<JointLoad> {
+    let Case {
+        t, case, dr, at, ..
+    } = *c;
     let mut loads: Vec<JointLoad> = case
         .loads
         .iter()
@@ -301,132 +371,28 @@ fn construct_case(
     });
     for l in &loads {
         let head = jp[l.joint];
-        let tail = b.point(head.g - l.force / fs, Label::NONE, Role::Given, N_LOAD);
+        let tail = b.point(
+            head.g - l.force / dr.force_scale,
+            Label::NONE,
+            Role::Given,
+            N_LOAD,
+        );
         grow(&mut boxes[0], tail.g, at.truss);
         b.segment(&tail, &head, Label::indexed("P", 0), Role::Force, N_LOAD);
     }
-    // Reactions by the funicular polygon, one vector per support.
-    let mut reactions = vec![Vector::zeros(); t.supports.len()];
-    if !loads.is_empty() {
-        let mut corners = vec![at.polygon];
-        for l in &loads {
-            let c = *corners.last().expect("starts with one corner") + l.force / fs;
-            corners.push(c);
-        }
-        let dirs: Vec<Vector> = loads.iter().map(|l| l.force).collect();
-        // The first string starts at the pin, or at the first roller.
-        let (start, last_dir) = match sup {
-            Supports::PinRoller { pin, dir, .. } => (pin, dir),
-            Supports::Rollers(r) => (r[0].0, r[0].1),
-        };
-        let pole = choose_pole(&corners, &dirs, last_dir);
-        let f0 = b.point(corners[0], Label::indexed("F", 0), Role::Given, N_FP);
-        let mut fh = vec![f0];
-        for (i, l) in loads.iter().enumerate() {
-            let along = b.line_dir(&fh[i], l.force, Label::NONE, Role::Auxiliary, N_FP)?;
-            let p = b.lay_off(
-                &fh[i],
-                &along,
-                l.force.norm() / fs,
-                Label::NONE,
-                Role::Force,
-                N_FP,
-            )?;
-            fh.push(p);
-        }
-        let polygon::Rays { pole: o, rays } = polygon::pole_and_rays(b, pole, &fh)?;
-        for p in fh.iter().map(|h| h.g).chain([pole]) {
-            grow(&mut boxes[1], p, at.polygon);
-        }
-        let strings = polygon::strings(
-            b,
-            &rays,
-            &jp[start],
-            false,
-            StringStyle::CONSTRUCTION,
-            |b, j| {
-                let l = &loads[j];
-                b.line_dir(&jp[l.joint], l.force, Label::NONE, Role::Auxiliary, N_LOA)
-            },
-        )?;
-        for c in &strings.corners {
-            grow(&mut boxes[0], c.g, at.truss);
-        }
-        let (first, s) = (strings.strings[0], strings.strings[loads.len()]);
-        let last = fh[loads.len()];
-        let mut segs: Vec<Option<(H<Point>, H<Point>)>> = vec![None; t.supports.len()];
-        match sup {
-            Supports::PinRoller { pin, roller, .. } => {
-                let ri = support_index(t, roller);
-                let rline = rlines[ri].expect("a roller has a line");
-                let bcut = b.meet_point(&s, &rline, Label::quiet("b", 0), N_B_CUT)?;
-                grow(&mut boxes[0], bcut.g, at.truss);
-                let through_o = polygon::closing(
-                    b,
-                    &jp[pin],
-                    &bcut,
-                    &o,
-                    Label::NONE,
-                    Role::Construction,
-                    Role::Construction,
-                )?
-                .ray;
-                let bl = b.parallel(&rline, &last, Label::NONE, Role::Auxiliary, N_B_DIR);
-                let x = b.meet_point(&through_o, &bl, Label::quiet("X", 0), N_SPLIT)?;
-                grow(&mut boxes[1], x.g, at.polygon);
-                let pi = support_index(t, pin);
-                segs[ri] = Some((last, x));
-                segs[pi] = Some((x, fh[0]));
-            }
-            Supports::Rollers(r) => {
-                for (si, from, to) in culmann(b, t, &rlines, &first, &s, &fh, &r)? {
-                    grow(&mut boxes[1], to.g, at.polygon);
-                    segs[si] = Some((from, to));
-                }
-            }
-        }
-        // Each reaction drawn, read off and checked: a roller's along its line, a pin's by
-        // its horizontal and vertical parts.
-        for (si, seg) in segs.iter().enumerate() {
-            if let Some((from, to)) = seg {
-                b.segment(from, to, support_label(t, si), Role::Force, N_REACT);
-                reactions[si] = (to.g - from.g) * fs;
-            }
-        }
-        let by_moments = super::reactions::by_moments(t, &loads);
-        read_reactions(
-            b,
-            t,
-            &segs,
-            &rlines,
-            sol,
-            by_moments.as_deref(),
-            maxload,
-            fs,
-        )?;
-    }
-    // The external forces at their joints: loads, then the reactions.
-    let mut ext: Vec<(usize, Vector)> = loads.iter().map(|l| (l.joint, l.force)).collect();
-    let tiny = 1e-12 * reactions.iter().map(|r| r.norm()).fold(maxload, f64::max);
-    for (si, r) in reactions.iter().enumerate() {
-        if r.norm() > tiny {
-            ext.push((t.supports[si].joint, *r));
-        }
-    }
-    let external = External {
-        forces: ext,
-        reactions: reactions.clone(),
-    };
-    // Bow's notation needs a plane drawing and every external force on the outline;
-    // otherwise the joint polygons are drawn one by one (LH Abb. 17a).
-    let (result, plan_box) = match g.filter(|g| outline(t, g, &external).is_ok()) {
-        Some(g) => cremona_plan(b, t, g, case, &external, sol, dr, at.plan, &mline, maxload)?,
-        None => {
-            super::joints::joint_polygons(b, t, case, &external, sol, dr, at.plan, &mline, maxload)?
-        }
-    };
-    // The evaluation of the plan written beside it (LH B.4, "Auswertung").
-    let zero_kg = ZERO_FORCE_REL * check_reference(maxload, &external);
+    loads
+}
+
+/// The evaluation of the plan written beside it (LH B.4, "Auswertung"): member, length in
+/// the plan, force, tension or compression, then the reactions by magnitude. Returns the
+/// plan's box grown by the table.
+fn write_table(
+    b: &mut Board,
+    result: &CaseResult,
+    zero_kg: f64,
+    at_plan: Point,
+    plan_box: [f64; 4],
+) -> [f64; 4] {
     let mut rows = vec![vec![
         "Stab".to_string(),
         "Strecke mm".to_string(),
@@ -463,7 +429,7 @@ fn construct_case(
         ]);
     }
     let n = rows.len() - 1;
-    let corner = at.plan + Vector::new(plan_box[2] + 12.0, plan_box[3]);
+    let corner = at_plan + Vector::new(plan_box[2] + 12.0, plan_box[3]);
     b.table(corner, rows, &[], N_TABLE);
     let mut plan_box = plan_box;
     // Room for the table: blocks of at most TABLE_BLOCK_ROWS rows side by side, each about
@@ -471,18 +437,15 @@ fn construct_case(
     let blocks = n.div_ceil(TABLE_BLOCK_ROWS).max(1);
     plan_box[2] += 12.0 + 75.0 * blocks as f64;
     plan_box[1] = plan_box[1].min(plan_box[3] - 3.6 * (n.min(TABLE_BLOCK_ROWS) as f64 + 1.0));
-    boxes[2] = plan_box;
-    // Zero-force members (Nullstäbe) marked in the truss drawing.
+    plan_box
+}
+
+/// Zero-force members (Nullstäbe) marked in the truss drawing.
+fn mark_zero_members(b: &mut Board, t: &Truss, result: &CaseResult, jp: &[H<Point>], zero_kg: f64) {
     for (m, f) in result.members.iter().enumerate() {
         if f.force.abs() <= zero_kg {
             let [i, j] = t.members[m].ends;
             b.segment(&jp[i], &jp[j], Label::plain("0"), Role::Auxiliary, N_ZERO);
         }
     }
-    for bx in &mut boxes {
-        if !bx[0].is_finite() {
-            *bx = [0.0; 4];
-        }
-    }
-    Ok(CaseOut { result, boxes })
 }

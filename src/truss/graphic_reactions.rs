@@ -2,11 +2,14 @@
 //! line, three rollers by Culmann's line; each read off the force plan and checked by the
 //! moment equations and the dense solve.
 
+use super::labels::support_label;
+use super::layout::{grow, Layout};
 use super::matrix::Solution;
 use super::notes::*;
-use super::{SupportKind, Truss};
+use super::{JointLoad, SupportKind, Truss};
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{Board, ConstructionError, Label, Role, Scale, H};
+use crate::statics::funicular::polygon::{self, StringStyle};
 
 /// The supports, as the reaction construction takes them.
 #[derive(Debug, Clone, Copy)]
@@ -128,16 +131,15 @@ pub(super) type PlanReaction = (usize, H<Point>, H<Point>);
 /// lone reaction; the other two follow by resolving along their lines. Of the three rollers
 /// the lone one is the one with the best-conditioned cuts. Returns (support index, tail,
 /// head) of each reaction in the force plan.
-#[allow(clippy::too_many_arguments)]
 pub(super) fn culmann(
     b: &mut Board,
-    t: &Truss,
-    rlines: &[Option<H<Line>>],
+    inp: &ReactionInput,
     first: &H<Line>,
     last_string: &H<Line>,
     fh: &[H<Point>],
     r: &[(usize, Vector); 3],
 ) -> Result<Vec<PlanReaction>, ConstructionError> {
+    let ReactionInput { t, rlines, .. } = *inp;
     let n = fh.len() - 1;
     let rv = fh[n].g - fh[0].g;
     let span = fh
@@ -190,17 +192,20 @@ pub(super) fn culmann(
 /// Reads each reaction off the force plan and checks it by the moment equations of the whole
 /// truss (LH C.2) and against the dense solve: a roller's along its line, a pin's by its
 /// horizontal and vertical parts.
-#[allow(clippy::too_many_arguments)]
 pub(super) fn read_reactions(
     b: &mut Board,
-    t: &Truss,
-    segs: &[Option<(H<Point>, H<Point>)>],
-    rlines: &[Option<H<Line>>],
-    sol: Option<&Solution>,
+    inp: &ReactionInput,
+    segs: &[PlanSegment],
     by_moments: Option<&[Vector]>,
-    reference: f64,
-    fs: f64,
 ) -> Result<(), ConstructionError> {
+    let ReactionInput {
+        t,
+        sol,
+        rlines,
+        fs,
+        maxload: reference,
+        ..
+    } = *inp;
     let kg = Scale::kg(fs);
     let f = "joint equilibrium, dense LU (nalgebra)";
     let fm = "moments about the other supports (LH C.2)";
@@ -286,4 +291,173 @@ pub(super) fn read_reactions(
         }
     }
     Ok(())
+}
+
+/// A reaction in the force plan: its tail and head, where the construction gives one.
+pub(super) type PlanSegment = Option<(H<Point>, H<Point>)>;
+
+/// The loads' force polygon for the reactions: its corners, the pole and its rays.
+struct LoadsPolygon {
+    corners: Vec<H<Point>>,
+    pole: H<Point>,
+    rays: Vec<H<Line>>,
+}
+
+/// What the graphic reactions of one case work from: the truss and its supports, the dense
+/// solve, the force scale, the largest load, the joints and reaction lines of the truss
+/// drawing, the loads (in the order of their joints) and where the parts of the case go.
+#[derive(Clone, Copy)]
+pub(super) struct ReactionInput<'a> {
+    pub(super) t: &'a Truss,
+    pub(super) sup: Supports,
+    pub(super) sol: Option<&'a Solution>,
+    pub(super) fs: f64,
+    pub(super) maxload: f64,
+    pub(super) jp: &'a [H<Point>],
+    pub(super) rlines: &'a [Option<H<Line>>],
+    pub(super) loads: &'a [JointLoad],
+    pub(super) at: Layout,
+}
+
+/// The reactions by the funicular polygon, one vector per support (LH C.2): the loads' force
+/// polygon, a pole by [`choose_pole`], the strings from the pin (or the first roller), then
+/// the closing line for a pin and a roller, Culmann's line for three rollers; each reaction
+/// drawn, read off and checked.
+pub(super) fn draw_reactions(
+    b: &mut Board,
+    inp: &ReactionInput,
+    boxes: &mut [[f64; 4]; 3],
+) -> Result<Vec<Vector>, ConstructionError> {
+    let ReactionInput {
+        t,
+        sup,
+        fs,
+        jp,
+        loads,
+        at,
+        ..
+    } = *inp;
+    let mut reactions = vec![Vector::zeros(); t.supports.len()];
+    if loads.is_empty() {
+        return Ok(reactions);
+    }
+    let LoadsPolygon {
+        corners: fh,
+        pole,
+        rays,
+    } = loads_polygon(b, inp, boxes)?;
+    // The first string starts at the pin, or at the first roller.
+    let start = match sup {
+        Supports::PinRoller { pin, .. } => pin,
+        Supports::Rollers(r) => r[0].0,
+    };
+    let strings = polygon::strings(
+        b,
+        &rays,
+        &jp[start],
+        false,
+        StringStyle::CONSTRUCTION,
+        |b, j| {
+            let l = &loads[j];
+            b.line_dir(&jp[l.joint], l.force, Label::NONE, Role::Auxiliary, N_LOA)
+        },
+    )?;
+    for c in &strings.corners {
+        grow(&mut boxes[0], c.g, at.truss);
+    }
+    let (first, s) = (strings.strings[0], strings.strings[loads.len()]);
+    let segs = match sup {
+        Supports::PinRoller { pin, roller, .. } => {
+            pin_and_roller(b, inp, (pin, roller), &s, &fh, &pole, boxes)?
+        }
+        Supports::Rollers(r) => {
+            let mut segs = vec![None; t.supports.len()];
+            for (si, from, to) in culmann(b, inp, &first, &s, &fh, &r)? {
+                grow(&mut boxes[1], to.g, at.polygon);
+                segs[si] = Some((from, to));
+            }
+            segs
+        }
+    };
+    // Each reaction drawn, read off and checked: a roller's along its line, a pin's by its
+    // horizontal and vertical parts.
+    for (si, seg) in segs.iter().enumerate() {
+        if let Some((from, to)) = seg {
+            b.segment(from, to, support_label(t, si), Role::Force, N_REACT);
+            reactions[si] = (to.g - from.g) * fs;
+        }
+    }
+    let by_moments = super::reactions::by_moments(t, loads);
+    read_reactions(b, inp, &segs, by_moments.as_deref())?;
+    Ok(reactions)
+}
+
+/// The loads laid off head to tail in the order of their joints, the pole, and its rays:
+/// the corners, and (pole, rays).
+fn loads_polygon(
+    b: &mut Board,
+    inp: &ReactionInput,
+    boxes: &mut [[f64; 4]; 3],
+) -> Result<LoadsPolygon, ConstructionError> {
+    let ReactionInput {
+        sup, fs, loads, at, ..
+    } = *inp;
+    let mut corners = vec![at.polygon];
+    for l in loads {
+        let c = *corners.last().expect("starts with one corner") + l.force / fs;
+        corners.push(c);
+    }
+    let dirs: Vec<Vector> = loads.iter().map(|l| l.force).collect();
+    let last_dir = match sup {
+        Supports::PinRoller { dir, .. } => dir,
+        Supports::Rollers(r) => r[0].1,
+    };
+    let pole = choose_pole(&corners, &dirs, last_dir);
+    let f0 = b.point(corners[0], Label::indexed("F", 0), Role::Given, N_FP);
+    let mut fh = vec![f0];
+    for (i, l) in loads.iter().enumerate() {
+        let along = b.line_dir(&fh[i], l.force, Label::NONE, Role::Auxiliary, N_FP)?;
+        let len = l.force.norm() / fs;
+        fh.push(b.lay_off(&fh[i], &along, len, Label::NONE, Role::Force, N_FP)?);
+    }
+    let polygon::Rays { pole: o, rays } = polygon::pole_and_rays(b, pole, &fh)?;
+    for p in fh.iter().map(|h| h.g).chain([pole]) {
+        grow(&mut boxes[1], p, at.polygon);
+    }
+    Ok(LoadsPolygon {
+        corners: fh,
+        pole: o,
+        rays,
+    })
+}
+
+/// A pin and a roller: the last string cuts the roller's line in b′; the closing line from
+/// the pin to b′, carried through the pole, cuts the parallel to the roller's reaction
+/// through the end of the loads in X, which divides the closing side into B and A.
+fn pin_and_roller(
+    b: &mut Board,
+    inp: &ReactionInput,
+    (pin, roller): (usize, usize),
+    last_string: &H<Line>,
+    fh: &[H<Point>],
+    pole: &H<Point>,
+    boxes: &mut [[f64; 4]; 3],
+) -> Result<Vec<PlanSegment>, ConstructionError> {
+    let ReactionInput {
+        t, jp, rlines, at, ..
+    } = *inp;
+    let mut segs = vec![None; t.supports.len()];
+    let last = fh[fh.len() - 1];
+    let ri = support_index(t, roller);
+    let rline = rlines[ri].expect("a roller has a line");
+    let bcut = b.meet_point(last_string, &rline, Label::quiet("b", 0), N_B_CUT)?;
+    grow(&mut boxes[0], bcut.g, at.truss);
+    let con = Role::Construction;
+    let closing = polygon::closing(b, &jp[pin], &bcut, pole, Label::NONE, con, con)?;
+    let bl = b.parallel(&rline, &last, Label::NONE, Role::Auxiliary, N_B_DIR);
+    let x = b.meet_point(&closing.ray, &bl, Label::quiet("X", 0), N_SPLIT)?;
+    grow(&mut boxes[1], x.g, at.polygon);
+    segs[ri] = Some((last, x));
+    segs[support_index(t, pin)] = Some((x, fh[0]));
+    Ok(segs)
 }

@@ -11,10 +11,8 @@
 
 use super::labels::member_label;
 use super::layout::{grow, EMPTY};
-use super::matrix::Solution;
-use super::plan::{check_member, check_reference, plan_result, CaseResult, External, TrussDrawing};
-use super::{LoadCase, Truss};
-use crate::kernel::{Line, Point, Vector};
+use super::plan::{check_member, check_reference, plan_result, CaseResult, PlanContext};
+use crate::kernel::{Point, Vector};
 use crate::protocol::{note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};
 
 const N_START: Note = note(
@@ -60,18 +58,20 @@ struct Item {
 ///
 /// # Errors
 /// When no joint with at most two unknown members (not parallel) is left.
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn joint_polygons(
     b: &mut Board,
-    t: &Truss,
-    case: &LoadCase,
-    ext: &External,
-    sol: Option<&Solution>,
-    dr: &TrussDrawing,
-    at: Point,
-    mline: &[H<Line>],
-    maxload: f64,
+    ctx: &PlanContext,
 ) -> Result<(CaseResult, [f64; 4]), ConstructionError> {
+    let PlanContext {
+        t,
+        case,
+        ext,
+        sol,
+        dr,
+        at,
+        mline,
+        maxload,
+    } = *ctx;
     let fs = dr.force_scale;
     let kg = Scale::kg(fs);
     let k = t.joints.len();

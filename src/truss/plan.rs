@@ -2,8 +2,8 @@
 //! drawing's scales, the external forces, the result of a case and the check of a member.
 
 use super::matrix::{self, Solution};
-use super::{LoadCase, MemberForce, SupportKind, Truss};
-use crate::kernel::Vector;
+use super::{JointLoad, LoadCase, MemberForce, SupportKind, Truss};
+use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{Board, H};
 use serde::Serialize;
 
@@ -169,4 +169,41 @@ pub(super) struct Spaces<'a> {
     pub(super) face_of: &'a [usize],
     /// Spaces below this index are outside the truss.
     pub(super) n_ext: usize,
+}
+
+impl External {
+    /// The external forces at their joints: the loads, then the reactions (those not zero
+    /// to rounding against the largest force).
+    pub(super) fn of(
+        t: &Truss,
+        loads: &[JointLoad],
+        reactions: Vec<Vector>,
+        maxload: f64,
+    ) -> External {
+        let mut forces: Vec<(usize, Vector)> = loads.iter().map(|l| (l.joint, l.force)).collect();
+        let tiny = crate::kernel::tolerance::REL_ZERO_REACTION
+            * reactions.iter().map(|r| r.norm()).fold(maxload, f64::max);
+        for (si, r) in reactions.iter().enumerate() {
+            if r.norm() > tiny {
+                forces.push((t.supports[si].joint, *r));
+            }
+        }
+        External { forces, reactions }
+    }
+}
+
+/// What every way of drawing the plan of one case works from: the truss, the case and its
+/// external forces, the dense solve to check against, the scales, where the plan starts on
+/// the sheet, the members' lines in the truss drawing, and the largest load (the reference
+/// of the checks).
+#[derive(Clone, Copy)]
+pub(super) struct PlanContext<'a> {
+    pub(super) t: &'a Truss,
+    pub(super) case: &'a LoadCase,
+    pub(super) ext: &'a External,
+    pub(super) sol: Option<&'a Solution>,
+    pub(super) dr: &'a TrussDrawing,
+    pub(super) at: Point,
+    pub(super) mline: &'a [H<Line>],
+    pub(super) maxload: f64,
 }

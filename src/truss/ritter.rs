@@ -5,8 +5,8 @@ use super::faces::PlaneGraph;
 use super::labels::*;
 use super::notes::*;
 use super::plan::*;
-use super::{LoadCase, Truss};
-use crate::kernel::{Line, Point, Vector};
+use super::Truss;
+use crate::kernel::{Point, Vector};
 use crate::protocol::{Board, Label, Role, H};
 
 /// Ritter's method of sections where the plan stalls (LH B.4; Aufgabe 5, Tafel I, 5): a cut
@@ -16,18 +16,22 @@ use crate::protocol::{Board, Label, Role, H};
 /// force of the third (about a point at infinity, if the two are parallel, the equation of
 /// forces across them). That force fixes the space beyond it, and the plan goes on.
 /// Returns the space fixed, or `None` if no such cut exists.
-#[allow(clippy::too_many_arguments)]
 pub(super) fn ritter(
     b: &mut Board,
-    t: &Truss,
+    ctx: &PlanContext,
     g: &PlaneGraph,
     sp: &Spaces,
     pt: &mut [Option<H<Point>>],
-    ext: &External,
-    mline: &[H<Line>],
-    case: &LoadCase,
-    fs: f64,
 ) -> Option<usize> {
+    let PlanContext {
+        t,
+        case,
+        ext,
+        mline,
+        dr,
+        ..
+    } = *ctx;
+    let fs = dr.force_scale;
     let known_outside = |s: usize, pt: &[Option<H<Point>>]| s < sp.n_ext && pt[s].is_some();
     let unknown_inside = |s: usize, pt: &[Option<H<Point>>]| s >= sp.n_ext && pt[s].is_none();
     for s1 in sp.n_ext..pt.len() {

@@ -54,7 +54,12 @@ pub fn parallel_pair_by_auxiliary_forces(
         partial.push(partial_resultant(b, i, f, sense * aux, dir, k, fs)?);
     }
     let x = b
-        .meet_point(&partial[0].line, &partial[1].line, Label::plain("X"), N_AUX_X)
+        .meet_point(
+            &partial[0].line,
+            &partial[1].line,
+            Label::plain("X"),
+            N_AUX_X,
+        )
         .map_err(|_| {
             ConstructionError::unsupported(
                 "forces",
