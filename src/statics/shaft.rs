@@ -16,6 +16,7 @@
 
 use super::beam::{construct_beam_at, BeamDrawing, BeamRequest, BeamResults};
 use super::{Beam, PointLoad};
+use crate::kernel::tolerance::REL_POSITION_EPS;
 use crate::kernel::{Point, Vector};
 use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Scale, Topic};
 use serde::Serialize;
@@ -392,19 +393,7 @@ pub fn construct_shaft(
     shaft: &Shaft,
     dr: &BeamDrawing,
 ) -> Result<Vec<ShaftRow>, ConstructionError> {
-    let mut xs: Vec<f64> = shaft.supports.to_vec();
-    xs.extend(shaft.plane_1.iter().chain(&shaft.plane_2).map(|l| l.x));
-    if let Some(t) = shaft.torque {
-        xs.push(t.from);
-        xs.push(t.to);
-    }
-    xs.sort_by(f64::total_cmp);
-    let span = shaft.ends[1] - shaft.ends[0];
-    xs.dedup_by(|a, b| (*a - *b).abs() <= 1e-12 * span.max(1.0));
-    let req = BeamRequest {
-        moment_area: true,
-        shear_diagram: false,
-    };
+    let xs = sections(shaft);
     let beam = |loads: &[PointLoad]| Beam {
         supports: shaft.supports,
         ends: shaft.ends,
@@ -413,187 +402,48 @@ pub fn construct_shaft(
     };
     let (b1, b2) = (beam(&shaft.plane_1), beam(&shaft.plane_2));
     let ms = dr.length_scale / 1000.0 * dr.pole_distance; // kg·m per mm of ordinate
-                                                          // A plane without loads has no moment area to draw: its ordinates are zero.
     let mut y_next = dr.origin[1];
-    let mut plane = |b: &mut Board, bm: &Beam| -> Result<BeamResults, ConstructionError> {
-        if bm.point_loads.is_empty() {
-            return Ok(BeamResults {
-                reactions: super::beam::Reactions { a: 0.0, b: 0.0 },
-                sections: xs
-                    .iter()
-                    .map(|&x| super::SectionRow {
-                        x,
-                        what: "x".into(),
-                        moment: 0.0,
-                    })
-                    .collect(),
-                zero_moments: vec![],
-                shear: vec![],
-                max_moment: None,
-                moment_handles: vec![],
-            });
-        }
-        let mut d = *dr;
-        d.origin = [dr.origin[0], y_next];
-        let r = construct_beam_at(b, bm, &d, &req, &xs)?;
-        let depth = r
-            .sections
+    let r1 = plane_moments(b, &b1, dr, &xs, &mut y_next)?;
+    let r2 = plane_moments(b, &b2, dr, &xs, &mut y_next)?;
+    // The triangles of Abb. 27 rise by up to |y1| + |y2| above their base points.
+    let largest = |r: &BeamResults| {
+        r.sections
             .iter()
             .map(|s| s.moment.abs())
             .fold(0.0, f64::max)
-            / ms;
-        y_next -= depth + 90.0;
-        Ok(r)
     };
-    let r1 = plane(b, &b1)?;
-    let r2 = plane(b, &b2)?;
+    let rise = (largest(&r1) + largest(&r2)) / ms;
+    let torque_mm = torque(b, shaft, dr, &mut y_next)?;
+    let c = Combine {
+        shaft,
+        dr,
+        k: 1000.0 / dr.length_scale,
+        ms,
+        y0: y_next - rise,
+        mref: largest(&r1)
+            .max(largest(&r2))
+            .max(shaft.torque.map_or(0.0, |t| t.md.abs() * shaft.alpha0)),
+        s1: super::closed_form::Sections::new(&b1),
+        s2: super::closed_form::Sections::new(&b2),
+        torque_mm,
+    };
+    let tol = REL_POSITION_EPS * (shaft.ends[1] - shaft.ends[0]).max(1.0);
     let at = |rows: &[super::SectionRow], x: f64| {
         rows.iter()
-            .find(|s| (s.x - x).abs() <= 1e-12 * span.max(1.0))
+            .find(|s| (s.x - x).abs() <= tol)
             .map_or(0.0, |s| s.moment)
     };
-    let k = 1000.0 / dr.length_scale;
-    // The triangles of Abb. 27 rise by up to |y1| + |y2| above their base points.
-    let rise = [&r1, &r2]
-        .iter()
-        .map(|r| {
-            r.sections
-                .iter()
-                .map(|s| s.moment.abs())
-                .fold(0.0, f64::max)
-        })
-        .sum::<f64>()
-        / ms;
-    let mscale = Scale {
-        per_mm: ms,
-        unit: "kg·m",
-    };
-    // The torque: its ordinate by Gl. 12 when the radius is known, and its rectangle.
-    let mut torque_mm = None;
-    if let Some(t) = shaft.torque.filter(|t| t.md != 0.0) {
-        let direct = t.md.abs() / ms;
-        let (x, ax) = match t.radius {
-            Some(r) => torque_ordinate(
-                b,
-                &t,
-                r,
-                shaft.alpha0,
-                dr,
-                Point::new(shaft.ends[1] * k + dr.origin[0] + 40.0, y_next),
-                mscale,
-            )?,
-            None => (direct, shaft.alpha0 * direct),
-        };
-        torque_rectangle(b, &t, x, dr, y_next - x)?;
-        y_next -= x + 40.0;
-        torque_mm = Some(ax);
-    }
-    let y0 = y_next - rise;
-    let (_, cos_a) = crate::kernel::angle::sin_cos_deg(shaft.angle_deg);
-    let (sin_a, _) = crate::kernel::angle::sin_cos_deg(shaft.angle_deg);
-    let mref = r1
-        .sections
-        .iter()
-        .chain(&r2.sections)
-        .map(|s| s.moment.abs())
-        .fold(0.0, f64::max)
-        .max(shaft.torque.map_or(0.0, |t| t.md.abs() * shaft.alpha0));
-    let s1 = super::closed_form::Sections::new(&b1);
-    let s2 = super::closed_form::Sections::new(&b2);
     let mut rows = Vec::new();
     for &x in &xs {
         let (m1, m2) = (at(&r1.sections, x), at(&r2.sections, x));
-        // Parallelogram of the ordinates (Abb. 27) at the section's base point.
-        let q = b.point(
-            Point::new(x * k + dr.origin[0], y0),
-            Label::quiet("Q", 0),
-            Role::Given,
-            N_BASE,
-        );
-        let dir1 = b.line_dir(
-            &q,
-            Vector::new(0.0, 1.0),
-            Label::NONE,
-            Role::Auxiliary,
-            N_DIR1,
-        )?;
-        let e1 = b.lay_off(&q, &dir1, m1 / ms, Label::NONE, Role::Construction, N_Y1)?;
-        // The second plane turned through α from the first (counter-clockwise from "up").
-        let dir2 = b.line_dir(
-            &e1,
-            Vector::new(-sin_a, cos_a),
-            Label::NONE,
-            Role::Auxiliary,
-            N_DIR2,
-        )?;
-        let e2 = b.lay_off(&e1, &dir2, m2 / ms, Label::NONE, Role::Construction, N_Y2)?;
-        let mb = if (e2.g - q.g).norm() > b.tolerance().length {
-            let yl = b.line_through(&q, &e2, Label::NONE, Role::Result, N_Y)?;
-            let h = b.measure(&q, &e2, &yl, mscale, Label::quiet("Mb", 0), N_MB);
-            b.check(
-                &h,
-                "resultant bending moment M_b",
-                "kg·m",
-                "LH C.7: √(M1² + M2² + 2 M1 M2 cos α)",
-                mref,
-                || combined(s1.moment(x), s2.moment(x), shaft.angle_deg),
-            );
-            h.g
-        } else {
-            0.0
-        };
+        let mb = c.combined(b, x, m1, m2)?;
         let md = shaft
             .torque
-            .filter(|t| x >= t.from - 1e-12 * span.max(1.0) && x <= t.to + 1e-12 * span.max(1.0))
+            .filter(|t| x >= t.from - tol && x <= t.to + tol)
             .map_or(0.0, |t| t.md);
         // The ideal moment (Abb. 29), where a torque acts; elsewhere it equals M_b.
         let mi = if md != 0.0 {
-            let base = b.point(
-                Point::new(x * k + dr.origin[0] + 4.0, y0 - 10.0),
-                Label::quiet("R", 0),
-                Role::Given,
-                N_BASE,
-            );
-            let leg = b.line_dir(
-                &base,
-                Vector::new(1.0, 0.0),
-                Label::NONE,
-                Role::Auxiliary,
-                N_LEG_Y,
-            )?;
-            let ey = b.lay_off(
-                &base,
-                &leg,
-                mb / ms,
-                Label::NONE,
-                Role::Construction,
-                N_LEG_Y,
-            )?;
-            let normal = b.perpendicular(&leg, &ey, Label::NONE, Role::Auxiliary, N_NORMAL);
-            let ex = b.lay_off(
-                &ey,
-                &normal,
-                torque_mm.unwrap_or(shaft.alpha0 * md.abs() / ms),
-                Label::NONE,
-                Role::Construction,
-                N_LEG_X,
-            )?;
-            // The hypotenuse drawn; its five eighths are taken off it below.
-            b.line_through(&base, &ex, Label::NONE, Role::Construction, N_HYP)?;
-            let y8 = b.divide_segment(&base, &ey, 8, "y", N_EIGHTHS);
-            let h8 = b.divide_segment(&base, &ex, 8, "h", N_EIGHTHS);
-            // 3/8 y along the leg, then 5/8 of the hypotenuse further along the same line.
-            let five = (h8[5].g - base.g).norm();
-            let sum = b.lay_off(&y8[3], &leg, five, Label::NONE, Role::Result, N_ADD)?;
-            let yi = b.measure(&base, &sum, &leg, mscale, Label::quiet("Mi", 0), N_MI);
-            b.check(&yi, "ideal moment M_i", "kg·m", "LH Gl. 13", mref, || {
-                ideal(
-                    combined(s1.moment(x), s2.moment(x), shaft.angle_deg),
-                    md,
-                    shaft.alpha0,
-                )
-            });
-            yi.g
+            c.ideal(b, x, mb, md)?
         } else {
             mb
         };
@@ -611,4 +461,172 @@ pub fn construct_shaft(
         });
     }
     Ok(rows)
+}
+
+/// The sections of a shaft: supports, loads of either plane, ends of the torque, ordered,
+/// those within the position tolerance merged.
+fn sections(shaft: &Shaft) -> Vec<f64> {
+    let mut xs: Vec<f64> = shaft.supports.to_vec();
+    xs.extend(shaft.plane_1.iter().chain(&shaft.plane_2).map(|l| l.x));
+    if let Some(t) = shaft.torque {
+        xs.push(t.from);
+        xs.push(t.to);
+    }
+    xs.sort_by(f64::total_cmp);
+    let span = shaft.ends[1] - shaft.ends[0];
+    xs.dedup_by(|a, b| (*a - *b).abs() <= REL_POSITION_EPS * span.max(1.0));
+    xs
+}
+
+/// The moment area of one plane at `y_next` (moved below it), measured at the sections; a
+/// plane without loads has no moment area to draw: its ordinates are zero.
+fn plane_moments(
+    b: &mut Board,
+    bm: &Beam,
+    dr: &BeamDrawing,
+    xs: &[f64],
+    y_next: &mut f64,
+) -> Result<BeamResults, ConstructionError> {
+    if bm.point_loads.is_empty() {
+        return Ok(BeamResults {
+            reactions: super::beam::Reactions { a: 0.0, b: 0.0 },
+            sections: xs
+                .iter()
+                .map(|&x| super::SectionRow {
+                    x,
+                    what: "x".into(),
+                    moment: 0.0,
+                })
+                .collect(),
+            zero_moments: vec![],
+            shear: vec![],
+            max_moment: None,
+            moment_handles: vec![],
+        });
+    }
+    let req = BeamRequest {
+        moment_area: true,
+        shear_diagram: false,
+    };
+    let mut d = *dr;
+    d.origin = [dr.origin[0], *y_next];
+    let r = construct_beam_at(b, bm, &d, &req, xs)?;
+    let ms = dr.length_scale / 1000.0 * dr.pole_distance;
+    let depth = r
+        .sections
+        .iter()
+        .map(|s| s.moment.abs())
+        .fold(0.0, f64::max)
+        / ms;
+    *y_next -= depth + 90.0;
+    Ok(r)
+}
+
+/// The torque: its ordinate by Gl. 12 when the radius is known (else at the moment scale),
+/// and its rectangle, at `y_next` (moved below it). Returns α₀ times the ordinate (mm), the
+/// leg of the ideal moment's triangle.
+fn torque(
+    b: &mut Board,
+    shaft: &Shaft,
+    dr: &BeamDrawing,
+    y_next: &mut f64,
+) -> Result<Option<f64>, ConstructionError> {
+    let Some(t) = shaft.torque.filter(|t| t.md != 0.0) else {
+        return Ok(None);
+    };
+    let ms = dr.length_scale / 1000.0 * dr.pole_distance;
+    let k = 1000.0 / dr.length_scale;
+    let direct = t.md.abs() / ms;
+    let (x, ax) = match t.radius {
+        Some(r) => {
+            let at = Point::new(shaft.ends[1] * k + dr.origin[0] + 40.0, *y_next);
+            torque_ordinate(b, &t, r, shaft.alpha0, dr, at, Scale::new(ms, "kg·m"))?
+        }
+        None => (direct, shaft.alpha0 * direct),
+    };
+    torque_rectangle(b, &t, x, dr, *y_next - x)?;
+    *y_next -= x + 40.0;
+    Ok(Some(ax))
+}
+
+/// The combination of the two planes and the torque at each section.
+struct Combine<'a> {
+    shaft: &'a Shaft,
+    dr: &'a BeamDrawing,
+    /// Sheet mm per m.
+    k: f64,
+    /// kg·m per mm of ordinate.
+    ms: f64,
+    /// The base line of the parallelograms and triangles (mm).
+    y0: f64,
+    /// The largest moment: the reference of the checks.
+    mref: f64,
+    s1: super::closed_form::Sections<'a>,
+    s2: super::closed_form::Sections<'a>,
+    /// α₀ × the torque ordinate (mm), where the torque was drawn.
+    torque_mm: Option<f64>,
+}
+
+impl Combine<'_> {
+    /// The closed form of M_b at x.
+    fn mb_closed(&self, x: f64) -> f64 {
+        combined(self.s1.moment(x), self.s2.moment(x), self.shaft.angle_deg)
+    }
+
+    /// The parallelogram of the ordinates (Abb. 27) at the section's base point: y₁ up, y₂
+    /// turned through α from it; the diagonal is M_b, read off and checked.
+    fn combined(&self, b: &mut Board, x: f64, m1: f64, m2: f64) -> Result<f64, ConstructionError> {
+        let (ms, mscale) = (self.ms, Scale::new(self.ms, "kg·m"));
+        let (sin_a, cos_a) = crate::kernel::angle::sin_cos_deg(self.shaft.angle_deg);
+        let at = Point::new(x * self.k + self.dr.origin[0], self.y0);
+        let q = b.point(at, Label::quiet("Q", 0), Role::Given, N_BASE);
+        let (aux, con) = (Role::Auxiliary, Role::Construction);
+        let dir1 = b.line_dir(&q, Vector::new(0.0, 1.0), Label::NONE, aux, N_DIR1)?;
+        let e1 = b.lay_off(&q, &dir1, m1 / ms, Label::NONE, con, N_Y1)?;
+        // The second plane turned through α from the first (counter-clockwise from "up").
+        let dir2 = b.line_dir(&e1, Vector::new(-sin_a, cos_a), Label::NONE, aux, N_DIR2)?;
+        let e2 = b.lay_off(&e1, &dir2, m2 / ms, Label::NONE, con, N_Y2)?;
+        if (e2.g - q.g).norm() <= b.tolerance().length {
+            return Ok(0.0);
+        }
+        let yl = b.line_through(&q, &e2, Label::NONE, Role::Result, N_Y)?;
+        let h = b.measure(&q, &e2, &yl, mscale, Label::quiet("Mb", 0), N_MB);
+        let formula = "LH C.7: √(M1² + M2² + 2 M1 M2 cos α)";
+        let what = "resultant bending moment M_b";
+        b.check(&h, what, "kg·m", formula, self.mref, || self.mb_closed(x));
+        Ok(h.g)
+    }
+
+    /// The ideal moment by the construction of Abb. 29 (Gl. 13): legs M_b and α₀·M_d, the
+    /// hypotenuse, both divided into eighths; 3/8 of the one and 5/8 of the other laid end to
+    /// end on the leg, read off and checked.
+    fn ideal(&self, b: &mut Board, x: f64, mb: f64, md: f64) -> Result<f64, ConstructionError> {
+        let (ms, mscale) = (self.ms, Scale::new(self.ms, "kg·m"));
+        let at = Point::new(x * self.k + self.dr.origin[0] + 4.0, self.y0 - 10.0);
+        let base = b.point(at, Label::quiet("R", 0), Role::Given, N_BASE);
+        let (aux, con) = (Role::Auxiliary, Role::Construction);
+        let leg = b.line_dir(&base, Vector::new(1.0, 0.0), Label::NONE, aux, N_LEG_Y)?;
+        let ey = b.lay_off(&base, &leg, mb / ms, Label::NONE, con, N_LEG_Y)?;
+        let normal = b.perpendicular(&leg, &ey, Label::NONE, aux, N_NORMAL);
+        let alpha0 = self.shaft.alpha0;
+        let tx = self.torque_mm.unwrap_or(alpha0 * md.abs() / ms);
+        let ex = b.lay_off(&ey, &normal, tx, Label::NONE, con, N_LEG_X)?;
+        // The hypotenuse drawn; its five eighths are taken off it below.
+        b.line_through(&base, &ex, Label::NONE, con, N_HYP)?;
+        let y8 = b.divide_segment(&base, &ey, 8, "y", N_EIGHTHS);
+        let h8 = b.divide_segment(&base, &ex, 8, "h", N_EIGHTHS);
+        // 3/8 y along the leg, then 5/8 of the hypotenuse further along the same line.
+        let five = (h8[5].g - base.g).norm();
+        let sum = b.lay_off(&y8[3], &leg, five, Label::NONE, Role::Result, N_ADD)?;
+        let yi = b.measure(&base, &sum, &leg, mscale, Label::quiet("Mi", 0), N_MI);
+        b.check(
+            &yi,
+            "ideal moment M_i",
+            "kg·m",
+            "LH Gl. 13",
+            self.mref,
+            || ideal(self.mb_closed(x), md, alpha0),
+        );
+        Ok(yi.g)
+    }
 }
