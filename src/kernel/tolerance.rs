@@ -57,6 +57,11 @@ pub const REL_TIE_EPS: f64 = 1e-12;
 /// to about 1e-15 of the loads, three digits below.
 pub const REL_ZERO_REACTION: f64 = 1e-12;
 
+/// Two unknown members at a joint whose directions make a sine below this are in line: their
+/// parallels would cut at a glancing angle of under 2e-7°, and the joint is left for later
+/// (another joint, or a section, finds one of them). Dimensionless.
+pub const JOINT_CUT_SIN_EPS: f64 = 1e-9;
+
 /// Largest number of equal divisions of a segment, arc or crank circle a scene may ask for.
 /// A drafter divides into 8 to 36 parts; 3,600 is a benchmark size, 100,000 is absurd for a
 /// figure and would write a figure of hundreds of megabytes.

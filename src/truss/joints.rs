@@ -12,6 +12,7 @@
 use super::labels::member_label;
 use super::layout::{grow, EMPTY};
 use super::plan::{check_member, check_reference, plan_result, CaseResult, PlanContext};
+use crate::kernel::tolerance::JOINT_CUT_SIN_EPS;
 use crate::kernel::{Point, Vector};
 use crate::protocol::{note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};
 
@@ -53,6 +54,22 @@ struct Item {
     member: Option<usize>,
 }
 
+/// A member found at a joint: its index, its measured force, its length in the plan (mm).
+type Found = (usize, H<f64>, f64);
+
+/// The state of the joint polygons of one case: which members meet at each joint, the
+/// external forces at each, the member forces found so far, and where the next polygon goes.
+struct Polygons<'a> {
+    ctx: &'a PlanContext<'a>,
+    members_at: Vec<Vec<usize>>,
+    ext_at: Vec<Vec<Vector>>,
+    reference: f64,
+    force: Vec<Option<f64>>,
+    plan_mm: Vec<f64>,
+    bx: [f64; 4],
+    cursor: f64,
+}
+
 /// Draws the joint polygons of one case from `at` to the right; returns the result and the
 /// bounding box of the polygons relative to `at`.
 ///
@@ -68,51 +85,17 @@ pub(crate) fn joint_polygons(
         ext,
         sol,
         dr,
-        at,
-        mline,
-        maxload,
+        ..
     } = *ctx;
-    let fs = dr.force_scale;
-    let kg = Scale::kg(fs);
+    let mut p = Polygons::new(ctx);
     let k = t.joints.len();
-    let mut members_at: Vec<Vec<usize>> = vec![Vec::new(); k];
-    for (m, mem) in t.members.iter().enumerate() {
-        members_at[mem.ends[0]].push(m);
-        members_at[mem.ends[1]].push(m);
-    }
-    let mut ext_at: Vec<Vec<Vector>> = vec![Vec::new(); k];
-    for &(j, f) in &ext.forces {
-        ext_at[j].push(f);
-    }
-    let reference = check_reference(maxload, ext);
-    let dir_from = |v: usize, m: usize| {
-        let [a, c] = t.members[m].ends;
-        let o = if a == v { c } else { a };
-        (t.joints[o].at - t.joints[v].at).normalize()
-    };
-    let mut force: Vec<Option<f64>> = vec![None; t.members.len()];
-    let mut plan_mm = vec![0.0; t.members.len()];
-    let mut bx = EMPTY;
-    let mut cursor = at.x;
     let mut queue: std::collections::VecDeque<usize> = (0..k).collect();
     let mut queued = vec![true; k];
     let mut stalled = 0;
     while let Some(v) = queue.pop_front() {
         queued[v] = false;
-        let unknown: Vec<usize> = members_at[v]
-            .iter()
-            .copied()
-            .filter(|&m| force[m].is_none())
-            .collect();
-        let solvable = match unknown.len() {
-            1 => true,
-            2 => {
-                let (d1, d2) = (dir_from(v, unknown[0]), dir_from(v, unknown[1]));
-                (d1.x * d2.y - d1.y * d2.x).abs() > 1e-9
-            }
-            _ => false,
-        };
-        if !solvable {
+        let unknown = p.unknown_at(v);
+        if !p.solvable(v, &unknown) {
             // Revisit later; give up when a whole round finds nothing.
             if !unknown.is_empty() {
                 stalled += 1;
@@ -125,27 +108,131 @@ pub(crate) fn joint_polygons(
             continue;
         }
         stalled = 0;
-        // Clockwise from the first known force after the unknowns (Regel 2).
-        let mut items: Vec<Item> = ext_at[v]
+        let Some(found) = p.draw(b, v, &unknown)? else {
+            continue;
+        };
+        for (m, h, mm) in found {
+            check_member(b, &h, m, sol, p.reference);
+            p.force[m] = Some(h.g);
+            p.plan_mm[m] = mm;
+            for &e in &t.members[m].ends {
+                if !queued[e] {
+                    queued[e] = true;
+                    queue.push_back(e);
+                }
+            }
+        }
+        p.cursor = ctx.at.x + p.bx[2] + 12.0;
+    }
+    b.set_context(|| case.name.clone());
+    if let Some(m) = p.force.iter().position(|f| f.is_none()) {
+        return Err(ConstructionError::PlanStalls {
+            member: t.members[m].name.clone(),
+            joints: Vec::new(),
+            reason: format!(
+                "the joint polygons stall before member {}: every joint left has three or more unknown member forces (or two in line)",
+                t.members[m].name
+            ),
+        });
+    }
+    let result = plan_result(t, case, ext, &p.force, &p.plan_mm, sol, dr);
+    let bx = if p.bx[0].is_finite() { p.bx } else { [0.0; 4] };
+    Ok((result, bx))
+}
+
+impl<'a> Polygons<'a> {
+    fn new(ctx: &'a PlanContext<'a>) -> Self {
+        let t = ctx.t;
+        let k = t.joints.len();
+        let mut members_at: Vec<Vec<usize>> = vec![Vec::new(); k];
+        for (m, mem) in t.members.iter().enumerate() {
+            members_at[mem.ends[0]].push(m);
+            members_at[mem.ends[1]].push(m);
+        }
+        let mut ext_at: Vec<Vec<Vector>> = vec![Vec::new(); k];
+        for &(j, f) in &ctx.ext.forces {
+            ext_at[j].push(f);
+        }
+        Polygons {
+            ctx,
+            members_at,
+            ext_at,
+            reference: check_reference(ctx.maxload, ctx.ext),
+            force: vec![None; t.members.len()],
+            plan_mm: vec![0.0; t.members.len()],
+            bx: EMPTY,
+            cursor: ctx.at.x,
+        }
+    }
+
+    /// The unit direction of member `m` from joint `v` to its other end.
+    fn dir_from(&self, v: usize, m: usize) -> Vector {
+        let t = self.ctx.t;
+        let [a, c] = t.members[m].ends;
+        let o = if a == v { c } else { a };
+        (t.joints[o].at - t.joints[v].at).normalize()
+    }
+
+    /// The members at `v` whose force is still unknown.
+    fn unknown_at(&self, v: usize) -> Vec<usize> {
+        self.members_at[v]
+            .iter()
+            .copied()
+            .filter(|&m| self.force[m].is_none())
+            .collect()
+    }
+
+    /// One unknown member, or two that are not in line, close a joint polygon.
+    fn solvable(&self, v: usize, unknown: &[usize]) -> bool {
+        match unknown.len() {
+            1 => true,
+            2 => {
+                let (d1, d2) = (self.dir_from(v, unknown[0]), self.dir_from(v, unknown[1]));
+                (d1.x * d2.y - d1.y * d2.x).abs() > JOINT_CUT_SIN_EPS
+            }
+            _ => false,
+        }
+    }
+
+    /// The forces at `v`, clockwise (Regel 2): external forces and members, by angle.
+    fn items(&self, v: usize) -> Vec<Item> {
+        let mut items: Vec<Item> = self.ext_at[v]
             .iter()
             .map(|&f| Item {
                 angle: f.y.atan2(f.x),
                 force: f,
                 member: None,
             })
-            .chain(members_at[v].iter().map(|&m| {
-                let d = dir_from(v, m);
+            .chain(self.members_at[v].iter().map(|&m| {
+                let d = self.dir_from(v, m);
                 Item {
                     angle: d.y.atan2(d.x),
-                    force: d * force[m].unwrap_or(0.0),
+                    force: d * self.force[m].unwrap_or(0.0),
                     member: Some(m),
                 }
             }))
             .collect();
         items.sort_by(|a, c| c.angle.total_cmp(&a.angle).then(a.member.cmp(&c.member)));
+        items
+    }
+
+    /// The polygon of joint `v`: the known forces laid head to tail clockwise, then the
+    /// unknown members' parallels close it. Returns each member found with its measured
+    /// force and its length in the plan; `None` if the two parallels do not meet.
+    fn draw(
+        &mut self,
+        b: &mut Board,
+        v: usize,
+        unknown: &[usize],
+    ) -> Result<Option<Vec<Found>>, ConstructionError> {
+        let PlanContext {
+            t, case, dr, at, ..
+        } = *self.ctx;
+        let fs = dr.force_scale;
+        let items = self.items(v);
         let known: Vec<&Item> = items
             .iter()
-            .filter(|i| i.member.is_none_or(|m| force[m].is_some()) && i.force.norm() > 0.0)
+            .filter(|i| i.member.is_none_or(|m| self.force[m].is_some()) && i.force.norm() > 0.0)
             .collect();
         // The numbers first, to place the polygon.
         let mut corners = vec![Vector::zeros()];
@@ -159,85 +246,51 @@ pub(crate) fn joint_polygons(
             .min(0.0);
         let name = &t.joints[v].name;
         b.set_context(|| format!("{}: joint polygon {name}", case.name));
-        let start = b.point(
-            Point::new(cursor - lo, at.y),
-            Label::NONE,
-            Role::Given,
-            N_START,
-        );
+        let at_start = Point::new(self.cursor - lo, at.y);
+        let start = b.point(at_start, Label::NONE, Role::Given, N_START);
         let mut cur = start;
         for i in &known {
             let along = b.line_dir(&cur, i.force, Label::NONE, Role::Auxiliary, N_KNOWN)?;
-            cur = b.lay_off(
-                &cur,
-                &along,
-                i.force.norm() / fs,
-                Label::NONE,
-                Role::Force,
-                N_KNOWN,
-            )?;
-            grow(&mut bx, cur.g, at);
+            let len = i.force.norm() / fs;
+            cur = b.lay_off(&cur, &along, len, Label::NONE, Role::Force, N_KNOWN)?;
+            grow(&mut self.bx, cur.g, at);
         }
-        grow(&mut bx, start.g, at);
+        grow(&mut self.bx, start.g, at);
         // The unknowns, in clockwise order after the knowns.
         let order: Vec<usize> = items
             .iter()
             .filter_map(|i| i.member)
             .filter(|m| unknown.contains(m))
             .collect();
-        let read = |b: &mut Board, from: &H<Point>, to: &H<Point>, m: usize| {
-            b.segment(from, to, member_label(t, m), Role::Result, N_FORCE);
-            // The side from..to acts on v; read along the member from v outwards.
-            let on_v = t.members[m].ends[0] == v;
-            let (p, q) = if on_v { (from, to) } else { (to, from) };
-            b.measure(p, q, &mline[m], kg, member_label(t, m), N_FORCE)
+        if let [m] = order[..] {
+            let h = self.read(b, v, &cur, &start, m);
+            return Ok(Some(vec![(m, h, close.norm())]));
+        }
+        let (m1, m2) = (order[0], order[1]);
+        let mline = self.ctx.mline;
+        let con = Role::Construction;
+        let l1 = b.parallel(&mline[m1], &cur, Label::NONE, con, N_PAR);
+        let l2 = b.parallel(&mline[m2], &start, Label::NONE, con, N_PAR);
+        let Cut::Point(mid, _) = b.meet(&l1, &l2, Label::NONE, N_CLOSE) else {
+            return Ok(None);
         };
-        let mut found: Vec<(usize, H<f64>, f64)> = Vec::new();
-        if order.len() == 1 {
-            let m = order[0];
-            let h = read(b, &cur, &start, m);
-            found.push((m, h, close.norm()));
-        } else {
-            let (m1, m2) = (order[0], order[1]);
-            let l1 = b.parallel(&mline[m1], &cur, Label::NONE, Role::Construction, N_PAR);
-            let l2 = b.parallel(&mline[m2], &start, Label::NONE, Role::Construction, N_PAR);
-            let mid = match b.meet(&l1, &l2, Label::NONE, N_CLOSE) {
-                Cut::Point(p, _) => p,
-                _ => continue,
-            };
-            grow(&mut bx, mid.g, at);
-            let h1 = read(b, &cur, &mid, m1);
-            let h2 = read(b, &mid, &start, m2);
-            found.push((m1, h1, (mid.g - cur.g).norm()));
-            found.push((m2, h2, (start.g - mid.g).norm()));
-        }
-        for (m, h, mm) in found {
-            check_member(b, &h, m, sol, reference);
-            force[m] = Some(h.g);
-            plan_mm[m] = mm;
-            for &e in &t.members[m].ends {
-                if !queued[e] {
-                    queued[e] = true;
-                    queue.push_back(e);
-                }
-            }
-        }
-        cursor = at.x + bx[2] + 12.0;
+        grow(&mut self.bx, mid.g, at);
+        let h1 = self.read(b, v, &cur, &mid, m1);
+        let h2 = self.read(b, v, &mid, &start, m2);
+        Ok(Some(vec![
+            (m1, h1, (mid.g - cur.g).norm()),
+            (m2, h2, (start.g - mid.g).norm()),
+        ]))
     }
-    b.set_context(|| case.name.clone());
-    if let Some(m) = force.iter().position(|f| f.is_none()) {
-        return Err(ConstructionError::PlanStalls {
-            member: t.members[m].name.clone(),
-            joints: Vec::new(),
-            reason: format!(
-                "the joint polygons stall before member {}: every joint left has three or more unknown member forces (or two in line)",
-                t.members[m].name
-            ),
-        });
+
+    /// Member `m` drawn as the side `from → to` of the polygon of joint `v`, and its force
+    /// read along the member from `v` outwards (tension if the side points away, Regel 1).
+    fn read(&self, b: &mut Board, v: usize, from: &H<Point>, to: &H<Point>, m: usize) -> H<f64> {
+        let t = self.ctx.t;
+        let kg = Scale::kg(self.ctx.dr.force_scale);
+        b.segment(from, to, member_label(t, m), Role::Result, N_FORCE);
+        let on_v = t.members[m].ends[0] == v;
+        let (p, q) = if on_v { (from, to) } else { (to, from) };
+        b.measure(p, q, &self.ctx.mline[m], kg, member_label(t, m), N_FORCE)
     }
-    let result = plan_result(t, case, ext, &force, &plan_mm, sol, dr);
-    if !bx[0].is_finite() {
-        bx = [0.0; 4];
-    }
-    Ok((result, bx))
 }
