@@ -106,95 +106,22 @@ pub(super) fn cremona_plan(
         sol,
         dr,
         at,
-        mline,
-        maxload,
+        ..
     } = *ctx;
-    let fs = dr.force_scale;
-    let kg = Scale::kg(fs);
+    let sm = SpaceMap::new(t, g, ext)?;
     let mut bx = EMPTY;
-    let (order, mut space_of_half) = outline(t, g, ext)?;
-    let n_ext = order.len().max(1);
-    // Inner faces become spaces after the outer ones.
-    let mut space_of_face = vec![usize::MAX; g.faces.len()];
-    let mut n_spaces = n_ext;
-    for (f, sp) in space_of_face.iter_mut().enumerate() {
-        if f != g.outer {
-            *sp = n_spaces;
-            n_spaces += 1;
-        }
-    }
-    let mut face_of_space = vec![g.outer; n_spaces];
-    for (f, &sp) in space_of_face.iter().enumerate() {
-        if sp != usize::MAX {
-            face_of_space[sp] = f;
-        }
-    }
-    for h in 0..space_of_half.len() {
-        if g.face_of[h] != g.outer {
-            space_of_half[h] = space_of_face[g.face_of[h]];
-        }
-    }
-    let mut pt: Vec<Option<H<Point>>> = vec![None; n_spaces];
-    // The external force polygon, clockwise round the truss.
-    let start = b.point(at, space_label(0), Role::Given, N_START);
-    grow(&mut bx, at, at);
-    pt[0] = Some(start);
-    let mut cur = start;
-    for (i, &fi) in order.iter().enumerate() {
-        let f = ext.forces[fi].1;
-        let along = b.line_dir(&cur, f, Label::NONE, Role::Auxiliary, N_EXT)?;
-        let lab = if i + 1 < order.len() {
-            space_label(i + 1)
-        } else {
-            Label::NONE
-        };
-        let next = b.lay_off(&cur, &along, f.norm() / fs, lab, Role::Force, N_EXT)?;
-        grow(&mut bx, next.g, at);
-        if i + 1 < order.len() {
-            pt[i + 1] = Some(next);
-        }
-        cur = next;
-    }
-    // Joints touching each space, to revisit when it becomes known.
-    let mut joints_of_space: Vec<Vec<usize>> = vec![Vec::new(); n_spaces];
-    for (h, &s) in space_of_half.iter().enumerate() {
-        joints_of_space[s].push(origin(t, h));
-    }
-    for js in &mut joints_of_space {
-        js.sort_unstable();
-        js.dedup();
-    }
-    let mut forces: Vec<Option<f64>> = vec![None; t.members.len()];
-    let mut plan_mm = vec![0.0; t.members.len()];
+    let mut pt: Vec<Option<H<Point>>> = vec![None; sm.n_spaces];
+    external_polygon(b, ctx, &sm.order, &mut pt, &mut bx)?;
+    let joints_of_space = sm.joints_of_space(t);
+    let mut found = Found::new(ctx, &sm.space_of_half);
     let mut queue: std::collections::VecDeque<usize> = (0..t.joints.len()).collect();
     let mut queued = vec![true; t.joints.len()];
-    let reference = check_reference(maxload, ext);
-    // Draws every member whose two spaces are known and that is not drawn yet.
-    let settle = |b: &mut Board,
-                  pt: &[Option<H<Point>>],
-                  forces: &mut Vec<Option<f64>>,
-                  plan_mm: &mut Vec<f64>,
-                  members: &mut dyn Iterator<Item = usize>| {
-        for m in members {
-            if forces[m].is_some() {
-                continue;
-            }
-            let (l, r) = (space_of_half[2 * m], space_of_half[2 * m + 1]);
-            if let (Some(pl), Some(pr)) = (pt[l], pt[r]) {
-                b.segment(&pl, &pr, member_label(t, m), Role::Result, N_FORCE);
-                let v = b.measure(&pl, &pr, &mline[m], kg, member_label(t, m), N_FORCE);
-                check_member(b, &v, m, sol, reference);
-                forces[m] = Some(v.g);
-                plan_mm[m] = (pr.g - pl.g).norm();
-            }
-        }
-    };
     // Members on the outline are known from the external polygon already.
-    settle(b, &pt, &mut forces, &mut plan_mm, &mut (0..t.members.len()));
+    found.settle(b, &pt, &mut (0..t.members.len()));
     let spaces = Spaces {
-        of_half: &space_of_half,
-        face_of: &face_of_space,
-        n_ext,
+        of_half: &sm.space_of_half,
+        face_of: &sm.face_of_space,
+        n_ext: sm.n_ext,
     };
     loop {
         let fixed = match queue.pop_front() {
@@ -213,12 +140,10 @@ pub(super) fn cremona_plan(
             continue;
         };
         grow(&mut bx, pt[u].expect("just fixed").g, at);
-        settle(
+        found.settle(
             b,
             &pt,
-            &mut forces,
-            &mut plan_mm,
-            &mut g.faces[face_of_space[u]].iter().map(|h| h / 2),
+            &mut g.faces[sm.face_of_space[u]].iter().map(|h| h / 2),
         );
         for &j in &joints_of_space[u] {
             if !queued[j] {
@@ -228,23 +153,167 @@ pub(super) fn cremona_plan(
         }
     }
     b.set_context(|| case.name.clone());
-    if let Some(m) = forces.iter().position(|f| f.is_none()) {
-        let stuck: Vec<String> = (0..t.joints.len())
-            .filter(|&v| g.around[v].iter().any(|&h| forces[h / 2].is_none()))
-            .map(|v| t.joints[v].name.clone())
-            .take(6)
-            .collect();
-        return Err(ConstructionError::PlanStalls {
-            member: t.members[m].name.clone(),
-            reason: format!(
-                "the Cremona plan stalls before member {}: at joints {} three or more member forces are unknown, and no section through three members with two unknown spaces between them gives one of them (Ritter, LH B.4)",
-                t.members[m].name,
-                stuck.join(", ")
-            ),
-            joints: stuck,
-        });
+    if let Some(m) = found.forces.iter().position(|f| f.is_none()) {
+        return Err(stalls(t, g, &found.forces, m));
     }
-    Ok((plan_result(t, case, ext, &forces, &plan_mm, sol, dr), bx))
+    let result = plan_result(t, case, ext, &found.forces, &found.plan_mm, sol, dr);
+    Ok((result, bx))
+}
+
+/// The spaces of Bow's notation: the external forces in clockwise order round the outline,
+/// the space left of every half-edge, and the face of every space (inner faces numbered
+/// after the outer spaces).
+struct SpaceMap {
+    order: Vec<usize>,
+    space_of_half: Vec<usize>,
+    face_of_space: Vec<usize>,
+    n_ext: usize,
+    n_spaces: usize,
+}
+
+impl SpaceMap {
+    fn new(t: &Truss, g: &PlaneGraph, ext: &External) -> Result<SpaceMap, ConstructionError> {
+        let (order, mut space_of_half) = outline(t, g, ext)?;
+        let n_ext = order.len().max(1);
+        // Inner faces become spaces after the outer ones.
+        let mut space_of_face = vec![usize::MAX; g.faces.len()];
+        let mut n_spaces = n_ext;
+        for (f, sp) in space_of_face.iter_mut().enumerate() {
+            if f != g.outer {
+                *sp = n_spaces;
+                n_spaces += 1;
+            }
+        }
+        let mut face_of_space = vec![g.outer; n_spaces];
+        for (f, &sp) in space_of_face.iter().enumerate() {
+            if sp != usize::MAX {
+                face_of_space[sp] = f;
+            }
+        }
+        for h in 0..space_of_half.len() {
+            if g.face_of[h] != g.outer {
+                space_of_half[h] = space_of_face[g.face_of[h]];
+            }
+        }
+        Ok(SpaceMap {
+            order,
+            space_of_half,
+            face_of_space,
+            n_ext,
+            n_spaces,
+        })
+    }
+
+    /// The joints touching each space, to revisit when it becomes known.
+    fn joints_of_space(&self, t: &Truss) -> Vec<Vec<usize>> {
+        let mut out: Vec<Vec<usize>> = vec![Vec::new(); self.n_spaces];
+        for (h, &s) in self.space_of_half.iter().enumerate() {
+            out[s].push(origin(t, h));
+        }
+        for js in &mut out {
+            js.sort_unstable();
+            js.dedup();
+        }
+        out
+    }
+}
+
+/// The external force polygon, clockwise round the truss (Regel 2): its corners are the
+/// points of the outer spaces.
+fn external_polygon(
+    b: &mut Board,
+    ctx: &PlanContext,
+    order: &[usize],
+    pt: &mut [Option<H<Point>>],
+    bx: &mut [f64; 4],
+) -> Result<(), ConstructionError> {
+    let (at, fs) = (ctx.at, ctx.dr.force_scale);
+    let start = b.point(at, space_label(0), Role::Given, N_START);
+    grow(bx, at, at);
+    pt[0] = Some(start);
+    let mut cur = start;
+    for (i, &fi) in order.iter().enumerate() {
+        let f = ctx.ext.forces[fi].1;
+        let along = b.line_dir(&cur, f, Label::NONE, Role::Auxiliary, N_EXT)?;
+        let last = i + 1 == order.len();
+        let lab = if last {
+            Label::NONE
+        } else {
+            space_label(i + 1)
+        };
+        let next = b.lay_off(&cur, &along, f.norm() / fs, lab, Role::Force, N_EXT)?;
+        grow(bx, next.g, at);
+        if !last {
+            pt[i + 1] = Some(next);
+        }
+        cur = next;
+    }
+    Ok(())
+}
+
+/// The member forces found so far, and their lengths in the plan.
+struct Found<'a> {
+    ctx: &'a PlanContext<'a>,
+    space_of_half: &'a [usize],
+    reference: f64,
+    forces: Vec<Option<f64>>,
+    plan_mm: Vec<f64>,
+}
+
+impl<'a> Found<'a> {
+    fn new(ctx: &'a PlanContext<'a>, space_of_half: &'a [usize]) -> Self {
+        let n = ctx.t.members.len();
+        Found {
+            ctx,
+            space_of_half,
+            reference: check_reference(ctx.maxload, ctx.ext),
+            forces: vec![None; n],
+            plan_mm: vec![0.0; n],
+        }
+    }
+
+    /// Draws every member whose two spaces are known and that is not drawn yet: the segment
+    /// between their points, read off and checked.
+    fn settle(
+        &mut self,
+        b: &mut Board,
+        pt: &[Option<H<Point>>],
+        members: &mut dyn Iterator<Item = usize>,
+    ) {
+        let PlanContext { t, sol, mline, .. } = *self.ctx;
+        let kg = Scale::kg(self.ctx.dr.force_scale);
+        for m in members {
+            if self.forces[m].is_some() {
+                continue;
+            }
+            let (l, r) = (self.space_of_half[2 * m], self.space_of_half[2 * m + 1]);
+            if let (Some(pl), Some(pr)) = (pt[l], pt[r]) {
+                b.segment(&pl, &pr, member_label(t, m), Role::Result, N_FORCE);
+                let v = b.measure(&pl, &pr, &mline[m], kg, member_label(t, m), N_FORCE);
+                check_member(b, &v, m, sol, self.reference);
+                self.forces[m] = Some(v.g);
+                self.plan_mm[m] = (pr.g - pl.g).norm();
+            }
+        }
+    }
+}
+
+/// The plan stalls before member `m`: the joints where it is stuck named (at most six).
+fn stalls(t: &Truss, g: &PlaneGraph, forces: &[Option<f64>], m: usize) -> ConstructionError {
+    let stuck: Vec<String> = (0..t.joints.len())
+        .filter(|&v| g.around[v].iter().any(|&h| forces[h / 2].is_none()))
+        .map(|v| t.joints[v].name.clone())
+        .take(6)
+        .collect();
+    ConstructionError::PlanStalls {
+        member: t.members[m].name.clone(),
+        reason: format!(
+            "the Cremona plan stalls before member {}: at joints {} three or more member forces are unknown, and no section through three members with two unknown spaces between them gives one of them (Ritter, LH B.4)",
+            t.members[m].name,
+            stuck.join(", ")
+        ),
+        joints: stuck,
+    }
 }
 
 /// The polygon of joint `v` if only one space round it is unknown: the parallels to the two
