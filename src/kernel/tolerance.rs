@@ -62,6 +62,10 @@ pub const REL_ZERO_REACTION: f64 = 1e-12;
 /// (another joint, or a section, finds one of them). Dimensionless.
 pub const JOINT_CUT_SIN_EPS: f64 = 1e-9;
 
+/// A triangle of a polygon's fan whose area is below `REL_AREA_EPS × size²` (size: the
+/// polygon's largest extent) is a sliver: it has no centroid to construct and adds nothing.
+pub const REL_AREA_EPS: f64 = 1e-12;
+
 /// Largest number of equal divisions of a segment, arc or crank circle a scene may ask for.
 /// A drafter divides into 8 to 36 parts; 3,600 is a benchmark size, 100,000 is absurd for a
 /// figure and would write a figure of hundreds of megabytes.

@@ -9,7 +9,8 @@
 //! forces of the opposite sense, which the force polygon takes in its stride.
 
 use super::funicular::{construct_system, Force, SystemDrawing};
-use crate::kernel::{Point, Vector};
+use crate::kernel::tolerance::REL_AREA_EPS;
+use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
 use serde::Serialize;
 
@@ -178,6 +179,37 @@ pub fn construct_centroid(
     pts: &[[f64; 2]],
     dr: &CentroidDrawing,
 ) -> Result<CentroidResults, ConstructionError> {
+    let (area, exact) = check_polygon(pts)?;
+    let k = 1000.0 / dr.length_scale;
+    let size = pts
+        .iter()
+        .flat_map(|p| pts.iter().map(move |q| (p[0] - q[0]).hypot(p[1] - q[1])))
+        .fold(0.0, f64::max);
+    let vs = draw_polygon(b, pts, k);
+    let parts = triangle_centroids(b, &vs, dr.fan_from, k, size)?;
+    let (l1, l2) = two_funiculars(b, &vs, &parts, dr)?;
+    let s = b.meet_point(&l1, &l2, Label::plain("S"), N_CENTROID)?;
+    let o = b.point(Point::origin(), Label::NONE, Role::Given, N_ORIGIN);
+    let ax = b.line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, N_AXIS)?;
+    let ay = b.line_dir(&o, Vector::new(0.0, 1.0), Label::NONE, Role::Axis, N_AXIS)?;
+    let m = Scale::new(1.0 / k, "m");
+    let xs = b.measure(&o, &s, &ax, m, Label::quiet("x", 0), N_COORD);
+    b.check(&xs, "centroid x", "m", "shoelace formula", size, || {
+        exact[0]
+    });
+    let ys = b.measure(&o, &s, &ay, m, Label::quiet("y", 0), N_COORD);
+    b.check(&ys, "centroid y", "m", "shoelace formula", size, || {
+        exact[1]
+    });
+    Ok(CentroidResults {
+        centroid: [xs.g, ys.g],
+        area,
+    })
+}
+
+/// At least three vertices, not crossing itself, of some area: the area and the centroid by
+/// the shoelace formula.
+fn check_polygon(pts: &[[f64; 2]]) -> Result<(f64, [f64; 2]), ConstructionError> {
     let n = pts.len();
     if n < 3 {
         return Err(ConstructionError::unsupported(
@@ -192,17 +224,17 @@ pub fn construct_centroid(
             (j + 1) % n
         )));
     }
-    let (area, exact) = polygon_centroid(pts)
-        .ok_or_else(|| ConstructionError::unsupported("polygon", "the polygon has zero area"))?;
-    let k = 1000.0 / dr.length_scale;
-    let size = pts
-        .iter()
-        .flat_map(|p| pts.iter().map(move |q| (p[0] - q[0]).hypot(p[1] - q[1])))
-        .fold(0.0, f64::max);
+    polygon_centroid(pts)
+        .ok_or_else(|| ConstructionError::unsupported("polygon", "the polygon has zero area"))
+}
+
+/// The vertices (lettered A, B, … up to 26, else P with its number) and the outline.
+fn draw_polygon(b: &mut Board, pts: &[[f64; 2]], k: f64) -> Vec<H<Point>> {
     const NAMES: [&str; 26] = [
         "A", "B", "C", "D", "E", "F", "G", "H", "I", "J", "K", "L", "M", "N", "O", "P", "Q", "R",
         "S", "T", "U", "V", "W", "X", "Y", "Z",
     ];
+    let n = pts.len();
     let vs: Vec<H<Point>> = pts
         .iter()
         .enumerate()
@@ -218,16 +250,27 @@ pub fn construct_centroid(
     let mut outline = vs.clone();
     outline.push(vs[0]);
     b.curve(&outline, false, Label::NONE, Role::Result, N_OUTLINE);
+    vs
+}
 
-    // Fan of triangles from the apex; each centroid where two medians cross.
-    let apex_i = dr.fan_from % n;
+/// The fan of triangles from vertex `fan_from`, each centroid where two medians cross: the
+/// centroids (m) with their signed areas (m²). A sliver of no area contributes nothing and
+/// has no centroid to construct.
+fn triangle_centroids(
+    b: &mut Board,
+    vs: &[H<Point>],
+    fan_from: usize,
+    k: f64,
+    size: f64,
+) -> Result<Vec<(Point, f64)>, ConstructionError> {
+    let n = vs.len();
+    let apex_i = fan_from % n;
     let apex = vs[apex_i];
-    let mut forces = Vec::new();
+    let mut parts = Vec::new();
     for t in 1..n - 1 {
         let (v1, v2) = (vs[(apex_i + t) % n], vs[(apex_i + t + 1) % n]);
         let signed = 0.5 * crate::kernel::cross(&(v1.g - apex.g), &(v2.g - apex.g)) / (k * k);
-        // A sliver of no area contributes nothing and has no centroid to construct.
-        if signed.abs() <= 1e-12 * size * size {
+        if signed.abs() <= REL_AREA_EPS * size * size {
             continue;
         }
         if t + 1 < n - 1 {
@@ -237,33 +280,33 @@ pub fn construct_centroid(
         let m2 = b.divide_segment(&apex, &v1, 2, "m", N_MIDPOINT)[1];
         let med1 = b.line_through(&apex, &m1, Label::NONE, Role::Auxiliary, N_MEDIAN)?;
         let med2 = b.line_through(&v2, &m2, Label::NONE, Role::Auxiliary, N_MEDIAN)?;
-        let g = b.meet_point(
-            &med1,
-            &med2,
-            Label::indexed("S", t as u32),
-            N_TRIANGLE_CENTROID,
-        )?;
-        forces.push((g.g / k, signed));
+        let label = Label::indexed("S", t as u32);
+        let g = b.meet_point(&med1, &med2, label, N_TRIANGLE_CENTROID)?;
+        parts.push((g.g / k, signed));
     }
+    Ok(parts)
+}
 
-    // Two funicular polygons: areas as vertical forces, then turned through 90°.
+/// Two funicular polygons (LH C.3, Abb. 23): the areas as vertical forces at the triangles'
+/// centroids, then the same turned through 90°; the two resultants' lines.
+fn two_funiculars(
+    b: &mut Board,
+    vs: &[H<Point>],
+    parts: &[(Point, f64)],
+    dr: &CentroidDrawing,
+) -> Result<(H<Line>, H<Line>), ConstructionError> {
     let xmax = vs.iter().map(|v| v.g.x).fold(f64::MIN, f64::max);
     let ymax = vs.iter().map(|v| v.g.y).fold(f64::MIN, f64::max);
-    let total_mm = forces.iter().map(|f| f.1.abs()).sum::<f64>() / dr.area_scale;
-    let first: Vec<Force> = forces
-        .iter()
-        .map(|(g, a)| Force {
-            at: [g.x, g.y],
-            f: [0.0, -a],
-        })
-        .collect();
-    let second: Vec<Force> = forces
-        .iter()
-        .map(|(g, a)| Force {
-            at: [g.x, g.y],
-            f: [*a, 0.0],
-        })
-        .collect();
+    let total_mm = parts.iter().map(|f| f.1.abs()).sum::<f64>() / dr.area_scale;
+    let as_forces = |turn: bool| -> Vec<Force> {
+        parts
+            .iter()
+            .map(|(g, a)| Force {
+                at: [g.x, g.y],
+                f: if turn { [*a, 0.0] } else { [0.0, -a] },
+            })
+            .collect()
+    };
     let mut sd = SystemDrawing {
         length_scale: dr.length_scale,
         force_scale: dr.area_scale,
@@ -271,33 +314,14 @@ pub fn construct_centroid(
         plan_at: Some([xmax + 30.0, ymax]),
         unit: "m²",
     };
-    let r1 = construct_system(b, &first, &sd, &[])?;
+    let r1 = construct_system(b, &as_forces(false), &sd, &[])?;
     sd.plan_at = Some([xmax + 30.0 + 0.6 * total_mm + 20.0, ymax + 0.5 * total_mm]);
-    let r2 = construct_system(b, &second, &sd, &[])?;
-    let (Some(l1), Some(l2)) = (r1.resultant_line, r2.resultant_line) else {
-        return Err(ConstructionError::unsupported(
+    let r2 = construct_system(b, &as_forces(true), &sd, &[])?;
+    match (r1.resultant_line, r2.resultant_line) {
+        (Some(l1), Some(l2)) => Ok((l1, l2)),
+        _ => Err(ConstructionError::unsupported(
             "polygon",
             "the polygon has zero area",
-        ));
-    };
-    let s = b.meet_point(&l1, &l2, Label::plain("S"), N_CENTROID)?;
-    let o = b.point(Point::origin(), Label::NONE, Role::Given, N_ORIGIN);
-    let ax = b.line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, N_AXIS)?;
-    let ay = b.line_dir(&o, Vector::new(0.0, 1.0), Label::NONE, Role::Axis, N_AXIS)?;
-    let m = Scale {
-        per_mm: 1.0 / k,
-        unit: "m",
-    };
-    let xs = b.measure(&o, &s, &ax, m, Label::quiet("x", 0), N_COORD);
-    b.check(&xs, "centroid x", "m", "shoelace formula", size, || {
-        exact[0]
-    });
-    let ys = b.measure(&o, &s, &ay, m, Label::quiet("y", 0), N_COORD);
-    b.check(&ys, "centroid y", "m", "shoelace formula", size, || {
-        exact[1]
-    });
-    Ok(CentroidResults {
-        centroid: [xs.g, ys.g],
-        area,
-    })
+        )),
+    }
 }
