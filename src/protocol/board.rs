@@ -111,6 +111,21 @@ impl Board {
         Board::sized(Some(figure_size), recording)
     }
 
+    /// A silent board with this board's tolerance: for a dry run that measures where the
+    /// parts of a figure will go before they are drawn.
+    pub fn scratch(&self) -> Board {
+        Board {
+            tolerance: self.tolerance,
+            follows_extent: self.follows_extent,
+            extent: self.extent,
+            recording: false,
+            context: None,
+            next_step: 0,
+            objects: Vec::new(),
+            steps: Vec::new(),
+        }
+    }
+
     fn sized(figure_size: Option<f64>, recording: bool) -> Board {
         Board {
             tolerance: Tolerance::for_figure(figure_size.unwrap_or(0.0)),

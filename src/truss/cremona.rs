@@ -180,7 +180,7 @@ fn construct(
     };
     for (case, sol) in cases.iter().zip(sols) {
         // A scratch run fixes where the blocks go; the real run draws them there.
-        let mut scratch = Board::new(b.tolerance().length * 1e6, false);
+        let mut scratch = b.scratch();
         let mut c = Case {
             t,
             g: g.as_ref(),

@@ -65,119 +65,148 @@ pub fn construct_pairs(
 ) -> Result<Vec<CaseResult>, ConstructionError> {
     let mut row = 0.0;
     let mut out = Vec::with_capacity(cases.len());
-    let n = t.members.len();
+    let p = Pairs { t, pairs, dr };
     for case in cases {
-        match mode {
-            PairMode::SplitHalfLoads => {
-                let mut forces = vec![0.0; n];
-                let mut plan = vec![0.0; n];
-                let mut reactions = vec![Vector::zeros(); t.supports.len()];
-                for (s, system) in ["a", "b"].iter().enumerate() {
-                    let drop: Vec<usize> = pairs.iter().map(|p| p[1 - s]).collect();
-                    let (sub, keep) = without(t, &drop);
-                    let half = LoadCase {
-                        name: format!("{}, system {system} (half loads)", case.name),
-                        loads: case
-                            .loads
-                            .iter()
-                            .map(|l| super::JointLoad {
-                                joint: l.joint,
-                                force: l.force * 0.5,
-                            })
-                            .collect(),
-                    };
-                    let r = construct_truss_rows(b, &sub, &[half], dr, &mut row, &[])?;
-                    for (i, &m) in keep.iter().enumerate() {
-                        forces[m] += r[0].members[i].force;
-                        plan[m] += r[0].members[i].plan_mm;
-                    }
-                    for (sum, rv) in reactions.iter_mut().zip(&r[0].reactions) {
-                        *sum += vector(rv.force);
-                    }
-                }
-                out.push(case_result(
-                    t,
-                    case,
-                    &forces,
-                    &plan,
-                    &vec![None; n],
-                    &reactions,
-                    dr,
+        out.push(match mode {
+            PairMode::SplitHalfLoads => p.split_half_loads(b, case, &mut row)?,
+            PairMode::TensionOnly => p.tension_only(b, case, &mut row)?,
+        });
+    }
+    Ok(out)
+}
+
+/// A truss with pairs of diagonals, drawn case by case.
+struct Pairs<'a> {
+    t: &'a Truss,
+    pairs: &'a [[usize; 2]],
+    dr: &'a TrussDrawing,
+}
+
+impl Pairs<'_> {
+    /// Two systems, each with one diagonal of every pair and half the loads, drawn one under
+    /// the other; the member forces and reactions added (LH B.5, Abb. 20).
+    fn split_half_loads(
+        &self,
+        b: &mut Board,
+        case: &LoadCase,
+        row: &mut f64,
+    ) -> Result<CaseResult, ConstructionError> {
+        let (t, n) = (self.t, self.t.members.len());
+        let mut forces = vec![0.0; n];
+        let mut plan = vec![0.0; n];
+        let mut reactions = vec![Vector::zeros(); t.supports.len()];
+        for (s, system) in ["a", "b"].iter().enumerate() {
+            let drop: Vec<usize> = self.pairs.iter().map(|p| p[1 - s]).collect();
+            let (sub, keep) = without(t, &drop);
+            let half = LoadCase {
+                name: format!("{}, system {system} (half loads)", case.name),
+                loads: case
+                    .loads
+                    .iter()
+                    .map(|l| super::JointLoad {
+                        joint: l.joint,
+                        force: l.force * 0.5,
+                    })
+                    .collect(),
+            };
+            let r = construct_truss_rows(b, &sub, &[half], self.dr, row, &[])?;
+            for (i, &m) in keep.iter().enumerate() {
+                forces[m] += r[0].members[i].force;
+                plan[m] += r[0].members[i].plan_mm;
+            }
+            for (sum, rv) in reactions.iter_mut().zip(&r[0].reactions) {
+                *sum += vector(rv.force);
+            }
+        }
+        let none = vec![None; n];
+        Ok(case_result(
+            t, case, &forces, &plan, &none, &reactions, self.dr,
+        ))
+    }
+
+    /// Tension-only counter-diagonals of flat bar: one diagonal of each pair works; every
+    /// pair whose working diagonal comes out in compression is switched, and the plan drawn
+    /// again until every working diagonal pulls (LH B.5, Abb. 19). The trial plans are
+    /// drawn on a silent board; the final one on `b`, the slack diagonals dashed.
+    fn tension_only(
+        &self,
+        b: &mut Board,
+        case: &LoadCase,
+        row: &mut f64,
+    ) -> Result<CaseResult, ConstructionError> {
+        let working = self.working_diagonals(b, case)?;
+        let (t, n) = (self.t, self.t.members.len());
+        let drop: Vec<usize> = self
+            .pairs
+            .iter()
+            .zip(&working)
+            .map(|(p, &w)| p[1 - w])
+            .collect();
+        let (sub, keep) = without(t, &drop);
+        let slack: Vec<&str> = drop.iter().map(|&m| t.members[m].name.as_str()).collect();
+        let c = LoadCase {
+            name: format!("{} ({} slack)", case.name, slack.join(", ")),
+            loads: case.loads.clone(),
+        };
+        let ghosts: Vec<[usize; 2]> = drop.iter().map(|&m| t.members[m].ends).collect();
+        let r = construct_truss_rows(b, &sub, std::slice::from_ref(&c), self.dr, row, &ghosts)?;
+        let mut forces = vec![0.0; n];
+        let mut plan = vec![0.0; n];
+        let mut mat = vec![Some(0.0); n];
+        for (i, &m) in keep.iter().enumerate() {
+            forces[m] = r[0].members[i].force;
+            plan[m] = r[0].members[i].plan_mm;
+            mat[m] = r[0].members[i].matrix;
+        }
+        let reactions: Vec<Vector> = r[0].reactions.iter().map(|v| vector(v.force)).collect();
+        Ok(case_result(
+            t, case, &forces, &plan, &mat, &reactions, self.dr,
+        ))
+    }
+
+    /// Which diagonal of each pair works (0 or 1) so that every working one pulls: switched
+    /// pair by pair on trial plans until none pushes; a choice seen twice means there is none.
+    fn working_diagonals(
+        &self,
+        b: &Board,
+        case: &LoadCase,
+    ) -> Result<Vec<usize>, ConstructionError> {
+        let mut working: Vec<usize> = vec![0; self.pairs.len()];
+        let mut tried = std::collections::BTreeSet::new();
+        loop {
+            if !tried.insert(working.clone()) {
+                return Err(ConstructionError::unsupported(
+                    "diagonals",
+                    format!(
+                        "{}: no choice of the tension-only diagonals has them all in tension",
+                        case.name
+                    ),
                 ));
             }
-            PairMode::TensionOnly => {
-                let mut working: Vec<usize> = vec![0; pairs.len()];
-                let mut tried = std::collections::BTreeSet::new();
-                loop {
-                    if !tried.insert(working.clone()) {
-                        return Err(ConstructionError::unsupported(
-                            "diagonals",
-                            format!(
-                            "{}: no choice of the tension-only diagonals has them all in tension",
-                            case.name
-                        ),
-                        ));
-                    }
-                    let drop: Vec<usize> =
-                        pairs.iter().zip(&working).map(|(p, &w)| p[1 - w]).collect();
-                    let (sub, keep) = without(t, &drop);
-                    let mut scratch = Board::new(b.tolerance().length * 1e6, false);
-                    let r = construct_plan(&mut scratch, &sub, std::slice::from_ref(case), dr)?;
-                    let force_of = |m: usize| {
-                        keep.iter()
-                            .position(|&k| k == m)
-                            .map_or(0.0, |i| r[0].members[i].force)
-                    };
-                    let mut switched = false;
-                    for (p, w) in pairs.iter().zip(working.iter_mut()) {
-                        if force_of(p[*w]) < -SLACK_KG {
-                            *w = 1 - *w;
-                            switched = true;
-                        }
-                    }
-                    if switched {
-                        continue;
-                    }
-                    let slack: Vec<&str> =
-                        drop.iter().map(|&m| t.members[m].name.as_str()).collect();
-                    let c = LoadCase {
-                        name: format!("{} ({} slack)", case.name, slack.join(", ")),
-                        loads: case.loads.clone(),
-                    };
-                    let ghosts: Vec<[usize; 2]> = drop.iter().map(|&m| t.members[m].ends).collect();
-                    let r = construct_truss_rows(
-                        b,
-                        &sub,
-                        std::slice::from_ref(&c),
-                        dr,
-                        &mut row,
-                        &ghosts,
-                    )?;
-                    let mut forces = vec![0.0; n];
-                    let mut plan = vec![0.0; n];
-                    let mut mat = vec![Some(0.0); n];
-                    for (i, &m) in keep.iter().enumerate() {
-                        forces[m] = r[0].members[i].force;
-                        plan[m] = r[0].members[i].plan_mm;
-                        mat[m] = r[0].members[i].matrix;
-                    }
-                    out.push(case_result(
-                        t,
-                        case,
-                        &forces,
-                        &plan,
-                        &mat,
-                        &r[0]
-                            .reactions
-                            .iter()
-                            .map(|v| vector(v.force))
-                            .collect::<Vec<_>>(),
-                        dr,
-                    ));
-                    break;
+            let drop: Vec<usize> = self
+                .pairs
+                .iter()
+                .zip(&working)
+                .map(|(p, &w)| p[1 - w])
+                .collect();
+            let (sub, keep) = without(self.t, &drop);
+            let mut scratch = b.scratch();
+            let r = construct_plan(&mut scratch, &sub, std::slice::from_ref(case), self.dr)?;
+            let force_of = |m: usize| {
+                keep.iter()
+                    .position(|&k| k == m)
+                    .map_or(0.0, |i| r[0].members[i].force)
+            };
+            let mut switched = false;
+            for (p, w) in self.pairs.iter().zip(working.iter_mut()) {
+                if force_of(p[*w]) < -SLACK_KG {
+                    *w = 1 - *w;
+                    switched = true;
                 }
+            }
+            if !switched {
+                return Ok(working);
             }
         }
     }
-    Ok(out)
 }
