@@ -198,19 +198,13 @@ pub(super) fn read_reactions(
     segs: &[PlanSegment],
     by_moments: Option<&[Vector]>,
 ) -> Result<(), ConstructionError> {
-    let ReactionInput {
-        t,
-        sol,
-        rlines,
-        fs,
-        maxload: reference,
-        ..
-    } = *inp;
-    let kg = Scale::kg(fs);
-    let f = "joint equilibrium, dense LU (nalgebra)";
-    let fm = "moments about the other supports (LH C.2)";
+    let r = Reader {
+        inp,
+        by_moments,
+        kg: Scale::kg(inp.fs),
+    };
     let mut col = 0;
-    for (si, sup) in t.supports.iter().enumerate() {
+    for (si, sup) in inp.t.supports.iter().enumerate() {
         let first_col = col;
         col += match sup.kind {
             SupportKind::Pinned => 2,
@@ -220,77 +214,80 @@ pub(super) fn read_reactions(
             continue;
         };
         match sup.kind {
-            SupportKind::Roller { dir } => {
-                let line = rlines[si].expect("a roller has a line");
-                let v = b.measure(&from, &to, &line, kg, Label::quiet("R", 0), N_REACT);
-                if let Some(m) = by_moments {
-                    b.check(
-                        &v,
-                        "roller reaction by moments",
-                        "kg",
-                        fm,
-                        reference,
-                        || m[si].dot(&dir),
-                    );
-                }
-                if let Some(sol) = sol {
-                    b.check(
-                        &v,
-                        "roller reaction along its line",
-                        "kg",
-                        f,
-                        reference,
-                        || sol.reactions[first_col],
-                    );
-                }
-            }
-            SupportKind::Pinned => {
-                let xa = b.line_dir(
-                    &from,
-                    Vector::new(1.0, 0.0),
-                    Label::NONE,
-                    Role::Auxiliary,
-                    N_AXIS,
-                )?;
-                let ya = b.line_dir(
-                    &from,
-                    Vector::new(0.0, 1.0),
-                    Label::NONE,
-                    Role::Auxiliary,
-                    N_AXIS,
-                )?;
-                let ax = b.measure(&from, &to, &xa, kg, Label::quiet("Ax", 0), N_REACT);
-                let ay = b.measure(&from, &to, &ya, kg, Label::quiet("Ay", 0), N_REACT);
-                if let Some(m) = by_moments {
-                    b.check(
-                        &ax,
-                        "pin reaction by moments, horizontal",
-                        "kg",
-                        fm,
-                        reference,
-                        || m[si].x,
-                    );
-                    b.check(
-                        &ay,
-                        "pin reaction by moments, vertical",
-                        "kg",
-                        fm,
-                        reference,
-                        || m[si].y,
-                    );
-                }
-                if let Some(sol) = sol {
-                    b.check(&ax, "pin reaction, horizontal", "kg", f, reference, || {
-                        sol.reactions[first_col]
-                    });
-                    b.check(&ay, "pin reaction, vertical", "kg", f, reference, || {
-                        sol.reactions[first_col + 1]
-                    });
-                }
-            }
+            SupportKind::Roller { dir } => r.roller(b, si, dir, (from, to), first_col),
+            SupportKind::Pinned => r.pin(b, si, (from, to), first_col)?,
         }
     }
     Ok(())
+}
+
+/// Reads reactions off the force plan and checks them.
+struct Reader<'a> {
+    inp: &'a ReactionInput<'a>,
+    by_moments: Option<&'a [Vector]>,
+    kg: Scale,
+}
+
+/// The formula of the dense solve's checks.
+const BY_SOLVE: &str = "joint equilibrium, dense LU (nalgebra)";
+/// The formula of the moment checks.
+const BY_MOMENTS: &str = "moments about the other supports (LH C.2)";
+
+impl Reader<'_> {
+    /// A roller's reaction, along its line; checked by moments and by the solve (its
+    /// unknown is column `col` of the solve).
+    fn roller(
+        &self,
+        b: &mut Board,
+        si: usize,
+        dir: Vector,
+        (from, to): (H<Point>, H<Point>),
+        col: usize,
+    ) {
+        let reference = self.inp.maxload;
+        let line = self.inp.rlines[si].expect("a roller has a line");
+        let v = b.measure(&from, &to, &line, self.kg, Label::quiet("R", 0), N_REACT);
+        if let Some(m) = self.by_moments {
+            let what = "roller reaction by moments";
+            b.check(&v, what, "kg", BY_MOMENTS, reference, || m[si].dot(&dir));
+        }
+        if let Some(sol) = self.inp.sol {
+            let what = "roller reaction along its line";
+            b.check(&v, what, "kg", BY_SOLVE, reference, || sol.reactions[col]);
+        }
+    }
+
+    /// A pin's reaction, by its horizontal and vertical parts; checked by moments and by the
+    /// solve (its unknowns are columns `col` and `col + 1`).
+    fn pin(
+        &self,
+        b: &mut Board,
+        si: usize,
+        (from, to): (H<Point>, H<Point>),
+        col: usize,
+    ) -> Result<(), ConstructionError> {
+        let reference = self.inp.maxload;
+        let aux = Role::Auxiliary;
+        let xa = b.line_dir(&from, Vector::new(1.0, 0.0), Label::NONE, aux, N_AXIS)?;
+        let ya = b.line_dir(&from, Vector::new(0.0, 1.0), Label::NONE, aux, N_AXIS)?;
+        let ax = b.measure(&from, &to, &xa, self.kg, Label::quiet("Ax", 0), N_REACT);
+        let ay = b.measure(&from, &to, &ya, self.kg, Label::quiet("Ay", 0), N_REACT);
+        if let Some(m) = self.by_moments {
+            let what = "pin reaction by moments, horizontal";
+            b.check(&ax, what, "kg", BY_MOMENTS, reference, || m[si].x);
+            let what = "pin reaction by moments, vertical";
+            b.check(&ay, what, "kg", BY_MOMENTS, reference, || m[si].y);
+        }
+        if let Some(sol) = self.inp.sol {
+            let what = "pin reaction, horizontal";
+            b.check(&ax, what, "kg", BY_SOLVE, reference, || sol.reactions[col]);
+            let what = "pin reaction, vertical";
+            b.check(&ay, what, "kg", BY_SOLVE, reference, || {
+                sol.reactions[col + 1]
+            });
+        }
+        Ok(())
+    }
 }
 
 /// A reaction in the force plan: its tail and head, where the construction gives one.
