@@ -23,90 +23,121 @@ pub(super) fn ritter(
     sp: &Spaces,
     pt: &mut [Option<H<Point>>],
 ) -> Option<usize> {
+    let sec = find_section(ctx, g, sp, pt)?;
     let PlanContext {
-        t,
-        case,
-        ext,
-        mline,
-        dr,
-        ..
+        t, case, mline, dr, ..
     } = *ctx;
-    let fs = dr.force_scale;
-    let known_outside = |s: usize, pt: &[Option<H<Point>>]| s < sp.n_ext && pt[s].is_some();
-    let unknown_inside = |s: usize, pt: &[Option<H<Point>>]| s >= sp.n_ext && pt[s].is_none();
-    for s1 in sp.n_ext..pt.len() {
-        if pt[s1].is_some() {
-            continue;
-        }
+    let cut = sec.cut;
+    b.set_context(|| {
+        format!(
+            "{}: Ritter section through {}, {}, {}",
+            case.name, t.members[cut[0]].name, t.members[cut[1]].name, t.members[cut[2]].name
+        )
+    });
+    b.meet(
+        &mline[sec.i],
+        &mline[sec.j],
+        Label::quiet("R", 0),
+        N_RITTER_CUT,
+    );
+    let m = cut[sec.k];
+    let px = pt[sec.known].expect("known space");
+    let par = b.parallel(
+        &mline[m],
+        &px,
+        Label::NONE,
+        Role::Construction,
+        N_RITTER_PAR,
+    );
+    // P[right of a→b] − P[left of a→b] = t·(a→b).
+    let sign = if sp.of_half[2 * m] == sec.known {
+        1.0
+    } else {
+        -1.0
+    };
+    let len = sign * sec.force / dr.force_scale;
+    let label = space_label(sec.unknown);
+    let con = Role::Construction;
+    let p = b.lay_off(&px, &par, len, label, con, N_RITTER_FORCE).ok()?;
+    pt[sec.unknown] = Some(p);
+    Some(sec.unknown)
+}
+
+/// A section that gives a member's force: the three members cut, which of them (`k`, 0 or
+/// 2) is found, the known outer space next to it and the unknown inner one, the other two
+/// members (whose lines meet in the moment point), and the force.
+struct Section {
+    cut: [usize; 3],
+    k: usize,
+    known: usize,
+    unknown: usize,
+    i: usize,
+    j: usize,
+    force: f64,
+}
+
+/// The first section from a known outer space across two unknown inner spaces to another
+/// known outer space whose moments (or forces across) give a member's force.
+fn find_section(
+    ctx: &PlanContext,
+    g: &PlaneGraph,
+    sp: &Spaces,
+    pt: &[Option<H<Point>>],
+) -> Option<Section> {
+    let known_outside = |s: usize| s < sp.n_ext && pt[s].is_some();
+    let unknown_inside = |s: usize| s >= sp.n_ext && pt[s].is_none();
+    for s1 in (sp.n_ext..pt.len()).filter(|&s| pt[s].is_none()) {
         let f1 = &g.faces[sp.face_of[s1]];
         for &h1 in f1 {
             let x0 = sp.of_half[h1 ^ 1];
-            if !known_outside(x0, pt) {
+            if !known_outside(x0) {
                 continue;
             }
             for &h2 in f1 {
                 let s2 = sp.of_half[h2 ^ 1];
-                if h2 == h1 || s2 == s1 || !unknown_inside(s2, pt) {
+                if h2 == h1 || s2 == s1 || !unknown_inside(s2) {
                     continue;
                 }
                 for &h3 in &g.faces[sp.face_of[s2]] {
                     let x3 = sp.of_half[h3 ^ 1];
-                    if h3 / 2 == h2 / 2 || !known_outside(x3, pt) {
+                    if h3 / 2 == h2 / 2 || !known_outside(x3) {
                         continue;
                     }
                     let cut = [h1 / 2, h2 / 2, h3 / 2];
-                    let Some(side) = part(t, &cut) else {
-                        continue;
-                    };
-                    // Try the member next to the outside at either end of the cut.
-                    for (k, known, unknown) in [(0, x0, s1), (2, x3, s2)] {
-                        let (i, j) = match k {
-                            0 => (cut[1], cut[2]),
-                            _ => (cut[0], cut[1]),
-                        };
-                        let Some(tk) = section_force(t, &side, ext, cut[k], i, j) else {
-                            continue;
-                        };
-                        b.set_context(|| {
-                            format!(
-                                "{}: Ritter section through {}, {}, {}",
-                                case.name,
-                                t.members[cut[0]].name,
-                                t.members[cut[1]].name,
-                                t.members[cut[2]].name
-                            )
-                        });
-                        b.meet(&mline[i], &mline[j], Label::quiet("R", 0), N_RITTER_CUT);
-                        let m = cut[k];
-                        let px = pt[known].expect("known space");
-                        let par = b.parallel(
-                            &mline[m],
-                            &px,
-                            Label::NONE,
-                            Role::Construction,
-                            N_RITTER_PAR,
-                        );
-                        // P[right of a→b] − P[left of a→b] = t·(a→b).
-                        let sign = if sp.of_half[2 * m] == known {
-                            1.0
-                        } else {
-                            -1.0
-                        };
-                        let p = b
-                            .lay_off(
-                                &px,
-                                &par,
-                                sign * tk / fs,
-                                space_label(unknown),
-                                Role::Construction,
-                                N_RITTER_FORCE,
-                            )
-                            .ok()?;
-                        pt[unknown] = Some(p);
-                        return Some(unknown);
+                    if let Some(sec) = section_through(ctx, cut, (x0, s1), (x3, s2)) {
+                        return Some(sec);
                     }
                 }
             }
+        }
+    }
+    None
+}
+
+/// The section through `cut`, if it separates the truss and gives the member next to the
+/// outside at either end: `(known, unknown)` spaces at the first and at the last member.
+fn section_through(
+    ctx: &PlanContext,
+    cut: [usize; 3],
+    first: (usize, usize),
+    last: (usize, usize),
+) -> Option<Section> {
+    let side = part(ctx.t, &cut)?;
+    for (k, (known, unknown)) in [(0, first), (2, last)] {
+        let (i, j) = match k {
+            0 => (cut[1], cut[2]),
+            _ => (cut[0], cut[1]),
+        };
+        if let Some(force) = section_force(ctx.t, &side, ctx.ext, cut[k], i, j) {
+            return Some(Section {
+                cut,
+                k,
+                known,
+                unknown,
+                i,
+                j,
+                force,
+            });
         }
     }
     None
