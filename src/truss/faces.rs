@@ -55,84 +55,19 @@ pub enum GraphError {
 
 /// Builds the plane graph, O(s log s).
 pub fn plane_graph(t: &Truss) -> Result<PlaneGraph, GraphError> {
-    let k = t.joints.len();
-    let nh = 2 * t.members.len();
-    let mut angle = vec![0.0; nh];
-    let mut around: Vec<Vec<usize>> = vec![Vec::new(); k];
-    for h in 0..nh {
-        let d = t.joints[dest(t, h)].at - t.joints[origin(t, h)].at;
-        angle[h] = d.y.atan2(d.x);
-        around[origin(t, h)].push(h);
-    }
-    for list in &mut around {
-        list.sort_by(|&a, &b| angle[a].total_cmp(&angle[b]).then(a.cmp(&b)));
-    }
-    // Connected?
-    let mut seen = vec![false; k];
-    let mut stack = vec![0];
-    if k > 0 {
-        seen[0] = true;
-    }
-    while let Some(v) = stack.pop() {
-        for &h in &around[v] {
-            let w = dest(t, h);
-            if !seen[w] {
-                seen[w] = true;
-                stack.push(w);
-            }
-        }
-    }
-    if let Some(joint) = seen.iter().position(|s| !s) {
+    let (angle, around) = half_edges(t);
+    if let Some(joint) = unreached(t, &around) {
         return Err(GraphError::Disconnected { joint });
     }
-    let mut pos = vec![0; nh];
-    for list in &around {
-        for (i, &h) in list.iter().enumerate() {
-            pos[h] = i;
-        }
-    }
-    // next(u→v) = the half-edge leaving v clockwise next to v→u.
-    let next: Vec<usize> = (0..nh)
-        .map(|h| {
-            let t_ = h ^ 1;
-            let list = &around[origin(t, t_)];
-            let i = pos[t_];
-            list[(i + list.len() - 1) % list.len()]
-        })
-        .collect();
-    let mut face_of = vec![usize::MAX; nh];
-    let mut faces = Vec::new();
-    for h0 in 0..nh {
-        if face_of[h0] != usize::MAX {
-            continue;
-        }
-        let f = faces.len();
-        let mut cycle = Vec::new();
-        let mut h = h0;
-        while face_of[h] == usize::MAX {
-            face_of[h] = f;
-            cycle.push(h);
-            h = next[h];
-        }
-        faces.push(cycle);
-    }
-    let area = |cycle: &[usize]| -> f64 {
-        cycle
-            .iter()
-            .map(|&h| {
-                let a = t.joints[origin(t, h)].at;
-                let b = t.joints[dest(t, h)].at;
-                a.x * b.y - a.y * b.x
-            })
-            .sum::<f64>()
-            * 0.5
-    };
-    let areas: Vec<f64> = faces.iter().map(|c| area(c)).collect();
+    let next = next_half_edges(t, &around);
+    let (face_of, faces) = trace_faces(&next);
+    let areas: Vec<f64> = faces.iter().map(|c| signed_area(t, c)).collect();
     let outer = (0..faces.len())
         .min_by(|&a, &b| areas[a].total_cmp(&areas[b]).then(a.cmp(&b)))
         .unwrap_or(0);
     // Euler: k − s + f = 2 for a connected plane drawing (a single joint has one face).
-    if !faces.is_empty() && k as i64 - t.members.len() as i64 + faces.len() as i64 != 2 {
+    let k = t.joints.len() as i64;
+    if !faces.is_empty() && k - t.members.len() as i64 + faces.len() as i64 != 2 {
         return Err(GraphError::Crossing);
     }
     // A bounded face traced clockwise means the drawing folds over itself.
@@ -151,6 +86,96 @@ pub fn plane_graph(t: &Truss) -> Result<PlaneGraph, GraphError> {
         faces,
         outer,
     })
+}
+
+/// The direction angle of every half-edge, and the half-edges leaving each joint ordered
+/// counter-clockwise.
+fn half_edges(t: &Truss) -> (Vec<f64>, Vec<Vec<usize>>) {
+    let nh = 2 * t.members.len();
+    let mut angle = vec![0.0; nh];
+    let mut around: Vec<Vec<usize>> = vec![Vec::new(); t.joints.len()];
+    for h in 0..nh {
+        let d = t.joints[dest(t, h)].at - t.joints[origin(t, h)].at;
+        angle[h] = d.y.atan2(d.x);
+        around[origin(t, h)].push(h);
+    }
+    for list in &mut around {
+        list.sort_by(|&a, &b| angle[a].total_cmp(&angle[b]).then(a.cmp(&b)));
+    }
+    (angle, around)
+}
+
+/// A joint the members do not reach from the first one, if there is one.
+fn unreached(t: &Truss, around: &[Vec<usize>]) -> Option<usize> {
+    let k = t.joints.len();
+    let mut seen = vec![false; k];
+    let mut stack = vec![0];
+    if k > 0 {
+        seen[0] = true;
+    }
+    while let Some(v) = stack.pop() {
+        for &h in &around[v] {
+            let w = dest(t, h);
+            if !seen[w] {
+                seen[w] = true;
+                stack.push(w);
+            }
+        }
+    }
+    seen.iter().position(|s| !s)
+}
+
+/// next(u→v) = the half-edge leaving v clockwise next to v→u: walking it traces a face.
+fn next_half_edges(t: &Truss, around: &[Vec<usize>]) -> Vec<usize> {
+    let nh = 2 * t.members.len();
+    let mut pos = vec![0; nh];
+    for list in around {
+        for (i, &h) in list.iter().enumerate() {
+            pos[h] = i;
+        }
+    }
+    (0..nh)
+        .map(|h| {
+            let back = h ^ 1;
+            let list = &around[origin(t, back)];
+            list[(pos[back] + list.len() - 1) % list.len()]
+        })
+        .collect()
+}
+
+/// The faces, each the cycle of half-edges that `next` walks, and the face of every
+/// half-edge.
+fn trace_faces(next: &[usize]) -> (Vec<usize>, Vec<Vec<usize>>) {
+    let mut face_of = vec![usize::MAX; next.len()];
+    let mut faces = Vec::new();
+    for h0 in 0..next.len() {
+        if face_of[h0] != usize::MAX {
+            continue;
+        }
+        let f = faces.len();
+        let mut cycle = Vec::new();
+        let mut h = h0;
+        while face_of[h] == usize::MAX {
+            face_of[h] = f;
+            cycle.push(h);
+            h = next[h];
+        }
+        faces.push(cycle);
+    }
+    (face_of, faces)
+}
+
+/// The signed area of a face (counter-clockwise positive), by the shoelace formula.
+fn signed_area(t: &Truss, cycle: &[usize]) -> f64 {
+    cycle
+        .iter()
+        .map(|&h| {
+            let a = t.joints[origin(t, h)].at;
+            let b = t.joints[dest(t, h)].at;
+            a.x * b.y - a.y * b.x
+        })
+        .sum::<f64>()
+        * 0.5
 }
 
 /// Clockwise angle from `from` to `to` (radians, in [0, 2π)).
