@@ -66,6 +66,11 @@ pub const JOINT_CUT_SIN_EPS: f64 = 1e-9;
 /// polygon's largest extent) is a sliver: it has no centroid to construct and adds nothing.
 pub const REL_AREA_EPS: f64 = 1e-12;
 
+/// Two joints whose motion in a truss's free motion differs by less than this fraction move
+/// alike, and the first is named: the name of the joint that can move must not depend on the
+/// rounding of the singular value decomposition (which is good to about 1e-13 here).
+pub const REL_TIE_EPS_MOTION: f64 = 1e-9;
+
 /// Largest number of equal divisions of a segment, arc or crank circle a scene may ask for.
 /// A drafter divides into 8 to 36 parts; 3,600 is a benchmark size, 100,000 is absurd for a
 /// figure and would write a figure of hundreds of megabytes.

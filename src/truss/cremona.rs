@@ -143,34 +143,9 @@ fn construct(
 ) -> Result<Vec<CaseResult>, ConstructionError> {
     // The rank test goes with the dense solve; the plan alone finds out by stalling.
     if dense {
-        match matrix::analyse(t).determinacy {
-            matrix::Determinacy::Determinate => {}
-            matrix::Determinacy::Mechanism { joint, freedoms } => {
-                return Err(ConstructionError::Mechanism {
-                    joint: t.joints[joint].name.clone(),
-                    freedoms,
-                })
-            }
-            matrix::Determinacy::OverDeterminate { redundant } => {
-                return Err(ConstructionError::OverDeterminate {
-                    redundant,
-                    members: t.members.len(),
-                    needed: 2 * t.joints.len() as i64 - 3,
-                })
-            }
-        }
+        determinate(t)?;
     }
-    // Members that cross leave no plane drawing for Bow's notation: the joint polygons are
-    // drawn one by one instead.
-    let g = match faces::plane_graph(t) {
-        Ok(g) => Some(g),
-        Err(faces::GraphError::Crossing) => None,
-        Err(faces::GraphError::Disconnected { joint }) => {
-            return Err(ConstructionError::Disconnected {
-                joint: t.joints[joint].name.clone(),
-            })
-        }
-    };
+    let g = plane_drawing(t)?;
     let sup = supports(t)?;
     let mut out = Vec::with_capacity(cases.len());
     let sols = if dense {
@@ -179,43 +154,57 @@ fn construct(
         vec![None; cases.len()]
     };
     for (case, sol) in cases.iter().zip(sols) {
-        // A scratch run fixes where the blocks go; the real run draws them there.
-        let mut scratch = b.scratch();
         let mut c = Case {
             t,
             g: g.as_ref(),
             case,
             sol: sol.as_ref(),
             dr,
-            at: Layout {
-                truss: Point::origin(),
-                polygon: Point::origin(),
-                plan: Point::origin(),
-            },
+            at: Layout::ORIGIN,
             sup,
             slack,
         };
-        let dry = construct_case(&mut scratch, &c)?;
-        let gap = 30.0;
-        let [tx0, ty0, tx1, ty1] = dry.boxes[0];
-        let [px0, py0, px1, py1] = dry.boxes[1];
-        let [qx0, qy0, _, qy1] = dry.boxes[2];
-        let truss = Point::new(-tx0, *row_top - ty1);
-        let polygon = Point::new(tx1 - tx0 + gap - px0, *row_top - py1);
-        let plan = Point::new(tx1 - tx0 + gap + (px1 - px0) + gap - qx0, *row_top - qy1);
+        // A scratch run fixes where the blocks go; the real run draws them there.
+        let dry = construct_case(&mut b.scratch(), &c)?;
+        let (at, height) = Layout::row(&dry.boxes, *row_top);
+        c.at = at;
         b.set_context(|| case.name.clone());
-        c.at = Layout {
-            truss,
-            polygon,
-            plan,
-        };
         let r = construct_case(b, &c)?;
         b.clear_context();
-        let height = (ty1 - ty0).max(py1 - py0).max(qy1 - qy0);
-        *row_top -= height + 2.0 * gap;
+        *row_top -= height;
         out.push(r.result);
     }
     Ok(out)
+}
+
+/// The rank test (LH Gl. 2 and more): a mechanism names the joint that can move.
+fn determinate(t: &Truss) -> Result<(), ConstructionError> {
+    match matrix::analyse(t).determinacy {
+        matrix::Determinacy::Determinate => Ok(()),
+        matrix::Determinacy::Mechanism { joint, freedoms } => Err(ConstructionError::Mechanism {
+            joint: t.joints[joint].name.clone(),
+            freedoms,
+        }),
+        matrix::Determinacy::OverDeterminate { redundant } => {
+            Err(ConstructionError::OverDeterminate {
+                redundant,
+                members: t.members.len(),
+                needed: 2 * t.joints.len() as i64 - 3,
+            })
+        }
+    }
+}
+
+/// The truss as a plane drawing for Bow's notation; `None` where members cross (the joint
+/// polygons are drawn one by one instead).
+fn plane_drawing(t: &Truss) -> Result<Option<PlaneGraph>, ConstructionError> {
+    match faces::plane_graph(t) {
+        Ok(g) => Ok(Some(g)),
+        Err(faces::GraphError::Crossing) => Ok(None),
+        Err(faces::GraphError::Disconnected { joint }) => Err(ConstructionError::Disconnected {
+            joint: t.joints[joint].name.clone(),
+        }),
+    }
 }
 
 /// One case as [`construct_case`] draws it: the truss, its plane drawing (if it has one),

@@ -32,3 +32,35 @@ pub(crate) const EMPTY: [f64; 4] = [
     f64::NEG_INFINITY,
     f64::NEG_INFINITY,
 ];
+
+/// Gap between the truss drawing, the reactions' force polygon and the plan, and between
+/// rows (mm).
+const GAP_MM: f64 = 30.0;
+
+impl Layout {
+    /// Every part at the origin: the dry run's layout.
+    pub(super) const ORIGIN: Layout = Layout {
+        truss: Point::new(0.0, 0.0),
+        polygon: Point::new(0.0, 0.0),
+        plan: Point::new(0.0, 0.0),
+    };
+
+    /// The parts of a case side by side in a row whose top is `row_top`, from the dry run's
+    /// boxes (truss drawing, reactions' polygon, plan): the layout, and how far the next row
+    /// starts below.
+    pub(super) fn row(boxes: &[[f64; 4]; 3], row_top: f64) -> (Layout, f64) {
+        let [tx0, ty0, tx1, ty1] = boxes[0];
+        let [px0, py0, px1, py1] = boxes[1];
+        let [qx0, qy0, _, qy1] = boxes[2];
+        let at = Layout {
+            truss: Point::new(-tx0, row_top - ty1),
+            polygon: Point::new(tx1 - tx0 + GAP_MM - px0, row_top - py1),
+            plan: Point::new(
+                tx1 - tx0 + GAP_MM + (px1 - px0) + GAP_MM - qx0,
+                row_top - qy1,
+            ),
+        };
+        let height = (ty1 - ty0).max(py1 - py0).max(qy1 - qy0);
+        (at, height + 2.0 * GAP_MM)
+    }
+}

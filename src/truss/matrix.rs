@@ -17,6 +17,7 @@
 //! O(k³) time and O(k²) memory; [`DENSE_MAX_JOINTS`] bounds where it is made.
 
 use super::{LoadCase, SupportKind, Truss};
+use crate::kernel::tolerance::REL_TIE_EPS_MOTION;
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
@@ -128,30 +129,16 @@ pub fn analyse(t: &Truss) -> Analysis {
     let k = t.joints.len();
     let s = t.members.len();
     let r = t.reaction_unknowns();
-    let count_excess = s as i64 - (2 * k as i64 - 3);
-    let by_count = || {
-        if s + r == 2 * k {
-            Determinacy::Determinate
-        } else if s + r > 2 * k {
-            Determinacy::OverDeterminate {
-                redundant: s + r - 2 * k,
-            }
-        } else {
-            Determinacy::Mechanism {
-                joint: 0,
-                freedoms: 2 * k - s - r,
-            }
-        }
+    let mut out = Analysis {
+        joints: k,
+        members: s,
+        reactions: r,
+        count_excess: s as i64 - (2 * k as i64 - 3),
+        rank: None,
+        determinacy: by_count(k, s, r),
     };
     if k > DENSE_MAX_JOINTS || k == 0 {
-        return Analysis {
-            joints: k,
-            members: s,
-            reactions: r,
-            count_excess,
-            rank: None,
-            determinacy: by_count(),
-        };
+        return out;
     }
     let a = equilibrium_matrix(t);
     // Padded to at least 2k columns so that the SVD's U spans the whole joint space, and the
@@ -163,31 +150,11 @@ pub fn analyse(t: &Truss) -> Analysis {
     let sv = &svd.singular_values;
     let smax = sv.iter().cloned().fold(0.0, f64::max);
     let rank = sv.iter().filter(|&&x| x > RANK_REL * smax).count();
-    let determinacy = if rank < 2 * k {
+    out.rank = Some(rank);
+    out.determinacy = if rank < 2 * k {
         let u = svd.u.as_ref().expect("U was asked for");
-        // The singular vector of the smallest singular value is a free motion of the joints.
-        let (imin, _) =
-            sv.iter().enumerate().fold(
-                (0, f64::INFINITY),
-                |(bi, bv), (i, &v)| {
-                    if v < bv {
-                        (i, v)
-                    } else {
-                        (bi, bv)
-                    }
-                },
-            );
-        let col = u.column(imin);
-        let mut best = (0, -1.0);
-        for j in 0..k {
-            let m = col[2 * j].hypot(col[2 * j + 1]);
-            // Ties go to the first joint, so that the name does not depend on rounding.
-            if m > best.1 * (1.0 + 1e-9) {
-                best = (j, m);
-            }
-        }
         Determinacy::Mechanism {
-            joint: best.0,
+            joint: moving_joint(u, sv, k),
             freedoms: 2 * k - rank,
         }
     } else if s + r > 2 * k {
@@ -197,14 +164,49 @@ pub fn analyse(t: &Truss) -> Analysis {
     } else {
         Determinacy::Determinate
     };
-    Analysis {
-        joints: k,
-        members: s,
-        reactions: r,
-        count_excess,
-        rank: Some(rank),
-        determinacy,
+    out
+}
+
+/// Determinacy by the count alone (LH Gl. 2: s + r against 2k); a mechanism by count names
+/// no joint (the first).
+fn by_count(k: usize, s: usize, r: usize) -> Determinacy {
+    if s + r == 2 * k {
+        Determinacy::Determinate
+    } else if s + r > 2 * k {
+        Determinacy::OverDeterminate {
+            redundant: s + r - 2 * k,
+        }
+    } else {
+        Determinacy::Mechanism {
+            joint: 0,
+            freedoms: 2 * k - s - r,
+        }
     }
+}
+
+/// The joint that moves most in the free motion of the smallest singular value (ties go to
+/// the first joint, so that the name does not depend on rounding).
+fn moving_joint(u: &DMatrix<f64>, sv: &nalgebra::DVector<f64>, k: usize) -> usize {
+    let (imin, _) =
+        sv.iter().enumerate().fold(
+            (0, f64::INFINITY),
+            |(bi, bv), (i, &v)| {
+                if v < bv {
+                    (i, v)
+                } else {
+                    (bi, bv)
+                }
+            },
+        );
+    let col = u.column(imin);
+    let mut best = (0, -1.0);
+    for j in 0..k {
+        let m = col[2 * j].hypot(col[2 * j + 1]);
+        if m > best.1 * (1.0 + REL_TIE_EPS_MOTION) {
+            best = (j, m);
+        }
+    }
+    best.0
 }
 
 /// Member forces and reaction components of a determinate truss under one load case.
