@@ -12,6 +12,32 @@ use super::Truss;
 use crate::kernel::Point;
 use crate::protocol::{Board, ConstructionError, Cut, Label, Role, Scale, H};
 
+/// The forces at a joint (not placed yet) whose line of action leaves into the sector of
+/// angular width `span` clockwise from `back`, in clockwise order. The line of action is
+/// drawn on the outside: the arrow coming in towards the joint (−f) if that side is outside,
+/// else going out (+f).
+fn in_sector(ext: &External, at_v: &[usize], placed: &[bool], back: f64, span: f64) -> Vec<usize> {
+    let inside = |a: f64| {
+        let c = faces::cw(back, a);
+        c > 0.0 && c < span
+    };
+    let mut here: Vec<(f64, usize)> = Vec::new();
+    for &fi in at_v.iter().filter(|&&fi| !placed[fi]) {
+        let f = ext.forces[fi].1;
+        let (a_in, a_out) = ((-f.y).atan2(-f.x), f.y.atan2(f.x));
+        let a = if inside(a_in) {
+            a_in
+        } else if inside(a_out) {
+            a_out
+        } else {
+            continue;
+        };
+        here.push((faces::cw(back, a), fi));
+    }
+    here.sort_by(|a, c| a.0.total_cmp(&c.0).then(a.1.cmp(&c.1)));
+    here.into_iter().map(|(_, fi)| fi).collect()
+}
+
 /// Assigns every external force to its place on the outline, clockwise, and every outer
 /// half-edge to the space on its left.
 pub(super) fn outline(
@@ -46,32 +72,8 @@ pub(super) fn outline(
         } else {
             faces::cw(back, g.angle[h_out])
         };
-        // Forces at v whose line of action leaves into this sector, clockwise.
-        let mut here: Vec<(f64, usize)> = Vec::new();
-        for &fi in at_joint.get(&v).map_or(&[][..], |v| v.as_slice()) {
-            let f = ext.forces[fi].1;
-            if placed[fi] {
-                continue;
-            }
-            // The line of action drawn on the outside: the arrow coming in towards the joint
-            // (−f) if that side is outside, else going out (+f).
-            let a_in = (-f.y).atan2(-f.x);
-            let a_out = f.y.atan2(f.x);
-            let inside = |a: f64| {
-                let c = faces::cw(back, a);
-                c > 0.0 && c < span
-            };
-            let a = if inside(a_in) {
-                a_in
-            } else if inside(a_out) {
-                a_out
-            } else {
-                continue;
-            };
-            here.push((faces::cw(back, a), fi));
-        }
-        here.sort_by(|a, c| a.0.total_cmp(&c.0).then(a.1.cmp(&c.1)));
-        for (_, fi) in here {
+        let at_v = at_joint.get(&v).map_or(&[][..], |v| v.as_slice());
+        for fi in in_sector(ext, at_v, &placed, back, span) {
             placed[fi] = true;
             order.push(fi);
             space += 1;

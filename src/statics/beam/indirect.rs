@@ -3,6 +3,7 @@
 use super::construct_beam_at;
 use super::notes::*;
 use super::types::{BeamDrawing, BeamRequest, BeamResults, ARROW_MM};
+use crate::kernel::tolerance::REL_POSITION_EPS;
 use crate::kernel::Point;
 use crate::protocol::{Board, ConstructionError, Label, Role, H};
 use crate::statics::closed_form as cf;
@@ -91,6 +92,20 @@ pub fn construct_beam_indirect(
     req: &BeamRequest,
 ) -> Result<BeamResults, ConstructionError> {
     let loads = panel_loads(beam, panel_points)?;
+    draw_stringers(b, beam, panel_points, dr);
+    let on_beam = Beam {
+        supports: beam.supports,
+        ends: beam.ends,
+        point_loads: loads,
+        uniform_loads: vec![],
+    };
+    let r = construct_beam_at(b, &on_beam, dr, req, panel_points)?;
+    check_cross_beams(b, beam, panel_points, &r);
+    Ok(r)
+}
+
+/// Stringers and cross beams above the beam, the given loads on the stringers.
+fn draw_stringers(b: &mut Board, beam: &Beam, panel_points: &[f64], dr: &BeamDrawing) {
     let k = 1000.0 / dr.length_scale;
     let [ox, oy] = dr.origin;
     let sx = |x: f64| x * k + ox;
@@ -147,14 +162,11 @@ pub fn construct_beam_indirect(
             N_PANEL_LOAD,
         );
     }
-    let on_beam = Beam {
-        supports: beam.supports,
-        ends: beam.ends,
-        point_loads: loads,
-        uniform_loads: vec![],
-    };
-    let r = construct_beam_at(b, &on_beam, dr, req, panel_points)?;
-    // The indirect moment area touches the direct one at the cross beams.
+}
+
+/// The indirect moment area touches the direct one at the cross beams: the moment at every
+/// panel point checked against the direct loading.
+fn check_cross_beams(b: &mut Board, beam: &Beam, panel_points: &[f64], r: &BeamResults) {
     let direct = cf::Sections::new(beam);
     let pref = r
         .sections
@@ -165,7 +177,7 @@ pub fn construct_beam_indirect(
     for (s, h) in r.sections.iter().zip(&r.moment_handles) {
         if panel_points
             .iter()
-            .any(|&p| (p - s.x).abs() <= 1e-12 * (beam.ends[1] - beam.ends[0]).max(1.0))
+            .any(|&p| (p - s.x).abs() <= REL_POSITION_EPS * (beam.ends[1] - beam.ends[0]).max(1.0))
         {
             b.check(
                 h,
@@ -177,5 +189,4 @@ pub fn construct_beam_indirect(
             );
         }
     }
-    Ok(r)
 }
