@@ -1,6 +1,5 @@
 //! The truss scene: joints, members, supports and load cases (LH I B, Aufgaben 3-5).
 
-use super::defaults::nice_at_least;
 use super::error::SceneError;
 use super::fields::optional_positive;
 use crate::kernel::{Point, Vector};
@@ -806,6 +805,25 @@ impl TrussScene {
     /// The problem the scene describes.
     pub fn problem(&self) -> TrussProblem {
         let truss = self.truss();
+        let cases = self.all_cases(&truss);
+        let drawing = self.drawing_for(&truss, &cases);
+        let combinations = self.combinations_of(&cases);
+        let envelope = self.envelope_of(&cases);
+        TrussProblem {
+            envelope,
+            title: self.title.clone(),
+            source: self.source.clone().unwrap_or_default(),
+            truss,
+            cases,
+            combinations,
+            pairs: self.pair_indices(),
+            pair_mode: self.diagonal_mode,
+            drawing,
+        }
+    }
+
+    /// Every load case: the roof's, the scene's, and each position of each moving load.
+    fn all_cases(&self, truss: &Truss) -> Vec<LoadCase> {
         let index: HashMap<&str, usize> = self
             .joints
             .iter()
@@ -813,7 +831,7 @@ impl TrussScene {
             .map(|(i, j)| (j.name.as_str(), i))
             .collect();
         let at = self.joint_positions();
-        let mut cases: Vec<LoadCase> = self.roof_cases(&truss);
+        let mut cases: Vec<LoadCase> = self.roof_cases(truss);
         cases.extend(self.load_cases.iter().map(|c| {
             LoadCase {
                 name: c.name.clone(),
@@ -843,24 +861,26 @@ impl TrussScene {
                 });
             }
         }
-        let maxload = cases
-            .iter()
-            .map(|c| c.loads.iter().map(|l| l.force.norm()).sum::<f64>())
-            .fold(0.0, f64::max);
+        cases
+    }
+
+    /// The scene's scales, or chosen: the truss about 150 mm across, the largest case about
+    /// 80 mm long in the force plan.
+    fn drawing_for(&self, truss: &Truss, cases: &[LoadCase]) -> TrussDrawing {
+        let chosen = truss.drawing_for(cases);
         let d = self.drawing.unwrap_or(TrussDrawingSpec {
             length_scale: None,
             force_scale_kg_per_mm: None,
         });
-        let drawing = TrussDrawing {
-            length_scale: d
-                .length_scale
-                .unwrap_or_else(|| nice_at_least(truss.size() * 1000.0 / 150.0)),
-            force_scale: d
-                .force_scale_kg_per_mm
-                .unwrap_or_else(|| nice_at_least(maxload / 80.0)),
-        };
-        let combinations = self
-            .combinations
+        TrussDrawing {
+            length_scale: d.length_scale.unwrap_or(chosen.length_scale),
+            force_scale: d.force_scale_kg_per_mm.unwrap_or(chosen.force_scale),
+        }
+    }
+
+    /// The combinations by case index.
+    fn combinations_of(&self, cases: &[LoadCase]) -> Vec<Combination> {
+        self.combinations
             .iter()
             .map(|c| Combination {
                 name: c.name.clone(),
@@ -870,8 +890,12 @@ impl TrussScene {
                     .filter_map(|n| cases.iter().position(|l| &l.name == n))
                     .collect(),
             })
-            .collect();
-        let envelope = self.envelope.as_ref().map(|e| {
+            .collect()
+    }
+
+    /// The envelope rule by case index; each moving load's positions exclude each other.
+    fn envelope_of(&self, cases: &[LoadCase]) -> Option<EnvelopeRule> {
+        self.envelope.as_ref().map(|e| {
             let idx = |n: &String| cases.iter().position(|c| &c.name == n);
             let mut exclusive: Vec<Vec<usize>> = e
                 .exclusive
@@ -891,18 +915,7 @@ impl TrussScene {
                 permanent: e.permanent.iter().filter_map(idx).collect(),
                 exclusive,
             }
-        });
-        TrussProblem {
-            envelope,
-            title: self.title.clone(),
-            source: self.source.clone().unwrap_or_default(),
-            truss,
-            cases,
-            combinations,
-            pairs: self.pair_indices(),
-            pair_mode: self.diagonal_mode,
-            drawing,
-        }
+        })
     }
 }
 
