@@ -246,3 +246,24 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn directions_a_hair_from_antiparallel_are_refused_as_parallel() {
+    // 0° and 180° − 1e-12°: parallel lines, whichever side of 180° the difference falls.
+    for along in [
+        "[0, 179.999999999999]",
+        "[0, -179.999999999999]",
+        "[30, 210]",
+        "[10, 10]",
+    ] {
+        let text = format!(
+            r#"{{ "procedure": "force_system", "title": "t",
+                 "forces": [ {{ "at_m": [0, 0], "kg_xy": [0, -100] }} ],
+                 "resolve": [ {{ "force": 1, "along_deg": {along} }} ] }}"#
+        );
+        let e = graphostatik::scene::AnyScene::from_json(&text, "r.json")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("resolve[0].along_deg"), "{along}: {e}");
+    }
+}

@@ -71,6 +71,11 @@ pub const REL_AREA_EPS: f64 = 1e-12;
 /// rounding of the singular value decomposition (which is good to about 1e-13 here).
 pub const REL_TIE_EPS_MOTION: f64 = 1e-9;
 
+/// Two directions given in degrees that differ by less than this from 0° or 180° are
+/// parallel (a resolution along them has no solution). 1e-9° is a sine of 1.7e-11, a few
+/// digits above where the 2×2 solve loses its last digit.
+pub const PARALLEL_DEG_EPS: f64 = 1e-9;
+
 /// Largest number of equal divisions of a segment, arc or crank circle a scene may ask for.
 /// A drafter divides into 8 to 36 parts; 3,600 is a benchmark size, 100,000 is absurd for a
 /// figure and would write a figure of hundreds of megabytes.

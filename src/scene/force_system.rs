@@ -3,7 +3,8 @@
 
 use super::defaults::nice_at_least;
 use super::error::SceneError;
-use super::fields::optional_positive;
+use super::fields::{optional_positive, Fields};
+use crate::kernel::tolerance::PARALLEL_DEG_EPS;
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::funicular::{self, Force, Resolution, SystemDrawing, SystemResults};
 use serde::{Deserialize, Serialize};
@@ -108,47 +109,59 @@ pub struct ForceSystemProblem {
 
 impl ForceSystemScene {
     fn check_values(&self, origin: &str) -> Result<(), SceneError> {
-        let bad = |field: &str, message: String| SceneError::Invalid {
-            origin: origin.to_string(),
-            field: field.to_string(),
-            message,
-        };
+        let f = Fields { origin };
+        self.check_forces(f)?;
+        self.check_resolutions(f)?;
+        self.check_auxiliary(f)?;
+        if let Some(d) = &self.drawing {
+            optional_positive(
+                origin,
+                &[
+                    ("drawing.length_scale", d.length_scale),
+                    ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
+                ],
+            )?;
+        }
+        Ok(())
+    }
+
+    /// One to MAX_LOADS forces, each at a finite point with finite, non-zero components.
+    fn check_forces(&self, fields: Fields) -> Result<(), SceneError> {
         if self.forces.is_empty() {
-            return Err(bad("forces", "give at least one force".into()));
+            return Err(fields.bad("forces", "give at least one force".into()));
         }
         if self.forces.len() > super::MAX_LOADS {
-            return Err(bad(
-                "forces",
-                format!("more than {} forces", super::MAX_LOADS),
-            ));
+            return Err(fields.bad("forces", format!("more than {} forces", super::MAX_LOADS)));
         }
-        for (i, f) in self.forces.iter().enumerate() {
-            let field = |n: &str| format!("forces[{i}].{n}");
-            if !f.at_m.iter().all(|v| v.is_finite()) {
-                return Err(bad(&field("at_m"), "must be finite numbers".into()));
+        for (i, force) in self.forces.iter().enumerate() {
+            let at = |n: &str| format!("forces[{i}].{n}");
+            if !force.at_m.iter().all(|v| v.is_finite()) {
+                return Err(fields.bad(&at("at_m"), "must be finite numbers".into()));
             }
-            let Some(v) = f.vector() else {
-                return Err(bad(
+            let Some(v) = force.vector() else {
+                return Err(fields.bad(
                     &format!("forces[{i}]"),
                     "give either kg_xy, or kg with angle_deg".into(),
                 ));
             };
             if !v.iter().all(|x| x.is_finite()) {
-                return Err(bad(
-                    &format!("forces[{i}]"),
-                    "must be finite numbers".into(),
-                ));
+                return Err(fields.bad(&format!("forces[{i}]"), "must be finite numbers".into()));
             }
             if v[0] == 0.0 && v[1] == 0.0 {
-                return Err(bad(
+                return Err(fields.bad(
                     &format!("forces[{i}]"),
                     "a zero force has no line of action: leave it out".into(),
                 ));
             }
         }
+        Ok(())
+    }
+
+    /// Each resolution names a force and two directions that are not parallel.
+    fn check_resolutions(&self, f: Fields) -> Result<(), SceneError> {
         for (j, r) in self.resolve.iter().enumerate() {
             if r.force == 0 || r.force > self.forces.len() {
-                return Err(bad(
+                return Err(f.bad(
                     &format!("resolve[{j}].force"),
                     format!(
                         "names force {}, but there are {}",
@@ -158,32 +171,27 @@ impl ForceSystemScene {
                 ));
             }
             let [a, b] = r.along_deg;
-            if !(a.is_finite() && b.is_finite()) || ((a - b).rem_euclid(180.0)).abs() < 1e-9 {
-                return Err(bad(
+            // Parallel when the difference is within the tolerance of 0° or of 180° (either side).
+            let d = (a - b).rem_euclid(180.0);
+            if !(a.is_finite() && b.is_finite()) || d.min(180.0 - d) < PARALLEL_DEG_EPS {
+                return Err(f.bad(
                     &format!("resolve[{j}].along_deg"),
                     "two different, non-parallel directions are needed".into(),
                 ));
             }
         }
+        Ok(())
+    }
+
+    /// The auxiliary forces of Abb. 21: positive, with exactly two forces and no resolutions.
+    fn check_auxiliary(&self, f: Fields) -> Result<(), SceneError> {
         if let Some(aux) = self.auxiliary_force_kg {
             if !(aux.is_finite() && aux > 0.0) {
-                return Err(bad(
-                    "auxiliary_force_kg",
-                    format!("must be positive, got {aux}"),
-                ));
+                return Err(f.bad("auxiliary_force_kg", format!("must be positive, got {aux}")));
             }
             if self.forces.len() != 2 || !self.resolve.is_empty() {
-                return Err(bad("auxiliary_force_kg", "the auxiliary-force construction takes exactly two parallel forces and no resolutions".into()));
+                return Err(f.bad("auxiliary_force_kg", "the auxiliary-force construction takes exactly two parallel forces and no resolutions".into()));
             }
-        }
-        if let Some(d) = &self.drawing {
-            optional_positive(
-                origin,
-                &[
-                    ("drawing.length_scale", d.length_scale),
-                    ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
-                ],
-            )?;
         }
         Ok(())
     }

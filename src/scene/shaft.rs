@@ -3,7 +3,7 @@
 use super::beam::BeamDrawingSpec;
 use super::defaults::nice_at_least;
 use super::error::SceneError;
-use super::fields::optional_positive;
+use super::fields::{optional_positive, Fields};
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::shaft::{self, Shaft, ShaftRow, Torque};
 use crate::statics::{BeamDrawing, PointLoad};
@@ -70,80 +70,11 @@ pub struct ShaftProblem {
 
 impl ShaftScene {
     fn check_values(&self, origin: &str) -> Result<(), SceneError> {
-        let bad = |field: &str, message: String| SceneError::Invalid {
-            origin: origin.to_string(),
-            field: field.to_string(),
-            message,
-        };
-        let [a, b] = self.shaft.supports_m;
-        if !(a.is_finite() && b.is_finite()) || a >= b {
-            return Err(bad(
-                "shaft.supports_m",
-                format!("support A ({a} m) must lie left of support B ({b} m)"),
-            ));
-        }
-        let [e0, e1] = self.shaft.ends_m.unwrap_or([a, b]);
-        if !(e0 <= a && e1 >= b) {
-            return Err(bad(
-                "shaft.ends_m",
-                "the shaft must reach over both supports".into(),
-            ));
-        }
-        for (plane, loads) in [
-            ("plane_1_loads", &self.plane_1_loads),
-            ("plane_2_loads", &self.plane_2_loads),
-        ] {
-            if loads.len() > super::MAX_LOADS {
-                return Err(bad(plane, format!("more than {} loads", super::MAX_LOADS)));
-            }
-            for (i, l) in loads.iter().enumerate() {
-                if !(l.x_m.is_finite() && l.kg.is_finite()) {
-                    return Err(bad(
-                        &format!("{plane}[{i}]"),
-                        "must be finite numbers".into(),
-                    ));
-                }
-                if l.x_m < e0 || l.x_m > e1 {
-                    return Err(bad(&format!("{plane}[{i}].x_m"), format!("x = {} m lies off the shaft [{e0}, {e1}] m: declare the overhang with shaft.ends_m", l.x_m)));
-                }
-            }
-        }
-        if let Some(al) = self.angle_between_planes_deg {
-            if !(al.is_finite() && al > 0.0 && al <= 180.0) {
-                return Err(bad(
-                    "angle_between_planes_deg",
-                    format!("{al}: give 0 < α ≤ 180"),
-                ));
-            }
-        }
-        if let Some(a0) = self.alpha0 {
-            if !(a0.is_finite() && a0 > 0.0) {
-                return Err(bad("alpha0", format!("must be positive, got {a0}")));
-            }
-        }
-        if let Some(kb) = self.kb_kg_per_cm2 {
-            if !(kb.is_finite() && kb > 0.0) {
-                return Err(bad("kb_kg_per_cm2", format!("must be positive, got {kb}")));
-            }
-        }
-        if let Some(t) = &self.torque {
-            if !(t.from_m.is_finite() && t.to_m.is_finite() && t.kg_m.is_finite())
-                || t.from_m >= t.to_m
-            {
-                return Err(bad("torque", "give finite from_m < to_m and kg_m".into()));
-            }
-            if let Some(r) = t.radius_m {
-                if !(r.is_finite() && r > 0.0) {
-                    return Err(bad("torque.radius_m", format!("must be positive, got {r}")));
-                }
-            }
-            if t.from_m < e0 || t.to_m > e1 {
-                return Err(bad(
-                    "torque",
-                    "the twisted stretch must lie on the shaft".into(),
-                ));
-            }
-        }
+        let f = Fields { origin };
+        let ends = self.check_ends(f)?;
+        self.check_loads(f, ends)?;
+        self.check_numbers(f)?;
+        self.check_torque(f, ends)?;
         if let Some(d) = &self.drawing {
             optional_positive(
                 origin,
@@ -153,6 +84,89 @@ impl ShaftScene {
                     ("drawing.pole_distance_kg", d.pole_distance_kg),
                 ],
             )?;
+        }
+        Ok(())
+    }
+
+    /// A left of B, the shaft over both: its ends (m).
+    fn check_ends(&self, f: Fields) -> Result<[f64; 2], SceneError> {
+        let [a, b] = self.shaft.supports_m;
+        if !(a.is_finite() && b.is_finite()) || a >= b {
+            return Err(f.bad(
+                "shaft.supports_m",
+                format!("support A ({a} m) must lie left of support B ({b} m)"),
+            ));
+        }
+        let [e0, e1] = self.shaft.ends_m.unwrap_or([a, b]);
+        if !(e0 <= a && e1 >= b) {
+            return Err(f.bad(
+                "shaft.ends_m",
+                "the shaft must reach over both supports".into(),
+            ));
+        }
+        Ok([e0, e1])
+    }
+
+    /// The loads of both planes: finite, on the shaft, at most MAX_LOADS each.
+    fn check_loads(&self, f: Fields, [e0, e1]: [f64; 2]) -> Result<(), SceneError> {
+        for (plane, loads) in [
+            ("plane_1_loads", &self.plane_1_loads),
+            ("plane_2_loads", &self.plane_2_loads),
+        ] {
+            if loads.len() > super::MAX_LOADS {
+                return Err(f.bad(plane, format!("more than {} loads", super::MAX_LOADS)));
+            }
+            for (i, l) in loads.iter().enumerate() {
+                if !(l.x_m.is_finite() && l.kg.is_finite()) {
+                    return Err(f.bad(&format!("{plane}[{i}]"), "must be finite numbers".into()));
+                }
+                if l.x_m < e0 || l.x_m > e1 {
+                    return Err(f.bad(&format!("{plane}[{i}].x_m"), format!("x = {} m lies off the shaft [{e0}, {e1}] m: declare the overhang with shaft.ends_m", l.x_m)));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The angle between the planes, α₀ and the allowed stress: positive where given.
+    fn check_numbers(&self, f: Fields) -> Result<(), SceneError> {
+        if let Some(al) = self.angle_between_planes_deg {
+            if !(al.is_finite() && al > 0.0 && al <= 180.0) {
+                return Err(f.bad(
+                    "angle_between_planes_deg",
+                    format!("{al}: give 0 < α ≤ 180"),
+                ));
+            }
+        }
+        if let Some(a0) = self.alpha0 {
+            if !(a0.is_finite() && a0 > 0.0) {
+                return Err(f.bad("alpha0", format!("must be positive, got {a0}")));
+            }
+        }
+        if let Some(kb) = self.kb_kg_per_cm2 {
+            if !(kb.is_finite() && kb > 0.0) {
+                return Err(f.bad("kb_kg_per_cm2", format!("must be positive, got {kb}")));
+            }
+        }
+        Ok(())
+    }
+
+    /// The torque: a finite stretch on the shaft, a positive radius where given.
+    fn check_torque(&self, f: Fields, [e0, e1]: [f64; 2]) -> Result<(), SceneError> {
+        if let Some(t) = &self.torque {
+            if !(t.from_m.is_finite() && t.to_m.is_finite() && t.kg_m.is_finite())
+                || t.from_m >= t.to_m
+            {
+                return Err(f.bad("torque", "give finite from_m < to_m and kg_m".into()));
+            }
+            if let Some(r) = t.radius_m {
+                if !(r.is_finite() && r > 0.0) {
+                    return Err(f.bad("torque.radius_m", format!("must be positive, got {r}")));
+                }
+            }
+            if t.from_m < e0 || t.to_m > e1 {
+                return Err(f.bad("torque", "the twisted stretch must lie on the shaft".into()));
+            }
         }
         Ok(())
     }
