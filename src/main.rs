@@ -134,104 +134,117 @@ fn write(path: &Path, contents: &str) -> Result<(), Fail> {
 
 fn run(cli: Cli) -> Result<ExitCode, Fail> {
     match cli.command {
-        Command::Render { scenes, out } => {
-            // Everything is loaded and constructed before the first file is written.
-            let files = scene_files(&scenes)?;
-            let mut outputs = Vec::new();
-            for f in &files {
-                let p = load(f)?;
-                let board = construct(f, &p)?;
-                let stem = f
-                    .file_stem()
-                    .map(|s| s.to_string_lossy().into_owned())
-                    .unwrap_or_default();
-                outputs.push((
-                    out.join(format!("{stem}.svg")),
-                    render::figure(&p.figure_meta(), &board, None),
-                ));
-            }
-            ensure_dir(&out)?;
-            for (path, svg) in outputs {
-                write(&path, &svg)?;
-                say(&format!("{}\n", path.display()))?;
-            }
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Check { scene, json } => {
-            let p = load(&scene)?;
-            let board = construct(&scene, &p)?;
-            if json {
-                say(&(render::check_table_json(&board) + "\n"))?;
-            } else {
-                say(&render::check_table_text(&board))?;
-            }
-            let failed = render::check_rows(&board).iter().any(|r| !r.passed);
-            Ok(if failed {
-                ExitCode::from(1)
-            } else {
-                ExitCode::SUCCESS
-            })
-        }
-        Command::Steps { scene, out } => {
-            let p = load(&scene)?;
-            let board = construct(&scene, &p)?;
-            let pages = render::walkthrough(&p.figure_meta(), &board);
-            ensure_dir(&out)?;
-            for page in &pages {
-                write(&out.join(&page.name), &page.contents)?;
-            }
-            say(&format!("{} pages in {}\n", pages.len(), out.display()))?;
-            Ok(ExitCode::SUCCESS)
-        }
+        Command::Render { scenes, out } => render_cmd(&scenes, &out),
+        Command::Check { scene, json } => check_cmd(&scene, json),
+        Command::Steps { scene, out } => steps_cmd(&scene, &out),
         Command::Protocol { scene } => {
             let p = load(&scene)?;
             let board = construct(&scene, &p)?;
             say(&(board.to_json() + "\n"))?;
             Ok(ExitCode::SUCCESS)
         }
-        Command::Forces { scene, format } => {
-            let p = load(&scene)?;
-            let Some(t) = p.get::<TrussScene>() else {
-                return Err(Fail(format!(
-                    "{}: `forces` needs a truss scene (\"procedure\": \"truss\")",
-                    scene.display()
-                )));
-            };
-            let (_, results) = t
-                .construct(true)
-                .map_err(|e| Fail(format!("{}: {e}", scene.display())))?;
-            use graphostatik::render::forces;
-            let text = match format {
-                TableFormat::Markdown if results.len() > 1 => format!(
-                    "{}\n{}",
-                    forces::markdown(&results, &t.combinations),
-                    forces::envelope_markdown(&results, t.envelope.as_ref())
-                ),
-                TableFormat::Markdown => forces::markdown(&results, &t.combinations),
-                TableFormat::Csv => forces::csv(&results, &t.combinations),
-                TableFormat::Json => {
-                    forces::json(&results, &t.combinations, t.envelope.as_ref()) + "\n"
-                }
-            };
-            say(&text)?;
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Procedures => {
-            let mut text = String::new();
-            for e in REGISTRY {
-                text += &format!("{:<14} {}\n", e.name, e.about);
-                if !e.outputs.is_empty() {
-                    text += &format!("{:<14} outputs: {}\n", "", e.outputs.join(", "));
-                }
-            }
-            say(&text)?;
-            Ok(ExitCode::SUCCESS)
-        }
+        Command::Forces { scene, format } => forces_cmd(&scene, format),
+        Command::Procedures => procedures_cmd(),
         Command::Schema => {
             say(&(graphostatik::scene::schema_json() + "\n"))?;
             Ok(ExitCode::SUCCESS)
         }
     }
+}
+
+/// `render`: every scene loaded and constructed before the first file is written.
+fn render_cmd(scenes: &[PathBuf], out: &Path) -> Result<ExitCode, Fail> {
+    // Everything is loaded and constructed before the first file is written.
+    let files = scene_files(scenes)?;
+    let mut outputs = Vec::new();
+    for f in &files {
+        let p = load(f)?;
+        let board = construct(f, &p)?;
+        let stem = f
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        outputs.push((
+            out.join(format!("{stem}.svg")),
+            render::figure(&p.figure_meta(), &board, None),
+        ));
+    }
+    ensure_dir(out)?;
+    for (path, svg) in outputs {
+        write(&path, &svg)?;
+        say(&format!("{}\n", path.display()))?;
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `check`: the table of every check; exit status 1 if any fails.
+fn check_cmd(scene: &Path, json: bool) -> Result<ExitCode, Fail> {
+    let p = load(scene)?;
+    let board = construct(scene, &p)?;
+    if json {
+        say(&(render::check_table_json(&board) + "\n"))?;
+    } else {
+        say(&render::check_table_text(&board))?;
+    }
+    let failed = render::check_rows(&board).iter().any(|r| !r.passed);
+    Ok(if failed {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+/// `steps`: one cumulative SVG per step and the page that walks through them.
+fn steps_cmd(scene: &Path, out: &Path) -> Result<ExitCode, Fail> {
+    let p = load(scene)?;
+    let board = construct(scene, &p)?;
+    let pages = render::walkthrough(&p.figure_meta(), &board);
+    ensure_dir(out)?;
+    for page in &pages {
+        write(&out.join(&page.name), &page.contents)?;
+    }
+    say(&format!("{} pages in {}\n", pages.len(), out.display()))?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `forces`: the member forces of a truss scene, per case, combination and envelope.
+fn forces_cmd(scene: &Path, format: TableFormat) -> Result<ExitCode, Fail> {
+    let p = load(scene)?;
+    let Some(t) = p.get::<TrussScene>() else {
+        return Err(Fail(format!(
+            "{}: `forces` needs a truss scene (\"procedure\": \"truss\")",
+            scene.display()
+        )));
+    };
+    let (_, results) = t
+        .construct(true)
+        .map_err(|e| Fail(format!("{}: {e}", scene.display())))?;
+    use graphostatik::render::forces;
+    let text = match format {
+        TableFormat::Markdown if results.len() > 1 => format!(
+            "{}\n{}",
+            forces::markdown(&results, &t.combinations),
+            forces::envelope_markdown(&results, t.envelope.as_ref())
+        ),
+        TableFormat::Markdown => forces::markdown(&results, &t.combinations),
+        TableFormat::Csv => forces::csv(&results, &t.combinations),
+        TableFormat::Json => forces::json(&results, &t.combinations, t.envelope.as_ref()) + "\n",
+    };
+    say(&text)?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `procedures`: every procedure a scene can name, with what it constructs and its outputs.
+fn procedures_cmd() -> Result<ExitCode, Fail> {
+    let mut text = String::new();
+    for e in REGISTRY {
+        text += &format!("{:<14} {}\n", e.name, e.about);
+        if !e.outputs.is_empty() {
+            text += &format!("{:<14} outputs: {}\n", "", e.outputs.join(", "));
+        }
+    }
+    say(&text)?;
+    Ok(ExitCode::SUCCESS)
 }
 
 fn main() -> ExitCode {
