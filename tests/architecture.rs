@@ -252,3 +252,113 @@ fn the_checker_finds_a_loop_and_a_layer_breach() {
     assert_eq!(resolve(&mods, &a, &p[p.len() - 1]), Some(a.clone()));
     assert!(layer(&vec!["render".to_string()]) > layer(&vec!["scene".to_string()]));
 }
+
+/// The length of every function in the file (first line of `fn` to its closing brace), by
+/// brace matching outside strings and comments.
+fn function_lengths(text: &str) -> Vec<(String, usize, usize)> {
+    let lines: Vec<&str> = text.lines().collect();
+    let mut out = Vec::new();
+    for (i, line) in lines.iter().enumerate() {
+        let t = line.trim_start();
+        let t = t
+            .strip_prefix("pub(crate) ")
+            .or_else(|| t.strip_prefix("pub(super) "))
+            .or_else(|| t.strip_prefix("pub "))
+            .unwrap_or(t);
+        let t = t.strip_prefix("const ").unwrap_or(t);
+        let Some(rest) = t.strip_prefix("fn ") else {
+            continue;
+        };
+        let name: String = rest
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        let (mut depth, mut started) = (0i32, false);
+        for (j, l) in lines.iter().enumerate().skip(i) {
+            let code = strip_strings(l);
+            for c in code.chars() {
+                match c {
+                    '{' => {
+                        depth += 1;
+                        started = true;
+                    }
+                    '}' => depth -= 1,
+                    _ => {}
+                }
+            }
+            if !started && code.trim_end().ends_with(';') {
+                break; // a declaration without a body
+            }
+            if started && depth <= 0 {
+                out.push((name.clone(), i + 1, j - i + 1));
+                break;
+            }
+        }
+    }
+    out
+}
+
+/// A line with its string and char literals emptied and its comment cut.
+fn strip_strings(line: &str) -> String {
+    let mut out = String::new();
+    let mut chars = line.chars().peekable();
+    let mut in_str = false;
+    while let Some(c) = chars.next() {
+        if in_str {
+            match c {
+                '\\' => {
+                    chars.next();
+                }
+                '"' => in_str = false,
+                _ => {}
+            }
+        } else if c == '"' {
+            in_str = true;
+        } else if c == '/' && chars.peek() == Some(&'/') {
+            break;
+        } else if c == '\'' {
+            // A char literal ('{', '\n') or a lifetime ('a): skip a literal's body.
+            let ahead: String = chars.clone().take(3).collect();
+            if ahead.starts_with('\\') || ahead.chars().nth(1) == Some('\'') {
+                while let Some(d) = chars.next() {
+                    if d == '\\' {
+                        chars.next();
+                    } else if d == '\'' {
+                        break;
+                    }
+                }
+            }
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// Longest a function may run before it should be split (the guide's "~80 lines").
+const MAX_FUNCTION_LINES: usize = 80;
+
+#[test]
+fn no_function_runs_over_eighty_lines() {
+    let mut long = Vec::new();
+    for (m, p) in modules() {
+        let text = std::fs::read_to_string(&p).unwrap();
+        let text = text.split("#[cfg(test)]").next().unwrap_or("");
+        for (name, line, len) in function_lengths(text) {
+            if len > MAX_FUNCTION_LINES {
+                long.push(format!(
+                    "{}::{name} (line {line}): {len} lines",
+                    m.join("::")
+                ));
+            }
+        }
+    }
+    assert!(long.is_empty(), "split these: {long:#?}");
+}
+
+#[test]
+fn function_lengths_are_measured_through_strings_and_braces() {
+    let text = "fn a() {\n    let s = \"{\";\n    let c = '}';\n}\nfn b();\npub fn c() { }\n";
+    let got = function_lengths(text);
+    assert_eq!(got, vec![("a".into(), 1, 4), ("c".into(), 6, 1)]);
+}

@@ -76,6 +76,10 @@ pub const REL_TIE_EPS_MOTION: f64 = 1e-9;
 /// digits above where the 2×2 solve loses its last digit.
 pub const PARALLEL_DEG_EPS: f64 = 1e-9;
 
+/// A segment or force shorter than this on the sheet (mm) is not drawn: a zero force (N at a
+/// dead centre) has no direction for its arrowhead. A nanometre of paper, far below a pen.
+pub const MIN_DRAWN_MM: f64 = 1e-9;
+
 /// Largest number of equal divisions of a segment, arc or crank circle a scene may ask for.
 /// A drafter divides into 8 to 36 parts; 3,600 is a benchmark size, 100,000 is absurd for a
 /// figure and would write a figure of hundreds of megabytes.

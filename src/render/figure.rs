@@ -3,6 +3,7 @@
 use super::style::class as class_of;
 use super::style::*;
 use crate::fmt::num;
+use crate::kernel::tolerance::MIN_DRAWN_MM;
 use crate::kernel::{Point, Vector};
 use crate::protocol::{
     Board, FigureMeta, Geom, Label, Object, Role, Step, StepId, TABLE_BLOCK_ROWS,
@@ -305,6 +306,40 @@ fn label_position(board: &Board, p: &Point) -> Point {
     p + Vector::new(LABEL_OFFSET * 0.6, LABEL_OFFSET * 0.6)
 }
 
+/// A circle: whole, or only the short compass arcs at the points constructed on it.
+fn draw_circle(
+    f: &Frame,
+    class: &str,
+    circle: &crate::kernel::Circle,
+    full: bool,
+    marks: &[f64],
+    g: Group,
+) -> Group {
+    if full {
+        return g.add(
+            SCircle::new()
+                .set("class", class)
+                .set("cx", f.x(&circle.center))
+                .set("cy", f.y(&circle.center))
+                .set("r", num(circle.radius, 3)),
+        );
+    }
+    let h = compass_arc_half_angle(circle.radius).to_degrees();
+    let mut d = String::new();
+    for m in marks {
+        let a = circle.point_at_deg(m - h);
+        let b = circle.point_at_deg(m + h);
+        let r = num(circle.radius, 3);
+        // Counter-clockwise on the sheet (y up) is clockwise on the page: sweep flag 1.
+        d.push_str(&format!("M{} A{r},{r} 0 0,1 {} ", f.xy(&a), f.xy(&b)));
+    }
+    if d.is_empty() {
+        g
+    } else {
+        g.add(Path::new().set("class", class).set("d", d.trim_end()))
+    }
+}
+
 fn draw_object(board: &Board, f: &Frame, obj: &Object, g: Group) -> Group {
     let class = class(obj.role);
     let mut g = g;
@@ -331,7 +366,7 @@ fn draw_object(board: &Board, f: &Frame, obj: &Object, g: Group) -> Group {
         Geom::Segment { segment } | Geom::Vector { segment } => {
             let (a, b) = (segment.a, segment.b);
             // A zero-length force (N at a dead centre) has no direction for its arrowhead.
-            if (b - a).norm() > 1e-9 {
+            if (b - a).norm() > MIN_DRAWN_MM {
                 g = g.add(sheet_line(f, class, a, b));
                 if obj.role == Role::Guide {
                     g = g.add(hatching(f, a, b));
@@ -342,30 +377,7 @@ fn draw_object(board: &Board, f: &Frame, obj: &Object, g: Group) -> Group {
             circle,
             full,
             marks,
-        } => {
-            if *full {
-                g = g.add(
-                    SCircle::new()
-                        .set("class", class)
-                        .set("cx", f.x(&circle.center))
-                        .set("cy", f.y(&circle.center))
-                        .set("r", num(circle.radius, 3)),
-                );
-            } else {
-                let h = compass_arc_half_angle(circle.radius).to_degrees();
-                let mut d = String::new();
-                for m in marks {
-                    let a = circle.point_at_deg(m - h);
-                    let b = circle.point_at_deg(m + h);
-                    let r = num(circle.radius, 3);
-                    // Counter-clockwise on the sheet (y up) is clockwise on the page: sweep flag 1.
-                    d.push_str(&format!("M{} A{r},{r} 0 0,1 {} ", f.xy(&a), f.xy(&b)));
-                }
-                if !d.is_empty() {
-                    g = g.add(Path::new().set("class", class).set("d", d.trim_end()));
-                }
-            }
-        }
+        } => g = draw_circle(f, class, circle, *full, marks, g),
         Geom::Arc { arc } => {
             let a = arc.point_at_fraction(0.0);
             let b = arc.point_at_fraction(1.0);
