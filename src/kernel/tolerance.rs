@@ -80,6 +80,40 @@ pub const PARALLEL_DEG_EPS: f64 = 1e-9;
 /// dead centre) has no direction for its arrowhead. A nanometre of paper, far below a pen.
 pub const MIN_DRAWN_MM: f64 = 1e-9;
 
+/// A force below this many kg is written as 0 and classed as a zero-force member: the plan
+/// is exact to about 1e-12 of the loads, so anything below a gram is rounding.
+pub const ZERO_KG: f64 = 1e-3;
+
+/// A singular value of the equilibrium matrix below this fraction of the largest counts as
+/// zero. The matrix entries are direction cosines (of size 1), so the largest singular value
+/// is of order 1 to √(max degree); 1e-10 is far above the 1e-16 rounding of well-formed
+/// trusses and far below the 1e-3 of a shallow truss at 0.1°.
+pub const RANK_REL: f64 = 1e-10;
+
+/// A lever arm below this fraction of the truss's size ([`Truss::size`](crate::truss::Truss::size), like the kernel's
+/// lengths), or a sine between two reaction lines below it, counts as zero: the supports
+/// then cannot be resolved by moments.
+pub const LEVER_REL: f64 = 1e-12;
+
+/// A member force at most this fraction of the largest external force is a zero-force
+/// member (Nullstab): the plan is exact to about 1e-12 of the loads, so 1e-9 separates
+/// rounding from a real force with room on both sides.
+pub const ZERO_FORCE_REL: f64 = 1e-9;
+
+/// A force below this (kg) counts as zero when deciding whether a flat bar is compressed:
+/// the plan is exact to about 1e-12 of the loads.
+pub const SLACK_KG: f64 = 1e-6;
+
+/// A length below this fraction of its figure's span counts as zero where a construction
+/// chooses its own layout (the side of a pole, whether a force polygon closes, whether a
+/// point lies on a drawn circle): the choice changes the drawing, never a result. Also a lever
+/// arm of a section (LH B.4) below it against the truss's size: the section gives no force.
+pub const REL_LAYOUT_EPS: f64 = 1e-9;
+
+/// A candidate (a pole, a roller to resolve by) replaces the best so far only when its score
+/// (a sine, dimensionless) beats it by this fraction: rounding never picks the drawing.
+pub const REL_SCORE_EPS: f64 = 1e-9;
+
 /// Largest number of equal divisions of a segment, arc or crank circle a scene may ask for.
 /// A drafter divides into 8 to 36 parts; 3,600 is a benchmark size, 100,000 is absurd for a
 /// figure and would write a figure of hundreds of megabytes.

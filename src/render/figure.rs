@@ -3,7 +3,7 @@
 use super::style::class as class_of;
 use super::style::*;
 use crate::fmt::num;
-use crate::kernel::tolerance::MIN_DRAWN_MM;
+use crate::kernel::tolerance::{MIN_DRAWN_MM, NICE_SCALE_SLACK, REL_LAYOUT_EPS};
 use crate::kernel::{Point, Vector};
 use crate::protocol::{
     Board, FigureMeta, Geom, Label, Object, Role, Step, StepId, TABLE_BLOCK_ROWS,
@@ -298,7 +298,7 @@ fn label_position(board: &Board, p: &Point) -> Point {
         {
             let v = p - circle.center;
             let d = v.norm();
-            if d > 0.0 && (d - circle.radius).abs() <= 1e-9 * circle.radius {
+            if d > 0.0 && (d - circle.radius).abs() <= REL_LAYOUT_EPS * circle.radius {
                 return p + v * ((LABEL_OFFSET + 1.2) / d) + Vector::new(-1.0, -1.2);
             }
         }
@@ -498,7 +498,7 @@ fn smooth_path(f: &Frame, pts: &[Point]) -> String {
     if n < 3 {
         return polygon_path(f, pts);
     }
-    let closed = (pts[0] - pts[n - 1]).norm() < 1e-9;
+    let closed = (pts[0] - pts[n - 1]).norm() < MIN_DRAWN_MM;
     let get = |i: isize| -> Point {
         if closed {
             let m = (n - 1) as isize;
@@ -553,7 +553,7 @@ fn nice_below(x: f64) -> f64 {
     }
     let base = 10f64.powf(x.log10().floor());
     for m in [5.0, 2.5, 2.0, 1.0] {
-        if m * base <= x * (1.0 + 1e-12) {
+        if m * base <= x * (1.0 + NICE_SCALE_SLACK) {
             return m * base;
         }
     }

@@ -7,9 +7,7 @@ use crate::truss::cremona::CaseResult;
 pub use crate::truss::envelope::{envelope, Combination, EnvelopeRule, Extremes};
 use serde::Serialize;
 
-/// A force below this many kg is written as 0 and classed as a zero-force member: the plan
-/// is exact to about 1e-12 of the loads, so anything below a gram is rounding.
-pub const ZERO_KG: f64 = 1e-3;
+pub use crate::kernel::tolerance::ZERO_KG;
 
 fn signed(x: f64) -> String {
     if x.abs() <= ZERO_KG {

@@ -349,7 +349,7 @@ impl TrussScene {
             };
             span(xs.collect()).max(span(ys.collect()))
         };
-        let eps = crate::kernel::tolerance::REL_LENGTH_EPS * size.max(1e-300);
+        let eps = crate::kernel::tolerance::REL_LENGTH_EPS * size.max(f64::MIN_POSITIVE);
         let mut by_pos: Vec<usize> = (0..self.joints.len()).collect();
         by_pos.sort_by(|&a, &b| {
             let (p, q) = (self.joints[a].at_m, self.joints[b].at_m);

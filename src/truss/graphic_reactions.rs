@@ -7,6 +7,7 @@ use super::layout::{grow, Layout};
 use super::matrix::Solution;
 use super::notes::*;
 use super::{JointLoad, SupportKind, Truss};
+use crate::kernel::tolerance::{REL_LAYOUT_EPS, REL_SCORE_EPS};
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{Board, ConstructionError, Label, Role, Scale, H};
 use crate::statics::funicular::polygon::{self, StringStyle};
@@ -76,7 +77,7 @@ pub(super) fn choose_pole(corners: &[Point], loads: &[Vector], rdir: Vector) -> 
         .max(10.0);
     let chord = last - first;
     // Off to the side of the closing chord; if the polygon closes, of its longest side.
-    let along = if chord.norm() > 1e-9 * span {
+    let along = if chord.norm() > REL_LAYOUT_EPS * span {
         chord
     } else {
         loads
@@ -89,7 +90,7 @@ pub(super) fn choose_pole(corners: &[Point], loads: &[Vector], rdir: Vector) -> 
     // A pole on a corner or on a ray parallel to the next line of action scores 0.
     let sin = |a: Vector, b: Vector| {
         let d = a.norm() * b.norm();
-        if d > 1e-9 * span * b.norm() {
+        if d > REL_LAYOUT_EPS * span * b.norm() {
             (a.x * b.y - a.y * b.x).abs() / d
         } else {
             0.0
@@ -114,7 +115,7 @@ pub(super) fn choose_pole(corners: &[Point], loads: &[Vector], rdir: Vector) -> 
     ] {
         let o = mid + n * (f * span) + along.normalize() * (turn * span);
         let s = score(o);
-        if s > best.1 * (1.0 + 1e-9) {
+        if s > best.1 * (1.0 + REL_SCORE_EPS) {
             best = (o, s);
         }
     }
@@ -146,7 +147,7 @@ pub(super) fn culmann(
         .iter()
         .map(|f| (f.g - fh[0].g).norm())
         .fold(0.0, f64::max);
-    if rv.norm() <= 1e-9 * span.max(f64::MIN_POSITIVE) {
+    if rv.norm() <= REL_LAYOUT_EPS * span.max(f64::MIN_POSITIVE) {
         return Err(ConstructionError::unsupported("loads", 
             "the loads form a couple (their force polygon closes): three rollers need a resultant to cut",
         ));

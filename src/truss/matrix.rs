@@ -21,11 +21,7 @@ use crate::kernel::tolerance::REL_TIE_EPS_MOTION;
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
-/// A singular value of the equilibrium matrix below this fraction of the largest counts as
-/// zero. The matrix entries are direction cosines (of size 1), so the largest singular value
-/// is of order 1 to √(max degree); 1e-10 is far above the 1e-16 rounding of well-formed
-/// trusses and far below the 1e-3 of a shallow truss at 0.1°.
-pub const RANK_REL: f64 = 1e-10;
+pub use crate::kernel::tolerance::RANK_REL;
 
 /// The dense rank test and solve are made up to this many joints (a 2k × 2k matrix of
 /// 2 × 1500 rows is 72 MB and some seconds); above it the Cremona plan's residual at every

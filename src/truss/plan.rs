@@ -7,10 +7,7 @@ use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{Board, H};
 use serde::Serialize;
 
-/// A member force at most this fraction of the largest external force is a zero-force
-/// member (Nullstab): the plan is exact to about 1e-12 of the loads, so 1e-9 separates
-/// rounding from a real force with room on both sides.
-pub const ZERO_FORCE_REL: f64 = 1e-9;
+pub use crate::kernel::tolerance::ZERO_FORCE_REL;
 
 /// Scales and where the figure's blocks go.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

@@ -18,10 +18,7 @@
 use super::{JointLoad, SupportKind, Truss};
 use crate::kernel::{cross, Point, Vector};
 
-/// A lever arm below this fraction of the truss's size ([`Truss::size`], like the kernel's
-/// lengths), or a sine between two reaction lines below it, counts as zero: the supports
-/// then cannot be resolved by moments.
-pub const LEVER_REL: f64 = 1e-12;
+pub use crate::kernel::tolerance::LEVER_REL;
 
 /// The reaction of every support (in the order of the supports) from the moment and force
 /// equations of the whole truss under `loads`; `None` if the supports are not one pin and one

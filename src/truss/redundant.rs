@@ -28,9 +28,7 @@ pub enum PairMode {
     TensionOnly,
 }
 
-/// A force below this (kg) counts as zero when deciding whether a flat bar is compressed:
-/// the plan is exact to about 1e-12 of the loads.
-pub const SLACK_KG: f64 = 1e-6;
+pub use crate::kernel::tolerance::SLACK_KG;
 
 /// The truss without the members in `drop`, and the old index of every member kept.
 pub fn without(t: &Truss, drop: &[usize]) -> (Truss, Vec<usize>) {

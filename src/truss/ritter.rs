@@ -6,6 +6,7 @@ use super::labels::*;
 use super::notes::*;
 use super::plan::*;
 use super::Truss;
+use crate::kernel::tolerance::{JOINT_CUT_SIN_EPS, REL_LAYOUT_EPS};
 use crate::kernel::{Point, Vector};
 use crate::protocol::{Board, Label, Role, H};
 
@@ -216,14 +217,14 @@ pub(super) fn section_force(
     let cross = |u: Vector, v: Vector| u.x * v.y - u.y * v.x;
     let forces = ext.forces.iter().filter(|(jt, _)| side[*jt]);
     let scale = t.size();
-    if cross(di, dj).abs() > 1e-9 {
+    if cross(di, dj).abs() > JOINT_CUT_SIN_EPS {
         // The meeting point R of the lines of i and j.
         let pi = t.joints[t.members[i].ends[0]].at;
         let pj = t.joints[t.members[j].ends[0]].at;
         let s = cross(pj - pi, dj) / cross(di, dj);
         let r = pi + di * s;
         let arm = cross(t.joints[a].at - r, dir);
-        if arm.abs() <= 1e-9 * scale {
+        if arm.abs() <= REL_LAYOUT_EPS * scale {
             return None;
         }
         let moment: f64 = forces.map(|(jt, f)| cross(t.joints[*jt].at - r, *f)).sum();
@@ -231,7 +232,7 @@ pub(super) fn section_force(
     } else {
         let n = Vector::new(-di.y, di.x);
         let across = dir.dot(&n);
-        if across.abs() <= 1e-9 {
+        if across.abs() <= JOINT_CUT_SIN_EPS {
             return None;
         }
         let sum: f64 = forces.map(|(_, f)| f.dot(&n)).sum();

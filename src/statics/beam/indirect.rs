@@ -83,7 +83,7 @@ pub fn panel_loads(
 /// against the *direct* loading: the indirect moment area touches the direct one there.
 ///
 /// # Errors
-/// As [`construct_beam`], and for panel points that do not cover the loads.
+/// As [`construct_beam`](super::construct_beam), and for panel points that do not cover the loads.
 pub fn construct_beam_indirect(
     b: &mut Board,
     beam: &Beam,

@@ -76,7 +76,7 @@ pub struct MaxMoment {
     pub x: f64,
 }
 
-/// The results of [`construct_beam`].
+/// The results of [`construct_beam`](super::construct_beam).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct BeamResults {
     /// Reactions A and B (kg).

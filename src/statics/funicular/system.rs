@@ -6,6 +6,7 @@ use super::polygon::{self, StringStyle};
 use super::{
     extent, resolve, sum_and_moment, Force, Resolution, Resultant, SystemDrawing, SystemResults,
 };
+use crate::kernel::tolerance::{REL_LAYOUT_EPS, REL_TIE_EPS};
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{Board, ConstructionError, Cut, Label, Role, Scale, H};
 
@@ -406,7 +407,7 @@ fn default_pole(pts: &[Point], fmax_mm: f64) -> Point {
         .max(fmax_mm)
         .max(1.0);
     let chord = pts[n - 1] - pts[0];
-    let side = if chord.norm() > 1e-9 * span {
+    let side = if chord.norm() > REL_LAYOUT_EPS * span {
         Vector::new(-chord.y, chord.x) / chord.norm()
     } else {
         Vector::new(-1.0, 0.0)
@@ -439,7 +440,7 @@ fn default_pole(pts: &[Point], fmax_mm: f64) -> Point {
                 score = score.min(s);
             }
         }
-        if score > best_score + 1e-12 {
+        if score > best_score + REL_TIE_EPS {
             best_score = score;
             best = cand;
         }
