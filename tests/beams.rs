@@ -396,3 +396,30 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn lh_abb35_five_stringer_panels_shear_zero_over_the_middle_one() {
+    // LH Abb. 35: Q in five equal stringer loads Q1-Q5, V1-V6 on the beam; the shear diagram
+    // "zeigt keinen Nullpunkt, sondern eine Linie": the largest moment is the same at the
+    // third and fourth cross beams and everywhere between them.
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join("lh_aufgabe6_abb35_stringers.json");
+    let any = AnyScene::load(&path).unwrap();
+    let scene: &graphostatik::scene::BeamScene = any.get().expect("a beam scene");
+    let (board, r) = scene.problem().construct(true).unwrap();
+    assert!(board.all_passed());
+    assert_eq!(scene.stringers_m.as_ref().map(Vec::len), Some(6));
+    let at = |x: f64| {
+        r.sections
+            .iter()
+            .find(|s| (s.x - x).abs() < 1e-12)
+            .unwrap()
+            .moment
+    };
+    // M = A·x − V1·x − V2·(x − 1.2) = 1500·2.4 − 300·2.4 − 600·1.2 = 2160 kg·m = q·x(l − x)/2.
+    assert!((at(2.4) - 2160.0).abs() < 1e-9 && (at(3.6) - 2160.0).abs() < 1e-9);
+    let row = |x: f64| *r.shear.iter().find(|s| (s.x - x).abs() < 1e-12).unwrap();
+    assert!(row(2.4).right.abs() < 1e-9 && row(3.6).left.abs() < 1e-9);
+    assert!((r.max_moment.unwrap().moment - 2160.0).abs() < 1e-9);
+}

@@ -3,6 +3,17 @@
 //! largest moment where the shear changes sign, and the parabola of a uniform load drawn by
 //! its tangents.
 //!
+//! # Modules
+//! - [`funicular`]: forces in the plane: the force polygon, resultant, couple, resolution
+//!   (LH A, C.1-2), and [`funicular::polygon`], the one funicular polygon every procedure
+//!   draws (pole and rays, strings, closing line);
+//! - [`beam`]: beams by the funicular polygon (LH C.4-6, Aufgabe 6): reactions, moment area,
+//!   shear, the parabola of a uniform load, indirect loading through stringers;
+//! - [`centroid`]: the centroid of a polygon by two funicular polygons (LH C.3);
+//! - [`shaft`]: moments in two planes, torque and the ideal moment (LH C.7-8);
+//! - [`closed_form`]: the closed forms the checks compare with;
+//! - [`sizing`]: diameters and heights from the allowed stress (LH Aufgabe 7).
+//!
 //! Positions along a beam are in m, forces in kg (the books' technical units), moments in
 //! kg·m. Loads are positive downwards, reactions positive upwards, moments positive when they
 //! sag the beam.

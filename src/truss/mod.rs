@@ -5,12 +5,24 @@
 //! in tension (Zug, +) and negative in compression (Druck, −), as in the books' tables.
 //!
 //! # Modules
+//! - [`builder`]: a truss built in code by the names of its joints and members
+//!   ([`Truss::builder`]), load cases by joint name, the scales a drafter would choose;
 //! - [`matrix`]: the equilibrium matrix of the joints, its rank (is the truss a mechanism,
 //!   determinate or over-determinate?) and the dense solve that every plan is checked against;
 //! - [`faces`]: the truss drawn as a plane graph, its faces, and the outer boundary along
 //!   which the external forces are named (Bow's notation);
-//! - [`cremona`]: the reactions and the combined Cremona plan, every joint polygon a step;
-//! - [`reactions`]: the reactions by the moment equations, the check on the graphic ones.
+//! - [`cremona`]: the procedure: determinacy, the two-pass layout, and per load case the
+//!   truss drawing, the reactions, the plan and the table of member forces. Privately it
+//!   draws on `graphic_reactions` (the reactions by the closing line, or by Culmann's line
+//!   for three rollers), `plan` (the context shared by `bow` for Bow's notation, `joints` for
+//!   the joint polygons one by one, and `ritter` for Ritter's sections), `layout`, `labels`
+//!   and `notes`;
+//! - [`reactions`]: the reactions by the moment equations, the check on the graphic ones;
+//! - [`redundant`]: pairs of diagonals, as two systems with half the loads each or as
+//!   tension-only counter-diagonals (LH B.5);
+//! - [`envelope`]: the largest and smallest force of every member over the load cases;
+//! - [`roof`]: the roof loads of LH Gl. 3-10;
+//! - [`generate`]: Warren, Pratt and Howe girders of any size.
 
 mod bow;
 pub mod builder;
