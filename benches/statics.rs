@@ -25,7 +25,7 @@ fn drawing() -> BeamDrawing {
         force_scale: 40.0,
         pole_distance: 5000.0,
         parabola_divisions: 8,
-        origin: [0.0, 0.0],
+        origin: graphostatik::kernel::Point::origin(),
     }
 }
 

@@ -13,7 +13,7 @@ fn drawing(h: f64) -> BeamDrawing {
         force_scale: 40.0,
         pole_distance: h,
         parabola_divisions: 8,
-        origin: [0.0, 0.0],
+        origin: graphostatik::kernel::Point::origin(),
     }
 }
 
@@ -334,7 +334,7 @@ fn a_beam_drawn_elsewhere_on_the_sheet_gives_the_same_results() {
     };
     let (_, here) = run(&beam, 900.0);
     let mut d = drawing(900.0);
-    d.origin = [37.5, -212.25];
+    d.origin = graphostatik::kernel::Point::new(37.5, -212.25);
     let mut b = Board::new(500.0, true);
     let there = construct_beam(&mut b, &beam, &d, &ALL).unwrap();
     all_pass(&b);

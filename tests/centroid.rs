@@ -6,6 +6,7 @@ use graphostatik::statics::centroid::*;
 use proptest::prelude::*;
 
 fn run(pts: &[[f64; 2]], fan_from: usize) -> CentroidResults {
+    let pts = &points(pts);
     let mut b = Board::new(300.0, true);
     let d = CentroidDrawing {
         length_scale: 25.0,
@@ -35,11 +36,11 @@ fn a_non_convex_l_shape_with_negative_fan_triangles() {
         [1.0, 3.0],
         [0.0, 3.0],
     ];
-    let (_, c) = polygon_centroid(&l).unwrap();
+    let (_, c) = polygon_centroid(&points(&l)).unwrap();
     for fan in 0..l.len() {
         let r = run(&l, fan);
         assert!(
-            (r.centroid[0] - c[0]).abs() < 1e-9 && (r.centroid[1] - c[1]).abs() < 1e-9,
+            (r.centroid.x - c.x).abs() < 1e-9 && (r.centroid.y - c.y).abs() < 1e-9,
             "fan {fan}"
         );
     }
@@ -52,13 +53,13 @@ fn collinear_vertices_make_slivers_that_are_skipped() {
         &[[0.0, 0.0], [2.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]],
         0,
     );
-    assert!((r.centroid[0] - 2.0).abs() < 1e-9 && (r.centroid[1] - 1.0).abs() < 1e-9);
+    assert!((r.centroid.x - 2.0).abs() < 1e-9 && (r.centroid.y - 1.0).abs() < 1e-9);
 }
 
 #[test]
 fn self_intersecting_polygons_are_refused_with_the_edges_named() {
     let bow = [[0.0, 0.0], [2.0, 2.0], [2.0, 0.0], [0.0, 2.0]];
-    assert_eq!(self_intersection(&bow), Some((0, 2)));
+    assert_eq!(self_intersection(&points(&bow)), Some((0, 2)));
     let text =
         r#"{ "procedure": "centroid", "title": "t", "polygon_m": [[0,0],[2,2],[2,0],[0,2]] }"#;
     let e = AnyScene::from_json(text, "c.json").unwrap_err().to_string();
@@ -72,7 +73,7 @@ fn self_intersecting_polygons_are_refused_with_the_edges_named() {
         area_scale: 0.1,
         fan_from: 0,
     };
-    assert!(construct_centroid(&mut b, &bow, &d).is_err());
+    assert!(construct_centroid(&mut b, &points(&bow), &d).is_err());
 }
 
 proptest! {
@@ -93,6 +94,7 @@ proptest! {
                 [cx + r * a.cos(), cy + r * a.sin()]
             })
             .collect();
+        let pts = points(&pts);
         prop_assume!(self_intersection(&pts).is_none());
         let mut b = Board::new(300.0, true);
         let d = CentroidDrawing { length_scale: 25.0, area_scale: 0.05, fan_from: fan % n };
@@ -101,4 +103,11 @@ proptest! {
             prop_assert!(c.passed, "{}: {} vs {} ({:e} > {:e})", c.quantity, c.constructed, c.closed_form, c.error, c.tolerance);
         }
     }
+}
+
+/// Vertices as the kernel's points.
+fn points(v: &[[f64; 2]]) -> Vec<graphostatik::kernel::Point> {
+    v.iter()
+        .map(|&[x, y]| graphostatik::kernel::Point::new(x, y))
+        .collect()
 }

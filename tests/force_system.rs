@@ -28,8 +28,8 @@ fn run(forces: &[Force], res: &[Resolution]) -> (Board, SystemResults) {
 
 fn f(x: f64, y: f64, fx: f64, fy: f64) -> Force {
     Force {
-        at: [x, y],
-        f: [fx, fy],
+        at: graphostatik::kernel::Point::new(x, y),
+        f: graphostatik::kernel::Vector::new(fx, fy),
     }
 }
 
@@ -45,7 +45,7 @@ fn lh_s1_forces_on_one_line_of_action() {
     let (_, r) = run(&forces, &[]);
     match r.resultant {
         Resultant::Force { r, moment, .. } => {
-            assert!((r[0] - 150.0).abs() < 1e-9 && r[1].abs() < 1e-9);
+            assert!((r.x - 150.0).abs() < 1e-9 && r.y.abs() < 1e-9);
             assert!(moment.abs() < 1e-9);
         }
         o => panic!("{o:?}"),
@@ -86,10 +86,10 @@ fn nearly_parallel_forces_place_their_resultant_by_moment_balance() {
     let (_, r) = run(&forces, &[]);
     match r.resultant {
         Resultant::Force { r, through, moment } => {
-            assert!(r[0].abs() < 1e-9 && (r[1] + 2000.0).abs() < 1e-9);
+            assert!(r.x.abs() < 1e-9 && (r.y + 2000.0).abs() < 1e-9);
             assert!((moment + 1000.0).abs() < 1e-9);
             // `through` is where the outer strings meet, on the vertical x = 0.5.
-            assert!((through[0] - 0.5).abs() < 1e-9, "{through:?}");
+            assert!((through.x - 0.5).abs() < 1e-9, "{through:?}");
         }
         o => panic!("{o:?}"),
     }
@@ -112,7 +112,10 @@ fn resolution_along_two_lines_lh_aufgabe_2() {
         equilibrant: true,
     };
     let (_, r) = run(&forces, &[hold]);
-    let [k1, k2] = r.components[0];
+    let Components {
+        first: k1,
+        second: k2,
+    } = r.components[0];
     // The ropes pull towards their attachments: both tensions positive.
     assert!(
         (k1 - s1).abs() < 1e-9 && (k2 - s2).abs() < 1e-9,
@@ -126,7 +129,9 @@ fn resolution_along_two_lines_lh_aufgabe_2() {
             ..hold
         }],
     );
-    assert!((r.components[0][0] + s1).abs() < 1e-9 && (r.components[0][1] + s2).abs() < 1e-9);
+    assert!(
+        (r.components[0].first + s1).abs() < 1e-9 && (r.components[0].second + s2).abs() < 1e-9
+    );
 }
 
 #[test]
@@ -141,7 +146,7 @@ fn a_pole_on_a_side_of_the_force_polygon_is_a_clear_error() {
     let mut d = D;
     // Corners: (0,0) → (0,−100) → (100,−100) → (100,−50) in kg; the pole at (−100,−100)
     // lies on the line of side 2.
-    d.pole = Some([-100.0, -100.0]);
+    d.pole = Some(graphostatik::kernel::Vector::new(-100.0, -100.0));
     let mut b = Board::new(300.0, true);
     let e = construct_system(&mut b, &forces, &d, &[])
         .unwrap_err()
@@ -165,7 +170,7 @@ proptest! {
             .collect();
         prop_assume!(!forces.is_empty());
         let mut d = D;
-        d.pole = pole.map(|(x, y)| [x, y]);
+        d.pole = pole.map(|(x, y)| graphostatik::kernel::Vector::new(x, y));
         let mut b = Board::new(300.0, true);
         match construct_system(&mut b, &forces, &d, &[]) {
             Ok(_) => {

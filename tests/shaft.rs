@@ -11,7 +11,7 @@ const D: BeamDrawing = BeamDrawing {
     force_scale: 20.0,
     pole_distance: 500.0,
     parabola_divisions: 8,
-    origin: [0.0, 0.0],
+    origin: graphostatik::kernel::Point::new(0.0, 0.0),
 };
 
 fn run(s: &Shaft) -> Vec<ShaftRow> {

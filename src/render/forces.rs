@@ -3,6 +3,7 @@
 //! combinations the scene asks for (the book's "Gesamtbelastung"). As Markdown, CSV or JSON.
 
 use crate::fmt::num;
+use crate::kernel::Vector;
 use crate::truss::cremona::CaseResult;
 pub use crate::truss::envelope::{envelope, Combination, EnvelopeRule, Extremes};
 use serde::Serialize;
@@ -30,12 +31,12 @@ fn kind(x: f64) -> &'static str {
 }
 
 /// A reaction as magnitude and direction, "7640 ∠90°" (degrees counter-clockwise from +x).
-fn polar(f: [f64; 2]) -> String {
-    let m = f[0].hypot(f[1]);
+fn polar(f: Vector) -> String {
+    let m = f.x.hypot(f.y);
     if m <= ZERO_KG {
         return "0".into();
     }
-    let mut deg = f[1].atan2(f[0]).to_degrees();
+    let mut deg = f.y.atan2(f.x).to_degrees();
     if deg < 0.0 {
         deg += 360.0;
     }

@@ -322,7 +322,7 @@ impl BeamScene {
                 .pole_distance_kg
                 .unwrap_or_else(|| nice_at_least(total / 2.0)),
             parabola_divisions: d.parabola_divisions.unwrap_or(8),
-            origin: [0.0, 0.0],
+            origin: crate::kernel::Point::origin(),
         };
         let request = BeamRequest {
             moment_area: self.outputs.contains(&BeamOutput::MomentArea),

@@ -4,6 +4,7 @@
 use super::defaults::nice_at_least;
 use super::error::SceneError;
 use super::fields::optional_positive;
+use crate::kernel::Point;
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::centroid::{self, CentroidDrawing, CentroidResults};
 use serde::{Deserialize, Serialize};
@@ -43,7 +44,7 @@ pub struct CentroidProblem {
     /// Source.
     pub source: String,
     /// Vertices (m).
-    pub polygon: Vec<[f64; 2]>,
+    pub polygon: Vec<Point>,
     /// Scales.
     pub drawing: CentroidDrawing,
 }
@@ -73,7 +74,7 @@ impl CentroidScene {
                 ));
             }
         }
-        if let Some((i, j)) = centroid::self_intersection(&self.polygon_m) {
+        if let Some((i, j)) = centroid::self_intersection(&self.points()) {
             return Err(bad(
                 "polygon_m",
                 format!(
@@ -83,7 +84,7 @@ impl CentroidScene {
                 ),
             ));
         }
-        if centroid::polygon_centroid(&self.polygon_m).is_none() {
+        if centroid::polygon_centroid(&self.points()).is_none() {
             return Err(bad("polygon_m", "the polygon has zero area".into()));
         }
         if self.fan_from >= n {
@@ -101,9 +102,18 @@ impl CentroidScene {
         Ok(())
     }
 
+    /// The vertices as points (m).
+    fn points(&self) -> Vec<Point> {
+        self.polygon_m
+            .iter()
+            .map(|&[x, y]| Point::new(x, y))
+            .collect()
+    }
+
     /// The problem the scene describes.
     pub fn problem(&self) -> CentroidProblem {
-        let (area, _) = centroid::polygon_centroid(&self.polygon_m).unwrap_or((1.0, [0.0, 0.0]));
+        let (area, _) =
+            centroid::polygon_centroid(&self.points()).unwrap_or((1.0, Point::origin()));
         let size = self
             .polygon_m
             .iter()
@@ -120,7 +130,7 @@ impl CentroidScene {
         CentroidProblem {
             title: self.title.clone(),
             source: self.source.clone().unwrap_or_default(),
-            polygon: self.polygon_m.clone(),
+            polygon: self.points(),
             drawing: CentroidDrawing {
                 length_scale: d
                     .length_scale

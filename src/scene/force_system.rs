@@ -201,10 +201,10 @@ impl ForceSystemScene {
         let forces: Vec<Force> = self
             .forces
             .iter()
-            .map(|f| Force {
-                at: f.at_m,
+            .map(|f| {
                 // Validated: one of the two forms is given.
-                f: f.vector().unwrap_or([0.0, 0.0]),
+                let [fx, fy] = f.vector().unwrap_or([0.0, 0.0]);
+                Force::new((f.at_m[0], f.at_m[1]), (fx, fy))
             })
             .collect();
         let (fmax, reach) = funicular::extent(&forces);
@@ -233,7 +233,7 @@ impl ForceSystemScene {
                 force_scale: d
                     .force_scale_kg_per_mm
                     .unwrap_or_else(|| nice_at_least(fmax / 40.0)),
-                pole: d.pole_kg,
+                pole: d.pole_kg.map(|[x, y]| crate::kernel::Vector::new(x, y)),
                 plan_at: None,
                 unit: "kg",
             },

@@ -219,7 +219,7 @@ impl ShaftScene {
                     .unwrap_or_else(|| nice_at_least(total / 40.0)),
                 pole_distance: d.pole_distance_kg.unwrap_or_else(|| nice_at_least(total)),
                 parabola_divisions: 8,
-                origin: [0.0, 0.0],
+                origin: crate::kernel::Point::origin(),
             },
             shaft,
         }

@@ -80,7 +80,7 @@ pub struct CentroidDrawing {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct CentroidResults {
     /// The centroid (m).
-    pub centroid: [f64; 2],
+    pub centroid: Point,
     /// The area (m²).
     pub area: f64,
 }
@@ -89,15 +89,17 @@ pub struct CentroidResults {
 ///
 /// ```
 /// use graphostatik::statics::centroid::polygon_centroid;
-/// let (a, c) = polygon_centroid(&[[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]).unwrap();
-/// assert_eq!((a, c), (8.0, [2.0, 1.0]));
+/// use graphostatik::kernel::Point;
+/// let square = [(0.0, 0.0), (4.0, 0.0), (4.0, 2.0), (0.0, 2.0)].map(|(x, y)| Point::new(x, y));
+/// let (a, c) = polygon_centroid(&square).unwrap();
+/// assert_eq!((a, c), (8.0, Point::new(2.0, 1.0)));
 /// ```
-pub fn polygon_centroid(pts: &[[f64; 2]]) -> Option<(f64, [f64; 2])> {
+pub fn polygon_centroid(pts: &[Point]) -> Option<(f64, Point)> {
     let n = pts.len();
     let (mut a2, mut cx, mut cy) = (0.0, 0.0, 0.0);
     for i in 0..n {
-        let [x0, y0] = pts[i];
-        let [x1, y1] = pts[(i + 1) % n];
+        let (x0, y0) = (pts[i].x, pts[i].y);
+        let (x1, y1) = (pts[(i + 1) % n].x, pts[(i + 1) % n].y);
         let c = x0 * y1 - x1 * y0;
         a2 += c;
         cx += (x0 + x1) * c;
@@ -106,21 +108,18 @@ pub fn polygon_centroid(pts: &[[f64; 2]]) -> Option<(f64, [f64; 2])> {
     if a2 == 0.0 {
         return None;
     }
-    Some((0.5 * a2.abs(), [cx / (3.0 * a2), cy / (3.0 * a2)]))
+    Some((0.5 * a2.abs(), Point::new(cx / (3.0 * a2), cy / (3.0 * a2))))
 }
 
-fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
-    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+fn orient(a: Point, b: Point, c: Point) -> f64 {
+    (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)
 }
 
-fn on_segment(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> bool {
-    p[0] >= a[0].min(b[0])
-        && p[0] <= a[0].max(b[0])
-        && p[1] >= a[1].min(b[1])
-        && p[1] <= a[1].max(b[1])
+fn on_segment(a: Point, b: Point, p: Point) -> bool {
+    p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y)
 }
 
-fn segments_cross(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
+fn segments_cross(a: Point, b: Point, c: Point, d: Point) -> bool {
     let (o1, o2, o3, o4) = (
         orient(a, b, c),
         orient(a, b, d),
@@ -140,7 +139,7 @@ fn segments_cross(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
 
 /// The first pair of edges (i, j) that cross or touch, if the polygon is not simple. Edge i
 /// runs from vertex i to vertex i + 1.
-pub fn self_intersection(pts: &[[f64; 2]]) -> Option<(usize, usize)> {
+pub fn self_intersection(pts: &[Point]) -> Option<(usize, usize)> {
     let n = pts.len();
     for i in 0..n {
         for j in i + 1..n {
@@ -167,23 +166,24 @@ pub fn self_intersection(pts: &[[f64; 2]]) -> Option<(usize, usize)> {
 /// use graphostatik::statics::centroid::*;
 /// use graphostatik::protocol::Board;
 /// // The trapezoid of LH Abb. 23, split along the diagonal BD (the fan from B).
-/// let trapezoid = [[0.0, 0.0], [4.0, 0.0], [3.0, 2.0], [1.0, 2.0]];
+/// use graphostatik::kernel::Point;
+/// let trapezoid = [(0.0, 0.0), (4.0, 0.0), (3.0, 2.0), (1.0, 2.0)].map(|(x, y)| Point::new(x, y));
 /// let d = CentroidDrawing { length_scale: 25.0, area_scale: 0.1, fan_from: 1 };
-/// let mut b = Board::new(300.0, true);
+/// let mut b = Board::recording();
 /// let r = construct_centroid(&mut b, &trapezoid, &d).unwrap();
-/// assert!((r.centroid[0] - 2.0).abs() < 1e-9 && (r.centroid[1] - 8.0 / 9.0).abs() < 1e-9);
-/// assert!(b.steps().iter().flat_map(|s| &s.checks).all(|c| c.passed));
+/// assert!((r.centroid.x - 2.0).abs() < 1e-9 && (r.centroid.y - 8.0 / 9.0).abs() < 1e-9);
+/// assert!(b.all_passed());
 /// ```
 pub fn construct_centroid(
     b: &mut Board,
-    pts: &[[f64; 2]],
+    pts: &[Point],
     dr: &CentroidDrawing,
 ) -> Result<CentroidResults, ConstructionError> {
     let (area, exact) = check_polygon(pts)?;
     let k = 1000.0 / dr.length_scale;
     let size = pts
         .iter()
-        .flat_map(|p| pts.iter().map(move |q| (p[0] - q[0]).hypot(p[1] - q[1])))
+        .flat_map(|p| pts.iter().map(move |q| (p.x - q.x).hypot(p.y - q.y)))
         .fold(0.0, f64::max);
     let vs = draw_polygon(b, pts, k);
     let parts = triangle_centroids(b, &vs, dr.fan_from, k, size)?;
@@ -202,14 +202,14 @@ pub fn construct_centroid(
         exact[1]
     });
     Ok(CentroidResults {
-        centroid: [xs.g, ys.g],
+        centroid: Point::new(xs.g, ys.g),
         area,
     })
 }
 
 /// At least three vertices, not crossing itself, of some area: the area and the centroid by
 /// the shoelace formula.
-fn check_polygon(pts: &[[f64; 2]]) -> Result<(f64, [f64; 2]), ConstructionError> {
+fn check_polygon(pts: &[Point]) -> Result<(f64, Point), ConstructionError> {
     let n = pts.len();
     if n < 3 {
         return Err(ConstructionError::unsupported(
@@ -229,7 +229,7 @@ fn check_polygon(pts: &[[f64; 2]]) -> Result<(f64, [f64; 2]), ConstructionError>
 }
 
 /// The vertices (lettered A, B, … up to 26, else P with its number) and the outline.
-fn draw_polygon(b: &mut Board, pts: &[[f64; 2]], k: f64) -> Vec<H<Point>> {
+fn draw_polygon(b: &mut Board, pts: &[Point], k: f64) -> Vec<H<Point>> {
     const NAMES: [&str; 26] = [
         "A", "B", "C", "D", "E", "F", "G", "H", "I", "J", "K", "L", "M", "N", "O", "P", "Q", "R",
         "S", "T", "U", "V", "W", "X", "Y", "Z",
@@ -244,7 +244,7 @@ fn draw_polygon(b: &mut Board, pts: &[[f64; 2]], k: f64) -> Vec<H<Point>> {
             } else {
                 Label::indexed("P", i as u32)
             };
-            b.point(Point::new(p[0] * k, p[1] * k), label, Role::Given, N_VERTEX)
+            b.point(Point::new(p.x * k, p.y * k), label, Role::Given, N_VERTEX)
         })
         .collect();
     let mut outline = vs.clone();
@@ -302,8 +302,12 @@ fn two_funiculars(
         parts
             .iter()
             .map(|(g, a)| Force {
-                at: [g.x, g.y],
-                f: if turn { [*a, 0.0] } else { [0.0, -a] },
+                at: *g,
+                f: if turn {
+                    Vector::new(*a, 0.0)
+                } else {
+                    Vector::new(0.0, -a)
+                },
             })
             .collect()
     };
@@ -311,11 +315,14 @@ fn two_funiculars(
         length_scale: dr.length_scale,
         force_scale: dr.area_scale,
         pole: None,
-        plan_at: Some([xmax + 30.0, ymax]),
+        plan_at: Some(Point::new(xmax + 30.0, ymax)),
         unit: "m²",
     };
     let r1 = construct_system(b, &as_forces(false), &sd, &[])?;
-    sd.plan_at = Some([xmax + 30.0 + 0.6 * total_mm + 20.0, ymax + 0.5 * total_mm]);
+    sd.plan_at = Some(Point::new(
+        xmax + 30.0 + 0.6 * total_mm + 20.0,
+        ymax + 0.5 * total_mm,
+    ));
     let r2 = construct_system(b, &as_forces(true), &sd, &[])?;
     match (r1.resultant_line, r2.resultant_line) {
         (Some(l1), Some(l2)) => Ok((l1, l2)),

@@ -320,7 +320,7 @@ fn torque_rectangle(
 ) -> Result<(), ConstructionError> {
     let k = 1000.0 / dr.length_scale;
     let c = b.point(
-        Point::new(t.from * k + dr.origin[0], base_y),
+        Point::new(t.from * k + dr.origin.x, base_y),
         Label::plain("C"),
         Role::Given,
         N_TQ_CORNER,
@@ -378,7 +378,7 @@ fn torque_rectangle(
 ///     angle_deg: 90.0, torque: Some(Torque { from: 0.0, to: 0.4, md: 100.0, radius: Some(0.2) }), alpha0: 1.0,
 ///     kb: Some(1000.0) };
 /// let d = BeamDrawing { length_scale: 10.0, force_scale: 10.0, pole_distance: 500.0,
-///     parabola_divisions: 8, origin: [0.0, 0.0] };
+///     parabola_divisions: 8, origin: graphostatik::kernel::Point::origin() };
 /// let mut b = Board::new(300.0, true);
 /// let rows = construct_shaft(&mut b, &shaft, &d).unwrap();
 /// let at = rows.iter().find(|r| (r.x - 0.4).abs() < 1e-12).unwrap();
@@ -402,7 +402,7 @@ pub fn construct_shaft(
     };
     let (b1, b2) = (beam(&shaft.plane_1), beam(&shaft.plane_2));
     let ms = dr.length_scale / 1000.0 * dr.pole_distance; // kg·m per mm of ordinate
-    let mut y_next = dr.origin[1];
+    let mut y_next = dr.origin.y;
     let r1 = plane_moments(b, &b1, dr, &xs, &mut y_next)?;
     let r2 = plane_moments(b, &b2, dr, &xs, &mut y_next)?;
     // The triangles of Abb. 27 rise by up to |y1| + |y2| above their base points.
@@ -509,7 +509,7 @@ fn plane_moments(
         shear_diagram: false,
     };
     let mut d = *dr;
-    d.origin = [dr.origin[0], *y_next];
+    d.origin = Point::new(dr.origin.x, *y_next);
     let r = construct_beam_at(b, bm, &d, &req, xs)?;
     let ms = dr.length_scale / 1000.0 * dr.pole_distance;
     let depth = r
@@ -539,7 +539,7 @@ fn torque(
     let direct = t.md.abs() / ms;
     let (x, ax) = match t.radius {
         Some(r) => {
-            let at = Point::new(shaft.ends[1] * k + dr.origin[0] + 40.0, *y_next);
+            let at = Point::new(shaft.ends[1] * k + dr.origin.x + 40.0, *y_next);
             torque_ordinate(b, &t, r, shaft.alpha0, dr, at, Scale::new(ms, "kg·m"))?
         }
         None => (direct, shaft.alpha0 * direct),
@@ -578,7 +578,7 @@ impl Combine<'_> {
     fn combined(&self, b: &mut Board, x: f64, m1: f64, m2: f64) -> Result<f64, ConstructionError> {
         let (ms, mscale) = (self.ms, Scale::new(self.ms, "kg·m"));
         let (sin_a, cos_a) = crate::kernel::angle::sin_cos_deg(self.shaft.angle_deg);
-        let at = Point::new(x * self.k + self.dr.origin[0], self.y0);
+        let at = Point::new(x * self.k + self.dr.origin.x, self.y0);
         let q = b.point(at, Label::quiet("Q", 0), Role::Given, N_BASE);
         let (aux, con) = (Role::Auxiliary, Role::Construction);
         let dir1 = b.line_dir(&q, Vector::new(0.0, 1.0), Label::NONE, aux, N_DIR1)?;
@@ -602,7 +602,7 @@ impl Combine<'_> {
     /// end on the leg, read off and checked.
     fn ideal(&self, b: &mut Board, x: f64, mb: f64, md: f64) -> Result<f64, ConstructionError> {
         let (ms, mscale) = (self.ms, Scale::new(self.ms, "kg·m"));
-        let at = Point::new(x * self.k + self.dr.origin[0] + 4.0, self.y0 - 10.0);
+        let at = Point::new(x * self.k + self.dr.origin.x + 4.0, self.y0 - 10.0);
         let base = b.point(at, Label::quiet("R", 0), Role::Given, N_BASE);
         let (aux, con) = (Role::Auxiliary, Role::Construction);
         let leg = b.line_dir(&base, Vector::new(1.0, 0.0), Label::NONE, aux, N_LEG_Y)?;

@@ -9,6 +9,7 @@
 //! Without a rule, each case is taken alone.
 
 use super::cremona::CaseResult;
+use crate::kernel::Vector;
 use serde::Serialize;
 
 /// A named sum of load cases.
@@ -30,10 +31,10 @@ impl Combination {
     }
 
     /// The reaction of support `k` under the sum (kg, x and y).
-    pub fn reaction(&self, results: &[CaseResult], k: usize) -> [f64; 2] {
-        self.cases.iter().fold([0.0, 0.0], |acc, &i| {
+    pub fn reaction(&self, results: &[CaseResult], k: usize) -> Vector {
+        self.cases.iter().fold(Vector::zeros(), |acc, &i| {
             let f = results[i].reactions[k].force;
-            [acc[0] + f[0], acc[1] + f[1]]
+            Vector::new(acc.x + f.x, acc.y + f.y)
         })
     }
 }

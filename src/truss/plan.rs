@@ -26,7 +26,7 @@ pub struct ReactionForce {
     /// The joint it holds.
     pub joint: String,
     /// The force on the truss (kg), x to the right, y up.
-    pub force: [f64; 2],
+    pub force: Vector,
     /// Its length in the force plan (mm), |force| over the force scale.
     pub plan_mm: f64,
 }
@@ -34,7 +34,7 @@ pub struct ReactionForce {
 impl ReactionForce {
     /// The magnitude (kg).
     pub fn magnitude(&self) -> f64 {
-        self.force[0].hypot(self.force[1])
+        self.force.x.hypot(self.force.y)
     }
 }
 
@@ -138,7 +138,7 @@ pub(crate) fn case_result(
             .map(|(sup, r)| ReactionForce {
                 support: sup.name.clone(),
                 joint: t.joints[sup.joint].name.clone(),
-                force: [r.x, r.y],
+                force: *r,
                 plan_mm: r.norm() / dr.force_scale,
             })
             .collect(),

@@ -43,11 +43,6 @@ pub fn without(t: &Truss, drop: &[usize]) -> (Truss, Vec<usize>) {
     )
 }
 
-/// A reaction vector from its components.
-fn vector(r: [f64; 2]) -> Vector {
-    Vector::new(r[0], r[1])
-}
-
 /// Constructs every case for a truss with pairs of diagonals (indices into `t.members`).
 ///
 /// # Errors
@@ -113,7 +108,7 @@ impl Pairs<'_> {
                 plan[m] += r[0].members[i].plan_mm;
             }
             for (sum, rv) in reactions.iter_mut().zip(&r[0].reactions) {
-                *sum += vector(rv.force);
+                *sum += rv.force;
             }
         }
         let none = vec![None; n];
@@ -156,7 +151,7 @@ impl Pairs<'_> {
             plan[m] = r[0].members[i].plan_mm;
             mat[m] = r[0].members[i].matrix;
         }
-        let reactions: Vec<Vector> = r[0].reactions.iter().map(|v| vector(v.force)).collect();
+        let reactions: Vec<Vector> = r[0].reactions.iter().map(|v| v.force).collect();
         Ok(case_result(
             t, case, &forces, &plan, &mat, &reactions, self.dr,
         ))

@@ -169,12 +169,12 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
 
     /// Sheet x of the beam's x (m).
     pub(super) fn sx(&self, x: f64) -> f64 {
-        x * self.k + self.dr.origin[0]
+        x * self.k + self.dr.origin.x
     }
 
     /// Sheet y of a height above the beam (mm).
     pub(super) fn sy(&self, y: f64) -> f64 {
-        y + self.dr.origin[1]
+        y + self.dr.origin.y
     }
 
     /// The position plan, drawn on first demand.

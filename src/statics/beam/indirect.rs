@@ -107,7 +107,7 @@ pub fn construct_beam_indirect(
 /// Stringers and cross beams above the beam, the given loads on the stringers.
 fn draw_stringers(b: &mut Board, beam: &Beam, panel_points: &[f64], dr: &BeamDrawing) {
     let k = 1000.0 / dr.length_scale;
-    let [ox, oy] = dr.origin;
+    let (ox, oy) = (dr.origin.x, dr.origin.y);
     let sx = |x: f64| x * k + ox;
     // Stringers and cross beams above the beam, the given loads on the stringers.
     let mut tops = Vec::new();

@@ -42,10 +42,11 @@ use build::BeamConstruction;
 /// ```
 /// use graphostatik::statics::*;
 /// use graphostatik::protocol::Board;
+/// use graphostatik::kernel::Point;
 /// let beam = Beam { supports: [0.0, 6.0], ends: [0.0, 6.0],
 ///     point_loads: vec![PointLoad { x: 2.0, p: 600.0 }], uniform_loads: vec![] };
 /// let drawing = BeamDrawing { length_scale: 50.0, force_scale: 20.0, pole_distance: 500.0,
-///     parabola_divisions: 8, origin: [0.0, 0.0] };
+///     parabola_divisions: 8, origin: Point::origin() };
 /// let mut board = Board::recording();
 /// let r = construct_beam(&mut board, &beam, &drawing,
 ///     &BeamRequest { moment_area: true, shear_diagram: true }).unwrap();

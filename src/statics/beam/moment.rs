@@ -241,7 +241,7 @@ impl BeamConstruction<'_, '_> {
         let inside =
             match crate::kernel::intersect_line_line(&string.g, &closing.g, &self.b.tolerance()) {
                 crate::kernel::LineLine::Point { point, .. } => {
-                    let x = (point.x - self.dr.origin[0]) / self.k;
+                    let x = (point.x - self.dr.origin.x) / self.k;
                     let eps = crate::kernel::tolerance::REL_STRETCH_EPS * self.span;
                     x > lo + eps && x < hi - eps
                 }

@@ -1,5 +1,6 @@
 //! The beam construction's drawing choices and named results.
 
+use crate::kernel::Point;
 use crate::protocol::H;
 use serde::Serialize;
 
@@ -23,7 +24,7 @@ pub struct BeamDrawing {
     pub parabola_divisions: usize,
     /// Where x = 0 of the beam lies on the sheet (mm), so that several beams (the two planes
     /// of a shaft) can share one sheet.
-    pub origin: [f64; 2],
+    pub origin: Point,
 }
 
 /// What to construct beyond the reactions (which everything needs).

@@ -20,8 +20,8 @@ use crate::protocol::{Board, ConstructionError, Label, Role, Scale, H};
 /// ```
 /// use graphostatik::statics::funicular::*;
 /// use graphostatik::protocol::Board;
-/// let k1 = Force { at: [0.0, 0.0], f: [0.0, -100.0] };
-/// let k2 = Force { at: [3.0, 0.0], f: [0.0, -200.0] };
+/// let k1 = Force::new((0.0, 0.0), (0.0, -100.0));
+/// let k2 = Force::new((3.0, 0.0), (0.0, -200.0));
 /// let d = SystemDrawing { length_scale: 50.0, force_scale: 10.0, pole: None, plan_at: None, unit: "kg" };
 /// let mut b = Board::recording();
 /// let a = parallel_pair_by_auxiliary_forces(&mut b, k1, k2, 150.0, &d).unwrap();
@@ -35,8 +35,7 @@ pub fn parallel_pair_by_auxiliary_forces(
     aux: f64,
     dr: &SystemDrawing,
 ) -> Result<f64, ConstructionError> {
-    let v1 = Vector::new(k1.f[0], k1.f[1]);
-    let v2 = Vector::new(k2.f[0], k2.f[1]);
+    let (v1, v2) = (k1.f, k2.f);
     if v1.norm() == 0.0
         || v2.norm() == 0.0
         || crate::kernel::cross(&v1, &v2).abs() > PARALLEL_SIN_EPS * v1.norm() * v2.norm()
@@ -83,7 +82,7 @@ pub fn parallel_pair_by_auxiliary_forces(
         N_AUX_A,
     );
     let (m1, m2) = (v1.dot(&dir), v2.dot(&dir));
-    let dist = ((k2.at[0] - k1.at[0]).powi(2) + (k2.at[1] - k1.at[1]).powi(2)).sqrt();
+    let dist = ((k2.at.x - k1.at.x).powi(2) + (k2.at.y - k1.at.y).powi(2)).sqrt();
     b.check(
         &a,
         "distance a of the resultant (lever rule a : b = K2 : K1)",
@@ -116,7 +115,7 @@ fn partial_resultant(
     fs: f64,
 ) -> Result<Partial, ConstructionError> {
     let across = Vector::new(-dir.y, dir.x);
-    let at = Point::new(f.at[0] * k, f.at[1] * k);
+    let at = Point::new(f.at.x * k, f.at.y * k);
     let a = b.point(
         at,
         Label::indexed("K", i as u32 + 1),
@@ -124,7 +123,7 @@ fn partial_resultant(
         N_APPLICATION,
     );
     let along = b.line_dir(&a, dir, Label::NONE, Role::Construction, N_LINE)?;
-    let fv = Vector::new(f.f[0], f.f[1]);
+    let fv = f.f;
     let e = b.lay_off(
         &a,
         &along,

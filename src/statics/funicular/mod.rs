@@ -20,7 +20,7 @@ mod system;
 pub use auxiliary::parallel_pair_by_auxiliary_forces;
 pub use system::construct_system;
 
-use crate::kernel::Line;
+use crate::kernel::{Line, Point, Vector};
 use crate::protocol::H;
 use serde::Serialize;
 
@@ -28,9 +28,19 @@ use serde::Serialize;
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Force {
     /// Point of application (m).
-    pub at: [f64; 2],
+    pub at: Point,
     /// Components (kg).
-    pub f: [f64; 2],
+    pub f: Vector,
+}
+
+impl Force {
+    /// A force of components `f` (kg) at `at` (m).
+    pub fn new(at: (f64, f64), f: (f64, f64)) -> Force {
+        Force {
+            at: Point::new(at.0, at.1),
+            f: Vector::new(f.0, f.1),
+        }
+    }
 }
 
 /// The outcome of the funicular polygon.
@@ -40,9 +50,9 @@ pub enum Resultant {
     /// A single force R through the point `through` (m), and its moment about the origin.
     Force {
         /// Components of R (kg).
-        r: [f64; 2],
+        r: Vector,
         /// A point of its line of action (m).
-        through: [f64; 2],
+        through: Point,
         /// Moment of R about the origin (kg·m, counter-clockwise positive).
         moment: f64,
     },
@@ -63,9 +73,9 @@ pub struct SystemDrawing {
     /// kg per mm of sheet.
     pub force_scale: f64,
     /// The pole relative to the start of the force polygon (kg, x and y); `None` chooses one.
-    pub pole: Option<[f64; 2]>,
+    pub pole: Option<Vector>,
     /// Where the force polygon starts on the sheet (mm); `None` puts it right of the forces.
-    pub plan_at: Option<[f64; 2]>,
+    pub plan_at: Option<Point>,
     /// The unit of the "forces" ("kg"; "m²" when areas stand for weights, LH C.3).
     pub unit: &'static str,
 }
@@ -91,17 +101,27 @@ pub struct SystemResults {
     #[serde(skip)]
     pub resultant_line: Option<H<Line>>,
     /// Components of the resolved forces along their two directions (kg).
-    pub components: Vec<[f64; 2]>,
+    pub components: Vec<Components>,
+}
+
+/// A force resolved along two directions: its component along each (kg, positive in the
+/// direction's sense).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Components {
+    /// Along the first direction.
+    pub first: f64,
+    /// Along the second direction.
+    pub second: f64,
 }
 
 /// Closed forms: the vector sum and the moment about the origin.
-pub fn sum_and_moment(forces: &[Force]) -> ([f64; 2], f64) {
-    let mut r = [0.0, 0.0];
+pub fn sum_and_moment(forces: &[Force]) -> (Vector, f64) {
+    let mut r = Vector::zeros();
     let mut m = 0.0;
     for f in forces {
-        r[0] += f.f[0];
-        r[1] += f.f[1];
-        m += f.at[0] * f.f[1] - f.at[1] * f.f[0];
+        r.x += f.f.x;
+        r.y += f.f.y;
+        m += f.at.x * f.f.y - f.at.y * f.f.x;
     }
     (r, m)
 }
@@ -111,24 +131,24 @@ pub fn sum_and_moment(forces: &[Force]) -> ([f64; 2], f64) {
 pub fn extent(forces: &[Force]) -> (f64, f64) {
     let fmax = forces
         .iter()
-        .map(|f| f.f[0].hypot(f.f[1]))
+        .map(|f| f.f.x.hypot(f.f.y))
         .fold(0.0, f64::max);
     let reach = forces
         .iter()
-        .map(|f| f.at[0].hypot(f.at[1]))
+        .map(|f| f.at.x.hypot(f.at.y))
         .fold(0.0, f64::max)
         .max(1.0);
     (fmax, reach)
 }
 
 /// Closed form of the resolution of `f` along unit directions `d1`, `d2`: the 2×2 solve.
-pub fn resolve(f: [f64; 2], d1: [f64; 2], d2: [f64; 2]) -> Option<[f64; 2]> {
-    let det = d1[0] * d2[1] - d1[1] * d2[0];
+pub fn resolve(f: Vector, d1: Vector, d2: Vector) -> Option<Components> {
+    let det = d1.x * d2.y - d1.y * d2.x;
     if det.abs() < crate::kernel::tolerance::PARALLEL_SIN_EPS {
         return None;
     }
-    Some([
-        (f[0] * d2[1] - f[1] * d2[0]) / det,
-        (d1[0] * f[1] - d1[1] * f[0]) / det,
-    ])
+    Some(Components {
+        first: (f.x * d2.y - f.y * d2.x) / det,
+        second: (d1.x * f.y - d1.y * f.x) / det,
+    })
 }

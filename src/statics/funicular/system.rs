@@ -4,7 +4,8 @@
 use super::notes::*;
 use super::polygon::{self, StringStyle};
 use super::{
-    extent, resolve, sum_and_moment, Force, Resolution, Resultant, SystemDrawing, SystemResults,
+    extent, resolve, sum_and_moment, Components, Force, Resolution, Resultant, SystemDrawing,
+    SystemResults,
 };
 use crate::kernel::tolerance::{REL_LAYOUT_EPS, REL_TIE_EPS};
 use crate::kernel::{Line, Point, Vector};
@@ -24,7 +25,7 @@ struct System<'a, 'b> {
     k: f64,
     kg: Scale,
     /// ΣF and ΣM about the origin (closed forms).
-    r_cf: [f64; 2],
+    r_cf: Vector,
     m_cf: f64,
     /// The largest force and the farthest point of application: the check references.
     fmax: f64,
@@ -52,15 +53,15 @@ struct Polygon {
 /// use graphostatik::statics::funicular::*;
 /// use graphostatik::protocol::Board;
 /// // Two parallel downward forces: the resultant 300 kg lies at the lever rule a:b = K2:K1.
-/// let forces = [Force { at: [0.0, 0.0], f: [0.0, -100.0] }, Force { at: [3.0, 0.0], f: [0.0, -200.0] }];
+/// let forces = [Force::new((0.0, 0.0), (0.0, -100.0)), Force::new((3.0, 0.0), (0.0, -200.0))];
 /// let d = SystemDrawing { length_scale: 50.0, force_scale: 10.0, pole: None,
 ///     plan_at: None, unit: "kg" };
 /// let mut b = Board::recording();
 /// let r = construct_system(&mut b, &forces, &d, &[]).unwrap();
 /// match r.resultant {
 ///     Resultant::Force { r, through, .. } => {
-///         assert!((r[1] + 300.0).abs() < 1e-9);
-///         assert!((through[0] - 2.0).abs() < 1e-9);
+///         assert!((r.y + 300.0).abs() < 1e-9);
+///         assert!((through.x - 2.0).abs() < 1e-9);
 ///     }
 ///     other => panic!("{other:?}"),
 /// }
@@ -94,7 +95,7 @@ pub fn construct_system(
     let (lines, xmax) = s.position_plan()?;
     let poly = s.force_polygon(&lines, xmax)?;
     let pole_at = match dr.pole {
-        Some(p) => poly.pts[0].g + Vector::new(p[0], p[1]) / dr.force_scale,
+        Some(p) => poly.pts[0].g + p / dr.force_scale,
         None => default_pole(
             &poly.pts.iter().map(|p| p.g).collect::<Vec<_>>(),
             fmax / dr.force_scale,
@@ -130,8 +131,8 @@ pub fn construct_system(
 
 impl System<'_, '_> {
     /// Sheet point of a point in m.
-    fn sheet(&self, p: [f64; 2]) -> Point {
-        Point::new(p[0] * self.k, p[1] * self.k)
+    fn sheet(&self, p: Point) -> Point {
+        Point::new(p.x * self.k, p.y * self.k)
     }
 
     /// Points of application, arrows and lines of action: the lines, and the rightmost point
@@ -140,7 +141,7 @@ impl System<'_, '_> {
         let mut lines = Vec::with_capacity(self.forces.len());
         let mut xmax = f64::MIN;
         for (i, f) in self.forces.iter().enumerate() {
-            let v = Vector::new(f.f[0], f.f[1]);
+            let v = f.f;
             let len = v.norm();
             if len == 0.0 {
                 return Err(ConstructionError::unsupported(
@@ -177,7 +178,7 @@ impl System<'_, '_> {
     ) -> Result<Polygon, ConstructionError> {
         let fs = self.dr.force_scale;
         let origin = match self.dr.plan_at {
-            Some([x, y]) => Point::new(x, y),
+            Some(p) => p,
             None => Point::new(xmax + GAP_MM + self.fmax / fs, 0.0),
         };
         let b = &mut *self.b;
@@ -186,7 +187,7 @@ impl System<'_, '_> {
         for (i, f) in self.forces.iter().enumerate() {
             let prev = pts[i];
             let dir = b.parallel(&lines[i], &prev, Label::NONE, Role::Auxiliary, N_DIRECTION);
-            let len = f.f[0].hypot(f.f[1]) / fs;
+            let len = f.f.x.hypot(f.f.y) / fs;
             let label = Label::indexed("", i as u32 + 1);
             pts.push(b.lay_off(&prev, &dir, len, label, Role::Force, N_LAY_OFF)?);
         }
@@ -202,7 +203,7 @@ impl System<'_, '_> {
         let (kg, unit, fmax, r_cf) = (self.kg, self.dr.unit, self.fmax, self.r_cf);
         let rx = b.measure(&p0, &end, &axis_x, kg, Label::quiet("Rx", 0), N_RX);
         let what = "resultant, horizontal component";
-        b.check(&rx, what, unit, "ΣFx", fmax, || r_cf[0]);
+        b.check(&rx, what, unit, "ΣFx", fmax, || r_cf.x);
         let ry = b.measure(&p0, &end, &axis_y, kg, Label::quiet("Ry", 0), N_RY);
         b.check(
             &ry,
@@ -210,7 +211,7 @@ impl System<'_, '_> {
             unit,
             "ΣFy",
             fmax,
-            || r_cf[1],
+            || r_cf.y,
         );
         Ok(Polygon {
             pts,
@@ -290,8 +291,8 @@ impl System<'_, '_> {
         let what = "moment of the resultant about the origin";
         b.check(&d, what, "kg·m", "ΣM = x·Fy − y·Fx", mref, || m_cf);
         let r = Resultant::Force {
-            r: [poly.rx.g, poly.ry.g],
-            through: [x.g.x / k, x.g.y / k],
+            r: Vector::new(poly.rx.g, poly.ry.g),
+            through: Point::new(x.g.x / k, x.g.y / k),
             moment: d.g,
         };
         Ok((r, r_line))
@@ -348,7 +349,7 @@ impl System<'_, '_> {
         j: usize,
         res: &Resolution,
         pts: &[H<Point>],
-    ) -> Result<[f64; 2], ConstructionError> {
+    ) -> Result<Components, ConstructionError> {
         let n = self.forces.len();
         let f = self.forces.get(res.force).ok_or_else(|| {
             ConstructionError::unsupported(
@@ -359,7 +360,7 @@ impl System<'_, '_> {
         let (s1, c1) = crate::kernel::angle::sin_cos_deg(res.along[0]);
         let (s2, c2) = crate::kernel::angle::sin_cos_deg(res.along[1]);
         let (tail, head, fv) = if res.equilibrant {
-            (pts[res.force + 1], pts[res.force], [-f.f[0], -f.f[1]])
+            (pts[res.force + 1], pts[res.force], -f.f)
         } else {
             (pts[res.force], pts[res.force + 1], f.f)
         };
@@ -380,14 +381,22 @@ impl System<'_, '_> {
         let k1 = b.measure(&tail, &cpt, &l1, kg, s(1), N_RESOLVE_MEASURE);
         let k2 = b.measure(&cpt, &head, &l2, kg, s(2), N_RESOLVE_MEASURE);
         // The directions are not parallel: the cut above found a point.
-        let exact = resolve(fv, [c1, s1], [c2, s2]).unwrap_or([f64::NAN; 2]);
+        let exact = resolve(fv, Vector::new(c1, s1), Vector::new(c2, s2));
         let first = "component along the first direction";
-        b.check(&k1, first, unit, "2×2 solve", fmax, || exact[0]);
+        // The directions are not parallel (the cut above found a point), so the solve has one.
+        if let Some(e) = exact {
+            b.check(&k1, first, unit, "2×2 solve", fmax, || e.first);
+        }
         let second = "component along the second direction";
-        b.check(&k2, second, unit, "2×2 solve", fmax, || exact[1]);
+        if let Some(e) = exact {
+            b.check(&k2, second, unit, "2×2 solve", fmax, || e.second);
+        }
         b.segment(&tail, &cpt, Label::NONE, Role::Force, N_COMPONENT);
         b.segment(&cpt, &head, Label::NONE, Role::Force, N_COMPONENT);
-        Ok([k1.g, k2.g])
+        Ok(Components {
+            first: k1.g,
+            second: k2.g,
+        })
     }
 }
 
