@@ -392,7 +392,6 @@ impl Board {
 
     /// The circle about `center` with `radius` mm (the compass). `full` draws it whole;
     /// otherwise only the short arcs where points are constructed on it.
-    #[allow(clippy::too_many_arguments)]
     pub fn circle(
         &mut self,
         center: &H<Point>,
@@ -483,7 +482,6 @@ impl Board {
 
     /// Lays off `length` mm from `from` along the direction of `along` (negative: backwards),
     /// drawing the laid-off length as a vector of the given role (force, velocity) or a segment.
-    #[allow(clippy::too_many_arguments)]
     pub fn lay_off(
         &mut self,
         from: &H<Point>,
