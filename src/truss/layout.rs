@@ -64,3 +64,23 @@ impl Layout {
         (at, height + 2.0 * GAP_MM)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_row_puts_the_parts_side_by_side_under_its_top() {
+        // Truss 100 × 40 mm, polygon 20 × 60, plan 50 × 30 (each box relative to its origin).
+        let boxes = [
+            [-10.0, 0.0, 90.0, 40.0],
+            [0.0, -30.0, 20.0, 30.0],
+            [5.0, 0.0, 55.0, 30.0],
+        ];
+        let (at, height) = Layout::row(&boxes, -100.0);
+        assert_eq!(at.truss, Point::new(10.0, -140.0)); // its top edge at the row's top
+        assert_eq!(at.polygon, Point::new(100.0 + GAP_MM, -130.0));
+        assert_eq!(at.plan.x, 100.0 + GAP_MM + 20.0 + GAP_MM - 5.0);
+        assert_eq!(height, 60.0 + 2.0 * GAP_MM);
+    }
+}

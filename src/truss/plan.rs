@@ -204,3 +204,36 @@ pub(super) struct PlanContext<'a> {
     pub(super) mline: &'a [H<Line>],
     pub(super) maxload: f64,
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn external_forces_leave_out_an_unloaded_support() {
+        let t = Truss::builder()
+            .joint("I", (0.0, 0.0))
+            .joint("II", (2.0, 0.0))
+            .joint("III", (1.0, 1.0))
+            .member("1", "I", "III")
+            .member("2", "III", "II")
+            .member("3", "I", "II")
+            .pin("I")
+            .roller("II", (0.0, 1.0))
+            .build()
+            .unwrap();
+        let loads = [JointLoad {
+            joint: 2,
+            force: Vector::new(-100.0, 0.0),
+        }];
+        // A horizontal load at the apex: the roller takes 50 kg up, the pin 100 kg across and
+        // 50 kg down; a reaction of 1e-14 kg is rounding, not a force.
+        let reactions = vec![Vector::new(100.0, -50.0), Vector::new(1e-14, 50.0)];
+        let e = External::of(&t, &loads, reactions.clone(), 100.0);
+        assert_eq!(e.forces.len(), 3);
+        let zero = vec![Vector::new(100.0, 0.0), Vector::new(0.0, 1e-13)];
+        let e = External::of(&t, &loads, zero, 100.0);
+        assert_eq!(e.forces.len(), 2, "the roller's 1e-13 kg is no force");
+        assert_eq!(e.reactions.len(), 2);
+    }
+}

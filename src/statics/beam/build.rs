@@ -519,3 +519,85 @@ pub(super) fn b_point(b: &mut Board, x: f64, y: f64, note: crate::protocol::Note
         note,
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::statics::{PointLoad, UniformLoad};
+
+    fn beam() -> Beam {
+        Beam {
+            supports: [0.0, 6.0],
+            ends: [0.0, 8.0],
+            point_loads: vec![
+                PointLoad { x: 2.0, p: 600.0 },
+                PointLoad { x: 8.0, p: 100.0 },
+            ],
+            uniform_loads: vec![UniformLoad {
+                from: 3.0,
+                to: 5.0,
+                q: 200.0,
+            }],
+        }
+    }
+
+    fn drawing() -> BeamDrawing {
+        BeamDrawing {
+            length_scale: 50.0,
+            force_scale: 20.0,
+            pole_distance: 500.0,
+            parabola_divisions: 4,
+            origin: Point::new(10.0, -5.0),
+        }
+    }
+
+    #[test]
+    fn the_forces_of_the_polygon_are_ordered_by_their_lines_of_action() {
+        let f = polygon_forces(&beam());
+        let xs: Vec<f64> = f.iter().map(|f| f.x).collect();
+        assert_eq!(xs, [2.0, 4.0, 8.0]); // the uniform load at its middle
+        assert!(matches!(f[1].kind, Kind::Uniform(0)) && f[1].p == 400.0);
+    }
+
+    #[test]
+    fn each_part_is_drawn_once_however_often_it_is_asked_for() {
+        let (bm, dr) = (beam(), drawing());
+        let mut b = Board::recording();
+        let mut c = BeamConstruction::new(&mut b, &bm, &dr);
+        let first = c.reactions().unwrap();
+        let steps = c.b.steps().len();
+        let again = c.reactions().unwrap();
+        c.funicular().unwrap();
+        c.force_plan().unwrap();
+        c.plan().unwrap();
+        assert_eq!(c.b.steps().len(), steps);
+        assert_eq!(first.values, again.values);
+    }
+
+    #[test]
+    fn the_plan_sits_at_the_origin_and_the_funicular_corners_on_the_verticals() {
+        let (bm, dr) = (beam(), drawing());
+        let mut b = Board::recording();
+        let mut c = BeamConstruction::new(&mut b, &bm, &dr);
+        let left = c.plan().unwrap().left.g;
+        assert_eq!(left, Point::new(10.0, -5.0));
+        let verticals = c.plan().unwrap().verticals.clone();
+        let f = c.funicular().unwrap();
+        assert_eq!(f.strings.len(), 4);
+        for (corner, v) in f.corners.iter().zip(&verticals) {
+            assert!((corner.g.x - v.g.origin.x).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn reactions_balance_the_loads_with_the_overhang() {
+        let (bm, dr) = (beam(), drawing());
+        let mut b = Board::recording();
+        let mut c = BeamConstruction::new(&mut b, &bm, &dr);
+        let r = c.reactions().unwrap().values;
+        // ΣM_B: A·6 = 600·4 + 400·2 − 100·2.
+        assert!((r.a - 500.0).abs() < 1e-9, "{r:?}");
+        assert!((r.a + r.b - 1100.0).abs() < 1e-9);
+        assert!(c.b.all_passed());
+    }
+}

@@ -281,3 +281,65 @@ fn down(vert: H<Line>) -> H<Line> {
         },
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::types::BeamDrawing;
+    use super::*;
+    use crate::protocol::Board;
+    use crate::statics::{Beam, PointLoad};
+
+    fn run(f: impl FnOnce(&mut BeamConstruction)) {
+        let bm = Beam {
+            supports: [0.0, 6.0],
+            ends: [0.0, 6.0],
+            point_loads: vec![PointLoad { x: 2.0, p: 600.0 }],
+            uniform_loads: vec![],
+        };
+        let dr = BeamDrawing {
+            length_scale: 50.0,
+            force_scale: 20.0,
+            pole_distance: 500.0,
+            parabola_divisions: 4,
+            origin: Point::origin(),
+        };
+        let mut b = Board::recording();
+        let mut c = BeamConstruction::new(&mut b, &bm, &dr);
+        c.reactions().unwrap();
+        f(&mut c);
+        assert!(c.b.all_passed());
+    }
+
+    #[test]
+    fn the_string_at_a_section_counts_the_loads_left_of_it() {
+        run(|c| {
+            assert_eq!(c.string_at(1.0), 0);
+            assert_eq!(c.string_at(2.0), 0); // at the load: the string before it
+            assert_eq!(c.string_at(2.5), 1);
+        });
+    }
+
+    #[test]
+    fn a_section_is_measured_once_and_checked() {
+        run(|c| {
+            c.moment_area().unwrap();
+            let before = c.sections.len();
+            c.section(4.0).unwrap();
+            c.section(4.0).unwrap(); // known now: nothing drawn
+            c.section(2.0).unwrap(); // the load's own section
+            assert_eq!(c.sections.len(), before + 1);
+            let s = c.sections.last().unwrap();
+            // M(4) = B·2 = 200·2 kg·m.
+            assert!((s.moment - 400.0).abs() < 1e-9, "{}", s.moment);
+        });
+    }
+
+    #[test]
+    fn no_zero_moment_inside_a_simple_beam_under_one_load() {
+        run(|c| {
+            c.moment_area().unwrap();
+            c.zero_moments().unwrap();
+            assert!(c.zero_moments.is_empty());
+        });
+    }
+}

@@ -301,3 +301,43 @@ fn consider(best: &mut Option<(H<f64>, f64)>, m: H<f64>, x: f64, mref: f64) {
         *best = Some((m, x));
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::statics::{Beam, PointLoad, UniformLoad};
+
+    #[test]
+    fn depth_counts_point_loads_at_the_section_only_on_its_right() {
+        let beam = Beam {
+            supports: [0.0, 10.0],
+            ends: [0.0, 10.0],
+            point_loads: vec![PointLoad { x: 2.0, p: 1.0 }, PointLoad { x: 7.0, p: 1.0 }],
+            uniform_loads: vec![UniformLoad {
+                from: 3.0,
+                to: 5.0,
+                q: 1.0,
+            }],
+        };
+        let d = Depth::new(&beam);
+        assert_eq!(d.index(2.0, false), 0);
+        assert_eq!(d.index(2.0, true), 1);
+        assert_eq!(d.index(4.0, true), 1); // inside the uniform load: not passed yet
+        assert_eq!(d.index(5.0, false), 2); // its end passed: V is continuous there
+        assert_eq!(d.index(9.0, true), 3);
+    }
+
+    #[test]
+    fn a_tie_keeps_the_first_largest_moment() {
+        let h = |g: f64| H {
+            id: crate::protocol::ObjId::NONE,
+            g,
+        };
+        let mut best = None;
+        consider(&mut best, h(100.0), 1.0, 100.0);
+        consider(&mut best, h(-100.0 - 1e-11), 2.0, 100.0);
+        assert_eq!(best.map(|(_, x)| x), Some(1.0));
+        consider(&mut best, h(-101.0), 3.0, 100.0);
+        assert_eq!(best.map(|(_, x)| x), Some(3.0));
+    }
+}
