@@ -318,3 +318,54 @@ fn the_scenes_in_the_readme_are_valid() {
     }
     assert!(n >= 3, "{n} scenes found");
 }
+
+#[test]
+fn cli_names_an_unknown_procedure_and_lists_the_known_ones() {
+    let dir = tmp("unknown-procedure");
+    let scene = dir.join("bridge.json");
+    std::fs::write(&scene, r#"{ "procedure": "bridge", "title": "t" }"#).unwrap();
+    let out = dir.join("out");
+    let o = Command::new(bin())
+        .args([
+            "render",
+            scene.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(e.lines().count(), 1, "{e}");
+    assert!(e.contains("procedure: unknown procedure `bridge`; known: slider_crank, beam"));
+    assert!(!out.exists(), "nothing written");
+    // A syntax error in a beam scene is reported where it is, not as a slider-crank field.
+    std::fs::write(
+        &scene,
+        "{\n  \"procedure\": \"beam\",\n  \"title\": \"t\",\n  \"beam\": { \"supports_m\": [0, NaN] }\n}",
+    )
+    .unwrap();
+    let o = Command::new(bin())
+        .args(["check", scene.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        e.contains("bridge.json:4:") && !e.contains("unknown field"),
+        "{e}"
+    );
+    let o = Command::new(bin()).arg("procedures").output().unwrap();
+    let list = String::from_utf8_lossy(&o.stdout);
+    for name in [
+        "slider_crank",
+        "beam",
+        "force_system",
+        "centroid",
+        "shaft",
+        "truss",
+    ] {
+        assert!(list.contains(name), "{list}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
