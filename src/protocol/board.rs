@@ -105,6 +105,12 @@ impl Board {
         Board::sized(None, false)
     }
 
+    /// [`Board::recording`] or [`Board::silent`], by the flag: the tolerance follows the
+    /// construction.
+    pub fn for_construction(recording: bool) -> Board {
+        Board::sized(None, recording)
+    }
+
     /// A board for a figure of a known size (mm on the sheet), which fixes its length
     /// tolerance up front; `recording` keeps steps and checks.
     pub fn new(figure_size: f64, recording: bool) -> Board {

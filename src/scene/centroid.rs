@@ -150,7 +150,7 @@ impl CentroidProblem {
         &self,
         recording: bool,
     ) -> Result<(Board, CentroidResults), ConstructionError> {
-        let mut board = Board::new(300.0, recording);
+        let mut board = Board::for_construction(recording);
         let r = centroid::construct_centroid(&mut board, &self.polygon, &self.drawing)?;
         Ok((board, r))
     }

@@ -250,7 +250,7 @@ impl ForceSystemProblem {
         &self,
         recording: bool,
     ) -> Result<(Board, Option<SystemResults>), ConstructionError> {
-        let mut board = Board::new(300.0, recording);
+        let mut board = Board::for_construction(recording);
         if let Some(aux) = self.auxiliary_force {
             funicular::parallel_pair_by_auxiliary_forces(
                 &mut board,

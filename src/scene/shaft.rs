@@ -229,7 +229,7 @@ impl ShaftScene {
 impl ShaftProblem {
     /// Constructs the shaft on a fresh board.
     pub fn construct(&self, recording: bool) -> Result<(Board, Vec<ShaftRow>), ConstructionError> {
-        let mut board = Board::new(500.0, recording);
+        let mut board = Board::for_construction(recording);
         let r = shaft::construct_shaft(&mut board, &self.shaft, &self.drawing)?;
         Ok((board, r))
     }
