@@ -1,10 +1,18 @@
-//! Writing output files whole or not at all.
+//! Writing output files whole or not at all, and never through a link someone planted.
+//!
+//! Every file is first written to a temporary created *exclusively* (it must not exist, and a
+//! link at its name is not followed) in the target's own folder, under a name nobody can
+//! predict; then renamed over the target. A rename replaces a link at the target's name
+//! instead of writing through it. A [`Batch`] writes every temporary before it renames any,
+//! so an error while writing (a full disk, a folder without permission) leaves every target
+//! as it was.
 
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
 
-/// Writes `contents` to `path` through a temporary file in the same folder and a rename, so a
-/// reader (or a failed run) never sees a half-written file.
+/// Writes `contents` to `path` through an exclusive temporary in the same folder and a rename,
+/// so a reader (or a failed run) never sees a half-written file.
 ///
 /// ```
 /// let dir = std::env::temp_dir().join(format!("gs-doc-{}", std::process::id()));
@@ -15,6 +23,129 @@ use std::path::Path;
 /// std::fs::remove_dir_all(&dir).unwrap();
 /// ```
 pub fn write_atomic(path: &Path, contents: &str) -> std::io::Result<()> {
+    let mut batch = Batch::default();
+    batch.add(path, contents.to_string());
+    batch.commit().map_err(|e| e.source)
+}
+
+/// A write of one file of a batch that failed: which file, and why.
+#[derive(Debug)]
+pub struct BatchError {
+    /// The target the error is about.
+    pub path: PathBuf,
+    /// The operating system's error.
+    pub source: std::io::Error,
+}
+
+impl std::fmt::Display for BatchError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: cannot write: {}", self.path.display(), self.source)
+    }
+}
+
+impl std::error::Error for BatchError {}
+
+/// Files written all or none: [`Batch::commit`] writes every temporary first; if one fails,
+/// it removes them all and no target changes. Only then are they renamed over their targets.
+///
+/// ```
+/// use graphostatik::io::Batch;
+/// let dir = std::env::temp_dir().join(format!("gs-batch-doc-{}", std::process::id()));
+/// std::fs::create_dir_all(&dir).unwrap();
+/// let mut b = Batch::default();
+/// b.add(dir.join("a.svg"), "<svg/>".into());
+/// b.add(dir.join("no/such/folder/b.svg"), "<svg/>".into());
+/// assert!(b.commit().is_err());
+/// assert!(!dir.join("a.svg").exists()); // all or nothing
+/// std::fs::remove_dir_all(&dir).unwrap();
+/// ```
+#[derive(Debug, Default)]
+pub struct Batch {
+    files: Vec<(PathBuf, String)>,
+}
+
+impl Batch {
+    /// Adds a file to write.
+    pub fn add(&mut self, path: impl Into<PathBuf>, contents: String) {
+        self.files.push((path.into(), contents));
+    }
+
+    /// The targets, in the order added.
+    pub fn paths(&self) -> impl Iterator<Item = &Path> {
+        self.files.iter().map(|(p, _)| p.as_path())
+    }
+
+    /// The number of bytes the batch writes.
+    pub fn bytes(&self) -> usize {
+        self.files.iter().map(|(_, c)| c.len()).sum()
+    }
+
+    /// Writes every file: all temporaries first, then the renames.
+    ///
+    /// # Errors
+    /// The first file that could not be written; then no target has changed.
+    pub fn commit(self) -> Result<(), BatchError> {
+        // A target that is a folder cannot be renamed over: refused before anything is written.
+        for (path, _) in &self.files {
+            if std::fs::symlink_metadata(path).is_ok_and(|m| m.is_dir()) {
+                return Err(BatchError {
+                    path: path.clone(),
+                    source: std::io::Error::new(
+                        std::io::ErrorKind::AlreadyExists,
+                        "a folder has this name",
+                    ),
+                });
+            }
+        }
+        let mut temps: Vec<(PathBuf, &Path)> = Vec::with_capacity(self.files.len());
+        for (path, contents) in &self.files {
+            match write_temporary(path, contents) {
+                Ok(tmp) => temps.push((tmp, path)),
+                Err(source) => {
+                    for (tmp, _) in &temps {
+                        let _ = std::fs::remove_file(tmp);
+                    }
+                    return Err(BatchError {
+                        path: path.clone(),
+                        source,
+                    });
+                }
+            }
+        }
+        let mut result = Ok(());
+        for (tmp, path) in &temps {
+            if result.is_ok() {
+                if let Err(source) = std::fs::rename(tmp, path) {
+                    result = Err(BatchError {
+                        path: path.to_path_buf(),
+                        source,
+                    });
+                }
+            }
+            if result.is_err() {
+                let _ = std::fs::remove_file(tmp);
+            }
+        }
+        result
+    }
+}
+
+/// A name no other writer can guess in advance: the process, a counter, and a random key
+/// (std's randomly seeded hasher over the counter and the clock).
+fn temporary_name(target: &str) -> String {
+    use std::hash::BuildHasher;
+    static COUNTER: AtomicU64 = AtomicU64::new(0);
+    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
+    let t = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_nanos());
+    let key = std::collections::hash_map::RandomState::new().hash_one((n, t));
+    format!(".{target}.{}-{n}-{key:016x}.tmp", std::process::id())
+}
+
+/// Writes `contents` to a fresh temporary beside `path`, created exclusively and without
+/// following a link; returns its path.
+fn write_temporary(path: &Path, contents: &str) -> std::io::Result<PathBuf> {
     let dir = path
         .parent()
         .filter(|p| !p.as_os_str().is_empty())
@@ -23,15 +154,91 @@ pub fn write_atomic(path: &Path, contents: &str) -> std::io::Result<()> {
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_else(|| "out".into());
-    let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(contents.as_bytes())?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
+    for _ in 0..16 {
+        let tmp = dir.join(temporary_name(&name));
+        let mut options = std::fs::OpenOptions::new();
+        options.write(true).create_new(true);
+        // create_new is O_CREAT | O_EXCL: it fails on an existing name, a link included,
+        // and never opens what a link points to.
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::OpenOptionsExt;
+            options.mode(0o644);
+        }
+        let mut f = match options.open(&tmp) {
+            Ok(f) => f,
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) => return Err(e),
+        };
+        let written = f.write_all(contents.as_bytes()).and_then(|_| f.sync_all());
+        if let Err(e) = written {
+            let _ = std::fs::remove_file(&tmp);
+            return Err(e);
+        }
+        return Ok(tmp);
     }
-    result
+    Err(std::io::Error::new(
+        std::io::ErrorKind::AlreadyExists,
+        "no free temporary name in the output folder",
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn dir(name: &str) -> PathBuf {
+        let d = std::env::temp_dir().join(format!("gs-io-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    }
+
+    #[test]
+    fn temporary_names_differ_every_time() {
+        let a = temporary_name("a.svg");
+        let b = temporary_name("a.svg");
+        assert_ne!(a, b);
+        assert!(a.starts_with(".a.svg.") && a.ends_with(".tmp"));
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_link_at_the_target_is_replaced_not_written_through() {
+        let d = dir("link");
+        let outside = d.join("outside.txt");
+        std::fs::write(&outside, "keep").unwrap();
+        let out = d.join("out");
+        std::fs::create_dir_all(&out).unwrap();
+        std::os::unix::fs::symlink(&outside, out.join("a.svg")).unwrap();
+        // And links at the names the old writer would have used.
+        let old = out.join(format!(".a.svg.tmp-{}", std::process::id()));
+        std::os::unix::fs::symlink(&outside, &old).unwrap();
+        write_atomic(&out.join("a.svg"), "<svg/>").unwrap();
+        assert_eq!(std::fs::read_to_string(&outside).unwrap(), "keep");
+        assert_eq!(
+            std::fs::read_to_string(out.join("a.svg")).unwrap(),
+            "<svg/>"
+        );
+        assert!(!std::fs::symlink_metadata(out.join("a.svg"))
+            .unwrap()
+            .file_type()
+            .is_symlink());
+        std::fs::remove_dir_all(&d).unwrap();
+    }
+
+    #[test]
+    fn a_failed_batch_changes_nothing_and_leaves_no_temporaries() {
+        let d = dir("batch");
+        std::fs::write(d.join("a.svg"), "old").unwrap();
+        let mut b = Batch::default();
+        b.add(d.join("a.svg"), "new".into());
+        b.add(d.join("missing").join("b.svg"), "new".into());
+        let e = b.commit().unwrap_err();
+        assert!(e.path.ends_with("missing/b.svg"), "{e}");
+        assert_eq!(std::fs::read_to_string(d.join("a.svg")).unwrap(), "old");
+        let left: Vec<_> = std::fs::read_dir(&d).unwrap().collect();
+        assert_eq!(left.len(), 1, "only a.svg is there");
+        std::fs::remove_dir_all(&d).unwrap();
+    }
 }

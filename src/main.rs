@@ -1,7 +1,7 @@
 //! The `graphostatik` command line: render, check, steps, schema.
 
 use clap::{Parser, Subcommand};
-use graphostatik::io::write_atomic;
+use graphostatik::io::Batch;
 use graphostatik::render;
 use graphostatik::scene::{AnyProblem, AnyScene, TrussScene, REGISTRY};
 use std::path::{Path, PathBuf};
@@ -128,8 +128,9 @@ fn ensure_dir(dir: &Path) -> Result<(), Fail> {
     })
 }
 
-fn write(path: &Path, contents: &str) -> Result<(), Fail> {
-    write_atomic(path, contents).map_err(|e| Fail(format!("{}: cannot write: {e}", path.display())))
+/// Writes a batch all or nothing.
+fn commit(batch: Batch) -> Result<(), Fail> {
+    batch.commit().map_err(|e| Fail(e.to_string()))
 }
 
 fn run(cli: Cli) -> Result<ExitCode, Fail> {
@@ -154,9 +155,25 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
 
 /// `render`: every scene loaded and constructed before the first file is written.
 fn render_cmd(scenes: &[PathBuf], out: &Path) -> Result<ExitCode, Fail> {
-    // Everything is loaded and constructed before the first file is written.
     let files = scene_files(scenes)?;
-    let mut outputs = Vec::new();
+    let mut batch = Batch::default();
+    let mut seen: std::collections::BTreeMap<PathBuf, &Path> = Default::default();
+    for f in &files {
+        let stem = f
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let target = out.join(format!("{stem}.svg"));
+        // Two scenes that would write one figure: refused before anything is written.
+        if let Some(first) = seen.insert(target.clone(), f) {
+            return Err(Fail(format!(
+                "{}: would write {} as {} does too: rename one of them",
+                f.display(),
+                target.display(),
+                first.display()
+            )));
+        }
+    }
     for f in &files {
         let p = load(f)?;
         let board = construct(f, &p)?;
@@ -164,14 +181,13 @@ fn render_cmd(scenes: &[PathBuf], out: &Path) -> Result<ExitCode, Fail> {
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default();
-        outputs.push((
-            out.join(format!("{stem}.svg")),
-            render::figure(&p.figure_meta(), &board, None),
-        ));
+        let svg = render::figure(&p.figure_meta(), &board, None);
+        batch.add(out.join(format!("{stem}.svg")), svg);
     }
     ensure_dir(out)?;
-    for (path, svg) in outputs {
-        write(&path, &svg)?;
+    let paths: Vec<PathBuf> = batch.paths().map(Path::to_path_buf).collect();
+    commit(batch)?;
+    for path in paths {
         say(&format!("{}\n", path.display()))?;
     }
     Ok(ExitCode::SUCCESS)
@@ -200,11 +216,40 @@ fn steps_cmd(scene: &Path, out: &Path) -> Result<ExitCode, Fail> {
     let board = construct(scene, &p)?;
     let pages = render::walkthrough(&p.figure_meta(), &board);
     ensure_dir(out)?;
+    let mut batch = Batch::default();
     for page in &pages {
-        write(&out.join(&page.name), &page.contents)?;
+        batch.add(out.join(&page.name), page.contents.clone());
     }
+    commit(batch)?;
+    // The folder's pages are this walk-through's: stale pages of an earlier, longer one go.
+    let keep: std::collections::BTreeSet<&str> = pages.iter().map(|p| p.name.as_str()).collect();
+    remove_stale_pages(out, &keep)?;
     say(&format!("{} pages in {}\n", pages.len(), out.display()))?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// Removes the walk-through pages (`step-NNN.svg`, files of this tool's naming only) in `dir`
+/// that the new walk-through does not have.
+fn remove_stale_pages(dir: &Path, keep: &std::collections::BTreeSet<&str>) -> Result<(), Fail> {
+    let entries = std::fs::read_dir(dir)
+        .map_err(|e| Fail(format!("{}: cannot read the folder: {e}", dir.display())))?;
+    for entry in entries.flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let ours = name
+            .strip_prefix("step-")
+            .and_then(|r| r.strip_suffix(".svg"))
+            .is_some_and(|n| !n.is_empty() && n.bytes().all(|c| c.is_ascii_digit()));
+        let is_file = entry.file_type().is_ok_and(|t| t.is_file());
+        if ours && is_file && !keep.contains(name.as_str()) {
+            std::fs::remove_file(entry.path()).map_err(|e| {
+                Fail(format!(
+                    "{}: cannot remove a stale page: {e}",
+                    entry.path().display()
+                ))
+            })?;
+        }
+    }
+    Ok(())
 }
 
 /// `forces`: the member forces of a truss scene, per case, combination and envelope.

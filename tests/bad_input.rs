@@ -1,7 +1,7 @@
 //! Bad input: one clear error naming the field, exit status 2, no panic, no output file.
 
 use graphostatik::scene::{Scene, SceneError};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 const GOOD: &str = r#"{
@@ -367,5 +367,78 @@ fn cli_names_an_unknown_procedure_and_lists_the_known_ones() {
     ] {
         assert!(list.contains(name), "{list}");
     }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn render_is_all_or_nothing_and_refuses_two_scenes_with_one_name() {
+    let dir = tmp("batch");
+    let good = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/lh_abb22_funicular.json"
+    );
+    let (a, b) = (dir.join("a"), dir.join("b"));
+    for d in [&a, &b] {
+        std::fs::create_dir_all(d).unwrap();
+        std::fs::copy(good, d.join("same.json")).unwrap();
+    }
+    let out = dir.join("out");
+    let run = |args: &[&Path]| {
+        Command::new(bin())
+            .arg("render")
+            .args(args)
+            .arg("--out")
+            .arg(&out)
+            .output()
+            .unwrap()
+    };
+    let o = run(&[&a.join("same.json"), &b.join("same.json")]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("same.svg"));
+    assert!(!out.exists());
+    // A target that is a folder: refused before any figure is written.
+    std::fs::copy(good, a.join("other.json")).unwrap();
+    std::fs::create_dir_all(out.join("same.svg")).unwrap();
+    let o = run(&[&a]);
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(!out.join("other.svg").exists());
+    let left: Vec<_> = std::fs::read_dir(&out).unwrap().collect();
+    assert_eq!(left.len(), 1, "no temporaries left behind");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn steps_owns_its_pages_and_nothing_else() {
+    let dir = tmp("steps-own");
+    let out = dir.join("walk");
+    std::fs::create_dir_all(&out).unwrap();
+    for stale in ["step-999.svg", "step-1000.svg"] {
+        std::fs::write(out.join(stale), "old").unwrap();
+    }
+    std::fs::write(out.join("notes.txt"), "mine").unwrap();
+    std::fs::write(out.join("step-notes.svg"), "mine").unwrap();
+    let scene = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/lh_abb22_funicular.json"
+    );
+    let o = Command::new(bin())
+        .args(["steps", scene, "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(!out.join("step-999.svg").exists() && !out.join("step-1000.svg").exists());
+    assert!(out.join("notes.txt").exists() && out.join("step-notes.svg").exists());
+    assert!(out.join("index.html").exists() && out.join("step-001.svg").exists());
     std::fs::remove_dir_all(&dir).ok();
 }
