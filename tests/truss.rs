@@ -472,6 +472,25 @@ fn bad_truss_scenes_are_named() {
             "supports[1].name",
             "two supports are called `B`",
         ),
+        (
+            good.replace(
+                r#"{ "name": "P", "loads": [ { "joint": "III", "kg": 1000 } ] } ]"#,
+                r#"{ "name": "P", "loads": [ { "joint": "III", "kg": 1000 } ] },
+                   { "name": "P", "loads": [ { "joint": "III", "kg": 5 } ] } ]"#,
+            ),
+            "load_cases[1].name",
+            "`P` is named twice (also by load_cases[0])",
+        ),
+        (
+            good.replace(
+                r#"{ "name": "P", "loads": [ { "joint": "III", "kg": 1000 } ] } ]"#,
+                r#"{ "name": "P", "loads": [ { "joint": "III", "kg": 1000 } ] },
+                   { "name": "cart at III", "loads": [ { "joint": "III", "kg": 5 } ] } ],
+                   "moving_loads": [ { "name": "cart", "loads_kg": [100], "path": ["I", "III"] } ]"#,
+            ),
+            "moving_loads[0].name",
+            "`cart at III` is named twice",
+        ),
     ] {
         let e = AnyScene::from_json(&bad, "s.json").unwrap_err().to_string();
         assert!(e.contains(field) && e.contains(words), "{field}: {e}");

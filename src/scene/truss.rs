@@ -593,9 +593,41 @@ impl TrussScene {
         Ok(())
     }
 
+    /// Every load case has a name of its own (the roof's, the scene's, and each position of
+    /// each moving load, "crane at B1"): references by name must not silently take the first.
+    fn check_unique_case_names(&self, origin: &str, truss: &Truss) -> Result<(), SceneError> {
+        let mut seen: HashMap<String, String> = HashMap::new();
+        for n in self.roof_cases(truss).into_iter().map(|c| c.name) {
+            seen.insert(n, "roof".into());
+        }
+        let twice = |field: String, name: &str, first: &str| {
+            let name = crate::fmt::clip(name, 60);
+            invalid(
+                origin,
+                field,
+                format!("the load case `{name}` is named twice (also by {first})"),
+            )
+        };
+        for (i, c) in self.load_cases.iter().enumerate() {
+            if let Some(first) = seen.insert(c.name.clone(), format!("load_cases[{i}]")) {
+                return Err(twice(format!("load_cases[{i}].name"), &c.name, &first));
+            }
+        }
+        for (i, mv) in self.moving_loads.iter().enumerate() {
+            for p in 0..=mv.path.len().saturating_sub(mv.loads_kg.len()) {
+                let name = format!("{} at {}", mv.name, mv.path[p]);
+                if let Some(first) = seen.insert(name.clone(), format!("moving_loads[{i}]")) {
+                    return Err(twice(format!("moving_loads[{i}].name"), &name, &first));
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// Combinations and the envelope name existing load cases.
     fn check_case_names(&self, origin: &str, truss: &Truss) -> Result<(), SceneError> {
         let bad = |field: String, message: String| invalid(origin, field, message);
+        self.check_unique_case_names(origin, truss)?;
         let case_names = self.case_names(truss);
         let known = |n: &String| case_names.contains(n);
         for (c, combo) in self.combinations.iter().enumerate() {
