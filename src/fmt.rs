@@ -66,3 +66,66 @@ pub fn clip(s: &str, max: usize) -> String {
     }
     out
 }
+
+/// Text as it may stand in an SVG or HTML document: the characters XML forbids (controls
+/// but tab, line feed and carriage return; U+FFFE, U+FFFF) become U+FFFD, so that a name a
+/// scene gives can never make the figure ill-formed.
+///
+/// ```
+/// use graphostatik::fmt::sheet_text;
+/// assert_eq!(sheet_text("U1\u{0}\u{1b}"), "U1\u{fffd}\u{fffd}");
+/// assert_eq!(sheet_text("a\tb"), "a\tb");
+/// ```
+pub fn sheet_text(s: &str) -> std::borrow::Cow<'_, str> {
+    let bad = |c: char| {
+        (c.is_control() && !matches!(c, '\t' | '\n' | '\r') && (c as u32) < 0x20)
+            || c == '\u{7f}'
+            || c == '\u{fffe}'
+            || c == '\u{ffff}'
+    };
+    if s.chars().any(bad) {
+        s.chars()
+            .map(|c| if bad(c) { '\u{fffd}' } else { c })
+            .collect::<String>()
+            .into()
+    } else {
+        s.into()
+    }
+}
+
+/// A text cell of a CSV file, quoted, that a spreadsheet will not run as a formula: a cell
+/// starting with `=`, `+`, `-`, `@`, a tab or a carriage return gets a leading apostrophe
+/// (numbers are written as numbers, not through here).
+///
+/// ```
+/// use graphostatik::fmt::csv_text;
+/// assert_eq!(csv_text("U1"), "\"U1\"");
+/// assert_eq!(csv_text("=HYPERLINK(\"x\")"), "\"'=HYPERLINK(\"\"x\"\")\"");
+/// ```
+pub fn csv_text(s: &str) -> String {
+    let formula = s.starts_with(['=', '+', '-', '@', '\t', '\r']);
+    let s = s.replace('"', "\"\"");
+    if formula {
+        format!("\"'{s}\"")
+    } else {
+        format!("\"{s}\"")
+    }
+}
+
+/// A cell of a Markdown table: a `|` escaped, line breaks and other controls as spaces.
+///
+/// ```
+/// use graphostatik::fmt::markdown_cell;
+/// assert_eq!(markdown_cell("a|b\nc"), "a\\|b c");
+/// ```
+pub fn markdown_cell(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '|' => out.push_str("\\|"),
+            c if c.is_control() => out.push(' '),
+            c => out.push(c),
+        }
+    }
+    out
+}

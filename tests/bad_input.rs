@@ -442,3 +442,66 @@ fn steps_owns_its_pages_and_nothing_else() {
     assert!(out.join("index.html").exists() && out.join("step-001.svg").exists());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn names_cannot_break_the_svg_the_csv_or_the_markdown() {
+    let dir = tmp("names");
+    let scene = dir.join("t.json");
+    std::fs::write(
+        &scene,
+        r#"{ "procedure": "truss", "title": "t\u0001\u001b",
+        "joints": [ { "name": "I", "at_m": [0, 0] }, { "name": "II", "at_m": [2, 0] }, { "name": "III\u0000", "at_m": [1, 1] } ],
+        "members": [ { "name": "=1+1", "joints": ["I", "III\u0000"] }, { "name": "a|b\nc", "joints": ["III\u0000", "II"] }, { "name": "@3", "joints": ["I", "II"] } ],
+        "supports": [ { "joint": "I", "kind": "pinned" }, { "joint": "II", "kind": "roller", "direction_deg": 90 } ],
+        "load_cases": [ { "name": "P\u0007", "loads": [ { "joint": "III\u0000", "kg": 1000 } ] } ] }"#,
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let o = Command::new(bin())
+        .args([
+            "render",
+            scene.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let svg = std::fs::read_to_string(out.join("t.svg")).unwrap();
+    let forbidden = |c: char| (c < ' ' && !matches!(c, '\t' | '\n' | '\r')) || c == '\u{fffe}';
+    assert!(
+        !svg.chars().any(forbidden),
+        "the SVG holds a character XML forbids"
+    );
+    let table = |format: &str| {
+        let o = Command::new(bin())
+            .args(["forces", scene.to_str().unwrap(), "--format", format])
+            .output()
+            .unwrap();
+        String::from_utf8(o.stdout).unwrap()
+    };
+    let csv = table("csv");
+    assert!(
+        csv.contains("\"'=1+1\"") && csv.contains("\"'@3\""),
+        "{csv}"
+    );
+    assert!(!csv
+        .lines()
+        .any(|l| l.starts_with('=') || l.starts_with("\"=")));
+    let md = table("markdown");
+    assert!(md.contains("a\\|b c"), "{md}");
+    let rows: Vec<&str> = md
+        .lines()
+        .filter(|l| l.starts_with('|') && !l.starts_with("|---"))
+        .collect();
+    let cols = rows[0].matches(" | ").count();
+    assert!(rows
+        .iter()
+        .all(|r| r.replace("\\|", "").matches(" | ").count() == cols));
+    std::fs::remove_dir_all(&dir).ok();
+}

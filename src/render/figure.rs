@@ -2,7 +2,7 @@
 
 use super::style::class as class_of;
 use super::style::*;
-use crate::fmt::num;
+use crate::fmt::{num, sheet_text};
 use crate::kernel::tolerance::{MIN_DRAWN_MM, NICE_SCALE_SLACK, REL_LAYOUT_EPS};
 use crate::kernel::{Point, Vector};
 use crate::protocol::{
@@ -275,7 +275,7 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
 }
 
 fn label_text(f: &Frame, at: &Point, label: &Label) -> Text {
-    let mut t = Text::new(label.base.clone())
+    let mut t = Text::new(sheet_text(&label.base).into_owned())
         .set("x", f.x(at))
         .set("y", f.y(at));
     if let Some(i) = label.index {
@@ -433,7 +433,7 @@ fn draw_table(f: &Frame, at: Point, rows: &[Vec<String>], g: Group) -> Group {
                 (x, "start")
             };
             g = g.add(
-                Text::new(cell.as_str())
+                Text::new(sheet_text(cell).into_owned())
                     .set("class", "small")
                     .set("x", f.x(&Point::new(px, y)))
                     .set("y", f.y(&Point::new(px, y)))
@@ -566,14 +566,14 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> Group {
         .set("inkscape:groupmode", "layer")
         .set("inkscape:label", "000 sheet: title and scales");
     g = g.add(
-        Text::new(meta.title.clone())
+        Text::new(sheet_text(&meta.title).into_owned())
             .set("class", "title")
             .set("x", num(MARGIN, 3))
             .set("y", num(MARGIN + 6.0, 3)),
     );
     if !meta.source.is_empty() {
         g = g.add(
-            Text::new(meta.source.clone())
+            Text::new(sheet_text(&meta.source).into_owned())
                 .set("x", num(MARGIN, 3))
                 .set("y", num(MARGIN + 12.0, 3)),
         );
@@ -617,7 +617,7 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> Group {
                 .set("y", num(y + 3.2, 3)),
         );
         g = g.add(
-            Text::new(s.name.clone())
+            Text::new(sheet_text(&s.name).into_owned())
                 .set("class", "small")
                 .set("x", num(x + len + 12.0, 3))
                 .set("y", num(y + 1.0, 3)),
@@ -631,7 +631,7 @@ fn layer(board: &Board, f: &Frame, step: &Step, current: bool) -> Group {
     let mut g = Group::new()
         .set("id", format!("step-{id}"))
         .set("inkscape:groupmode", "layer")
-        .set("inkscape:label", step.title())
+        .set("inkscape:label", sheet_text(&step.title()).into_owned())
         .set("data-step", id.clone());
     if current {
         g = g.set("class", "current");
@@ -663,7 +663,7 @@ pub fn figure(meta: &FigureMeta, board: &Board, upto: Option<StepId>) -> String 
             "viewBox",
             format!("0 0 {} {}", num(f.width, 3), num(f.height, 3)),
         )
-        .add(Title::new(meta.title.clone()))
+        .add(Title::new(sheet_text(&meta.title).into_owned()))
         .add(Style::new(css()))
         .add(defs())
         .add(sheet_layer(&f, meta));

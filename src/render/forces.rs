@@ -43,6 +43,11 @@ fn polar(f: Vector) -> String {
     format!("{} ∠{}°", num(m, 1), num(deg, 1))
 }
 
+/// A name in a Markdown cell.
+fn md(s: &str) -> String {
+    crate::fmt::markdown_cell(s)
+}
+
 /// The envelope as a Markdown table.
 pub fn envelope_markdown(results: &[CaseResult], rule: Option<&EnvelopeRule>) -> String {
     let mut out =
@@ -50,11 +55,11 @@ pub fn envelope_markdown(results: &[CaseResult], rule: Option<&EnvelopeRule>) ->
     for e in envelope(results, rule) {
         out.push_str(&format!(
             "| {} | {} | {} | {} | {} |\n",
-            e.member,
+            md(&e.member),
             signed(e.max.0),
-            e.max.1,
+            md(&e.max.1),
             signed(e.min.0),
-            e.min.1
+            md(&e.min.1)
         ));
     }
     out
@@ -66,11 +71,11 @@ pub fn envelope_markdown(results: &[CaseResult], rule: Option<&EnvelopeRule>) ->
 pub fn markdown(results: &[CaseResult], combos: &[Combination]) -> String {
     let mut head = vec!["member".to_string()];
     for r in results {
-        head.push(format!("{} plan (mm)", r.case));
-        head.push(format!("{} (kg)", r.case));
+        head.push(format!("{} plan (mm)", md(&r.case)));
+        head.push(format!("{} (kg)", md(&r.case)));
     }
     for c in combos {
-        head.push(format!("{} (kg)", c.name));
+        head.push(format!("{} (kg)", md(&c.name)));
     }
     head.push("kind".into());
     let mut out = format!("| {} |\n", head.join(" | "));
@@ -81,7 +86,7 @@ pub fn markdown(results: &[CaseResult], combos: &[Combination]) -> String {
     out.push('\n');
     let n = results.first().map_or(0, |r| r.members.len());
     for m in 0..n {
-        let mut row = vec![results[0].members[m].member.clone()];
+        let mut row = vec![md(&results[0].members[m].member)];
         let mut last = 0.0;
         for r in results {
             row.push(num(r.members[m].plan_mm, 1));
@@ -99,7 +104,7 @@ pub fn markdown(results: &[CaseResult], combos: &[Combination]) -> String {
     let k = results.first().map_or(0, |r| r.reactions.len());
     for s in 0..k {
         let r0 = &results[0].reactions[s];
-        let mut row = vec![format!("{} ({})", r0.support, r0.joint)];
+        let mut row = vec![md(&format!("{} ({})", r0.support, r0.joint))];
         for r in results {
             row.push(num(r.reactions[s].plan_mm, 1));
             row.push(polar(r.reactions[s].force));
@@ -116,7 +121,7 @@ pub fn markdown(results: &[CaseResult], combos: &[Combination]) -> String {
 /// The same as CSV (comma-separated, plain minus signs, one header line); each support
 /// reaction as two rows, its x and y components, with the plan column left empty.
 pub fn csv(results: &[CaseResult], combos: &[Combination]) -> String {
-    let q = |s: &str| format!("\"{}\"", s.replace('"', "\"\""));
+    let q = |s: &str| crate::fmt::csv_text(s);
     let mut head = vec![q("member")];
     for r in results {
         head.push(q(&format!("{} plan_mm", r.case)));

@@ -15,7 +15,8 @@ pub struct Page {
 }
 
 fn html_escape(s: &str) -> String {
-    s.replace('&', "&amp;")
+    crate::fmt::sheet_text(s)
+        .replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
         .replace('"', "&quot;")
