@@ -1229,3 +1229,32 @@ fn reactions_by_moments_agree_with_the_dense_solve() {
     t.supports = vec![Support::pinned(0, "A"), roller(1, 0.0)];
     assert!(by_moments(&t, &loads).is_none());
 }
+
+#[test]
+fn coincident_joints_are_found_whatever_lies_between_them() {
+    let scene = |joints: &str| {
+        format!(
+            r#"{{ "procedure": "truss", "title": "t", "joints": [ {joints} ],
+            "members": [ {{ "name": "1", "joints": ["A", "B"] }} ],
+            "supports": [ {{ "joint": "A", "kind": "pinned" }} ],
+            "load_cases": [ {{ "name": "P", "loads": [ {{ "joint": "B", "kg": 1 }} ] }} ] }}"#
+        )
+    };
+    for (joints, on) in [
+        // −0.0 is 0: IV lies on III, with I sorted between them.
+        (
+            r#"{ "name": "A", "at_m": [-0.0, 1] }, { "name": "B", "at_m": [0, 0] }, { "name": "C", "at_m": [0, 1] }"#,
+            "joint `C` lies on joint `A`",
+        ),
+        // 1e-300 m from (0, 0) on a 2 m truss, with (0, 1) between them by x.
+        (
+            r#"{ "name": "A", "at_m": [0, 0] }, { "name": "B", "at_m": [0, 1] }, { "name": "C", "at_m": [1e-300, 0] }, { "name": "D", "at_m": [2, 0] }"#,
+            "joint `C` lies on joint `A`",
+        ),
+    ] {
+        let e = AnyScene::from_json(&scene(joints), "c.json")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains(on) && e.contains("joints[2]"), "{e}");
+    }
+}

@@ -350,24 +350,33 @@ impl TrussScene {
             span(xs.collect()).max(span(ys.collect()))
         };
         let eps = crate::kernel::tolerance::REL_LENGTH_EPS * size.max(f64::MIN_POSITIVE);
-        let mut by_pos: Vec<usize> = (0..self.joints.len()).collect();
-        by_pos.sort_by(|&a, &b| {
-            let (p, q) = (self.joints[a].at_m, self.joints[b].at_m);
-            p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
-        });
-        for w in by_pos.windows(2) {
-            let (p, q) = (self.joints[w[0]].at_m, self.joints[w[1]].at_m);
-            // Neighbours by x; equal x within eps and equal y within eps are one point.
-            if (p[0] - q[0]).abs() <= eps && (p[1] - q[1]).abs() <= eps {
-                let (a, b) = (w[0].min(w[1]), w[0].max(w[1]));
-                return Err(bad(
-                    format!("joints[{b}]"),
-                    format!(
-                        "joint `{}` lies on joint `{}`",
-                        self.joints[b].name, self.joints[a].name
-                    ),
-                ));
+        // A grid of cells as wide as the tolerance: a joint can only lie on a joint in its
+        // own cell or the eight around it, whatever lies between them in any ordering
+        // (O(k) for k joints; −0.0 and 0.0 are one coordinate).
+        let cell = |v: f64| ((v + 0.0) / eps).floor() as i64;
+        let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+        for (b, jb) in self.joints.iter().enumerate() {
+            let [x, y] = jb.at_m;
+            let (cx, cy) = (cell(x), cell(y));
+            for dx in -1..=1i64 {
+                for dy in -1..=1i64 {
+                    let key = (cx.saturating_add(dx), cy.saturating_add(dy));
+                    for &a in grid.get(&key).map_or(&[][..], |v| v.as_slice()) {
+                        let [ax, ay] = self.joints[a].at_m;
+                        if (ax - x).abs() <= eps && (ay - y).abs() <= eps {
+                            return Err(bad(
+                                format!("joints[{b}]"),
+                                format!(
+                                    "joint `{}` lies on joint `{}`",
+                                    crate::fmt::clip(&jb.name, 60),
+                                    crate::fmt::clip(&self.joints[a].name, 60)
+                                ),
+                            ));
+                        }
+                    }
+                }
             }
+            grid.entry((cx, cy)).or_default().push(b);
         }
         Ok(())
     }
