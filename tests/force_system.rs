@@ -272,3 +272,37 @@ fn directions_a_hair_from_antiparallel_are_refused_as_parallel() {
         assert!(e.contains("resolve[0].along_deg"), "{along}: {e}");
     }
 }
+
+#[test]
+fn the_lever_rule_by_auxiliary_forces_holds_at_any_points_of_application() {
+    // Abb. 21 with the points of application off one horizontal, the second left of the
+    // first, and slanted forces: the resultant still divides the join as K2 : K1.
+    let d = SystemDrawing {
+        length_scale: 25.0,
+        force_scale: 10.0,
+        pole: None,
+        plan_at: None,
+        unit: "kg",
+    };
+    for (p1, p2, dir) in [
+        ((0.0, -1.0), (2.0, 0.0), (0.0, -1.0)),
+        ((2.0, 0.5), (-1.0, -0.25), (0.0, -1.0)),
+        ((0.0, 0.0), (3.0, 1.0), (0.6, -0.8)),
+    ] {
+        let k1 = Force::new(p1, (300.0 * dir.0, 300.0 * dir.1));
+        let k2 = Force::new(p2, (500.0 * dir.0, 500.0 * dir.1));
+        let mut b = Board::recording();
+        let a = parallel_pair_by_auxiliary_forces(&mut b, k1, k2, 250.0, &d).unwrap();
+        let dist = (k2.at - k1.at).norm();
+        assert!(
+            (a - dist * 500.0 / 800.0).abs() < 1e-9,
+            "{p1:?} {p2:?}: a = {a}"
+        );
+        assert!(b.all_passed());
+    }
+    // Points on one line of action: no line for the auxiliary forces; named, not NaN.
+    let k1 = Force::new((0.0, 0.0), (0.0, -300.0));
+    let k2 = Force::new((0.0, 2.0), (0.0, -500.0));
+    let e = parallel_pair_by_auxiliary_forces(&mut Board::silent(), k1, k2, 250.0, &d).unwrap_err();
+    assert!(e.to_string().contains("one line of action"), "{e}");
+}

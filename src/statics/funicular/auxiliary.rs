@@ -48,9 +48,30 @@ pub fn parallel_pair_by_auxiliary_forces(
     let k = 1000.0 / dr.length_scale;
     let fs = dr.force_scale;
     let dir = v1 / v1.norm();
+    // The auxiliary forces P' and P'' = -P' must share one line of action to cancel: the
+    // line joining the points of application (across the forces only where that is
+    // horizontal, as in Abb. 21).
+    let join = k2.at - k1.at;
+    if join.norm() == 0.0
+        || crate::kernel::cross(&join, &dir).abs() <= PARALLEL_SIN_EPS * join.norm()
+    {
+        return Err(ConstructionError::unsupported(
+            "forces",
+            "the points of application lie on one line of action: the resultant acts on it, and the auxiliary forces have no line to act along",
+        ));
+    }
+    let across = join / join.norm();
     let mut partial = Vec::new();
     for (i, (f, sense)) in [(k1, 1.0), (k2, -1.0)].into_iter().enumerate() {
-        partial.push(partial_resultant(b, i, f, sense * aux, dir, k, fs)?);
+        partial.push(partial_resultant(
+            b,
+            i,
+            f,
+            sense * aux,
+            (dir, across),
+            k,
+            fs,
+        )?);
     }
     let x = b
         .meet_point(
@@ -102,19 +123,19 @@ struct Partial {
     line: H<Line>,
 }
 
-/// The partial resultant of force `f` (the `i`-th) and its auxiliary force of `aux` kg across
-/// it, by the parallelogram at its point of application: the point, the force's line, and
-/// the line of the partial resultant.
+/// The partial resultant of force `f` (the `i`-th, along `dir`) and its auxiliary force of
+/// `aux` kg along `across` (the join of the points of application), by the parallelogram at
+/// its point of application: the point, the force's line, and the line of the partial
+/// resultant.
 fn partial_resultant(
     b: &mut Board,
     i: usize,
     f: Force,
     aux: f64,
-    dir: Vector,
+    (dir, across): (Vector, Vector),
     k: f64,
     fs: f64,
 ) -> Result<Partial, ConstructionError> {
-    let across = Vector::new(-dir.y, dir.x);
     let at = Point::new(f.at.x * k, f.at.y * k);
     let a = b.point(
         at,
