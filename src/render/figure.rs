@@ -473,9 +473,16 @@ fn hatching(f: &Frame, a: Point, b: Point) -> Path {
     let n = Vector::new(u.y, -u.x); // right of a→b
     let slant = (n - u) * (HATCH / std::f64::consts::SQRT_2);
     let mut d = String::new();
-    let k = (len / HATCH).floor() as usize;
+    // At most MAX_HATCH_STROKES strokes: a guide drawn kilometres long (an absurd scale) is
+    // hatched more coarsely instead of by a loop whose count comes from the scale.
+    let k = ((len / HATCH).floor() as usize).min(MAX_HATCH_STROKES);
+    let step = if k == MAX_HATCH_STROKES {
+        len / k as f64
+    } else {
+        HATCH
+    };
     for i in 0..=k {
-        let p = a + u * (i as f64 * HATCH);
+        let p = a + u * (i as f64 * step);
         d.push_str(&format!("M{} L{} ", f.xy(&p), f.xy(&(p + slant))));
     }
     Path::new().set("class", "hatch").set("d", d.trim_end())

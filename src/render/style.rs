@@ -74,3 +74,6 @@ text.small{{font-style:normal;font-size:2.8px}}\
         c = CURRENT
     )
 }
+
+/// Most strokes of the hatching along one guide or support (beyond, the spacing grows).
+pub const MAX_HATCH_STROKES: usize = 2000;
