@@ -28,7 +28,7 @@ pub enum SceneError {
         message: String,
     },
     /// A value that parses but makes no mechanism (a rod shorter than the crank, …).
-    #[error("{origin}: {field}: {message}")]
+    #[error("{origin}: {}{message}", field_prefix(.field))]
     Invalid {
         /// The file.
         origin: String,

@@ -147,12 +147,45 @@ impl Clone for AnyScene {
     }
 }
 
-/// What the dispatcher reads before the real parse: only the `procedure` field.
-#[derive(serde::Deserialize)]
-struct ProcedureProbe {
-    #[serde(default)]
-    procedure: Option<serde_json::Value>,
+/// The first string in `v` longer than its field allows: its path, its length and the limit
+/// (a scene's free `notes` may run to [`MAX_NOTES_CHARS`], every other text to
+/// [`MAX_TEXT_CHARS`]): a name of a megabyte would be written into every layer it labels.
+fn too_long(v: &serde_json::Value, path: &mut String) -> Option<(String, usize, usize)> {
+    match v {
+        serde_json::Value::String(s) => {
+            let max = if path == "notes" {
+                MAX_NOTES_CHARS
+            } else {
+                MAX_TEXT_CHARS
+            };
+            let n = s.chars().count();
+            (n > max).then(|| (path.clone(), n, max))
+        }
+        serde_json::Value::Array(items) => items.iter().enumerate().find_map(|(i, x)| {
+            let len = path.len();
+            path.push_str(&format!("[{i}]"));
+            let found = too_long(x, path);
+            path.truncate(len);
+            found
+        }),
+        serde_json::Value::Object(map) => map.iter().find_map(|(k, x)| {
+            let len = path.len();
+            if !path.is_empty() {
+                path.push('.');
+            }
+            path.push_str(&crate::fmt::clip(k, 40));
+            let found = too_long(x, path);
+            path.truncate(len);
+            found
+        }),
+        _ => None,
+    }
 }
+
+/// Longest text a scene field may hold (a title, a name, a reference), in characters.
+pub const MAX_TEXT_CHARS: usize = 400;
+/// Longest free `notes` of a scene, in characters (they are not drawn).
+pub const MAX_NOTES_CHARS: usize = 20_000;
 
 impl AnyScene {
     /// Parses and validates a scene of any procedure, by its `procedure` field (absent:
@@ -179,21 +212,37 @@ impl AnyScene {
     /// its own line and column, before any procedure's fields are looked at.
     fn procedure_of(text: &str, origin: &str) -> Result<Option<String>, SceneError> {
         let de = &mut serde_json::Deserializer::from_str(text);
-        let probe: ProcedureProbe = serde::Deserialize::deserialize(&mut *de)
+        let value: serde_json::Value = serde::Deserialize::deserialize(&mut *de)
             .and_then(|p| de.end().map(|_| p))
             .map_err(|e| syntax_error(e, origin))?;
-        match probe.procedure {
+        let invalid = |field: String, message: String| SceneError::Invalid {
+            origin: origin.to_string(),
+            field,
+            message,
+        };
+        let Some(object) = value.as_object() else {
+            return Err(invalid(
+                String::new(),
+                "a scene is a JSON object ({ \"title\": …, … })".into(),
+            ));
+        };
+        if let Some((field, chars, max)) = too_long(&value, &mut String::new()) {
+            return Err(invalid(
+                field,
+                format!("a text of {chars} characters: at most {max} are allowed"),
+            ));
+        }
+        match object.get("procedure") {
             None => Ok(None),
-            Some(serde_json::Value::String(s)) => Ok(Some(s)),
-            Some(other) => Err(SceneError::Invalid {
-                origin: origin.to_string(),
-                field: "procedure".into(),
-                message: format!(
+            Some(serde_json::Value::String(s)) => Ok(Some(s.clone())),
+            Some(other) => Err(invalid(
+                "procedure".into(),
+                format!(
                     "must be a string naming the procedure ({}), got {}",
                     known_names(),
                     crate::fmt::clip(&other.to_string(), 60)
                 ),
-            }),
+            )),
         }
     }
 
@@ -329,6 +378,26 @@ mod tests {
         let e = AnyScene::from_json(text, "b.json").unwrap_err().to_string();
         assert!(e.starts_with("b.json:4:"), "{e}");
         assert!(!e.contains("unknown field"), "{e}");
+    }
+
+    #[test]
+    fn a_megabyte_name_is_refused_naming_its_field() {
+        let long = "x".repeat(MAX_TEXT_CHARS + 1);
+        let text = format!(
+            r#"{{"procedure": "truss", "title": "t", "load_cases": [{{"name": "{long}"}}]}}"#
+        );
+        let e = AnyScene::from_json(&text, "l.json")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("l.json: load_cases[0].name: a text of 401"),
+            "{e}"
+        );
+        assert!(e.len() < 200, "the error quotes no megabyte: {e}");
+        let e = AnyScene::from_json("[1, 2]", "a.json")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("a scene is a JSON object"), "{e}");
     }
 
     #[test]

@@ -86,24 +86,28 @@ pub fn parallel_pair_by_auxiliary_forces(
                 "equal and opposite forces: a couple, no single resultant",
             )
         })?;
-    // The resultant runs parallel to the forces (to K1's line of action), through X.
-    let r_line = b.parallel(&partial[0].along, &x, Label::NONE, Role::Result, N_AUX_LINE);
+    let ratio = (k1.f.dot(&dir), k2.f.dot(&dir));
+    let dist = ((k2.at.x - k1.at.x).powi(2) + (k2.at.y - k1.at.y).powi(2)).sqrt();
+    lever_arm(b, &partial, &x, ratio, (dist, 1.0 / k))
+}
+
+/// The resultant through X, parallel to the forces (to K1's line of action), cuts the join
+/// of the points of application at distance a from the first, read off at `m_per_mm` and
+/// checked by the lever rule a = l·K2/(K1 + K2) (`(m1, m2)`: the forces along their
+/// direction; `dist`: l in m).
+fn lever_arm(
+    b: &mut Board,
+    partial: &[Partial],
+    x: &H<Point>,
+    (m1, m2): (f64, f64),
+    (dist, m_per_mm): (f64, f64),
+) -> Result<f64, ConstructionError> {
+    let r_line = b.parallel(&partial[0].along, x, Label::NONE, Role::Result, N_AUX_LINE);
     let (a1, a2) = (partial[0].at, partial[1].at);
     let join = b.line_through(&a1, &a2, Label::NONE, Role::Construction, N_AUX_FOOT)?;
     let c = b.meet_point(&r_line, &join, Label::plain("R"), N_AUX_FOOT)?;
-    let a = b.measure(
-        &a1,
-        &c,
-        &join,
-        Scale {
-            per_mm: 1.0 / k,
-            unit: "m",
-        },
-        Label::quiet("a", 0),
-        N_AUX_A,
-    );
-    let (m1, m2) = (v1.dot(&dir), v2.dot(&dir));
-    let dist = ((k2.at.x - k1.at.x).powi(2) + (k2.at.y - k1.at.y).powi(2)).sqrt();
+    let metres = Scale::new(m_per_mm, "m");
+    let a = b.measure(&a1, &c, &join, metres, Label::quiet("a", 0), N_AUX_A);
     b.check(
         &a,
         "distance a of the resultant (lever rule a : b = K2 : K1)",
