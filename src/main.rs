@@ -214,6 +214,15 @@ fn check_cmd(scene: &Path, json: bool) -> Result<ExitCode, Fail> {
 fn steps_cmd(scene: &Path, out: &Path) -> Result<ExitCode, Fail> {
     let p = load(scene)?;
     let board = construct(scene, &p)?;
+    let (n_pages, drawn) = render::walkthrough_cost(&board);
+    if drawn > render::MAX_WALKTHROUGH_OBJECTS {
+        return Err(Fail(format!(
+            "{}: the walk-through would draw {drawn} objects on {n_pages} pages, more than the \
+             {} it may (some 350 MB): render the figure instead, or draw fewer load cases",
+            scene.display(),
+            render::MAX_WALKTHROUGH_OBJECTS
+        )));
+    }
     let pages = render::walkthrough(&p.figure_meta(), &board);
     ensure_dir(out)?;
     let mut batch = Batch::default();

@@ -505,3 +505,45 @@ fn names_cannot_break_the_svg_the_csv_or_the_markdown() {
         .all(|r| r.replace("\\|", "").matches(" | ").count() == cols));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn a_walkthrough_too_big_to_write_is_refused_before_a_page_is_written() {
+    let dir = tmp("bigwalk");
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/lh_aufgabe5_crane_bridge.json"
+    ))
+    .unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let case = v["load_cases"][0].clone();
+    let cases: Vec<serde_json::Value> = (0..25)
+        .map(|i| {
+            let mut c = case.clone();
+            c["name"] = format!("dead {i}").into();
+            c
+        })
+        .collect();
+    v["load_cases"] = cases.into();
+    let o = v.as_object_mut().unwrap();
+    o.remove("envelope");
+    let scene = dir.join("big.json");
+    std::fs::write(&scene, v.to_string()).unwrap();
+    let out = dir.join("walk");
+    let o = Command::new(bin())
+        .args([
+            "steps",
+            scene.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        e.contains("the walk-through would draw") && e.lines().count() == 1,
+        "{e}"
+    );
+    assert!(!out.exists());
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -1258,3 +1258,37 @@ fn coincident_joints_are_found_whatever_lies_between_them() {
         assert!(e.contains(on) && e.contains("joints[2]"), "{e}");
     }
 }
+
+#[test]
+fn a_scene_too_big_to_draw_is_refused_before_it_is_built_naming_the_moving_load() {
+    // 300 joints on a line, a load moving over all of them: 300 cases of about 2,400 steps.
+    let n = 300;
+    let joints: Vec<String> = (0..n)
+        .map(|i| format!(r#"{{ "name": "J{i}", "at_m": [{i}, {}] }}"#, i % 2))
+        .collect();
+    let members: Vec<String> = (1..n)
+        .map(|i| format!(r#"{{ "name": "{i}", "joints": ["J{}", "J{i}"] }}"#, i - 1))
+        .collect();
+    let path: Vec<String> = (0..n).map(|i| format!("\"J{i}\"")).collect();
+    let text = format!(
+        r#"{{ "procedure": "truss", "title": "t", "joints": [{}], "members": [{}],
+        "supports": [ {{ "joint": "J0", "kind": "pinned" }}, {{ "joint": "J1", "kind": "roller", "direction_deg": 90 }} ],
+        "moving_loads": [ {{ "name": "cart", "loads_kg": [100], "path": [{}] }} ] }}"#,
+        joints.join(","),
+        members.join(","),
+        path.join(",")
+    );
+    let t = std::time::Instant::now();
+    let e = AnyScene::from_json(&text, "big.json")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("big.json: moving_loads: 300 load cases"),
+        "{e}"
+    );
+    assert!(e.contains("more than the 200000"), "{e}");
+    assert!(
+        t.elapsed().as_secs_f64() < 5.0,
+        "refused before anything heavy"
+    );
+}

@@ -11,4 +11,4 @@ mod walkthrough;
 pub use crate::protocol::{FigureMeta, ScaleBar};
 pub use figure::figure;
 pub use table::{check_rows, check_table_json, check_table_text, CheckRow};
-pub use walkthrough::{walkthrough, Page, MAX_PAGES};
+pub use walkthrough::{walkthrough, walkthrough_cost, Page, MAX_PAGES, MAX_WALKTHROUGH_OBJECTS};

@@ -51,6 +51,27 @@ fn page_groups(board: &Board) -> Vec<Vec<&Step>> {
     groups
 }
 
+/// What a walk-through of `board` costs before it is written: its pages, and the objects
+/// they draw in all (each page draws every object up to its step).
+pub fn walkthrough_cost(board: &Board) -> (usize, usize) {
+    let groups = page_groups(board);
+    let mut drawn = 0usize;
+    let mut upto = 0usize;
+    let objects = board.objects();
+    for g in &groups {
+        let last = g[g.len() - 1].id;
+        while upto < objects.len() && objects[upto].step <= last {
+            upto += 1;
+        }
+        drawn = drawn.saturating_add(upto);
+    }
+    (groups.len(), drawn)
+}
+
+/// Most objects all pages of one walk-through may draw together (about 350 bytes each, so
+/// some 350 MB): beyond, `steps` refuses before it writes anything.
+pub const MAX_WALKTHROUGH_OBJECTS: usize = 1_000_000;
+
 /// The pages of a walk-through: `step-NNN.svg` showing steps 1..NNN with NNN highlighted,
 /// and `index.html`, which works offline (no script from outside, images by relative path),
 /// with buttons and the arrow keys to step back and forth. Beyond [`MAX_PAGES`] steps a page
