@@ -129,3 +129,18 @@ pub fn markdown_cell(s: &str) -> String {
     }
     out
 }
+
+/// Most characters of an error line; a longer one is cut with an ellipsis.
+pub const MAX_ERROR_CHARS: usize = 1000;
+
+/// An error as the command line prints it: one line (control characters escaped, so a
+/// newline in a scene's name cannot split it) of at most [`MAX_ERROR_CHARS`] characters.
+///
+/// ```
+/// use graphostatik::fmt::error_line;
+/// assert_eq!(error_line("s.json: joints[2]: joint `a\nb` lies on joint `c`"),
+///            "s.json: joints[2]: joint `a\\nb` lies on joint `c`");
+/// ```
+pub fn error_line(msg: &str) -> String {
+    clip(msg, MAX_ERROR_CHARS)
+}

@@ -306,7 +306,7 @@ fn main() -> ExitCode {
     match run(cli) {
         Ok(code) => code,
         Err(Fail(msg)) => {
-            eprintln!("error: {msg}");
+            eprintln!("error: {}", graphostatik::fmt::error_line(&msg));
             ExitCode::from(2)
         }
     }

@@ -102,7 +102,7 @@ pub(super) fn json_error(
         line: inner.line(),
         column: inner.column(),
         field: if field == "." { String::new() } else { field },
-        message: strip_position(&inner.to_string()),
+        message: crate::fmt::clip(&strip_position(&inner.to_string()), 300),
     }
 }
 
@@ -112,7 +112,7 @@ pub(super) fn syntax_error(e: serde_json::Error, origin: &str) -> SceneError {
         line: e.line(),
         column: e.column(),
         field: String::new(),
-        message: strip_position(&e.to_string()),
+        message: crate::fmt::clip(&strip_position(&e.to_string()), 300),
     }
 }
 
