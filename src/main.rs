@@ -115,8 +115,10 @@ fn load(path: &Path) -> Result<AnyProblem, Fail> {
 }
 
 fn construct(path: &Path, p: &AnyProblem) -> Result<graphostatik::protocol::Board, Fail> {
-    p.construct(true)
-        .map_err(|e| Fail(format!("{}: {e}", path.display())))
+    p.construct(true).map_err(|e| match p.error_field(&e) {
+        Some(field) => Fail(format!("{}: {field}: {e}", path.display())),
+        None => Fail(format!("{}: {e}", path.display())),
+    })
 }
 
 fn ensure_dir(dir: &Path) -> Result<(), Fail> {

@@ -306,3 +306,27 @@ fn the_lever_rule_by_auxiliary_forces_holds_at_any_points_of_application() {
     let e = parallel_pair_by_auxiliary_forces(&mut Board::silent(), k1, k2, 250.0, &d).unwrap_err();
     assert!(e.to_string().contains("one line of action"), "{e}");
 }
+
+#[test]
+fn a_construction_error_names_the_scene_field_that_caused_it() {
+    // The pole given on a corner of the force polygon: the error is about drawing.pole_kg.
+    let text = r#"{ "procedure": "force_system", "title": "t",
+        "forces": [ { "at_m": [0, 0], "kg_xy": [0, -100] }, { "at_m": [1, 0], "kg_xy": [0, -100] } ],
+        "drawing": { "pole_kg": [0, -100] } }"#;
+    let problem = graphostatik::scene::AnyScene::from_json(text, "p.json")
+        .unwrap()
+        .problem();
+    let e = problem.construct(true).unwrap_err();
+    assert_eq!(
+        problem.error_field(&e).as_deref(),
+        Some("drawing.pole_kg"),
+        "{e}"
+    );
+    assert_eq!(
+        graphostatik::scene::scene_field(
+            "resolutions[2].along",
+            &[("resolutions", "resolve"), (".along", ".along_deg")]
+        ),
+        "resolve[2].along_deg"
+    );
+}

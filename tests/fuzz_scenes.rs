@@ -137,7 +137,10 @@ fn run(text: &str) -> Result<(), String> {
     let problem = scene.problem();
     let board = problem
         .construct(true)
-        .map_err(|e| line(format!("fuzz.json: {e}")))?;
+        .map_err(|e| match problem.error_field(&e) {
+            Some(field) => line(format!("fuzz.json: {field}: {e}")),
+            None => line(format!("fuzz.json: {e}")),
+        })?;
     let svg = render::figure(&problem.figure_meta(), &board, None);
     let forbidden = |c: char| (c < ' ' && !matches!(c, '\t' | '\n' | '\r')) || c == '\u{fffe}';
     if svg.chars().any(forbidden) {

@@ -381,6 +381,12 @@ impl super::Procedure for BeamScene {
     const NAME: &'static str = "beam";
     const ABOUT: &'static str = "a beam on two supports: reactions by the closing line, moment area, shear, parabola by tangents (LH I C.4-6)";
     const OUTPUTS: &'static [&'static str] = &["reactions", "moment_area", "shear_diagram"];
+    const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("supports", "beam.supports_m"),
+        ("stringers", "stringers_m"),
+        ("pole", "drawing.pole_distance_kg"),
+    ];
+    const GEOMETRY_FIELD: &'static str = "drawing";
     type Problem = BeamProblem;
     type Results = statics::BeamResults;
 

@@ -173,6 +173,8 @@ impl super::Procedure for CentroidScene {
     const NAME: &'static str = "centroid";
     const ABOUT: &'static str = "the centroid of a polygon by two funicular polygons (LH I C.3)";
     const OUTPUTS: &'static [&'static str] = &[];
+    const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[("polygon", "polygon_m")];
+    const GEOMETRY_FIELD: &'static str = "polygon_m";
     type Problem = CentroidProblem;
     type Results = CentroidResults;
 

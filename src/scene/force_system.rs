@@ -288,6 +288,12 @@ impl super::Procedure for ForceSystemScene {
     const NAME: &'static str = "force_system";
     const ABOUT: &'static str = "forces in the plane: force and funicular polygons, resultant, couple, resolution along two lines (LH I A, C.1-2)";
     const OUTPUTS: &'static [&'static str] = &[];
+    const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("resolutions", "resolve"),
+        (".along", ".along_deg"),
+        ("pole", "drawing.pole_kg"),
+    ];
+    const GEOMETRY_FIELD: &'static str = "forces";
     type Problem = ForceSystemProblem;
     type Results = Option<funicular::SystemResults>;
 

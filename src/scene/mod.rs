@@ -41,7 +41,7 @@ pub use error::SceneError;
 pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,
 };
-pub use procedure::{parse_scene, Procedure, SceneHeader, SchemaType};
+pub use procedure::{parse_scene, scene_field, Procedure, SceneHeader, SchemaType};
 #[cfg(feature = "schema")]
 pub use registry::schema_json;
 pub use registry::{AnyProblem, AnyScene, Entry, REGISTRY};

@@ -79,6 +79,41 @@ pub trait Procedure:
     ) -> Result<(Board, Self::Results), ConstructionError>;
     /// Title, source and scale bars of the figure.
     fn figure_meta(problem: &Self::Problem) -> FigureMeta;
+
+    /// How the procedure's own inputs (`ConstructionError::Unsupported::input`, e.g.
+    /// `"forces[2]"`, `"pole"`) are called in the scene: pairs of (input prefix, scene field).
+    const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[];
+    /// The scene field a construction that finds no point (a cut that misses, a degenerate
+    /// primitive) is blamed on: what sets the geometry.
+    const GEOMETRY_FIELD: &'static str = "";
+
+    /// The scene field a construction error comes from, so that the error can name it:
+    /// by [`Procedure::INPUT_FIELDS`] for an input the procedure names, else
+    /// [`Procedure::GEOMETRY_FIELD`].
+    fn error_field(problem: &Self::Problem, err: &ConstructionError) -> Option<String> {
+        let _ = problem;
+        match err {
+            ConstructionError::Unsupported { input, .. } => {
+                Some(scene_field(input, Self::INPUT_FIELDS))
+            }
+            _ => Some(Self::GEOMETRY_FIELD.to_string()).filter(|f| !f.is_empty()),
+        }
+    }
+}
+
+/// The scene's name for a procedure input: the longest prefix in `table` replaced (`forces[2]`
+/// with ("forces", "forces") stays `forces[2]`; `resolutions[0].along` with
+/// ("resolutions", "resolve"), (".along", …) becomes `resolve[0].along_deg`).
+pub fn scene_field(input: &str, table: &[(&str, &str)]) -> String {
+    let mut out = input.to_string();
+    for (from, to) in table {
+        if let Some(rest) = out.strip_prefix(from) {
+            out = format!("{to}{rest}");
+        } else if let Some(k) = out.find(from) {
+            out = format!("{}{to}{}", &out[..k], &out[k + from.len()..]);
+        }
+    }
+    out
 }
 
 /// Parses a scene of one procedure, keeping field path, line and column, refusing trailing

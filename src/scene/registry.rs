@@ -98,6 +98,7 @@ impl<P: Procedure> DynScene for P {
 /// A problem of a procedure, type-erased.
 trait DynProblem: Debug + Send + Sync {
     fn name(&self) -> &'static str;
+    fn error_field(&self, err: &ConstructionError) -> Option<String>;
     fn construct(&self, recording: bool) -> Result<Board, ConstructionError>;
     fn figure_meta(&self) -> FigureMeta;
     fn as_any(&self) -> &dyn Any;
@@ -115,6 +116,9 @@ impl<P: Procedure> Debug for ProblemOf<P> {
 impl<P: Procedure> DynProblem for ProblemOf<P> {
     fn name(&self) -> &'static str {
         P::NAME
+    }
+    fn error_field(&self, err: &ConstructionError) -> Option<String> {
+        P::error_field(&self.0, err)
     }
     fn construct(&self, recording: bool) -> Result<Board, ConstructionError> {
         P::construct(&self.0, recording).map(|(b, _)| b)
@@ -301,6 +305,11 @@ impl AnyProblem {
     /// Title, source and scale bars of the figure.
     pub fn figure_meta(&self) -> FigureMeta {
         self.0.figure_meta()
+    }
+
+    /// The scene field a construction error comes from, where the procedure can tell.
+    pub fn error_field(&self, err: &ConstructionError) -> Option<String> {
+        self.0.error_field(err)
     }
 }
 

@@ -264,6 +264,12 @@ impl super::Procedure for ShaftScene {
     const ABOUT: &'static str =
         "a shaft: moments in two planes, torque, ideal moment and diameter (LH I C.7-8)";
     const OUTPUTS: &'static [&'static str] = &[];
+    const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("supports", "shaft.supports_m"),
+        ("point_loads", "plane_1_loads"),
+        ("pole", "drawing.pole_distance_kg"),
+    ];
+    const GEOMETRY_FIELD: &'static str = "drawing";
     type Problem = ShaftProblem;
     type Results = Vec<ShaftRow>;
 

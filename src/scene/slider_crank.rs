@@ -382,6 +382,7 @@ impl Procedure for Scene {
         "tangential_force",
         "radial_force",
     ];
+    const GEOMETRY_FIELD: &'static str = "mechanism";
     type Problem = Problem;
     type Results = CrankResults;
 

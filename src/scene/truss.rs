@@ -1043,6 +1043,32 @@ impl super::Procedure for TrussScene {
     const NAME: &'static str = "truss";
     const ABOUT: &'static str = "a truss: determinacy, reactions, Cremona plan, Ritter sections, counter-diagonals, envelopes (LH I B)";
     const OUTPUTS: &'static [&'static str] = &[];
+    const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
+        ("loads", "load_cases"),
+        ("diagonals", "diagonal_pairs"),
+        ("pole", "load_cases"),
+    ];
+    const GEOMETRY_FIELD: &'static str = "joints";
+
+    fn error_field(problem: &TrussProblem, err: &ConstructionError) -> Option<String> {
+        let t = &problem.truss;
+        let joint = |name: &str| t.joints.iter().position(|j| j.name == name);
+        let member = |name: &str| t.members.iter().position(|m| m.name == name);
+        match err {
+            ConstructionError::Mechanism { joint: j, .. }
+            | ConstructionError::Disconnected { joint: j } => {
+                Some(joint(j).map_or("joints".into(), |i| format!("joints[{i}]")))
+            }
+            ConstructionError::OverDeterminate { .. } => Some("members".into()),
+            ConstructionError::PlanStalls { member: m, .. } => {
+                Some(member(m).map_or("members".into(), |i| format!("members[{i}]")))
+            }
+            ConstructionError::Unsupported { input, .. } => {
+                Some(super::scene_field(input, Self::INPUT_FIELDS))
+            }
+            _ => Some(Self::GEOMETRY_FIELD.into()),
+        }
+    }
     type Problem = TrussProblem;
     type Results = Vec<CaseResult>;
 
