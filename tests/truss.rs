@@ -1292,3 +1292,24 @@ fn a_scene_too_big_to_draw_is_refused_before_it_is_built_naming_the_moving_load(
         "refused before anything heavy"
     );
 }
+
+#[test]
+fn a_truss_not_in_metres_is_refused_naming_its_joints() {
+    for (scale, words) in [("1e-300", "spans 2e-300 m"), ("1e7", "spans 2e7 m")] {
+        let text = format!(
+            r#"{{ "procedure": "truss", "title": "t",
+            "joints": [ {{ "name": "I", "at_m": [0, 0] }}, {{ "name": "II", "at_m": [{s2}, 0] }}, {{ "name": "III", "at_m": [{scale}, {scale}] }} ],
+            "members": [ {{ "name": "1", "joints": ["I", "III"] }}, {{ "name": "2", "joints": ["III", "II"] }}, {{ "name": "3", "joints": ["I", "II"] }} ],
+            "supports": [ {{ "joint": "I", "kind": "pinned" }}, {{ "joint": "II", "kind": "roller", "direction_deg": 90 }} ],
+            "load_cases": [ {{ "name": "P", "loads": [ {{ "joint": "III", "kg": 1000 }} ] }} ] }}"#,
+            s2 = 2.0 * scale.parse::<f64>().unwrap()
+        );
+        let e = AnyScene::from_json(&text, "t.json")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("t.json: joints: the truss") && e.contains(words),
+            "{e}"
+        );
+    }
+}

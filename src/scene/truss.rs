@@ -350,6 +350,15 @@ impl TrussScene {
             };
             span(xs.collect()).max(span(ys.collect()))
         };
+        if !(MIN_TRUSS_SIZE_M..=MAX_TRUSS_SIZE_M).contains(&size) {
+            return Err(bad(
+                "joints".into(),
+                format!(
+                    "the truss spans {size:e} m: give its joints in metres, within \
+                     {MIN_TRUSS_SIZE_M:e} to {MAX_TRUSS_SIZE_M:e} m across"
+                ),
+            ));
+        }
         let eps = crate::kernel::tolerance::REL_LENGTH_EPS * size.max(f64::MIN_POSITIVE);
         // A grid of cells as wide as the tolerance: a joint can only lie on a joint in its
         // own cell or the eight around it, whatever lies between them in any ordering
@@ -1088,6 +1097,12 @@ impl super::Procedure for TrussScene {
         problem.figure_meta()
     }
 }
+
+/// The smallest span of a truss scene (m): below a micrometre the scene is surely not in
+/// metres, and below 1e-154 m the squares of its lengths underflow.
+pub const MIN_TRUSS_SIZE_M: f64 = 1e-6;
+/// The largest span of a truss scene (m): a thousand kilometres.
+pub const MAX_TRUSS_SIZE_M: f64 = 1e6;
 
 /// Construction steps per joint and member of a truss in one load case (measured: the
 /// crane bridge of LH Aufgabe 5 records 5,416 steps for 11 cases of 40 joints and 96

@@ -137,6 +137,11 @@ pub fn analyse(t: &Truss) -> Analysis {
         return out;
     }
     let a = equilibrium_matrix(t);
+    // An SVD of a matrix with a non-finite entry never converges: such a truss (joints too
+    // far apart or too close for f64) keeps the count's answer and no rank.
+    if !a.iter().all(|x| x.is_finite()) {
+        return out;
+    }
     // Padded to at least 2k columns so that the SVD's U spans the whole joint space, and the
     // motions Aᵀu = 0 show as left singular vectors of zero singular values.
     let n = a.ncols().max(2 * k);
@@ -224,7 +229,7 @@ pub fn solve(t: &Truss, case: &LoadCase) -> Option<Solution> {
 /// each case costs one back-substitution (O(k²)).
 pub fn solve_all(t: &Truss, cases: &[LoadCase]) -> Vec<Option<Solution>> {
     let a = equilibrium_matrix(t);
-    if a.nrows() != a.ncols() {
+    if a.nrows() != a.ncols() || !a.iter().all(|x| x.is_finite()) {
         return vec![None; cases.len()];
     }
     let n = a.nrows();

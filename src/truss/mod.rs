@@ -172,6 +172,8 @@ impl Truss {
         let [a, b] = self.members[m].ends;
         let d = self.joints[b].at - self.joints[a].at;
         let l = d.norm();
+        // x² + y² underflows for a member shorter than 1e-154 m: hypot does not.
+        let l = if l.is_normal() { l } else { d.x.hypot(d.y) };
         (d / l, l)
     }
 
