@@ -547,3 +547,23 @@ fn a_walkthrough_too_big_to_write_is_refused_before_a_page_is_written() {
     assert!(!out.exists());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn an_absurd_scale_is_named_as_the_cause() {
+    let e = err(&GOOD.replace(
+        r#""angles": { "divisions": 12 },"#,
+        r#""angles": { "divisions": 12 }, "drawing": { "length_scale": 1e-12 },"#,
+    ));
+    assert!(
+        e.starts_with("s.json: drawing.length_scale: at this scale the figure would be"),
+        "{e}"
+    );
+    let e = err(&GOOD.replace(
+        r#""angles": { "divisions": 12 },"#,
+        r#""angles": { "divisions": 12 }, "drawing": { "force_scale_kg_per_mm": 1e-9 },"#,
+    ));
+    assert!(
+        e.starts_with("s.json: drawing.force_scale_kg_per_mm:"),
+        "{e}"
+    );
+}

@@ -387,6 +387,17 @@ impl super::Procedure for BeamScene {
         ("pole", "drawing.pole_distance_kg"),
     ];
     const GEOMETRY_FIELD: &'static str = "drawing";
+
+    fn sheet_extent(p: &BeamProblem) -> (f64, &'static str) {
+        let b = &p.beam;
+        let span = (b.ends[1] - b.ends[0]) * 1000.0 / p.drawing.length_scale;
+        let loads: f64 = b.point_loads.iter().map(|l| l.p.abs()).sum::<f64>()
+            + b.uniform_loads
+                .iter()
+                .map(|u| u.resultant().abs())
+                .sum::<f64>();
+        super::fields::larger(span, loads / p.drawing.force_scale)
+    }
     type Problem = BeamProblem;
     type Results = statics::BeamResults;
 

@@ -175,6 +175,24 @@ impl super::Procedure for CentroidScene {
     const OUTPUTS: &'static [&'static str] = &[];
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[("polygon", "polygon_m")];
     const GEOMETRY_FIELD: &'static str = "polygon_m";
+
+    fn sheet_extent(p: &CentroidProblem) -> (f64, &'static str) {
+        let pts = &p.polygon;
+        let size = pts
+            .iter()
+            .flat_map(|a| pts.iter().map(move |b| (a - b).norm()))
+            .fold(0.0, f64::max);
+        let area = centroid::polygon_centroid(pts).map_or(0.0, |(a, _)| a);
+        let d = &p.drawing;
+        let (mm, field) =
+            super::fields::larger(size * 1000.0 / d.length_scale, area / d.area_scale);
+        let field = if field == "drawing.force_scale_kg_per_mm" {
+            "drawing.area_scale_m2_per_mm"
+        } else {
+            field
+        };
+        (mm, field)
+    }
     type Problem = CentroidProblem;
     type Results = CentroidResults;
 

@@ -68,3 +68,13 @@ impl Fields<'_> {
         }
     }
 }
+
+/// The larger of a figure's extent by its lengths and by its forces (mm), with the scale field
+/// that drives it.
+pub(super) fn larger(by_length: f64, by_force: f64) -> (f64, &'static str) {
+    if by_force > by_length || by_length.is_nan() {
+        (by_force, "drawing.force_scale_kg_per_mm")
+    } else {
+        (by_length, "drawing.length_scale")
+    }
+}

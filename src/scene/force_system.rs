@@ -294,6 +294,13 @@ impl super::Procedure for ForceSystemScene {
         ("pole", "drawing.pole_kg"),
     ];
     const GEOMETRY_FIELD: &'static str = "forces";
+
+    fn sheet_extent(p: &ForceSystemProblem) -> (f64, &'static str) {
+        let (_, reach) = funicular::extent(&p.forces);
+        let total: f64 = p.forces.iter().map(|f| f.f.x.hypot(f.f.y)).sum();
+        let d = &p.drawing;
+        super::fields::larger(reach * 1000.0 / d.length_scale, total / d.force_scale)
+    }
     type Problem = ForceSystemProblem;
     type Results = Option<funicular::SystemResults>;
 

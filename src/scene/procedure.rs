@@ -80,6 +80,15 @@ pub trait Procedure:
     /// Title, source and scale bars of the figure.
     fn figure_meta(problem: &Self::Problem) -> FigureMeta;
 
+    /// How large the figure comes out on the sheet at the problem's scales (mm), with the
+    /// scale field that drives it: its lengths against the length scale and its forces against
+    /// the force scale, whichever is larger. Checked against [`MAX_SHEET_MM`] when a scene
+    /// is read, so that an absurd scale is named as such.
+    fn sheet_extent(problem: &Self::Problem) -> (f64, &'static str) {
+        let _ = problem;
+        (0.0, "")
+    }
+
     /// How the procedure's own inputs (`ConstructionError::Unsupported::input`, e.g.
     /// `"forces[2]"`, `"pole"`) are called in the scene: pairs of (input prefix, scene field).
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[];
@@ -116,13 +125,31 @@ pub fn scene_field(input: &str, table: &[(&str, &str)]) -> String {
     out
 }
 
+/// The largest figure a scene may draw (mm on the sheet): ten metres of paper, some eight A0
+/// sheets side by side. A larger one comes from a scale typed wrong (1 : 1e-12).
+pub const MAX_SHEET_MM: f64 = 10_000.0;
+
 /// Parses a scene of one procedure, keeping field path, line and column, refusing trailing
-/// data after the JSON, then validates it.
+/// data after the JSON, then validates it, and checks that its figure fits a sheet.
 pub fn parse_scene<P: Procedure>(text: &str, origin: &str) -> Result<P, SceneError> {
     let de = &mut serde_json::Deserializer::from_str(text);
     let scene: P = serde_path_to_error::deserialize(&mut *de).map_err(|e| json_error(e, origin))?;
     de.end().map_err(|e| syntax_error(e, origin))?;
     scene.validate(origin)?;
+    let (mm, field) = P::sheet_extent(&scene.problem());
+    let fits = mm.partial_cmp(&MAX_SHEET_MM).is_some_and(|o| o.is_le());
+    if !fits && !field.is_empty() {
+        return Err(SceneError::Invalid {
+            origin: origin.to_string(),
+            field: field.to_string(),
+            message: format!(
+                "at this scale the figure would be {} m across on the sheet, more than the {} m \
+                 a figure may take: choose a larger scale number",
+                crate::fmt::num(mm / 1000.0, 3),
+                crate::fmt::num(MAX_SHEET_MM / 1000.0, 3)
+            ),
+        });
+    }
     Ok(scene)
 }
 

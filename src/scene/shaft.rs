@@ -270,6 +270,13 @@ impl super::Procedure for ShaftScene {
         ("pole", "drawing.pole_distance_kg"),
     ];
     const GEOMETRY_FIELD: &'static str = "drawing";
+
+    fn sheet_extent(p: &ShaftProblem) -> (f64, &'static str) {
+        let s = &p.shaft;
+        let span = (s.ends[1] - s.ends[0]) * 1000.0 / p.drawing.length_scale;
+        let loads: f64 = s.plane_1.iter().chain(&s.plane_2).map(|l| l.p.abs()).sum();
+        super::fields::larger(span, loads / p.drawing.force_scale)
+    }
     type Problem = ShaftProblem;
     type Results = Vec<ShaftRow>;
 

@@ -383,6 +383,18 @@ impl Procedure for Scene {
         "radial_force",
     ];
     const GEOMETRY_FIELD: &'static str = "mechanism";
+
+    fn sheet_extent(p: &Problem) -> (f64, &'static str) {
+        let d = &p.drawing;
+        let length = (2.0 * p.drive.crank_radius + p.drive.rod_length) / d.length_scale;
+        let force = 3.0 * p.drive.piston_force.max_abs() / d.force_scale;
+        let speed = p.drive.crank_pin_speed / d.velocity_scale;
+        if speed > length.max(force) {
+            (speed, "drawing.velocity_scale_m_s_per_mm")
+        } else {
+            super::fields::larger(length, force)
+        }
+    }
     type Problem = Problem;
     type Results = CrankResults;
 

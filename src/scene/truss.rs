@@ -1059,6 +1059,19 @@ impl super::Procedure for TrussScene {
     ];
     const GEOMETRY_FIELD: &'static str = "joints";
 
+    fn sheet_extent(p: &TrussProblem) -> (f64, &'static str) {
+        let load = p
+            .cases
+            .iter()
+            .map(|c| c.loads.iter().map(|l| l.force.norm()).sum::<f64>())
+            .fold(0.0, f64::max);
+        let d = &p.drawing;
+        super::fields::larger(
+            p.truss.size() * 1000.0 / d.length_scale,
+            load / d.force_scale,
+        )
+    }
+
     fn error_field(problem: &TrussProblem, err: &ConstructionError) -> Option<String> {
         let t = &problem.truss;
         let joint = |name: &str| t.joints.iter().position(|j| j.name == name);
