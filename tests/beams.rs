@@ -423,3 +423,31 @@ fn lh_abb35_five_stringer_panels_shear_zero_over_the_middle_one() {
     assert!(row(2.4).right.abs() < 1e-9 && row(3.6).left.abs() < 1e-9);
     assert!((r.max_moment.unwrap().moment - 2160.0).abs() < 1e-9);
 }
+
+#[test]
+fn equal_and_opposite_largest_moments_pass_the_largest_moment_check() {
+    // +123.4 kg at 2 m and −123.4 kg (upwards) at 6 m on supports 0 and 8: M = +123.4 kg·m at
+    // 2 m and −123.4 kg·m at 6 m, a tie the construction and the closed form may break
+    // differently (issue 12, case 4); shifted a little, every such beam passes.
+    for shift in [0.0, 0.1, 0.25, 0.37, 0.5] {
+        let beam = Beam {
+            supports: [0.0, 8.0],
+            ends: [0.0, 8.0],
+            point_loads: vec![
+                PointLoad {
+                    x: 2.0 + shift,
+                    p: 123.4,
+                },
+                PointLoad {
+                    x: 6.0 + shift,
+                    p: -123.4,
+                },
+            ],
+            uniform_loads: vec![],
+        };
+        let (b, r) = run(&beam, 100.0);
+        all_pass(&b);
+        let m = r.max_moment.unwrap().moment.abs();
+        assert!((m - cf::max_abs_moment(&beam).0.abs()).abs() < 1e-9);
+    }
+}

@@ -214,10 +214,16 @@ impl BeamConstruction<'_, '_> {
         let Some((m, x)) = best else {
             return Ok(None);
         };
+        // The check is on |M|: where the largest moments are equal and opposite, the
+        // construction and the closed form may name either.
         let what = "largest |M|, where the shear changes sign";
-        let closed = || crate::statics::closed_form::max_abs_moment(beam).0;
+        let closed = || crate::statics::closed_form::max_abs_moment(beam).0.abs();
+        let abs = H {
+            id: m.id,
+            g: m.g.abs(),
+        };
         self.b
-            .check(&m, what, "kg·m", "method of sections", self.mref, closed);
+            .check(&abs, what, "kg·m", "method of sections", self.mref, closed);
         Ok(Some(MaxMoment { moment: m.g, x }))
     }
 
