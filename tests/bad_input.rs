@@ -555,7 +555,7 @@ fn an_absurd_scale_is_named_as_the_cause() {
         r#""angles": { "divisions": 12 }, "drawing": { "length_scale": 1e-12 },"#,
     ));
     assert!(
-        e.starts_with("s.json: drawing.length_scale: at this scale the figure would be"),
+        e.starts_with("s.json: drawing.length_scale: with this value the figure would be"),
         "{e}"
     );
     let e = err(&GOOD.replace(

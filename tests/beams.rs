@@ -451,3 +451,20 @@ fn equal_and_opposite_largest_moments_pass_the_largest_moment_check() {
         assert!((m - cf::max_abs_moment(&beam).0.abs()).abs() < 1e-9);
     }
 }
+
+#[test]
+fn an_absurd_pole_distance_is_refused_naming_it() {
+    // Issue 12, case 5: H = 1e12 kg puts the pole 25,000 km from the load line; H = 1e-9 kg
+    // hangs the polygon 67 million km deep. Both are named, before anything is built.
+    for h in ["1e12", "1e-9"] {
+        let text = GOOD.replace(
+            r#""force_scale_kg_per_mm": 10"#,
+            &format!(r#""force_scale_kg_per_mm": 10, "pole_distance_kg": {h}"#),
+        );
+        let e = err(&text);
+        assert!(
+            e.starts_with("b.json: drawing.pole_distance_kg: with this value"),
+            "{e}"
+        );
+    }
+}

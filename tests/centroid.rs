@@ -111,3 +111,23 @@ fn points(v: &[[f64; 2]]) -> Vec<graphostatik::kernel::Point> {
         .map(|&[x, y]| graphostatik::kernel::Point::new(x, y))
         .collect()
 }
+
+#[test]
+fn a_sliver_polygon_is_refused_at_validation_naming_the_polygon() {
+    // Issue 12, case 7: a quadrilateral 1e-13 m thick on a 2 m length.
+    let text = r#"{ "procedure": "centroid", "title": "t", "polygon_m": [[0,0],[1,0],[2,1e-13],[1,2e-13]] }"#;
+    let e = AnyScene::from_json(text, "s.json").unwrap_err().to_string();
+    assert!(
+        e.starts_with("s.json: polygon_m: the polygon has (next to) zero area"),
+        "{e}"
+    );
+    let mut b = Board::recording();
+    let d = CentroidDrawing {
+        length_scale: 25.0,
+        area_scale: 0.1,
+        fan_from: 0,
+    };
+    let pts = points(&[[0.0, 0.0], [1.0, 0.0], [2.0, 1e-13], [1.0, 2e-13]]);
+    let e = construct_centroid(&mut b, &pts, &d).unwrap_err();
+    assert!(e.to_string().contains("sliver"), "{e}");
+}

@@ -330,3 +330,23 @@ fn a_construction_error_names_the_scene_field_that_caused_it() {
         "resolve[2].along_deg"
     );
 }
+
+#[test]
+fn directions_5e_minus_11_degrees_apart_are_refused_either_way_round() {
+    // Issue 12, case 9: [0, 5e-11] passed validation and failed in construction, while
+    // [5e-11, 0] was refused; both are parallel, and both are refused at validation.
+    for along in ["[0, 5e-11]", "[5e-11, 0]"] {
+        let text = format!(
+            r#"{{ "procedure": "force_system", "title": "t",
+                 "forces": [ {{ "at_m": [0, 0], "kg_xy": [0, -100] }} ],
+                 "resolve": [ {{ "force": 1, "along_deg": {along} }} ] }}"#
+        );
+        let e = graphostatik::scene::AnyScene::from_json(&text, "r.json")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("r.json: resolve[0].along_deg"),
+            "{along}: {e}"
+        );
+    }
+}

@@ -389,14 +389,24 @@ impl super::Procedure for BeamScene {
     const GEOMETRY_FIELD: &'static str = "drawing";
 
     fn sheet_extent(p: &BeamProblem) -> (f64, &'static str) {
-        let b = &p.beam;
-        let span = (b.ends[1] - b.ends[0]) * 1000.0 / p.drawing.length_scale;
+        let (b, d) = (&p.beam, &p.drawing);
+        let span = (b.ends[1] - b.ends[0]) * 1000.0 / d.length_scale;
         let loads: f64 = b.point_loads.iter().map(|l| l.p.abs()).sum::<f64>()
             + b.uniform_loads
                 .iter()
                 .map(|u| u.resultant().abs())
                 .sum::<f64>();
-        super::fields::larger(span, loads / p.drawing.force_scale)
+        // The pole stands H from the load line, and the polygon hangs M/H deep: a pole
+        // distance typed wrong (1e12 kg, 1e-9 kg) makes one of them absurd.
+        let pole = d.pole_distance / d.force_scale;
+        let m = statics::closed_form::max_abs_moment(b).0.abs();
+        let depth = m / (d.length_scale / 1000.0 * d.pole_distance);
+        let by_scale = super::fields::larger(span, loads / d.force_scale);
+        if pole.max(depth) > by_scale.0 || pole.is_nan() || depth.is_nan() {
+            (pole.max(depth), "drawing.pole_distance_kg")
+        } else {
+            by_scale
+        }
     }
     type Problem = BeamProblem;
     type Results = statics::BeamResults;

@@ -84,8 +84,23 @@ impl CentroidScene {
                 ),
             ));
         }
-        if centroid::polygon_centroid(&self.points()).is_none() {
-            return Err(bad("polygon_m", "the polygon has zero area".into()));
+        let pts = self.points();
+        let size = pts
+            .iter()
+            .flat_map(|a| pts.iter().map(move |b| (a - b).norm()))
+            .fold(0.0, f64::max);
+        let area = centroid::polygon_centroid(&pts).map_or(0.0, |(a, _)| a);
+        // The construction leaves out fan triangles thinner than REL_AREA_EPS of the size²:
+        // a polygon that is all such slivers has nothing to construct.
+        if area <= crate::kernel::tolerance::REL_AREA_EPS * size * size {
+            return Err(bad(
+                "polygon_m",
+                format!(
+                    "the polygon has (next to) zero area: {} m² for a size of {} m",
+                    crate::fmt::sci(area),
+                    crate::fmt::num(size, 6)
+                ),
+            ));
         }
         if self.fan_from >= n {
             return Err(bad("fan_from", format!("vertex {} of {n}", self.fan_from)));

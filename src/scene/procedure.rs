@@ -143,8 +143,8 @@ pub fn parse_scene<P: Procedure>(text: &str, origin: &str) -> Result<P, SceneErr
             origin: origin.to_string(),
             field: field.to_string(),
             message: format!(
-                "at this scale the figure would be {} m across on the sheet, more than the {} m \
-                 a figure may take: choose a larger scale number",
+                "with this value the figure would be {} m across on the sheet, more than the {} m \
+                 a figure may take: change it (a scale of 1 : n takes a larger n)",
                 crate::fmt::num(mm / 1000.0, 3),
                 crate::fmt::num(MAX_SHEET_MM / 1000.0, 3)
             ),

@@ -187,6 +187,12 @@ pub fn construct_centroid(
         .fold(0.0, f64::max);
     let vs = draw_polygon(b, pts, k);
     let parts = triangle_centroids(b, &vs, dr.fan_from, k, size)?;
+    if parts.is_empty() {
+        return Err(ConstructionError::unsupported(
+            "polygon",
+            "every triangle of the fan is a sliver (area below 1e-12 of the size squared): the polygon has next to no area",
+        ));
+    }
     let (l1, l2) = two_funiculars(b, &vs, &parts, dr)?;
     let s = b.meet_point(&l1, &l2, Label::plain("S"), N_CENTROID)?;
     let o = b.point(Point::origin(), Label::NONE, Role::Given, N_ORIGIN);
