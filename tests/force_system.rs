@@ -350,3 +350,16 @@ fn directions_5e_minus_11_degrees_apart_are_refused_either_way_round() {
         );
     }
 }
+
+#[test]
+fn a_force_polygon_closed_to_rounding_is_a_couple_judged_against_the_forces() {
+    // Issue 12, case 1: R = 1e-9 kg against forces of 1000 kg is closed; the system is the
+    // couple of their moment, 1000 kg·m, not equilibrium.
+    let forces = [f(0.0, 0.0, 0.0, -1000.0), f(1.0, 0.0, 0.0, 999.999999999)];
+    let (b, r) = run(&forces, &[]);
+    match r.resultant {
+        Resultant::Couple { moment } => assert!((moment.abs() - 1000.0).abs() < 1e-6, "{moment}"),
+        other => panic!("{other:?}"),
+    }
+    assert!(b.all_passed());
+}

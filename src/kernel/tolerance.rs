@@ -114,6 +114,11 @@ pub const REL_LAYOUT_EPS: f64 = 1e-9;
 /// (a sine, dimensionless) beats it by this fraction: rounding never picks the drawing.
 pub const REL_SCORE_EPS: f64 = 1e-9;
 
+/// A force polygon whose closing side R is shorter than this fraction of the sum of its sides
+/// is closed: R is judged against the forces, not against the sheet (two forces of 1000 and
+/// 999.999999999 kg leave R = 1e-9 kg, rounding, and a couple of their moment).
+pub const REL_CLOSURE_EPS: f64 = 1e-12;
+
 /// Largest number of equal divisions of a segment, arc or crank circle a scene may ask for.
 /// A drafter divides into 8 to 36 parts; 3,600 is a benchmark size, 100,000 is absurd for a
 /// figure and would write a figure of hundreds of megabytes.

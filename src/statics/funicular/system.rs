@@ -7,7 +7,7 @@ use super::{
     extent, resolve, sum_and_moment, Components, Force, Resolution, Resultant, SystemDrawing,
     SystemResults,
 };
-use crate::kernel::tolerance::{REL_LAYOUT_EPS, REL_TIE_EPS};
+use crate::kernel::tolerance::{REL_CLOSURE_EPS, REL_LAYOUT_EPS, REL_TIE_EPS};
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{Board, ConstructionError, Cut, Label, Role, Scale, H};
 
@@ -35,6 +35,8 @@ struct System<'a, 'b> {
 /// The force polygon: its corners, the resultant's length on the sheet and its components.
 struct Polygon {
     pts: Vec<H<Point>>,
+    /// The sum of its sides (mm): what its closing side is judged against.
+    sides_mm: f64,
     axis_x: H<Line>,
     r_len: f64,
     rx: H<f64>,
@@ -213,8 +215,10 @@ impl System<'_, '_> {
             fmax,
             || r_cf.y,
         );
+        let sides_mm = self.forces.iter().map(|f| f.f.x.hypot(f.f.y)).sum::<f64>() / fs;
         Ok(Polygon {
             pts,
+            sides_mm,
             axis_x,
             r_len,
             rx,
@@ -236,13 +240,25 @@ impl System<'_, '_> {
         let cut = self
             .b
             .meet(&strings[0], &strings[n], Label::plain("X"), N_FIRST_LAST);
+        // The force polygon closes when R is nothing against its sides (not against the sheet):
+        // then the outer strings are parallel to rounding, and a couple unless they coincide.
+        let closed = poly.r_len <= tol.max(REL_CLOSURE_EPS * poly.sides_mm);
         let out = match cut {
-            Cut::Point(x, _) if poly.r_len > tol => {
+            Cut::Point(x, _) if !closed => {
                 let (r, line) = self.resultant_force(poly, &x)?;
                 (r, Some(line))
             }
-            Cut::Point(..) | Cut::Coincident => (Resultant::Equilibrium, None),
+            Cut::Coincident => (Resultant::Equilibrium, None),
             Cut::Parallel { .. } => (self.couple(poly, pole, start, strings), None),
+            Cut::Point(..) => {
+                let last = strings[n].g;
+                let apart = crate::kernel::cross(&(start.g - last.origin), &last.dir).abs();
+                if apart <= tol {
+                    (Resultant::Equilibrium, None)
+                } else {
+                    (self.couple(poly, pole, start, strings), None)
+                }
+            }
         };
         if let Resultant::Equilibrium = out.0 {
             // Both polygons close: the checks are that R = 0 (above) and ΣM = 0.
