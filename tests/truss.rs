@@ -1313,3 +1313,26 @@ fn a_truss_not_in_metres_is_refused_naming_its_joints() {
         );
     }
 }
+
+#[test]
+fn a_flat_but_determinate_triangle_is_not_a_mechanism_and_its_cuts_are_flagged() {
+    // Issue 12, case 8: apex 1e-10 of the span. Determinate; member forces of 2.5e12 kg from
+    // cuts at 1e-8 degrees, every such row flagged as glancing.
+    let text = r#"{ "procedure": "truss", "title": "t",
+        "joints": [ { "name": "I", "at_m": [0, 0] }, { "name": "II", "at_m": [2, 0] }, { "name": "III", "at_m": [1, 2e-10] } ],
+        "members": [ { "name": "1", "joints": ["I", "III"] }, { "name": "2", "joints": ["III", "II"] }, { "name": "3", "joints": ["I", "II"] } ],
+        "supports": [ { "joint": "I", "kind": "pinned" }, { "joint": "II", "kind": "roller", "direction_deg": 90 } ],
+        "load_cases": [ { "name": "P", "loads": [ { "joint": "III", "kg": 1000 } ] } ] }"#;
+    let any = AnyScene::from_json(text, "flat.json").unwrap();
+    let board = any.problem().construct(true).unwrap();
+    let rows = graphostatik::render::check_rows(&board);
+    let members: Vec<_> = rows
+        .iter()
+        .filter(|r| r.quantity.starts_with("member force"))
+        .collect();
+    assert_eq!(members.len(), 3);
+    for r in members {
+        assert!(r.glancing, "{r:?}");
+        assert!((r.constructed.abs() / 2.5e12 - 1.0).abs() < 1e-6, "{r:?}");
+    }
+}

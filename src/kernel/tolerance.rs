@@ -86,9 +86,12 @@ pub const ZERO_KG: f64 = 1e-3;
 
 /// A singular value of the equilibrium matrix below this fraction of the largest counts as
 /// zero. The matrix entries are direction cosines (of size 1), so the largest singular value
-/// is of order 1 to √(max degree); 1e-10 is far above the 1e-16 rounding of well-formed
-/// trusses and far below the 1e-3 of a shallow truss at 0.1°.
-pub const RANK_REL: f64 = 1e-10;
+/// is of order 1 to √(max degree); a mechanism's zero comes out at the rounding of the
+/// decomposition, about √n·ε ≈ 1e-15 for a thousand joints, and 1e-13 stays above that.
+/// A determinate truss however flat is determinate: a triangle whose apex is 1e-10 of its
+/// span has a smallest singular value of about 1e-10, and was refused as a mechanism by the
+/// earlier 1e-10 (its plan's cuts are now flagged as glancing instead).
+pub const RANK_REL: f64 = 1e-13;
 
 /// A lever arm below this fraction of the truss's size ([`Truss::size`](crate::truss::Truss::size), like the kernel's
 /// lengths), or a sine between two reaction lines below it, counts as zero: the supports
