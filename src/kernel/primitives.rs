@@ -57,13 +57,17 @@ impl Line {
             return Err(PrimitiveError::NotFinite);
         }
         let n = dir.norm();
+        // x² + y² underflows for a direction shorter than 1e-154: hypot does not, and a
+        // direction that is zero in f64 is refused rather than made of NaN.
+        let n = if n.is_normal() { n } else { dir.x.hypot(dir.y) };
         if n == 0.0 {
             return Err(PrimitiveError::ZeroDirection);
         }
-        Ok(Line {
-            origin,
-            dir: dir / n,
-        })
+        let unit = dir / n;
+        if !(unit.x.is_finite() && unit.y.is_finite()) {
+            return Err(PrimitiveError::ZeroDirection);
+        }
+        Ok(Line { origin, dir: unit })
     }
 
     /// The line from `a` through `b`; `eps` is the figure's length tolerance.

@@ -93,9 +93,30 @@ pub fn intersect_circle_circle(c1: &Circle, c2: &Circle, tol: &Tolerance) -> Cir
             gap: (r1 - r2).abs() - d,
         };
     }
-    let a = (d * d + r1 * r1 - r2 * r2) / (2.0 * d);
-    let h = ((r1 - a) * (r1 + a)).max(0.0).sqrt();
-    let m = c1.center + e * a;
+    // The foot of the common chord, measured from the smaller circle's centre towards the
+    // other: a_s = (d² − r_L² + r_s²) / 2d, with d² − r_L² = (d − r_L)(d + r_L), exact where
+    // d is near r_L. Measured from the larger circle instead, (r_L − a)(r_L + a) would cancel
+    // log10(r_L/r_s) digits (r = 1000 and 1e-4 meeting at 90° lost four).
+    let (small_first, rs, rl) = if r1 <= r2 {
+        (true, r1, r2)
+    } else {
+        (false, r2, r1)
+    };
+    let a_s = ((d - rl) * (d + rl) + rs * rs) / (2.0 * d);
+    let h = ((rs - a_s) * (rs + a_s)).max(0.0).sqrt();
+    let (m, a) = if small_first {
+        (c1.center + e * a_s, a_s)
+    } else {
+        (c2.center - e * a_s, d - a_s)
+    };
+    if h == 0.0 {
+        // The chord has shrunk to a point: the circles touch (outside the tolerance's band).
+        return if d < rl {
+            CircleCircle::TangentInternal { point: m }
+        } else {
+            CircleCircle::TangentExternal { point: m }
+        };
+    }
     let n = Vector::new(-e.y, e.x);
     // The radii to the common point are (a, h) and (a − d, h) in the frame of the centre
     // line: their cross product is d·h, their dot product a(a − d) + h². The angle between
@@ -108,6 +129,33 @@ pub fn intersect_circle_circle(c1: &Circle, c2: &Circle, tol: &Tolerance) -> Cir
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_large_and_a_small_circle_meeting_at_right_angles_keep_their_digits_either_way() {
+        use super::*;
+        // Issue 12, case 10: r = 1000 and 1e-4, centres √(r1² + r2²) apart: they meet at 90°,
+        // at y = ±r1·r2/d from the centre line, whichever circle comes first.
+        let (r1, r2) = (1000.0f64, 1e-4f64);
+        let d = r1.hypot(r2);
+        let y = r1 * r2 / d;
+        let tol = Tolerance::for_figure(1000.0);
+        let big = Circle::new(Point::new(0.0, 0.0), r1).unwrap();
+        let small = Circle::new(Point::new(d, 0.0), r2).unwrap();
+        for (a, b) in [(&big, &small), (&small, &big)] {
+            match intersect_circle_circle(a, b, &tol) {
+                CircleCircle::Two {
+                    points,
+                    conditioning,
+                } => {
+                    for p in points {
+                        assert!((p.y.abs() - y).abs() <= 1e-12 * y, "{p:?} against ±{y}");
+                    }
+                    assert!((conditioning.angle_deg() - 90.0).abs() < 1e-6);
+                }
+                o => panic!("{o:?}"),
+            }
+        }
+    }
+
     use super::*;
 
     fn tol() -> Tolerance {
@@ -175,6 +223,33 @@ mod tests {
         match intersect_circle_circle(&c(0.0, 0.0, 1.0), &c(2.0 - 1e-8, 0.0, 1.0), &tol()) {
             CircleCircle::Two { conditioning, .. } => assert!(conditioning.glancing()),
             o => panic!("{o:?}"),
+        }
+    }
+}
+
+#[cfg(test)]
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(2000))]
+        /// Random crossings: two distinct points with a finite amplification, or a typed case.
+        #[test]
+        fn crossings_are_two_distinct_points_or_a_named_case(
+            r1 in 1e-4f64..1e3, r2 in 1e-4f64..1e3, t in 0.0f64..1.0, phi in 0.0f64..6.3,
+        ) {
+            let d = (r1 - r2).abs() + t * (r1 + r2 - (r1 - r2).abs());
+            let tol = Tolerance::for_figure(r1.max(r2) * 2.0);
+            let a = Circle::new(Point::new(0.0, 0.0), r1).unwrap();
+            let b = Circle::new(Point::new(d * phi.cos(), d * phi.sin()), r2).unwrap();
+            if let CircleCircle::Two { points, conditioning } = intersect_circle_circle(&a, &b, &tol) {
+                prop_assert!(points[0] != points[1]);
+                prop_assert!(conditioning.amplification().is_finite());
+                for p in points {
+                    prop_assert!(p.x.is_finite() && p.y.is_finite());
+                }
+            }
         }
     }
 }

@@ -64,6 +64,18 @@ pub fn intersect_line_line(a: &Line, b: &Line, tol: &Tolerance) -> LineLine {
     let t_a = cross(&w, &b.dir) / s;
     let t_b = cross(&w, &a.dir) / s;
     let point = a.point_at(t_a);
+    if !(point.x.is_finite() && point.y.is_finite() && t_b.is_finite()) {
+        // They meet beyond the range of f64 (origins near 1e300, or a cut so glancing that
+        // the point overflows): for every drawing that is at infinity, typed as such.
+        let distance = cross(&a.dir, &w).abs();
+        return LineLine::Parallel {
+            distance: if distance.is_finite() {
+                distance
+            } else {
+                f64::MAX
+            },
+        };
+    }
     LineLine::Point {
         point,
         t_a,
@@ -77,6 +89,21 @@ pub fn intersect_line_line(a: &Line, b: &Line, tol: &Tolerance) -> LineLine {
 mod tests {
     use super::*;
     use crate::kernel::Vector;
+
+    #[test]
+    fn lines_meeting_beyond_f64_are_parallel_not_nan() {
+        // Issue 12, case 10: origins near 1e300.
+        let tol = Tolerance::for_figure(1.0);
+        let a = Line::new(Point::new(1e300, 0.0), Vector::new(1.0, 1e-10)).unwrap();
+        let b = Line::new(Point::new(-1e300, 1e300), Vector::new(1.0, -1e-10)).unwrap();
+        match intersect_line_line(&a, &b, &tol) {
+            LineLine::Parallel { distance } => assert!(distance.is_finite()),
+            LineLine::Point { point, .. } => {
+                assert!(point.x.is_finite() && point.y.is_finite(), "{point:?}")
+            }
+            LineLine::Coincident => {}
+        }
+    }
 
     fn tol() -> Tolerance {
         Tolerance::for_figure(100.0)
