@@ -567,3 +567,29 @@ fn an_absurd_scale_is_named_as_the_cause() {
         "{e}"
     );
 }
+
+#[test]
+fn a_rod_a_hair_longer_than_the_crank_is_refused_and_a_little_longer_constructs() {
+    // Issue 12, case 2: R/L = 0.999999999 failed its checks at 90°, and R/L = 1 − 1e-12 passed
+    // validation and was refused at 89.999999°. Near locking is refused at validation; from
+    // L/R = 1 + 1.1e-6 on, every angle constructs and every check passes.
+    let scene = |k: &str| {
+        GOOD.replace(r#""length_mm": 1500"#, &format!(r#""l_over_r": {k}"#))
+            .replace(
+                r#""divisions": 12"#,
+                r#""degrees": [89.999999, 90, 90.000001, 270, 269.999999]"#,
+            )
+    };
+    for k in ["1.000000001", "1.000000000001"] {
+        let e = err(&scene(k));
+        assert!(
+            e.starts_with("s.json: mechanism.rod.l_over_r: the rod is only"),
+            "{e}"
+        );
+    }
+    let p = Scene::from_json(&scene("1.0000011"), "s.json")
+        .unwrap()
+        .problem();
+    let (board, _) = p.construct(true).unwrap();
+    assert!(board.all_passed());
+}

@@ -122,6 +122,12 @@ pub const REL_SCORE_EPS: f64 = 1e-9;
 /// 999.999999999 kg leave R = 1e-9 kg, rounding, and a couple of their moment).
 pub const REL_CLOSURE_EPS: f64 = 1e-12;
 
+/// A slider-crank's rod must be longer than its crank by at least this fraction of the crank
+/// (L/R ≥ 1 + 1e-6): nearer to locking, the cut of the rod's arc with the piston line at
+/// 90° is so glancing (its amplification grows as 1/√(L/R − 1)) that the forces read off it
+/// lose more digits than their checks allow. At 1 + 1e-7 every check still passes.
+pub const MIN_ROD_EXCESS: f64 = 1e-6;
+
 /// Largest number of equal divisions of a segment, arc or crank circle a scene may ask for.
 /// A drafter divides into 8 to 36 parts; 3,600 is a benchmark size, 100,000 is absurd for a
 /// figure and would write a figure of hundreds of megabytes.

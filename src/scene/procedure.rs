@@ -145,7 +145,11 @@ pub fn parse_scene<P: Procedure>(text: &str, origin: &str) -> Result<P, SceneErr
             message: format!(
                 "with this value the figure would be {} m across on the sheet, more than the {} m \
                  a figure may take: change it (a scale of 1 : n takes a larger n)",
-                crate::fmt::num(mm / 1000.0, 3),
+                if mm < 1e9 {
+                    crate::fmt::num(mm / 1000.0, 3)
+                } else {
+                    crate::fmt::sci(mm / 1000.0)
+                },
                 crate::fmt::num(MAX_SHEET_MM / 1000.0, 3)
             ),
         });

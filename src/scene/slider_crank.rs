@@ -8,6 +8,7 @@ use super::procedure::{parse_scene, Procedure};
 use super::types::*;
 use crate::crank::{self, Angles, CrankDrive, CrankResults, Drawing, PistonForce, Request};
 use crate::kernel::tolerance::MAX_DIVISIONS;
+use crate::kernel::tolerance::MIN_ROD_EXCESS;
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 
 /// A validated scene, ready to construct.
@@ -123,6 +124,24 @@ impl Scene {
                     ));
                 }
             }
+        }
+        // Nearer to locking, the rod's arc cuts the piston line at 90° so glancingly that the
+        // forces lose more digits than their checks allow (at L/R = 1 + 1e-9 they were 0.35 kg
+        // off against a 0.022 kg tolerance): refused, with the reason.
+        let (l, field) = match self.mechanism.rod {
+            Rod::LengthMm(l) => (l, "mechanism.rod.length_mm"),
+            Rod::LOverR(k) => (k * r, "mechanism.rod.l_over_r"),
+        };
+        if l <= r * (1.0 + MIN_ROD_EXCESS) {
+            return Err(f.bad(
+                field,
+                format!(
+                    "the rod is only {} of the crank longer than the crank: the construction \
+                     near 90° needs at least {}",
+                    crate::fmt::sci((l - r) / r),
+                    crate::fmt::sci(MIN_ROD_EXCESS)
+                ),
+            ));
         }
         Ok(())
     }
