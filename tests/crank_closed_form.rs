@@ -260,3 +260,51 @@ fn lh_u_difference_of_outstroke_and_return_stroke() {
         assert!((exact - book).abs() / book < 0.017, "{exact} vs {book}");
     }
 }
+
+#[test]
+fn a_crank_angle_of_a_billionth_of_a_degree_keeps_its_digits() {
+    // Issue 12, case 13: at θ = 1e-9° the pin was placed at 180° − θ formed in degrees, and
+    // the velocity and tangential force came out 1e-5 relative off. Placed by the sine and
+    // cosine of θ itself, they keep their digits.
+    let d = CrankDrive {
+        crank_radius: 300.0,
+        rod_length: 1500.0,
+        finite_rod: true,
+        crank_pin_speed: 3.0,
+        piston_force: PistonForce::Constant(1000.0),
+    };
+    let thetas = vec![1e-9, 1e-6, 0.1];
+    let mut b = graphostatik::protocol::Board::recording();
+    let res = construct(
+        &mut b,
+        &d,
+        &Drawing {
+            length_scale: 10.0,
+            force_scale: 20.0,
+            velocity_scale: 0.05,
+        },
+        &Angles::Degrees(thetas.clone()),
+        &Request {
+            velocity_parallel: true,
+            tangential_force: true,
+            ..Request::default()
+        },
+    )
+    .unwrap();
+    for r in &res.rows {
+        let exact = graphostatik::crank::closed_form::sin_factor(0.2, r.phi, r.stroke);
+        let c = r.c_parallel.unwrap() / 3.0;
+        let t = r.tangential_force.unwrap() / 1000.0;
+        assert!(
+            (c / exact - 1.0).abs() < 1e-9,
+            "θ = {}: c/v {c} against {exact}",
+            r.theta
+        );
+        assert!(
+            (t / exact - 1.0).abs() < 1e-9,
+            "θ = {}: T/P {t} against {exact}",
+            r.theta
+        );
+    }
+    assert!(b.all_passed());
+}

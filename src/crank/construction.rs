@@ -609,10 +609,12 @@ impl Builder<'_> {
                 .segment(&o, &pin, Label::NONE, Role::Result, N_CRANK_AT);
             pin
         } else {
-            let theta = self.thetas[i];
-            self.b.point_on_circle(
+            // The pin at 180° − θ on the sheet, by the sine and cosine of θ itself: forming
+            // 180 − θ would round a small θ (1e-9° came out 1e-5 relative off).
+            let (s, c) = crate::kernel::angle::sin_cos_deg(self.thetas[i]);
+            self.b.point_on_circle_dir(
                 &circle,
-                180.0 - theta,
+                (s, -c),
                 Label::indexed("A", i as u32),
                 Role::Result,
                 N_CRANK_AT,

@@ -434,7 +434,23 @@ impl Board {
         role: Role,
         note: Note,
     ) -> H<Point> {
-        let p = circle.g.point_at_deg(deg);
+        let sc = crate::kernel::angle::sin_cos_deg(deg);
+        self.point_on_circle_dir(circle, sc, label, role, note)
+    }
+
+    /// The point of a circle in the direction given by its sine and cosine `(s, c)`, for an
+    /// angle better known by those than by its degrees (180° − θ for a tiny θ: forming
+    /// 180 − θ would round θ away), with the ray from the centre drawn.
+    pub fn point_on_circle_dir(
+        &mut self,
+        circle: &H<Circle>,
+        (s, c): (f64, f64),
+        label: Label,
+        role: Role,
+        note: Note,
+    ) -> H<Point> {
+        let g = &circle.g;
+        let p = Point::new(g.center.x + g.radius * c, g.center.y + g.radius * s);
         self.begin(StepKind::Divide, &note, &[circle.id]);
         let id = self.add(label, Role::Given, || Geom::Point { at: p });
         let c = circle.g.center;
