@@ -468,3 +468,83 @@ fn an_absurd_pole_distance_is_refused_naming_it() {
         );
     }
 }
+
+#[test]
+fn a_beam_far_from_the_origin_is_built_in_its_own_frame() {
+    // Issue 12, case 3: loads a millimetre apart on a 10 mm beam at x = 1e6 m and 1e8 m lost
+    // their digits (12 and 29 of 30 checks failed). In the beam's own frame every check
+    // passes and the results are the near beam's, moved.
+    let beam = |dx: f64| Beam {
+        supports: [dx, dx + 0.01],
+        ends: [dx, dx + 0.01],
+        point_loads: vec![
+            PointLoad {
+                x: dx + 0.002,
+                p: 100.0,
+            },
+            PointLoad {
+                x: dx + 0.003,
+                p: 200.0,
+            },
+            PointLoad {
+                x: dx + 0.007,
+                p: 150.0,
+            },
+        ],
+        uniform_loads: vec![UniformLoad {
+            from: dx + 0.004,
+            to: dx + 0.006,
+            q: 50000.0,
+        }],
+    };
+    let d = BeamDrawing {
+        length_scale: 0.1,
+        force_scale: 10.0,
+        pole_distance: 500.0,
+        parabola_divisions: 8,
+        origin: graphostatik::kernel::Point::origin(),
+    };
+    let solve = |bm: &Beam| {
+        let mut b = Board::recording();
+        let r = construct_beam(&mut b, bm, &d, &ALL).unwrap();
+        all_pass(&b);
+        r
+    };
+    for dx in [1e6, 1e8] {
+        let far_beam = beam(dx);
+        let far = solve(&far_beam);
+        // The same beam near the origin: the far positions as f64 holds them, moved exactly.
+        let near_beam = Beam {
+            supports: far_beam.supports.map(|x| x - dx),
+            ends: far_beam.ends.map(|x| x - dx),
+            point_loads: far_beam
+                .point_loads
+                .iter()
+                .map(|l| PointLoad {
+                    x: l.x - dx,
+                    p: l.p,
+                })
+                .collect(),
+            uniform_loads: far_beam
+                .uniform_loads
+                .iter()
+                .map(|u| UniformLoad {
+                    from: u.from - dx,
+                    to: u.to - dx,
+                    q: u.q,
+                })
+                .collect(),
+        };
+        let near = solve(&near_beam);
+        assert!((far.reactions.a - near.reactions.a).abs() < 1e-9 * 450.0);
+        let (m0, mf) = (near.max_moment.unwrap(), far.max_moment.unwrap());
+        assert!((m0.moment - mf.moment).abs() < 1e-9 * m0.moment.abs());
+        // The position comes back at the scene's x (to the input's own rounding there).
+        assert!(
+            (mf.x - dx - m0.x).abs() < 4.0 * f64::EPSILON * dx,
+            "{} {}",
+            mf.x,
+            m0.x
+        );
+    }
+}

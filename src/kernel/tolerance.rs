@@ -128,6 +128,12 @@ pub const REL_CLOSURE_EPS: f64 = 1e-12;
 /// lose more digits than their checks allow. At 1 + 1e-7 every check still passes.
 pub const MIN_ROD_EXCESS: f64 = 1e-6;
 
+/// A figure whose data lie farther from the scene's origin than this many times their own
+/// size is constructed in a local frame (a beam from its support A): an offset of 1e6 m
+/// would otherwise take six of f64's sixteen digits from every position on the sheet and
+/// from the closed forms.
+pub const REL_LOCAL_FRAME: f64 = 100.0;
+
 /// Largest number of equal divisions of a segment, arc or crank circle a scene may ask for.
 /// A drafter divides into 8 to 36 parts; 3,600 is a benchmark size, 100,000 is absurd for a
 /// figure and would write a figure of hundreds of megabytes.

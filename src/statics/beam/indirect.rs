@@ -91,6 +91,13 @@ pub fn construct_beam_indirect(
     dr: &BeamDrawing,
     req: &BeamRequest,
 ) -> Result<BeamResults, ConstructionError> {
+    let frame = super::LocalFrame::of(beam);
+    if frame.dx != 0.0 {
+        let panels: Vec<f64> = panel_points.iter().map(|x| x - frame.dx).collect();
+        let local = frame.to_local(beam);
+        let r = construct_beam_indirect(b, &local, &panels, dr, req)?;
+        return Ok(frame.to_global(r));
+    }
     let loads = panel_loads(beam, panel_points)?;
     draw_stringers(b, beam, panel_points, dr);
     let on_beam = Beam {

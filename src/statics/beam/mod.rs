@@ -30,6 +30,7 @@ pub use types::{
 };
 
 use super::Beam;
+use crate::kernel::tolerance::REL_LOCAL_FRAME;
 use crate::protocol::{Board, ConstructionError};
 use build::BeamConstruction;
 
@@ -79,6 +80,12 @@ pub fn construct_beam_at(
     req: &BeamRequest,
     extra_sections: &[f64],
 ) -> Result<BeamResults, ConstructionError> {
+    let frame = LocalFrame::of(beam);
+    if frame.dx != 0.0 {
+        let sections: Vec<f64> = extra_sections.iter().map(|x| x - frame.dx).collect();
+        let r = construct_beam_at(b, &frame.to_local(beam), dr, req, &sections)?;
+        return Ok(frame.to_global(r));
+    }
     check_sections(beam, extra_sections)?;
     check_layout(beam)?;
     // About 40 steps and 60 objects per load when everything is drawn.
@@ -100,6 +107,67 @@ pub fn construct_beam_at(
         (Vec::new(), None)
     };
     Ok(c.finish(reactions, shear, max_moment))
+}
+
+/// The beam's own frame: where the beam lies far from the origin (farther than
+/// [`REL_LOCAL_FRAME`] times its length), x is measured from support A, so that neither the
+/// construction on the sheet nor the closed forms (prefix sums of P·x) carry the offset's
+/// digits; the results are given back at the scene's x.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct LocalFrame {
+    /// The x (m) the local frame starts at; 0 for a beam near the origin.
+    pub(super) dx: f64,
+}
+
+impl LocalFrame {
+    pub(super) fn of(beam: &Beam) -> LocalFrame {
+        let length = (beam.ends[1] - beam.ends[0]).abs();
+        let reach = beam.ends[0].abs().max(beam.ends[1].abs());
+        let far = reach > REL_LOCAL_FRAME * length && beam.supports[0].is_finite();
+        LocalFrame {
+            dx: if far { beam.supports[0] } else { 0.0 },
+        }
+    }
+
+    /// The beam with x measured from `dx`.
+    pub(super) fn to_local(self, beam: &Beam) -> Beam {
+        let x = |v: f64| v - self.dx;
+        Beam {
+            supports: beam.supports.map(x),
+            ends: beam.ends.map(x),
+            point_loads: beam
+                .point_loads
+                .iter()
+                .map(|l| super::PointLoad { x: x(l.x), p: l.p })
+                .collect(),
+            uniform_loads: beam
+                .uniform_loads
+                .iter()
+                .map(|u| super::UniformLoad {
+                    from: x(u.from),
+                    to: x(u.to),
+                    q: u.q,
+                })
+                .collect(),
+        }
+    }
+
+    /// The results at the scene's x.
+    pub(super) fn to_global(self, mut r: BeamResults) -> BeamResults {
+        for s in &mut r.sections {
+            s.x += self.dx;
+        }
+        for z in &mut r.zero_moments {
+            *z += self.dx;
+        }
+        for s in &mut r.shear {
+            s.x += self.dx;
+        }
+        if let Some(m) = &mut r.max_moment {
+            m.x += self.dx;
+        }
+        r
+    }
 }
 
 /// Sections must lie on the beam and outside the uniform loads.
