@@ -131,3 +131,21 @@ fn a_sliver_polygon_is_refused_at_validation_naming_the_polygon() {
     let e = construct_centroid(&mut b, &pts, &d).unwrap_err();
     assert!(e.to_string().contains("sliver"), "{e}");
 }
+
+#[test]
+fn a_polygon_far_from_the_origin_keeps_its_centroid() {
+    // Issue 12, case 3: a pentagon at 1e6 m had its closed-form centroid 9.2 m away, and a unit
+    // square at 1e8 m was "of zero area". Measured from the first vertex, both are right.
+    let pentagon = [[0.0, 0.0], [3.0, 0.0], [4.0, 2.0], [1.5, 3.5], [-0.5, 2.0]];
+    let near = run(&pentagon, 0);
+    for dx in [1e6, 1e8] {
+        let far: Vec<[f64; 2]> = pentagon.iter().map(|p| [p[0] + dx, p[1] + dx]).collect();
+        let r = run(&far, 0);
+        assert!((r.centroid.x - dx - near.centroid.x).abs() < 1e-6, "{:?}", r.centroid);
+        assert!((r.centroid.y - dx - near.centroid.y).abs() < 1e-6, "{:?}", r.centroid);
+        assert!((r.area - near.area).abs() < 1e-6 * near.area);
+    }
+    let square = points(&[[1e8, 1e8], [1e8 + 1.0, 1e8], [1e8 + 1.0, 1e8 + 1.0], [1e8, 1e8 + 1.0]]);
+    let (a, c) = polygon_centroid(&square).unwrap();
+    assert_eq!((a, c.x - 1e8, c.y - 1e8), (1.0, 0.5, 0.5));
+}

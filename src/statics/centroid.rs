@@ -96,10 +96,13 @@ pub struct CentroidResults {
 /// ```
 pub fn polygon_centroid(pts: &[Point]) -> Option<(f64, Point)> {
     let n = pts.len();
+    // Measured from the first vertex: the shoelace's products x·y at absolute coordinates
+    // would cancel the offset's digits (a unit square at 1e8 m came out of zero area).
+    let o = pts.first().copied().unwrap_or(Point::origin());
     let (mut a2, mut cx, mut cy) = (0.0, 0.0, 0.0);
     for i in 0..n {
-        let (x0, y0) = (pts[i].x, pts[i].y);
-        let (x1, y1) = (pts[(i + 1) % n].x, pts[(i + 1) % n].y);
+        let (x0, y0) = (pts[i].x - o.x, pts[i].y - o.y);
+        let (x1, y1) = (pts[(i + 1) % n].x - o.x, pts[(i + 1) % n].y - o.y);
         let c = x0 * y1 - x1 * y0;
         a2 += c;
         cx += (x0 + x1) * c;
@@ -108,7 +111,10 @@ pub fn polygon_centroid(pts: &[Point]) -> Option<(f64, Point)> {
     if a2 == 0.0 {
         return None;
     }
-    Some((0.5 * a2.abs(), Point::new(cx / (3.0 * a2), cy / (3.0 * a2))))
+    Some((
+        0.5 * a2.abs(),
+        Point::new(o.x + cx / (3.0 * a2), o.y + cy / (3.0 * a2)),
+    ))
 }
 
 fn orient(a: Point, b: Point, c: Point) -> f64 {
@@ -179,6 +185,22 @@ pub fn construct_centroid(
     pts: &[Point],
     dr: &CentroidDrawing,
 ) -> Result<CentroidResults, ConstructionError> {
+    // A polygon farther from the origin than REL_LOCAL_FRAME times its size is constructed
+    // from its first vertex, and its centroid given back at the scene's coordinates.
+    let size0 = pts
+        .iter()
+        .flat_map(|p| pts.iter().map(move |q| (p - q).norm()))
+        .fold(0.0, f64::max);
+    let reach = pts.iter().map(|p| p.x.abs().max(p.y.abs())).fold(0.0, f64::max);
+    if reach > crate::kernel::tolerance::REL_LOCAL_FRAME * size0 && !pts.is_empty() {
+        let o = pts[0];
+        let local: Vec<Point> = pts.iter().map(|p| Point::from(p - o)).collect();
+        let r = construct_centroid(b, &local, dr)?;
+        return Ok(CentroidResults {
+            centroid: Point::new(r.centroid.x + o.x, r.centroid.y + o.y),
+            area: r.area,
+        });
+    }
     let (area, exact) = check_polygon(pts)?;
     let k = 1000.0 / dr.length_scale;
     let size = pts
