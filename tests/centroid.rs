@@ -141,11 +141,24 @@ fn a_polygon_far_from_the_origin_keeps_its_centroid() {
     for dx in [1e6, 1e8] {
         let far: Vec<[f64; 2]> = pentagon.iter().map(|p| [p[0] + dx, p[1] + dx]).collect();
         let r = run(&far, 0);
-        assert!((r.centroid.x - dx - near.centroid.x).abs() < 1e-6, "{:?}", r.centroid);
-        assert!((r.centroid.y - dx - near.centroid.y).abs() < 1e-6, "{:?}", r.centroid);
+        assert!(
+            (r.centroid.x - dx - near.centroid.x).abs() < 1e-6,
+            "{:?}",
+            r.centroid
+        );
+        assert!(
+            (r.centroid.y - dx - near.centroid.y).abs() < 1e-6,
+            "{:?}",
+            r.centroid
+        );
         assert!((r.area - near.area).abs() < 1e-6 * near.area);
     }
-    let square = points(&[[1e8, 1e8], [1e8 + 1.0, 1e8], [1e8 + 1.0, 1e8 + 1.0], [1e8, 1e8 + 1.0]]);
+    let square = points(&[
+        [1e8, 1e8],
+        [1e8 + 1.0, 1e8],
+        [1e8 + 1.0, 1e8 + 1.0],
+        [1e8, 1e8 + 1.0],
+    ]);
     let (a, c) = polygon_centroid(&square).unwrap();
     assert_eq!((a, c.x - 1e8, c.y - 1e8), (1.0, 0.5, 0.5));
 }

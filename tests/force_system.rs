@@ -363,3 +363,53 @@ fn a_force_polygon_closed_to_rounding_is_a_couple_judged_against_the_forces() {
     }
     assert!(b.all_passed());
 }
+
+#[test]
+fn forces_far_from_the_origin_keep_their_resultant_and_moment() {
+    // Issue 12, case 3: the resultant's line and its moment about the origin, for four forces
+    // near the origin and the same forces 1e6 and 1e8 m away.
+    let near = [
+        f(0.0, 0.0, 100.0, -300.0),
+        f(2.0, 1.0, -50.0, -200.0),
+        f(3.5, -0.5, 0.0, -400.0),
+        f(5.0, 0.5, 80.0, -150.0),
+    ];
+    let (_, r0) = run(&near, &[]);
+    let Resultant::Force {
+        r: rv0,
+        through: t0,
+        ..
+    } = r0.resultant
+    else {
+        panic!("{:?}", r0.resultant)
+    };
+    for dx in [1e6, 1e8] {
+        let far: Vec<Force> = near
+            .iter()
+            .map(|g| Force {
+                at: graphostatik::kernel::Point::new(g.at.x + dx, g.at.y + dx),
+                f: g.f,
+            })
+            .collect();
+        let (b, r) = run(&far, &[]);
+        assert!(b.all_passed());
+        let Resultant::Force {
+            r: rv,
+            through,
+            moment,
+        } = r.resultant
+        else {
+            panic!("{:?}", r.resultant)
+        };
+        assert!((rv - rv0).norm() < 1e-9 * rv0.norm());
+        // `through` is one point of the line: compare the lines by their distance.
+        let n = graphostatik::kernel::Vector::new(-rv0.y, rv0.x) / rv0.norm();
+        let off = (through - graphostatik::kernel::Point::new(t0.x + dx, t0.y + dx)).dot(&n);
+        assert!(off.abs() < 1e-6, "{off}");
+        let (_, m_exact) = sum_and_moment(&far);
+        assert!(
+            (moment - m_exact).abs() < 1e-9 * m_exact.abs(),
+            "{moment} against {m_exact}"
+        );
+    }
+}

@@ -297,9 +297,22 @@ impl super::Procedure for ForceSystemScene {
 
     fn sheet_extent(p: &ForceSystemProblem) -> (f64, &'static str) {
         let (_, reach) = funicular::extent(&p.forces);
+        let o = p
+            .forces
+            .first()
+            .map_or(crate::kernel::Point::origin(), |f| f.at);
+        let spread = p
+            .forces
+            .iter()
+            .map(|f| (f.at - o).norm())
+            .fold(0.0, f64::max);
+        // Far from the origin the system is drawn in its own frame (statics::funicular):
+        // then its spread, not its distance from the origin, sets the figure.
+        let far = reach > crate::kernel::tolerance::REL_LOCAL_FRAME * spread;
+        let length = if far { spread } else { reach };
         let total: f64 = p.forces.iter().map(|f| f.f.x.hypot(f.f.y)).sum();
         let d = &p.drawing;
-        super::fields::larger(reach * 1000.0 / d.length_scale, total / d.force_scale)
+        super::fields::larger(length * 1000.0 / d.length_scale, total / d.force_scale)
     }
     type Problem = ForceSystemProblem;
     type Results = Option<funicular::SystemResults>;

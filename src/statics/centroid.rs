@@ -191,7 +191,10 @@ pub fn construct_centroid(
         .iter()
         .flat_map(|p| pts.iter().map(move |q| (p - q).norm()))
         .fold(0.0, f64::max);
-    let reach = pts.iter().map(|p| p.x.abs().max(p.y.abs())).fold(0.0, f64::max);
+    let reach = pts
+        .iter()
+        .map(|p| p.x.abs().max(p.y.abs()))
+        .fold(0.0, f64::max);
     if reach > crate::kernel::tolerance::REL_LOCAL_FRAME * size0 && !pts.is_empty() {
         let o = pts[0];
         let local: Vec<Point> = pts.iter().map(|p| Point::from(p - o)).collect();

@@ -7,7 +7,7 @@ use super::{
     extent, resolve, sum_and_moment, Components, Force, Resolution, Resultant, SystemDrawing,
     SystemResults,
 };
-use crate::kernel::tolerance::{REL_CLOSURE_EPS, REL_LAYOUT_EPS, REL_TIE_EPS};
+use crate::kernel::tolerance::{REL_CLOSURE_EPS, REL_LAYOUT_EPS, REL_LOCAL_FRAME, REL_TIE_EPS};
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{Board, ConstructionError, Cut, Label, Role, Scale, H};
 
@@ -30,6 +30,8 @@ struct System<'a, 'b> {
     /// The largest force and the farthest point of application: the check references.
     fmax: f64,
     reach: f64,
+    /// What the origin of the frame is ("origin", "first point of application").
+    origin: &'static str,
 }
 
 /// The force polygon: its corners, the resultant's length on the sheet and its components.
@@ -81,6 +83,47 @@ pub fn construct_system(
             "a force system needs at least one force",
         ));
     }
+    // Forces applied farther from the origin than REL_LOCAL_FRAME times their spread are
+    // constructed from the first point of application; the resultant's line and its moment
+    // are given back about the scene's origin.
+    let o = forces[0].at;
+    let spread = forces.iter().map(|f| (f.at - o).norm()).fold(0.0, f64::max);
+    let reach = forces
+        .iter()
+        .map(|f| f.at.x.abs().max(f.at.y.abs()))
+        .fold(0.0, f64::max);
+    if dr.plan_at.is_none() && o != Point::origin() && reach > REL_LOCAL_FRAME * spread {
+        let local: Vec<Force> = forces
+            .iter()
+            .map(|f| Force {
+                at: Point::from(f.at - o),
+                f: f.f,
+            })
+            .collect();
+        let mut r = build(b, &local, dr, resolutions, "first point of application")?;
+        if let Resultant::Force {
+            r: rv,
+            through,
+            moment,
+        } = &mut r.resultant
+        {
+            *through = Point::new(through.x + o.x, through.y + o.y);
+            *moment += o.x * rv.y - o.y * rv.x;
+        }
+        return Ok(r);
+    }
+    build(b, forces, dr, resolutions, "origin")
+}
+
+/// The construction of [`construct_system`] in the frame the forces are given in; `origin`
+/// names where that frame's origin is, for the moment check.
+fn build(
+    b: &mut Board,
+    forces: &[Force],
+    dr: &SystemDrawing,
+    resolutions: &[Resolution],
+    origin: &'static str,
+) -> Result<SystemResults, ConstructionError> {
     let (r_cf, m_cf) = sum_and_moment(forces);
     let (fmax, reach) = extent(forces);
     let mut s = System {
@@ -93,6 +136,7 @@ pub fn construct_system(
         m_cf,
         fmax,
         reach,
+        origin,
     };
     let (lines, xmax) = s.position_plan()?;
     let poly = s.force_polygon(&lines, xmax)?;
@@ -304,7 +348,7 @@ impl System<'_, '_> {
         };
         let scale = Scale::new(poly.r_len * fs / k, "kg·m");
         let d = b.measure(&o, &foot, &normal, scale, Label::NONE, N_R_MOMENT);
-        let what = "moment of the resultant about the origin";
+        let what = format!("moment of the resultant about the {}", self.origin);
         b.check(&d, what, "kg·m", "ΣM = x·Fy − y·Fx", mref, || m_cf);
         let r = Resultant::Force {
             r: Vector::new(poly.rx.g, poly.ry.g),
