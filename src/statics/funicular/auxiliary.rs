@@ -83,7 +83,7 @@ pub fn parallel_pair_by_auxiliary_forces(
         .map_err(|_| {
             ConstructionError::unsupported(
                 "forces",
-                "equal and opposite forces: a couple, no single resultant",
+                "the forces are equal and opposite, or so nearly that their resultant lies beyond the drawing (its partial resultants do not meet): a couple",
             )
         })?;
     let ratio = (k1.f.dot(&dir), k2.f.dot(&dir));
