@@ -57,9 +57,14 @@ impl Line {
             return Err(PrimitiveError::NotFinite);
         }
         let n = dir.norm();
-        // x² + y² underflows for a direction shorter than 1e-154: hypot does not, and a
+        // x² + y² loses digits below 1e-154 (subnormal) and overflows above 1e154: hypot
+        // does neither (and the usual directions keep their bits), and a
         // direction that is zero in f64 is refused rather than made of NaN.
-        let n = if n.is_normal() { n } else { dir.x.hypot(dir.y) };
+        let n = if (1e-150..1e150).contains(&n) {
+            n
+        } else {
+            dir.x.hypot(dir.y)
+        };
         if n == 0.0 {
             return Err(PrimitiveError::ZeroDirection);
         }

@@ -173,7 +173,11 @@ impl Truss {
         let d = self.joints[b].at - self.joints[a].at;
         let l = d.norm();
         // x² + y² underflows for a member shorter than 1e-154 m: hypot does not.
-        let l = if l.is_normal() { l } else { d.x.hypot(d.y) };
+        let l = if (1e-150..1e150).contains(&l) {
+            l
+        } else {
+            d.x.hypot(d.y)
+        };
         (d / l, l)
     }
 

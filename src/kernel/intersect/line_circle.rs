@@ -58,7 +58,14 @@ pub fn intersect_line_circle(line: &Line, circle: &Circle, tol: &Tolerance) -> L
     if h > r {
         return LineCircle::Disjoint { gap: h - r };
     }
-    let s = ((r - h) * (r + h)).sqrt();
+    // (r − h)(r + h) overflows for r near 1e154 and loses digits below 1e-154 (subnormal):
+    // there the square roots are taken apart.
+    let p = (r - h) * (r + h);
+    let s = if p.is_normal() || p == 0.0 {
+        p.sqrt()
+    } else {
+        (r - h).sqrt() * (r + h).sqrt()
+    };
     LineCircle::Two {
         points: [line.point_at(t_foot - s), line.point_at(t_foot + s)],
         conditioning: Conditioning::from_sin_cos(s, h),
