@@ -25,6 +25,9 @@ enum Command {
         /// Output folder (created if missing).
         #[arg(long, default_value = "figures")]
         out: PathBuf,
+        /// Scenes rendered at once (default: every core). The output is the same for any value.
+        #[arg(long, value_parser = clap::value_parser!(u16).range(1..))]
+        jobs: Option<u16>,
     },
     /// Print the table of every analytic check; exit status 1 if any fails.
     Check {
@@ -137,7 +140,7 @@ fn commit(batch: Batch) -> Result<(), Fail> {
 
 fn run(cli: Cli) -> Result<ExitCode, Fail> {
     match cli.command {
-        Command::Render { scenes, out } => render_cmd(&scenes, &out),
+        Command::Render { scenes, out, jobs } => render_cmd(&scenes, &out, jobs),
         Command::Check { scene, json } => check_cmd(&scene, json),
         Command::Steps { scene, out } => steps_cmd(&scene, &out),
         Command::Protocol { scene } => {
@@ -156,7 +159,7 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
 }
 
 /// `render`: every scene loaded and constructed before the first file is written.
-fn render_cmd(scenes: &[PathBuf], out: &Path) -> Result<ExitCode, Fail> {
+fn render_cmd(scenes: &[PathBuf], out: &Path, jobs: Option<u16>) -> Result<ExitCode, Fail> {
     let files = scene_files(scenes)?;
     let mut batch = Batch::default();
     let mut seen: std::collections::BTreeMap<PathBuf, &Path> = Default::default();
@@ -176,15 +179,12 @@ fn render_cmd(scenes: &[PathBuf], out: &Path) -> Result<ExitCode, Fail> {
             )));
         }
     }
-    for f in &files {
-        let p = load(f)?;
-        let board = construct(f, &p)?;
+    for (f, svg) in files.iter().zip(render_all(&files, jobs)) {
         let stem = f
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default();
-        let svg = render::figure(&p.figure_meta(), &board, None);
-        batch.add(out.join(format!("{stem}.svg")), svg);
+        batch.add(out.join(format!("{stem}.svg")), svg?);
     }
     ensure_dir(out)?;
     let paths: Vec<PathBuf> = batch.paths().map(Path::to_path_buf).collect();
@@ -193,6 +193,46 @@ fn render_cmd(scenes: &[PathBuf], out: &Path) -> Result<ExitCode, Fail> {
         say(&format!("{}\n", path.display()))?;
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Renders each scene to its SVG on every core the machine offers. The scenes are handed out one
+/// at a time (a large truss does not hold up the small ones behind it) and the results come back in
+/// the order of `files`, so the output and the first error reported are those of a serial run.
+fn render_all(files: &[PathBuf], jobs: Option<u16>) -> Vec<Result<String, Fail>> {
+    let one = |f: &PathBuf| -> Result<String, Fail> {
+        let p = load(f)?;
+        let board = construct(f, &p)?;
+        Ok(render::figure(&p.figure_meta(), &board, None))
+    };
+    let workers = jobs
+        .map(usize::from)
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from))
+        .min(files.len());
+    if workers <= 1 {
+        return files.iter().map(one).collect();
+    }
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let slots: Vec<std::sync::Mutex<Option<Result<String, Fail>>>> =
+        files.iter().map(|_| Default::default()).collect();
+    std::thread::scope(|s| {
+        for _ in 0..workers {
+            s.spawn(|| loop {
+                let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                let Some(f) = files.get(i) else { break };
+                let r = one(f);
+                *slots[i].lock().unwrap_or_else(|e| e.into_inner()) = Some(r);
+            });
+        }
+    });
+    slots
+        .into_iter()
+        .zip(files)
+        .map(|(slot, f)| {
+            slot.into_inner()
+                .unwrap_or_else(|e| e.into_inner())
+                .unwrap_or_else(|| Err(Fail(format!("{}: rendering stopped", f.display()))))
+        })
+        .collect()
 }
 
 /// `check`: the table of every check; exit status 1 if any fails.

@@ -593,3 +593,59 @@ fn a_rod_a_hair_longer_than_the_crank_is_refused_and_a_little_longer_constructs(
     let (board, _) = p.construct(true).unwrap();
     assert!(board.all_passed());
 }
+
+#[test]
+fn render_on_every_core_writes_what_a_serial_run_writes_and_names_the_first_bad_scene() {
+    let dir = tmp("jobs");
+    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let run = |src: &Path, out: &Path, jobs: &str| {
+        Command::new(bin())
+            .arg("render")
+            .arg(src)
+            .arg("--out")
+            .arg(out)
+            .args(["--jobs", jobs])
+            .output()
+            .unwrap()
+    };
+    let (one, four) = (dir.join("one"), dir.join("four"));
+    let o1 = run(&scenes, &one, "1");
+    let o4 = run(&scenes, &four, "4");
+    assert!(o1.status.success() && o4.status.success());
+    let listed = |o: &std::process::Output, out: &Path| {
+        String::from_utf8_lossy(&o.stdout).replace(&*out.to_string_lossy(), "OUT")
+    };
+    assert_eq!(
+        listed(&o1, &one),
+        listed(&o4, &four),
+        "the same files, in order"
+    );
+    let mut n = 0;
+    for e in std::fs::read_dir(&one).unwrap() {
+        let name = e.unwrap().file_name();
+        let a = std::fs::read(one.join(&name)).unwrap();
+        let b = std::fs::read(four.join(&name)).unwrap();
+        assert!(a == b, "{name:?} differs between --jobs 1 and --jobs 4");
+        n += 1;
+    }
+    assert!(n >= 20, "{n} figures");
+    // Two bad scenes among good ones: whichever worker finishes first, the error is the one a
+    // serial run meets first (file order), and nothing is written.
+    let mixed = dir.join("mixed");
+    std::fs::create_dir_all(&mixed).unwrap();
+    for (i, e) in std::fs::read_dir(&scenes).unwrap().enumerate().take(8) {
+        std::fs::copy(e.unwrap().path(), mixed.join(format!("s{i}.json"))).unwrap();
+    }
+    std::fs::write(mixed.join("s3b.json"), "{\"procedure\": 1}").unwrap();
+    std::fs::write(mixed.join("s6b.json"), "not json").unwrap();
+    for jobs in ["1", "2", "8"] {
+        let out = dir.join(format!("mixed-out-{jobs}"));
+        let o = run(&mixed, &out, jobs);
+        assert_eq!(o.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains("s3b.json") && !err.contains("s6b"), "{err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(!out.exists());
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
