@@ -98,8 +98,9 @@ fn load_scene(file: &str) -> graphostatik::scene::TrussProblem {
 fn aufgabe_4_against_the_book_table() {
     let p = load_scene("lh_aufgabe4_shed_roof.json");
     let (b, r) = p.construct(true).unwrap();
-    // Per case: three reaction components, by moments and by the dense solve; 7 members.
-    assert_eq!(all_checks_pass(&b), 4 * (2 * 3 + 7));
+    // Per case: three reaction components, by moments and by the dense solve; 7 members;
+    // the balance of the joints.
+    assert_eq!(all_checks_pass(&b), 4 * (2 * 3 + 7 + 1));
     let book: [(&str, [f64; 7]); 4] = [
         (
             "dead load",
@@ -198,8 +199,8 @@ fn aufgabe_3_crane_against_the_book_table() {
     let p = load_scene("lh_aufgabe3_slewing_crane.json");
     let (b, r) = p.construct(true).unwrap();
     // 7 members and the two reactions (G as a pin: two components), all checked, the
-    // reactions both by moments and against the dense solve.
-    assert_eq!(all_checks_pass(&b), 7 + 2 * 3);
+    // reactions both by moments and against the dense solve; and the balance of the joints.
+    assert_eq!(all_checks_pass(&b), 7 + 2 * 3 + 1);
     let r = &r[0];
     let book_members: [f64; 5] = [2900.0, -7100.0, -2250.0, 3000.0, -2000.0];
     let book_mm = [29.0, 71.0, 22.5, 30.0, 20.0];
@@ -341,6 +342,36 @@ fn two_thousand_joints_by_the_plan_alone() {
         .collect();
     assert_eq!(by_moments.len(), 3);
     assert!(by_moments.iter().all(|c| c.passed), "{by_moments:?}");
+    // And the balance of every joint is a check row of its own, judged against the largest
+    // force (the chord's 12.5 t, not the 100 kg loads), naming the joint that balances worst.
+    let balance: Vec<_> = b
+        .checks()
+        .filter(|c| c.quantity.starts_with("joint balance"))
+        .collect();
+    assert_eq!(balance.len(), 1);
+    assert!(balance[0].passed && balance[0].tolerance >= 1e-9 * fmax * 0.99);
+    assert!(balance[0].quantity.contains("worst at joint "));
+    assert_eq!(balance[0].constructed, r[0].plan_residual);
+}
+
+#[test]
+fn the_balance_check_names_the_joint_a_wrong_force_unbalances() {
+    use graphostatik::truss::matrix::{solve, worst_joint};
+    let t = parallel_chord(Web::Warren, 6, 1.0, 1.0);
+    let c = &case((1..6).map(|i| down(i, 100.0)).collect())[0];
+    let s = solve(&t, c).unwrap();
+    let (_, r0) = worst_joint(&t, c, &s.members, &s.reactions).unwrap();
+    assert!(r0 < 1e-10, "{r0}");
+    for m in [0, 7, t.members.len() - 1] {
+        let mut f = s.members.clone();
+        f[m] += 1.0;
+        let (j, r) = worst_joint(&t, c, &f, &s.reactions).unwrap();
+        assert!(t.members[m].ends.contains(&j), "member {m}: joint {j}");
+        assert!((r - 1.0).abs() < 1e-9, "{r}");
+        // A NaN force is never hidden behind a finite residual.
+        f[m] = f64::NAN;
+        assert!(worst_joint(&t, c, &f, &s.reactions).unwrap().1.is_nan());
+    }
 }
 
 #[test]
@@ -627,8 +658,9 @@ fn pairs_problem(mode: &str) -> graphostatik::scene::TrussProblem {
 fn double_diagonals_split_into_two_systems_with_half_loads() {
     let p = pairs_problem("split_half_loads");
     let (b, r) = p.construct(true).unwrap();
-    // Two sub-trusses per case, each checked against its own dense solve.
-    assert_eq!(all_checks_pass(&b), 2 * 2 * (2 * 3 + 13));
+    // Two sub-trusses per case, each checked against its own dense solve and for the
+    // balance of its joints.
+    assert_eq!(all_checks_pass(&b), 2 * 2 * (2 * 3 + 13 + 1));
     for c in &r {
         // The sum is in balance at every joint of the whole truss.
         assert!(c.plan_residual < 1e-9 * 3000.0, "{}", c.plan_residual);

@@ -735,6 +735,22 @@ impl Board {
         H { id, g: value }
     }
 
+    /// Records a number reckoned from constructed values (`inputs`), not drawn: a value the
+    /// checks can hold against its closed form, as the balance of the joints under a plan's
+    /// forces is held against zero.
+    pub fn tally(
+        &mut self,
+        value: f64,
+        unit: &'static str,
+        label: Label,
+        inputs: &[ObjId],
+        note: Note,
+    ) -> H<f64> {
+        self.begin(StepKind::Tally, &note, inputs);
+        let id = self.add(label, Role::Result, || Geom::Scalar { value, unit });
+        H { id, g: value }
+    }
+
     /// Writes a table on the sheet with its top-left corner at `at` (the evaluation of a
     /// plan, LH B.4 "Auswertung"); `inputs` are the objects its numbers were read from.
     pub fn table(&mut self, at: Point, rows: Vec<Vec<String>>, inputs: &[ObjId], note: Note) {

@@ -74,6 +74,9 @@ pub enum StepKind {
     Measure,
     /// A curve drawn through constructed points.
     Curve,
+    /// A number reckoned from constructed values and not drawn: the balance of every joint
+    /// under the forces a plan found, read as the drafter sums a joint's forces.
+    Tally,
 }
 
 /// Which part of a procedure a step belongs to; the unit of lazy evaluation.

@@ -102,13 +102,7 @@ pub(super) fn cremona_plan(
     g: &PlaneGraph,
 ) -> Result<(CaseResult, [f64; 4]), ConstructionError> {
     let PlanContext {
-        t,
-        case,
-        ext,
-        sol,
-        dr,
-        at,
-        ..
+        t, case, ext, at, ..
     } = *ctx;
     let sm = SpaceMap::new(t, g, ext)?;
     let mut bx = EMPTY;
@@ -158,7 +152,7 @@ pub(super) fn cremona_plan(
     if let Some(m) = found.forces.iter().position(|f| f.is_none()) {
         return Err(stalls(t, g, &found.forces, m));
     }
-    let result = plan_result(t, case, ext, &found.forces, &found.plan_mm, sol, dr);
+    let result = plan_result(b, ctx, &found.forces, &found.plan_mm);
     Ok((result, bx))
 }
 

@@ -79,14 +79,7 @@ pub(crate) fn joint_polygons(
     b: &mut Board,
     ctx: &PlanContext,
 ) -> Result<(CaseResult, [f64; 4]), ConstructionError> {
-    let PlanContext {
-        t,
-        case,
-        ext,
-        sol,
-        dr,
-        ..
-    } = *ctx;
+    let PlanContext { t, case, sol, .. } = *ctx;
     let mut p = Polygons::new(ctx);
     let k = t.joints.len();
     let mut queue: std::collections::VecDeque<usize> = (0..k).collect();
@@ -135,7 +128,7 @@ pub(crate) fn joint_polygons(
             ),
         });
     }
-    let result = plan_result(t, case, ext, &p.force, &p.plan_mm, sol, dr);
+    let result = plan_result(b, ctx, &p.force, &p.plan_mm);
     let bx = if p.bx[0].is_finite() { p.bx } else { [0.0; 4] };
     Ok((result, bx))
 }

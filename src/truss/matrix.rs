@@ -258,6 +258,30 @@ pub fn solve_all(t: &Truss, cases: &[LoadCase]) -> Vec<Option<Solution>> {
 /// The largest out-of-balance force (kg) at any joint for the given member forces and
 /// reaction components: O(s + k), usable at any size.
 pub fn max_residual(t: &Truss, case: &LoadCase, members: &[f64], reactions: &[f64]) -> f64 {
+    worst_joint(t, case, members, reactions).map_or(0.0, |(_, r)| r)
+}
+
+/// The joint with the largest out-of-balance force and that force (kg), for the given member
+/// forces and reaction components (ties go to the first joint); `None` for a truss without
+/// joints. O(s + k).
+pub fn worst_joint(
+    t: &Truss,
+    case: &LoadCase,
+    members: &[f64],
+    reactions: &[f64],
+) -> Option<(usize, f64)> {
+    let r = joint_residuals(t, case, members, reactions);
+    (0..t.joints.len())
+        .map(|j| (j, r[2 * j].hypot(r[2 * j + 1])))
+        .fold(None, |best, (j, v)| match best {
+            // A NaN is the worst of all: it is never hidden behind a finite residual.
+            Some((_, bv)) if bv.is_nan() || v <= bv => best,
+            _ => Some((j, v)),
+        })
+}
+
+/// The out-of-balance force at every joint: x and y interleaved.
+fn joint_residuals(t: &Truss, case: &LoadCase, members: &[f64], reactions: &[f64]) -> Vec<f64> {
     let k = t.joints.len();
     let mut r = vec![0.0; 2 * k];
     for l in &case.loads {
@@ -288,7 +312,5 @@ pub fn max_residual(t: &Truss, case: &LoadCase, members: &[f64], reactions: &[f6
             }
         }
     }
-    (0..k)
-        .map(|j| r[2 * j].hypot(r[2 * j + 1]))
-        .fold(0.0, f64::max)
+    r
 }

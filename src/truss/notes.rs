@@ -104,6 +104,13 @@ pub(super) const N_FORCE: Note = note(
     Topic::Cremona,
 );
 
+pub(super) const N_BALANCE: Note = note(
+    "the balance of every joint under the forces found: ΣX = ΣY = 0",
+    Some("Gleichgewicht der Knotenpunkte"),
+    "LH B.3",
+    Topic::Cremona,
+);
+
 pub(super) const N_TABLE: Note = note(
     "table of member forces read off the plan",
     Some("Auswertung"),

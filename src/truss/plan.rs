@@ -66,23 +66,75 @@ pub(super) fn ext_max(ext: &External) -> f64 {
 }
 
 /// The result of a plan, either way it was drawn: the forces found, the dense solve beside
-/// them, and the balance of both at every joint.
+/// them, and the balance of both at every joint. The plan's balance is recorded as a check of
+/// its own (see [`check_balance`]).
 pub(crate) fn plan_result(
-    t: &Truss,
-    case: &LoadCase,
-    ext: &External,
+    b: &mut Board,
+    ctx: &PlanContext,
     forces: &[Option<f64>],
     plan_mm: &[f64],
-    sol: Option<&Solution>,
-    dr: &TrussDrawing,
 ) -> CaseResult {
+    let PlanContext {
+        t,
+        case,
+        ext,
+        sol,
+        dr,
+        ..
+    } = *ctx;
     let members: Vec<f64> = forces.iter().map(|f| f.unwrap_or(0.0)).collect();
     let matrix: Vec<Option<f64>> = (0..members.len())
         .map(|m| sol.map(|s| s.members[m]))
         .collect();
     let mut result = case_result(t, case, &members, plan_mm, &matrix, &ext.reactions, dr);
     result.matrix_residual = sol.map(|s| matrix::max_residual(t, case, &s.members, &s.reactions));
+    check_balance(b, ctx, &members);
     result
+}
+
+/// The balance of every joint under the forces the plan found and the reactions: a check at
+/// every size, the dense solve made or not, that names the joint that balances worst. It is
+/// judged against the largest force of the case (a load, a reaction or a member force: the
+/// chord of a long girder carries many times its largest load, and its rounding with it).
+fn check_balance(b: &mut Board, ctx: &PlanContext, members: &[f64]) {
+    if !b.is_recording() {
+        return;
+    }
+    let t = ctx.t;
+    let rc = reaction_components(t, &ctx.ext.reactions);
+    let Some((joint, residual)) = matrix::worst_joint(t, ctx.case, members, &rc) else {
+        return;
+    };
+    let largest = members.iter().fold(0.0, |a: f64, f| a.max(f.abs()));
+    let reference = check_reference(ctx.maxload, ctx.ext).max(largest);
+    let v = b.tally(
+        residual,
+        "kg",
+        crate::protocol::Label::NONE,
+        &[],
+        super::notes::N_BALANCE,
+    );
+    let name = &t.joints[joint].name;
+    b.check(
+        &v,
+        format!("joint balance |ΣF|, worst at joint {name}"),
+        "kg",
+        "ΣX = ΣY = 0 at every joint (LH B.3)",
+        reference,
+        || 0.0,
+    );
+}
+
+/// Reaction components in the order of [`matrix::equilibrium_matrix`]'s columns.
+fn reaction_components(t: &Truss, reactions: &[Vector]) -> Vec<f64> {
+    let mut rc = Vec::new();
+    for (sup, r) in t.supports.iter().zip(reactions) {
+        match sup.kind {
+            SupportKind::Pinned => rc.extend([r.x, r.y]),
+            SupportKind::Roller { dir } => rc.push(r.dot(&dir)),
+        }
+    }
+    rc
 }
 
 /// The scale of the checks: the largest load or reaction of the case (kg).
@@ -121,14 +173,7 @@ pub(crate) fn case_result(
     reactions: &[Vector],
     dr: &TrussDrawing,
 ) -> CaseResult {
-    // Reaction components in the solve's order.
-    let mut rc = Vec::new();
-    for (sup, r) in t.supports.iter().zip(reactions) {
-        match sup.kind {
-            SupportKind::Pinned => rc.extend([r.x, r.y]),
-            SupportKind::Roller { dir } => rc.push(r.dot(&dir)),
-        }
-    }
+    let rc = reaction_components(t, reactions);
     CaseResult {
         case: case.name.clone(),
         reactions: t
