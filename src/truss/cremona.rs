@@ -39,8 +39,8 @@ use crate::protocol::{Board, ConstructionError, Label, Role, H, TABLE_BLOCK_ROWS
 pub use super::plan::{CaseResult, ReactionForce, TrussDrawing, ZERO_FORCE_REL};
 
 /// Constructs the truss drawing and, per load case, the reactions and the Cremona plan,
-/// each checked member by member against the dense solve of the joint equations
-/// (up to [`matrix::DENSE_MAX_JOINTS`] joints).
+/// each checked member by member against the sparse solve of the joint equations at every
+/// size; the rank test (a dense SVD) is made up to [`matrix::DENSE_MAX_JOINTS`] joints.
 ///
 /// # Errors
 /// A truss that is not determinate, not a plane drawing, or whose plan stalls (three unknown
@@ -78,15 +78,7 @@ pub fn construct_truss(
     dr: &TrussDrawing,
 ) -> Result<Vec<CaseResult>, ConstructionError> {
     let mut row = 0.0;
-    construct(
-        b,
-        t,
-        cases,
-        dr,
-        t.joints.len() <= matrix::DENSE_MAX_JOINTS,
-        &mut row,
-        &[],
-    )
+    construct(b, t, cases, dr, true, &mut row, &[])
 }
 
 /// As [`construct_truss`], drawing the cases' rows from `row_top` (mm) downwards and moving
@@ -104,19 +96,11 @@ pub fn construct_truss_rows(
     row_top: &mut f64,
     slack: &[[usize; 2]],
 ) -> Result<Vec<CaseResult>, ConstructionError> {
-    construct(
-        b,
-        t,
-        cases,
-        dr,
-        t.joints.len() <= matrix::DENSE_MAX_JOINTS,
-        row_top,
-        slack,
-    )
+    construct(b, t, cases, dr, true, row_top, slack)
 }
 
-/// The plan alone, without the rank test and the dense solve: what a drafter does, and what
-/// the benchmark times against the dense solve. The plan still refuses a truss it cannot
+/// The plan alone, without the rank test and the sparse solve: what a drafter does, and what
+/// the benchmark times against the sparse solve. The plan still refuses a truss it cannot
 /// resolve (it stalls, or two members meet in line where a space must be fixed), and
 /// [`CaseResult::plan_residual`] still reports the balance at every joint.
 ///
@@ -137,18 +121,20 @@ fn construct(
     t: &Truss,
     cases: &[LoadCase],
     dr: &TrussDrawing,
-    dense: bool,
+    checked: bool,
     row_top: &mut f64,
     slack: &[[usize; 2]],
 ) -> Result<Vec<CaseResult>, ConstructionError> {
-    // The rank test goes with the dense solve; the plan alone finds out by stalling.
-    if dense {
+    // The rank test is dense (an SVD), so it is made up to DENSE_MAX_JOINTS; above, and for
+    // the plan alone, a truss that is not determinate is found by the plan stalling.
+    if checked && t.joints.len() <= matrix::DENSE_MAX_JOINTS {
         determinate(t)?;
     }
     let g = plane_drawing(t)?;
     let sup = supports(t)?;
     let mut out = Vec::with_capacity(cases.len());
-    let sols = if dense {
+    // The independent solve is sparse: every member is checked at every size.
+    let sols = if checked {
         matrix::solve_all(t, cases)
     } else {
         vec![None; cases.len()]
@@ -208,7 +194,7 @@ fn plane_drawing(t: &Truss) -> Result<Option<PlaneGraph>, ConstructionError> {
 }
 
 /// One case as [`construct_case`] draws it: the truss, its plane drawing (if it has one),
-/// the case, the dense solve, the scales, where its parts go, the supports as the reaction
+/// the case, the sparse solve, the scales, where its parts go, the supports as the reaction
 /// construction takes them, and the members out of action.
 #[derive(Clone, Copy)]
 struct Case<'a> {

@@ -1,6 +1,6 @@
 //! The support reactions by the funicular polygon (LH C.2): a pin and a roller by the closing
 //! line, three rollers by Culmann's line; each read off the force plan and checked by the
-//! moment equations and the dense solve.
+//! moment equations and the sparse solve.
 
 use super::labels::support_label;
 use super::layout::{grow, Layout};
@@ -191,7 +191,7 @@ pub(super) fn culmann(
 }
 
 /// Reads each reaction off the force plan and checks it by the moment equations of the whole
-/// truss (LH C.2) and against the dense solve: a roller's along its line, a pin's by its
+/// truss (LH C.2) and against the sparse solve: a roller's along its line, a pin's by its
 /// horizontal and vertical parts.
 pub(super) fn read_reactions(
     b: &mut Board,
@@ -229,8 +229,8 @@ struct Reader<'a> {
     kg: Scale,
 }
 
-/// The formula of the dense solve's checks.
-const BY_SOLVE: &str = "joint equilibrium, dense LU (nalgebra)";
+/// The formula of the sparse solve's checks.
+const BY_SOLVE: &str = "joint equilibrium, sparse LU (faer)";
 /// The formula of the moment checks.
 const BY_MOMENTS: &str = "moments about the other supports (LH C.2)";
 

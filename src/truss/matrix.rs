@@ -18,14 +18,14 @@
 
 use super::{LoadCase, SupportKind, Truss};
 use crate::kernel::tolerance::REL_TIE_EPS_MOTION;
-use nalgebra::{DMatrix, DVector};
+use nalgebra::DMatrix;
 use serde::Serialize;
 
 pub use crate::kernel::tolerance::RANK_REL;
 
-/// The dense rank test and solve are made up to this many joints (a 2k × 2k matrix of
-/// 2 × 1500 rows is 72 MB and some seconds); above it the Cremona plan's residual at every
-/// joint is the check.
+/// The dense rank test is made up to this many joints (a 2k × 2k matrix of 2 × 1500 rows is
+/// 72 MB and some seconds); above it a truss that is not determinate is found by its plan
+/// stalling. The solve the plan is checked against is sparse and made at every size.
 pub const DENSE_MAX_JOINTS: usize = 1500;
 
 /// What the rank test finds.
@@ -219,40 +219,92 @@ pub struct Solution {
     pub reactions: Vec<f64>,
 }
 
-/// Solves A f = −p by LU decomposition (dense, O(k³)): the independent solve every
-/// Cremona plan is checked against. `None` if A is not square or is singular.
+/// Solves A f = −p by a sparse LU decomposition (faer): the independent solve every Cremona
+/// plan is checked against, at every size. `None` if A is not square, is singular, or gives
+/// a force that is not finite.
 pub fn solve(t: &Truss, case: &LoadCase) -> Option<Solution> {
     solve_all(t, std::slice::from_ref(case)).pop().flatten()
 }
 
-/// [`solve`] for every load case of one truss: A is built and factorised once (O(k³)), and
-/// each case costs one back-substitution (O(k²)).
+/// [`solve`] for every load case of one truss: A is factorised once (a truss's equations
+/// have at most five entries per column, and the fill of a girder numbered along its span
+/// stays small), and each case costs one pair of sparse triangular solves.
 pub fn solve_all(t: &Truss, cases: &[LoadCase]) -> Vec<Option<Solution>> {
-    let a = equilibrium_matrix(t);
-    if a.nrows() != a.ncols() || !a.iter().all(|x| x.is_finite()) {
-        return vec![None; cases.len()];
-    }
-    let n = a.nrows();
-    let lu = a.lu();
+    let none = || vec![None; cases.len()];
+    let k = t.joints.len();
     let s = t.members.len();
+    let n = 2 * k;
+    if s + t.reaction_unknowns() != n || n == 0 {
+        return none();
+    }
+    let triplets = equilibrium_triplets(t);
+    if !triplets.iter().all(|e| e.val.is_finite()) {
+        return none();
+    }
+    let Ok(a) = faer::sparse::SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &triplets)
+    else {
+        return none();
+    };
+    let Ok(lu) = a.sp_lu() else {
+        return none();
+    };
     cases
         .iter()
         .map(|case| {
-            let mut p = DVector::zeros(n);
+            let mut p = faer::Col::<f64>::zeros(n);
             for l in &case.loads {
                 p[2 * l.joint] -= l.force.x;
                 p[2 * l.joint + 1] -= l.force.y;
             }
-            let f = lu.solve(&p)?;
+            let f = faer::prelude::Solve::solve(&lu, &p);
+            let f: Vec<f64> = f.iter().copied().collect();
             if f.iter().any(|x| !x.is_finite()) {
                 return None;
             }
             Some(Solution {
-                members: f.rows(0, s).iter().cloned().collect(),
-                reactions: f.rows(s, f.len() - s).iter().cloned().collect(),
+                members: f[..s].to_vec(),
+                reactions: f[s..].to_vec(),
             })
         })
         .collect()
+}
+
+/// The non-zero entries of [`equilibrium_matrix`] (row, column, value), without forming it.
+fn equilibrium_triplets(t: &Truss) -> Vec<faer::sparse::Triplet<usize, usize, f64>> {
+    use faer::sparse::Triplet;
+    let s = t.members.len();
+    let mut e = Vec::with_capacity(4 * s + 2 * t.supports.len());
+    for (m, mem) in t.members.iter().enumerate() {
+        let (d, _) = t.member_dir(m);
+        let [i, j] = mem.ends;
+        e.extend([
+            Triplet::new(2 * i, m, d.x),
+            Triplet::new(2 * i + 1, m, d.y),
+            Triplet::new(2 * j, m, -d.x),
+            Triplet::new(2 * j + 1, m, -d.y),
+        ]);
+    }
+    let mut c = s;
+    for sup in &t.supports {
+        let j = sup.joint;
+        match sup.kind {
+            SupportKind::Pinned => {
+                e.extend([
+                    Triplet::new(2 * j, c, 1.0),
+                    Triplet::new(2 * j + 1, c + 1, 1.0),
+                ]);
+                c += 2;
+            }
+            SupportKind::Roller { dir } => {
+                e.extend([
+                    Triplet::new(2 * j, c, dir.x),
+                    Triplet::new(2 * j + 1, c, dir.y),
+                ]);
+                c += 1;
+            }
+        }
+    }
+    e
 }
 
 /// The largest out-of-balance force (kg) at any joint for the given member forces and

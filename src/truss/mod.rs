@@ -8,7 +8,7 @@
 //! - [`builder`]: a truss built in code by the names of its joints and members
 //!   ([`Truss::builder`]), load cases by joint name, the scales a drafter would choose;
 //! - [`matrix`]: the equilibrium matrix of the joints, its rank (is the truss a mechanism,
-//!   determinate or over-determinate?) and the dense solve that every plan is checked against;
+//!   determinate or over-determinate?) and the sparse solve that every plan is checked against;
 //! - [`faces`]: the truss drawn as a plane graph, its faces, and the outer boundary along
 //!   which the external forces are named (Bow's notation);
 //! - [`cremona`]: the procedure: determinacy, the two-pass layout, and per load case the

@@ -49,7 +49,7 @@ pub struct CaseResult {
     pub members: Vec<MemberForce>,
     /// Largest out-of-balance force at any joint for the plan's forces (kg).
     pub plan_residual: f64,
-    /// The same for the dense solve, where it was made.
+    /// The same for the sparse solve, where it was made.
     pub matrix_residual: Option<f64>,
 }
 
@@ -65,7 +65,7 @@ pub(super) fn ext_max(ext: &External) -> f64 {
     ext.forces.iter().map(|(_, f)| f.norm()).fold(0.0, f64::max)
 }
 
-/// The result of a plan, either way it was drawn: the forces found, the dense solve beside
+/// The result of a plan, either way it was drawn: the forces found, the sparse solve beside
 /// them, and the balance of both at every joint. The plan's balance is recorded as a check of
 /// its own (see [`check_balance`]).
 pub(crate) fn plan_result(
@@ -93,7 +93,7 @@ pub(crate) fn plan_result(
 }
 
 /// The balance of every joint under the forces the plan found and the reactions: a check at
-/// every size, the dense solve made or not, that names the joint that balances worst. It is
+/// every size, that names the joint that balances worst. It is
 /// judged against the largest force of the case (a load, a reaction or a member force: the
 /// chord of a long girder carries many times its largest load, and its rounding with it).
 fn check_balance(b: &mut Board, ctx: &PlanContext, members: &[f64]) {
@@ -142,7 +142,7 @@ pub(crate) fn check_reference(maxload: f64, ext: &External) -> f64 {
     maxload.max(ext_max(ext))
 }
 
-/// Checks a member force read off a plan against the dense solve, if it was made.
+/// Checks a member force read off a plan against the sparse solve, if it was made.
 pub(crate) fn check_member(
     b: &mut Board,
     value: &H<f64>,
@@ -155,7 +155,7 @@ pub(crate) fn check_member(
             value,
             "member force (tension +)",
             "kg",
-            "joint equilibrium, dense LU (nalgebra)",
+            "joint equilibrium, sparse LU (faer)",
             reference,
             || sol.members[m],
         );
@@ -235,7 +235,7 @@ impl External {
 }
 
 /// What every way of drawing the plan of one case works from: the truss, the case and its
-/// external forces, the dense solve to check against, the scales, where the plan starts on
+/// external forces, the sparse solve to check against, the scales, where the plan starts on
 /// the sheet, the members' lines in the truss drawing, and the largest load (the reference
 /// of the checks).
 #[derive(Clone, Copy)]

@@ -1,6 +1,6 @@
 //! The support reactions by the moment equations (LH C.2: "ΣM = 0 um den Auflagerpunkt"),
 //! the check the books make on the graphic reactions: independent of the closing line and of
-//! the dense solve, and O(loads), so it runs on trusses of any size.
+//! the sparse solve, and O(loads), so it runs on trusses of any size.
 //!
 //! - One pin P and one roller R with the reaction direction d: moments about P give the
 //!   roller's reaction r·d with r = −Σ (pᵢ − P) × Fᵢ / ((R − P) × d); the pin takes the
