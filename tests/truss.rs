@@ -1380,3 +1380,65 @@ fn a_flat_but_determinate_triangle_is_not_a_mechanism_and_its_cuts_are_flagged()
         assert!((r.constructed.abs() / 2.5e12 - 1.0).abs() < 1e-6, "{r:?}");
     }
 }
+
+/// The rank an SVD finds, by the same rule as `analyse` (the reference for the sparse test).
+fn svd_rank(t: &Truss) -> usize {
+    let a = graphostatik::truss::matrix::equilibrium_matrix(t);
+    let sv = a.svd(false, false).singular_values;
+    let smax = sv.iter().cloned().fold(0.0, f64::max);
+    sv.iter()
+        .filter(|&&x| x > graphostatik::truss::matrix::RANK_REL * smax)
+        .count()
+}
+
+#[test]
+fn the_sparse_rank_test_never_calls_determinate_what_the_svd_calls_a_mechanism() {
+    // A triangle flattened towards three joints in line (a mechanism at h = 0), and a
+    // 20-panel girder whose middle top joint is lowered into the bottom chord's line.
+    let mut trusses = Vec::new();
+    for h in [
+        1.0, 1e-3, 1e-6, 1e-9, 1e-11, 1e-12, 1e-13, 1e-14, 1e-15, 1e-16, 0.0,
+    ] {
+        trusses.push(small(
+            &[(0.0, 0.0), (2.0, 0.0), (1.0, h)],
+            &[(0, 2), (2, 1), (0, 1)],
+            90.0,
+        ));
+        let mut g = parallel_chord(Web::Warren, 20, 1.0, 1.0);
+        let top = g.joints.len() - 10;
+        g.joints[top].at.y = h;
+        trusses.push(g);
+    }
+    let mut mechanisms = 0;
+    for t in &trusses {
+        let rank = svd_rank(t);
+        let a = analyse(t);
+        if rank < 2 * t.joints.len() {
+            mechanisms += 1;
+            assert!(
+                matches!(a.determinacy, Determinacy::Mechanism { .. }),
+                "{:?} against SVD rank {rank}",
+                a.determinacy
+            );
+        } else {
+            assert_eq!(a.determinacy, Determinacy::Determinate);
+        }
+    }
+    eprintln!(
+        "{mechanisms} of {} are mechanisms by the SVD",
+        trusses.len()
+    );
+    assert!(
+        (3..=trusses.len() - 10).contains(&mechanisms),
+        "{mechanisms}"
+    );
+}
+
+#[test]
+fn a_large_determinate_truss_gets_its_rank_without_the_svd() {
+    // 2,001 joints: above the SVD's limit, the sparse test still finds the full rank.
+    let t = parallel_chord(Web::Warren, 1000, 1.0, 1.0);
+    let a = analyse(&t);
+    assert_eq!(a.rank, Some(2 * t.joints.len()));
+    assert_eq!(a.determinacy, Determinacy::Determinate);
+}

@@ -13,8 +13,10 @@
 //! - rank A = 2k < s + r: **over-determinate** by s + r − 2k (LH B.5).
 //!
 //! # Numerics
-//! A singular value counts as zero below [`RANK_REL`] × the largest. The dense SVD costs
-//! O(k³) time and O(k²) memory; [`DENSE_MAX_JOINTS`] bounds where it is made.
+//! A singular value counts as zero below [`RANK_REL`] × the largest. A square system that
+//! is clearly regular is settled by a sparse LU and inverse iteration at any size, in time
+//! and memory of the order of the truss; every other system goes to the dense SVD, which
+//! costs O(k³) time and O(k²) memory and is made up to [`DENSE_MAX_JOINTS`] joints.
 
 use super::{LoadCase, SupportKind, Truss};
 use crate::kernel::tolerance::REL_TIE_EPS_MOTION;
@@ -133,7 +135,17 @@ pub fn analyse(t: &Truss) -> Analysis {
         rank: None,
         determinacy: by_count(k, s, r),
     };
-    if k > DENSE_MAX_JOINTS || k == 0 {
+    if k == 0 {
+        return out;
+    }
+    // The usual case, a square system that is clearly regular, is settled by the sparse LU
+    // at any size; anything doubtful goes to the SVD, which names the joint that can move.
+    if s + r == 2 * k && clearly_regular(t) {
+        out.rank = Some(2 * k);
+        out.determinacy = Determinacy::Determinate;
+        return out;
+    }
+    if k > DENSE_MAX_JOINTS {
         return out;
     }
     let a = equilibrium_matrix(t);
@@ -166,6 +178,60 @@ pub fn analyse(t: &Truss) -> Analysis {
         Determinacy::Determinate
     };
     out
+}
+
+/// How far above [`RANK_REL`] the estimated smallest singular value must lie for the sparse
+/// test to call the matrix regular without the SVD: the estimate comes from a few steps of
+/// inverse iteration, and only a clear answer is taken from it.
+const SPARSE_RANK_MARGIN: f64 = 1e3;
+
+/// Inverse iteration steps of the sparse test.
+const SPARSE_RANK_STEPS: usize = 8;
+
+/// Whether the square equilibrium matrix is regular beyond doubt: a sparse LU, σ_max bounded
+/// from above by √(‖A‖₁‖A‖∞), and σ_min estimated by inverse iteration on AAᵀ (each step a
+/// pair of sparse solves). The estimate 1/‖A⁻¹u‖ never lies below σ_min and falls to it within
+/// a few steps where σ_min is far below the next singular value, which is where a truss is a
+/// mechanism; so a matrix is called regular only if the estimate stays
+/// [`SPARSE_RANK_MARGIN`] above [`RANK_REL`] × σ_max at every step. O(fill) time and memory.
+fn clearly_regular(t: &Truss) -> bool {
+    let n = 2 * t.joints.len();
+    let triplets = equilibrium_triplets(t);
+    if !triplets.iter().all(|e| e.val.is_finite()) {
+        return false;
+    }
+    let (mut col1, mut row1) = (vec![0.0f64; n], vec![0.0f64; n]);
+    for e in &triplets {
+        col1[e.col] += e.val.abs();
+        row1[e.row] += e.val.abs();
+    }
+    let norm1 = col1.iter().cloned().fold(0.0, f64::max);
+    let norm_inf = row1.iter().cloned().fold(0.0, f64::max);
+    let smax = (norm1 * norm_inf).sqrt();
+    let Ok(a) = faer::sparse::SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &triplets)
+    else {
+        return false;
+    };
+    let Ok(lu) = a.sp_lu() else {
+        return false;
+    };
+    use faer::prelude::Solve;
+    // A start with every component non-zero and no symmetry of the girder's numbering.
+    let mut u = faer::Col::<f64>::from_fn(n, |i| 1.0 + ((i * 7919) % 613) as f64 / 613.0);
+    for _ in 0..SPARSE_RANK_STEPS {
+        let un = u.norm_l2();
+        if !(un.is_finite() && un > 0.0) {
+            return false;
+        }
+        u /= un;
+        let w = lu.solve(&u);
+        let wn = w.norm_l2();
+        if !wn.is_finite() || 1.0 / wn <= SPARSE_RANK_MARGIN * RANK_REL * smax {
+            return false;
+        }
+        u = lu.solve_transpose(&w);
+    }
+    true
 }
 
 /// Determinacy by the count alone (LH Gl. 2: s + r against 2k); a mechanism by count names
