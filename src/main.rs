@@ -161,16 +161,17 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
 /// `render`: every scene loaded and constructed before the first file is written.
 fn render_cmd(scenes: &[PathBuf], out: &Path, jobs: Option<u16>) -> Result<ExitCode, Fail> {
     let files = scene_files(scenes)?;
-    let mut batch = Batch::default();
-    let mut seen: std::collections::BTreeMap<PathBuf, &Path> = Default::default();
-    for f in &files {
-        let stem = f
-            .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        let target = out.join(format!("{stem}.svg"));
+    let targets: Vec<PathBuf> = files
+        .iter()
+        .map(|f| {
+            let stem = f.file_stem().map(|s| s.to_string_lossy().into_owned());
+            out.join(format!("{}.svg", stem.unwrap_or_default()))
+        })
+        .collect();
+    let mut seen: std::collections::BTreeMap<&Path, &Path> = Default::default();
+    for (f, target) in files.iter().zip(&targets) {
         // Two scenes that would write one figure: refused before anything is written.
-        if let Some(first) = seen.insert(target.clone(), f) {
+        if let Some(first) = seen.insert(target, f) {
             return Err(Fail(format!(
                 "{}: would write {} as {} does too: rename one of them",
                 f.display(),
@@ -179,12 +180,9 @@ fn render_cmd(scenes: &[PathBuf], out: &Path, jobs: Option<u16>) -> Result<ExitC
             )));
         }
     }
-    for (f, svg) in files.iter().zip(render_all(&files, jobs)) {
-        let stem = f
-            .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        batch.add(out.join(format!("{stem}.svg")), svg?);
+    let mut batch = Batch::default();
+    for (target, svg) in targets.into_iter().zip(render_all(&files, jobs)) {
+        batch.add(target, svg?);
     }
     ensure_dir(out)?;
     let paths: Vec<PathBuf> = batch.paths().map(Path::to_path_buf).collect();

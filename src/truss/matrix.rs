@@ -72,32 +72,9 @@ pub struct Analysis {
 /// joints (tension positive: it pulls each joint towards the other), then one column per
 /// reaction component (a pin's x and y, a roller's direction), in the order of the supports.
 pub fn equilibrium_matrix(t: &Truss) -> DMatrix<f64> {
-    let k = t.joints.len();
-    let s = t.members.len();
-    let mut a = DMatrix::zeros(2 * k, s + t.reaction_unknowns());
-    for (m, mem) in t.members.iter().enumerate() {
-        let (d, _) = t.member_dir(m);
-        let [i, j] = mem.ends;
-        a[(2 * i, m)] += d.x;
-        a[(2 * i + 1, m)] += d.y;
-        a[(2 * j, m)] -= d.x;
-        a[(2 * j + 1, m)] -= d.y;
-    }
-    let mut c = s;
-    for sup in &t.supports {
-        let j = sup.joint;
-        match sup.kind {
-            SupportKind::Pinned => {
-                a[(2 * j, c)] = 1.0;
-                a[(2 * j + 1, c + 1)] = 1.0;
-                c += 2;
-            }
-            SupportKind::Roller { dir } => {
-                a[(2 * j, c)] = dir.x;
-                a[(2 * j + 1, c)] = dir.y;
-                c += 1;
-            }
-        }
+    let mut a = DMatrix::zeros(2 * t.joints.len(), t.members.len() + t.reaction_unknowns());
+    for e in equilibrium_triplets(t) {
+        a[(e.row, e.col)] += e.val;
     }
     a
 }
@@ -197,9 +174,6 @@ const SPARSE_RANK_STEPS: usize = 8;
 fn clearly_regular(t: &Truss) -> bool {
     let n = 2 * t.joints.len();
     let triplets = equilibrium_triplets(t);
-    if !triplets.iter().all(|e| e.val.is_finite()) {
-        return false;
-    }
     let (mut col1, mut row1) = (vec![0.0f64; n], vec![0.0f64; n]);
     for e in &triplets {
         col1[e.col] += e.val.abs();
@@ -208,11 +182,7 @@ fn clearly_regular(t: &Truss) -> bool {
     let norm1 = col1.iter().cloned().fold(0.0, f64::max);
     let norm_inf = row1.iter().cloned().fold(0.0, f64::max);
     let smax = (norm1 * norm_inf).sqrt();
-    let Ok(a) = faer::sparse::SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &triplets)
-    else {
-        return false;
-    };
-    let Ok(lu) = a.sp_lu() else {
+    let Some(lu) = sparse_lu(t, &triplets) else {
         return false;
     };
     use faer::prelude::Solve;
@@ -303,15 +273,7 @@ pub fn solve_all(t: &Truss, cases: &[LoadCase]) -> Vec<Option<Solution>> {
     if s + t.reaction_unknowns() != n || n == 0 {
         return none();
     }
-    let triplets = equilibrium_triplets(t);
-    if !triplets.iter().all(|e| e.val.is_finite()) {
-        return none();
-    }
-    let Ok(a) = faer::sparse::SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &triplets)
-    else {
-        return none();
-    };
-    let Ok(lu) = a.sp_lu() else {
+    let Some(lu) = sparse_lu(t, &equilibrium_triplets(t)) else {
         return none();
     };
     cases
@@ -335,9 +297,24 @@ pub fn solve_all(t: &Truss, cases: &[LoadCase]) -> Vec<Option<Solution>> {
         .collect()
 }
 
+/// The sparse LU of the square equilibrium matrix given by its `triplets`; `None` if an
+/// entry is not finite or the factorisation fails.
+fn sparse_lu(
+    t: &Truss,
+    triplets: &[Triplet],
+) -> Option<faer::sparse::linalg::solvers::Lu<usize, f64>> {
+    let n = 2 * t.joints.len();
+    if !triplets.iter().all(|e| e.val.is_finite()) {
+        return None;
+    }
+    let a = faer::sparse::SparseColMat::<usize, f64>::try_new_from_triplets(n, n, triplets).ok()?;
+    a.sp_lu().ok()
+}
+
+type Triplet = faer::sparse::Triplet<usize, usize, f64>;
+
 /// The non-zero entries of [`equilibrium_matrix`] (row, column, value), without forming it.
-fn equilibrium_triplets(t: &Truss) -> Vec<faer::sparse::Triplet<usize, usize, f64>> {
-    use faer::sparse::Triplet;
+fn equilibrium_triplets(t: &Truss) -> Vec<Triplet> {
     let s = t.members.len();
     let mut e = Vec::with_capacity(4 * s + 2 * t.supports.len());
     for (m, mem) in t.members.iter().enumerate() {
@@ -400,35 +377,19 @@ pub fn worst_joint(
 
 /// The out-of-balance force at every joint: x and y interleaved.
 fn joint_residuals(t: &Truss, case: &LoadCase, members: &[f64], reactions: &[f64]) -> Vec<f64> {
-    let k = t.joints.len();
-    let mut r = vec![0.0; 2 * k];
+    let mut r = vec![0.0; 2 * t.joints.len()];
     for l in &case.loads {
         r[2 * l.joint] += l.force.x;
         r[2 * l.joint + 1] += l.force.y;
     }
-    for (m, mem) in t.members.iter().enumerate() {
-        let (d, _) = t.member_dir(m);
-        let [i, j] = mem.ends;
-        r[2 * i] += members[m] * d.x;
-        r[2 * i + 1] += members[m] * d.y;
-        r[2 * j] -= members[m] * d.x;
-        r[2 * j + 1] -= members[m] * d.y;
-    }
-    let mut c = 0;
-    for sup in &t.supports {
-        let j = sup.joint;
-        match sup.kind {
-            SupportKind::Pinned => {
-                r[2 * j] += reactions[c];
-                r[2 * j + 1] += reactions[c + 1];
-                c += 2;
-            }
-            SupportKind::Roller { dir } => {
-                r[2 * j] += reactions[c] * dir.x;
-                r[2 * j + 1] += reactions[c] * dir.y;
-                c += 1;
-            }
-        }
+    let s = members.len();
+    for e in equilibrium_triplets(t) {
+        let x = if e.col < s {
+            members[e.col]
+        } else {
+            reactions[e.col - s]
+        };
+        r[e.row] += x * e.val;
     }
     r
 }
