@@ -27,6 +27,7 @@ const DRAWING: Drawing = Drawing {
     length_scale: 10.0,
     force_scale: 200.0,
     velocity_scale: 0.25,
+    acceleration_scale: 10.0,
 };
 
 const REQUEST: Request = Request {
@@ -37,6 +38,8 @@ const REQUEST: Request = Request {
     guide_force: false,
     tangential_force: true,
     radial_force: false,
+    acceleration: false,
+    max_velocity: false,
 };
 
 fn closed_form(n: usize) -> f64 {

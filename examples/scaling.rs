@@ -14,6 +14,7 @@ fn main() {
         length_scale: 10.0,
         force_scale: 200.0,
         velocity_scale: 0.25,
+        acceleration_scale: 10.0,
     };
     let rq = Request {
         piston_path: true,

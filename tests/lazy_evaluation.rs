@@ -21,6 +21,7 @@ fn run(request: Request, finite_rod: bool) -> Board {
             length_scale: 10.0,
             force_scale: 200.0,
             velocity_scale: 0.2,
+            acceleration_scale: 10.0,
         },
         &Angles::Divisions(12),
         &request,
@@ -162,6 +163,8 @@ fn a_board_that_does_not_record_keeps_nothing_and_gives_the_same_values() {
         guide_force: true,
         tangential_force: true,
         radial_force: true,
+        acceleration: true,
+        max_velocity: true,
     };
     let d = CrankDrive {
         crank_radius: 300.0,
@@ -174,6 +177,7 @@ fn a_board_that_does_not_record_keeps_nothing_and_gives_the_same_values() {
         length_scale: 10.0,
         force_scale: 200.0,
         velocity_scale: 0.2,
+        acceleration_scale: 10.0,
     };
     let mut on = Board::new(400.0, true);
     let mut off = Board::new(400.0, false);
@@ -181,4 +185,48 @@ fn a_board_that_does_not_record_keeps_nothing_and_gives_the_same_values() {
     let b = construct(&mut off, &d, &dr, &Angles::Divisions(24), &full).unwrap();
     assert_eq!(a, b);
     assert!(off.steps().is_empty() && off.objects().is_empty());
+}
+
+#[test]
+fn acceleration_alone_draws_no_velocity_and_no_force_and_only_the_frame_it_stands_under() {
+    let b = run(
+        Request {
+            acceleration: true,
+            ..Request::default()
+        },
+        true,
+    );
+    let t = by_topic(&b);
+    assert_eq!(t.get(&Topic::Velocity), None);
+    assert_eq!(t.get(&Topic::Forces), None);
+    // The crank positions are not drawn: the parabola is reached from the crank angle alone.
+    assert_eq!(t.get(&Topic::PistonPath), None);
+    // The axis (O, axis, vertical, two ends, their ordinates, C and its ordinate: 9); each
+    // curve T, T₁, D, two tangents, chord, its cut, OC read off (8), the two tangents divided,
+    // 9 joining lines with their points of contact, the curve (21); then one point per crank
+    // angle: 7 steps (two divisions, the joining line, the point, its foot, two readings).
+    let fixed = 9 + 2 * (8 + 2 + 9 * 2 + 1);
+    assert_eq!(t[&Topic::Acceleration], fixed + 12 * 7, "{t:?}");
+    assert_eq!(count(&b, "piston acceleration b"), 12);
+    assert_eq!(count(&b, "b against the finite rod"), 12);
+    assert_eq!(count(&b, "chord TT₁"), 2);
+    // Asking for it twice adds nothing (memoised per angle and for the diagram).
+    let silent = run(Request::default(), true);
+    assert!(silent.steps().is_empty());
+}
+
+#[test]
+fn esselborn_alone_constructs_one_position_and_no_crank_division() {
+    let b = run(
+        Request {
+            max_velocity: true,
+            ..Request::default()
+        },
+        true,
+    );
+    let t = by_topic(&b);
+    assert_eq!(t.get(&Topic::PistonPath), None);
+    assert_eq!(t.get(&Topic::Forces), None);
+    assert_eq!(count(&b, "crank angle of the rod perpendicular"), 1);
+    assert_eq!(count(&b, "piston velocity at Esselborn"), 1);
 }

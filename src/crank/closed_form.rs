@@ -144,6 +144,86 @@ pub fn radial_force(p: f64, lambda: f64, theta_deg: f64) -> f64 {
     p * cos_factor(lambda, phi, stroke)
 }
 
+/// The approximate piston path of LH Gl. 21, from the inner dead centre for the full angle θ:
+/// `x = R(1 − cos θ) + R/L · R/2 · sin²θ` (the root of Gl. 20 expanded to first order in R/L).
+/// Tolle's parabola draws the acceleration over this abscissa (see [`tolle_bound`]).
+pub fn piston_path_approx(r: f64, lambda: f64, theta_deg: f64) -> f64 {
+    let (s, c) = sc(theta_deg);
+    r * (1.0 - c) + lambda * r / 2.0 * s * s
+}
+
+/// The piston acceleration of the books, signed along the outstroke (+x):
+/// `b = v²/R (cos θ + R/L cos 2θ)` (KG 291, LH Gl. 29; Gl. 34 with R/L = 0), with v²/R given
+/// as `a` (m/s²). The book's value "in the direction of motion" is [`Stroke::sign`] times it.
+pub fn acceleration_approx(a: f64, lambda: f64, theta_deg: f64) -> f64 {
+    a * (sc(theta_deg).1 + lambda * sc(2.0 * theta_deg).1)
+}
+
+/// The exact piston acceleration of the finite rod, signed along +x, with v²/R given as `a`:
+/// `ẍ = v²/R (cos θ + λ cos 2θ / cos ψ + λ³ sin² 2θ / (4 cos³ ψ))`, KG (285) differentiated
+/// twice at constant ω.
+///
+/// ```
+/// use graphostatik::crank::closed_form::{acceleration_exact, acceleration_approx};
+/// // At the dead centres ψ = 0 and the book's (1 ± λ) v²/R is exact (LH Gl. 30, 31).
+/// assert!((acceleration_exact(155.5, 1.0 / 6.0, 0.0) - 155.5 * 7.0 / 6.0).abs() < 1e-12);
+/// assert!((acceleration_exact(155.5, 1.0 / 6.0, 180.0) + 155.5 * 5.0 / 6.0).abs() < 1e-12);
+/// ```
+pub fn acceleration_exact(a: f64, lambda: f64, theta_deg: f64) -> f64 {
+    let (_, c) = sc(theta_deg);
+    let (s2, c2) = sc(2.0 * theta_deg);
+    let (_, cp) = rod_angle(lambda, theta_deg);
+    a * (c + lambda * c2 / cp + lambda.powi(3) * s2 * s2 / (4.0 * cp.powi(3)))
+}
+
+/// A bound of |exact − approximate| acceleration over v²/R for every crank angle:
+/// `1.25 λ³ / (1 − λ²)^{3/2}`. From the exact form, `λ cos 2θ (1/cos ψ − 1)` is at most
+/// `λ³ / cos ψ` (as `1/cos ψ − 1 ≤ sin²ψ / cos ψ`) and the last term at most `λ³/(4 cos³ ψ)`,
+/// with `cos ψ ≥ √(1 − λ²)`. At λ = 1/6 it is 0.0059 (0.6 % of v²/R); at 1/5, 0.0107.
+pub fn tolle_bound(lambda: f64) -> f64 {
+    let c = ((1.0 - lambda) * (1.0 + lambda)).sqrt();
+    1.25 * lambda.powi(3) / (c * c * c)
+}
+
+/// The crank angle φ (degrees, outstroke) of the largest piston velocity, exactly: the zero of
+/// [`acceleration_exact`] in (0°, 90°], found by bisection to the last bit.
+///
+/// ```
+/// use graphostatik::crank::closed_form::max_velocity_angle;
+/// // R/L = 1/5: 79.100°, between Esselborn's rod-perpendicular 78.690° and LH's 79°16'.
+/// assert!((max_velocity_angle(0.2) - 79.1001).abs() < 1e-4);
+/// ```
+pub fn max_velocity_angle(lambda: f64) -> f64 {
+    let (mut lo, mut hi) = (0.0f64, 90.0f64);
+    // acceleration_exact > 0 at 0° and ≤ 0 at 90° for 0 ≤ λ < 1.
+    while hi - lo > f64::EPSILON * 90.0 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if acceleration_exact(1.0, lambda, mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// The crank angle φ (degrees) where the rod stands perpendicular to the crank:
+/// `tg φ = L/R` (Esselborn, LH Abb. 52); 90° for the infinitely long rod.
+pub fn rod_perpendicular_angle(lambda: f64) -> f64 {
+    1.0f64.atan2(lambda).to_degrees()
+}
+
+/// The crank angle φ (degrees) where the book's approximate acceleration (KG 291, LH Gl. 29)
+/// vanishes: `cos φ = 2λ / (1 + √(1 + 8λ²))`, LH's 79°16' for R/L = 1/5.
+pub fn approx_zero_acceleration_angle(lambda: f64) -> f64 {
+    (2.0 * lambda / (1.0 + (1.0 + 8.0 * lambda * lambda).sqrt()))
+        .acos()
+        .to_degrees()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -183,5 +263,49 @@ mod tests {
                 dx * v / r
             );
         }
+    }
+
+    #[test]
+    fn acceleration_is_the_derivative_of_the_velocity_and_tolle_bounds_the_book() {
+        for &lambda in &[0.0, 0.1, 1.0 / 6.0, 0.2, 0.25, 0.5, 0.9, 0.99] {
+            let mut worst: f64 = 0.0;
+            for k in 0..720 {
+                let th = k as f64 * 0.5 + 0.25;
+                let h = 1e-4;
+                let dc = (piston_velocity(1.0, lambda, th + h)
+                    - piston_velocity(1.0, lambda, th - h))
+                    / (2.0 * h.to_radians());
+                let b = acceleration_exact(1.0, lambda, th);
+                assert!(
+                    (dc - b).abs() < 1e-6 * (1.0 + b.abs()),
+                    "λ={lambda} θ={th}: {dc} vs {b}"
+                );
+                worst = worst.max((b - acceleration_approx(1.0, lambda, th)).abs());
+            }
+            assert!(
+                worst <= tolle_bound(lambda) + 1e-15,
+                "λ={lambda}: {worst} > bound"
+            );
+            // The bound is not loose by orders of magnitude (it is what the check table uses).
+            // (For the usual rods, λ ≤ 1/2; near locking it grows loose.)
+            assert!(
+                lambda == 0.0 || lambda > 0.5 || worst > 0.2 * tolle_bound(lambda),
+                "λ={lambda}: {worst}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_three_angles_of_the_largest_velocity() {
+        // R/L = 1/5: LH's 79°16' is the zero of the approximate Gl. 29; the exact maximum is
+        // 79°06'; Esselborn's rod-perpendicular position 78°41'.
+        let (ex, es, ap) = (
+            max_velocity_angle(0.2),
+            rod_perpendicular_angle(0.2),
+            approx_zero_acceleration_angle(0.2),
+        );
+        assert!((ap - (79.0 + 16.0 / 60.0)).abs() < 0.5 / 60.0, "{ap}");
+        assert!((es - 78.690_067_5).abs() < 1e-6 && (ex - 79.100_1).abs() < 1e-4);
+        assert_eq!(max_velocity_angle(0.0), 90.0);
     }
 }

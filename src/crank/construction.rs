@@ -6,6 +6,9 @@ use crate::kernel::{Branch, Circle, Line, Point, Vector};
 use crate::protocol::{note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};
 use serde::Serialize;
 
+mod accel;
+mod esselborn;
+
 const N_CENTRE: Note = note(
     "crank shaft centre O",
     Some("Kurbelwellenmitte"),
@@ -358,6 +361,12 @@ pub struct AngleRow {
     pub tangential_force_at_pin: Option<f64>,
     /// Radial force K (kg).
     pub radial_force: Option<f64>,
+    /// Piston acceleration by Tolle's parabola (m/s²), in the direction of motion as the books
+    /// give it (KG 291, LH Gl. 29): positive while the piston speeds up.
+    pub acceleration: Option<f64>,
+    /// The abscissa of that point from the inner dead centre (mm): the approximate piston
+    /// path of LH Gl. 21 that the parabola is drawn over.
+    pub acceleration_x: Option<f64>,
 }
 
 /// The results of [`construct`]: one row per crank angle.
@@ -365,6 +374,26 @@ pub struct AngleRow {
 pub struct CrankResults {
     /// One row per requested crank angle, in the order given.
     pub rows: Vec<AngleRow>,
+    /// Esselborn's construction of the crank angle of the largest piston velocity, when
+    /// asked for.
+    pub max_velocity: Option<MaxVelocity>,
+}
+
+/// The crank position of the largest piston velocity (LH B.2, Abb. 52; K3).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MaxVelocity {
+    /// The crank angle φ from the inner dead centre where the rod stands perpendicular to
+    /// the crank, constructed (degrees): tg φ = L/R.
+    pub esselborn_deg: f64,
+    /// The piston velocity there, constructed (m/s).
+    pub c_esselborn: f64,
+    /// The crank angle of the exact maximum (degrees), the zero of the exact acceleration.
+    pub exact_deg: f64,
+    /// The exact largest piston velocity (m/s).
+    pub c_max: f64,
+    /// The zero of the book's approximate acceleration (KG 291, LH Gl. 29), LH's 79°16'
+    /// for R/L = 1/5 (degrees).
+    pub book_deg: f64,
 }
 
 struct Frame {
@@ -372,6 +401,8 @@ struct Frame {
     piston_line: H<Line>,
     vertical: H<Line>,
     crank_circle: H<Circle>,
+    /// The crank pin at the inner dead centre.
+    dead: H<Point>,
     /// Reference for the piston path: the crosshead at the inner dead centre (finite rod)
     /// or the foot of the crank pin there (infinite rod).
     x0: H<Point>,
@@ -396,6 +427,13 @@ struct Cache {
     k: Option<H<f64>>,
     t_res: Option<H<f64>>,
     t_polar: Option<H<f64>>,
+    accel: Option<(H<f64>, H<f64>)>,
+}
+
+/// Tolle's diagram: its axis and the outstroke and return curves.
+struct Tolle {
+    axis: super::tolle::TolleAxis,
+    curves: [super::tolle::TolleCurve; 2],
 }
 
 struct Builder<'a> {
@@ -409,6 +447,7 @@ struct Builder<'a> {
     frame: Option<Frame>,
     polar: Option<PolarFrame>,
     divided: Option<Vec<H<Point>>>,
+    tolle: Option<Tolle>,
     cache: Vec<Cache>,
 }
 
@@ -443,6 +482,7 @@ pub fn construct(
         frame: None,
         polar: None,
         divided: None,
+        tolle: None,
         cache: (0..n).map(|_| Cache::default()).collect(),
     };
     let want_c = request.velocity_parallel || request.velocity_instant_centre;
@@ -453,7 +493,8 @@ pub fn construct(
         + 3 * (want_c as usize)
         + 8 * ((request.rod_force || request.guide_force || request.radial_force) as usize)
         + 12 * (request.radial_force as usize)
-        + 8 * (request.tangential_force as usize);
+        + 8 * (request.tangential_force as usize)
+        + 8 * (request.acceleration as usize);
     bl.b.reserve(16 + per_angle * n, 16 + 2 * per_angle * n);
     for i in 0..n {
         let theta = bl.thetas[i];
@@ -479,13 +520,21 @@ pub fn construct(
         if request.tangential_force {
             bl.t_polar(i)?;
         }
+        if request.acceleration {
+            bl.acceleration(i)?;
+        }
     }
     bl.b.clear_context();
+    let max_velocity = if request.max_velocity {
+        Some(bl.esselborn()?)
+    } else {
+        None
+    };
     if want_c && bl.b.is_recording() {
         bl.velocity_curve()?;
     }
     let rows = (0..n).map(|i| bl.row(i)).collect();
-    Ok(CrankResults { rows })
+    Ok(CrankResults { rows, max_velocity })
 }
 
 impl Builder<'_> {
@@ -506,6 +555,8 @@ impl Builder<'_> {
             tangential_force: c.t_polar.map(|h| h.g),
             tangential_force_at_pin: c.t_res.map(|h| h.g),
             radial_force: c.k.map(|h| h.g),
+            acceleration: c.accel.map(|(_, b)| b.g),
+            acceleration_x: c.accel.map(|(x, _)| x.g),
         }
     }
 
@@ -545,6 +596,7 @@ impl Builder<'_> {
                 Label::plain("A"),
                 N_DEAD_CENTRE,
             )?;
+            let dead_pin = dead;
             let x0 = if self.d.finite_rod {
                 let arc = b.circle(
                     &dead,
@@ -580,6 +632,7 @@ impl Builder<'_> {
                 piston_line,
                 vertical,
                 crank_circle,
+                dead: dead_pin,
                 x0,
             });
         }

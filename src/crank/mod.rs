@@ -21,7 +21,8 @@
 //! use graphostatik::protocol::{Board, Topic};
 //! let drive = CrankDrive { crank_radius: 400.0, rod_length: 2000.0, finite_rod: true,
 //!     crank_pin_speed: 2.094, piston_force: PistonForce::Constant(1000.0) };
-//! let drawing = Drawing { length_scale: 20.0, force_scale: 50.0, velocity_scale: 0.1 };
+//! let drawing = Drawing { length_scale: 20.0, force_scale: 50.0, velocity_scale: 0.1,
+//!     acceleration_scale: 1.0 };
 //! let request = Request { piston_path: true, ..Request::default() };
 //! let mut board = Board::new(200.0, true);
 //! let res = construct(&mut board, &drive, &drawing, &Angles::Divisions(12), &request).unwrap();
@@ -34,8 +35,9 @@
 
 pub mod closed_form;
 mod construction;
+mod tolle;
 
-pub use construction::{construct, AngleRow, CrankResults};
+pub use construction::{construct, AngleRow, CrankResults, MaxVelocity};
 
 use serde::Serialize;
 
@@ -56,6 +58,12 @@ pub struct CrankDrive {
 }
 
 impl CrankDrive {
+    /// The centripetal acceleration of the crank pin v²/R (m/s²), the unit of the piston
+    /// acceleration (KG 291: "v²/R = ω²R").
+    pub fn v2_over_r(&self) -> f64 {
+        self.crank_pin_speed * self.crank_pin_speed / (self.crank_radius / 1000.0)
+    }
+
     /// R/L, 0 for the infinitely long rod.
     pub fn lambda(&self) -> f64 {
         if self.finite_rod {
@@ -113,6 +121,8 @@ pub struct Drawing {
     pub force_scale: f64,
     /// m/s per mm of sheet.
     pub velocity_scale: f64,
+    /// m/s² per mm of sheet (LH Abb. 55: 1 cm = 150 m/s², i.e. 15).
+    pub acceleration_scale: f64,
 }
 
 /// Which crank positions to construct.
@@ -153,4 +163,10 @@ pub struct Request {
     pub tangential_force: bool,
     /// Radial crank-pin force K by resolving S along the crank and its normal (LH Abb. 61).
     pub radial_force: bool,
+    /// Piston acceleration over the stroke by Tolle's parabola, outstroke and return
+    /// (LH Abb. 55-57, KG Abb. 1050).
+    pub acceleration: bool,
+    /// Esselborn's construction of the crank angle of the largest piston velocity
+    /// (LH Abb. 52), beside the exact maximum and the book's 79°16'.
+    pub max_velocity: bool,
 }

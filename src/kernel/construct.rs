@@ -101,6 +101,22 @@ pub fn divide_segment(seg: &Segment, n: usize) -> Vec<Point> {
         .collect()
 }
 
+/// The point dividing a segment in the ratio `t : (1 − t)` from `a` (t = 0 gives `a`, 1 gives
+/// `b`): the drafter's division of a line by a ratio (parallels through a divided ray).
+///
+/// ```
+/// use graphostatik::kernel::{construct::point_at_ratio, Point, Segment};
+/// let s = Segment { a: Point::new(0.0, 0.0), b: Point::new(4.0, 2.0) };
+/// assert_eq!(point_at_ratio(&s, 0.25), Point::new(1.0, 0.5));
+/// ```
+pub fn point_at_ratio(seg: &Segment, t: f64) -> Point {
+    // a + t (b − a) would not return b exactly at t = 1; the weighted form does at both ends.
+    Point::new(
+        seg.a.x * (1.0 - t) + seg.b.x * t,
+        seg.a.y * (1.0 - t) + seg.b.y * t,
+    )
+}
+
 /// Divides an arc into `n ≥ 1` equal parts: the `n + 1` division points, ends included.
 pub fn divide_arc(arc: &Arc, n: usize) -> Vec<Point> {
     let n = n.max(1);

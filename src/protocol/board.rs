@@ -815,6 +815,84 @@ impl Board {
         out
     }
 
+    /// The point dividing the segment from `a` to `b` in the ratio `t : (1 − t)`, drawn as a
+    /// mark on the segment (a tangent of Tolle's parabola divided at the crank angle's
+    /// parameter, LH Abb. 55).
+    pub fn divide_at(
+        &mut self,
+        a: &H<Point>,
+        b: &H<Point>,
+        t: f64,
+        label: Label,
+        note: Note,
+    ) -> Result<H<Point>, ConstructionError> {
+        if !t.is_finite() {
+            return Err(ConstructionError::Primitive {
+                step: self.step_id_next(),
+                caption: note.caption.clone(),
+                source: PrimitiveError::NotFinite,
+            });
+        }
+        let p = construct::point_at_ratio(&Segment { a: a.g, b: b.g }, t);
+        self.grow(&p);
+        self.begin(StepKind::Divide, &note, &[a.id, b.id]);
+        let id = self.add(label, Role::Given, || Geom::Point { at: p });
+        Ok(H { id, g: p })
+    }
+
+    /// The angle at `vertex` from the ray through `from` to the ray through `to`, in degrees
+    /// in [0°, 180°]: the protractor laid on the drawing.
+    pub fn measure_angle(
+        &mut self,
+        vertex: &H<Point>,
+        from: &H<Point>,
+        to: &H<Point>,
+        label: Label,
+        note: Note,
+    ) -> H<f64> {
+        let (u, v) = (from.g - vertex.g, to.g - vertex.g);
+        // atan2 of cross and dot keeps every digit near 0° and 180°, where acos loses half.
+        let value = u.perp(&v).abs().atan2(u.dot(&v)).to_degrees();
+        self.begin(StepKind::Measure, &note, &[vertex.id, from.id, to.id]);
+        let id = self.add(label, Role::Result, || Geom::Scalar { value, unit: "°" });
+        H { id, g: value }
+    }
+
+    /// Attaches a check whose tolerance is a stated bound rather than the rounding of the
+    /// construction: a model's difference from the exact value (Tolle's parabola against the
+    /// finite rod's exact acceleration is within its truncation bound O(λ³)). The closed form
+    /// and the bound are evaluated only on a recording board.
+    pub fn check_within(
+        &mut self,
+        value: &H<f64>,
+        quantity: impl Into<Text>,
+        unit: impl Into<Text>,
+        formula: impl Into<Text>,
+        reference: f64,
+        closed_and_bound: impl FnOnce() -> (f64, f64),
+    ) {
+        if !self.recording {
+            return;
+        }
+        let (closed, bound) = closed_and_bound();
+        let tolerance = bound.max(CHECK_REL * closed.abs().max(reference.abs()));
+        let error = (value.g - closed).abs();
+        self.push_check(
+            value.id,
+            Check {
+                quantity: quantity.into(),
+                unit: unit.into(),
+                constructed: value.g,
+                closed_form: closed,
+                formula: formula.into(),
+                error,
+                tolerance,
+                reference,
+                passed: error <= tolerance,
+            },
+        );
+    }
+
     /// Attaches an analytic check to the step that made `value`. The closed form is evaluated
     /// only on a recording board. The tolerance is [`CHECK_REL`] × max(|closed form|, `reference`).
     pub fn check(
@@ -826,28 +904,16 @@ impl Board {
         reference: f64,
         closed_form: impl FnOnce() -> f64,
     ) {
-        if !self.recording {
-            return;
-        }
-        let closed = closed_form();
-        let error = (value.g - closed).abs();
-        let tolerance = CHECK_REL * closed.abs().max(reference.abs());
-        let step = self.object(value.id).map(|o| o.step);
-        if let Some(step) = step {
-            let idx = step.0 as usize - 1;
-            if let Some(s) = self.steps.get_mut(idx) {
-                s.checks.push(Check {
-                    quantity: quantity.into(),
-                    unit: unit.into(),
-                    constructed: value.g,
-                    closed_form: closed,
-                    formula: formula.into(),
-                    error,
-                    tolerance,
-                    reference,
-                    passed: error <= tolerance,
-                });
-            }
+        self.check_within(value, quantity, unit, formula, reference, || {
+            (closed_form(), 0.0)
+        });
+    }
+
+    /// Files a check with the step that made the object `id`.
+    fn push_check(&mut self, id: ObjId, check: Check) {
+        let step = self.object(id).map(|o| o.step);
+        if let Some(s) = step.and_then(|step| self.steps.get_mut(step.0 as usize - 1)) {
+            s.checks.push(check);
         }
     }
 

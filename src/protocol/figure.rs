@@ -62,6 +62,15 @@ impl ScaleBar {
         }
     }
 
+    /// Beschleunigungsmaßstab 1 mm = b m/s² (LH Abb. 55: 1 cm = 150 m/s²).
+    pub fn acceleration(b: f64) -> ScaleBar {
+        ScaleBar {
+            name: format!("Beschleunigungsmaßstab 1 mm = {} m/s²", num(b, 6)),
+            per_mm: b,
+            unit: "m/s²".into(),
+        }
+    }
+
     /// Geschwindigkeitsmaßstab 1 mm = v m/s.
     pub fn velocity(v: f64) -> ScaleBar {
         ScaleBar {

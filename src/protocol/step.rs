@@ -92,6 +92,9 @@ pub enum Topic {
     Velocity,
     /// Forces in the crank drive (LH Abb. 61, 65; KG Abb. 1061, 1063).
     Forces,
+    /// Piston acceleration and the inertia forces, by Tolle's parabola (LH Abb. 55-58,
+    /// KG Abb. 1050).
+    Acceleration,
     /// Given loads and supports in the position plan (Lageplan).
     Loads,
     /// The force polygon and pole rays (Kräfteplan, Polstrahlen).

@@ -59,6 +59,10 @@ impl Scene {
                     "drawing.velocity_scale_m_s_per_mm",
                     d.velocity_scale_m_s_per_mm,
                 ),
+                (
+                    "drawing.acceleration_scale_m_s2_per_mm",
+                    d.acceleration_scale_m_s2_per_mm,
+                ),
             ] {
                 if let Some(v) = v {
                     f.positive(name, v)?;
@@ -312,6 +316,8 @@ impl Scene {
                 Output::GuideForce => request.guide_force = true,
                 Output::TangentialForce => request.tangential_force = true,
                 Output::RadialForce => request.radial_force = true,
+                Output::Acceleration => request.acceleration = true,
+                Output::MaxVelocity => request.max_velocity = true,
             }
         }
         let drawing = defaults::drawing(self.drawing.as_ref(), &drive);
@@ -332,8 +338,11 @@ impl Problem {
         let d = &self.drawing;
         let r = &self.request;
         let mut scales = vec![ScaleBar::length(d.length_scale, "mm")];
-        if r.velocity_parallel || r.velocity_instant_centre {
+        if r.velocity_parallel || r.velocity_instant_centre || r.max_velocity {
             scales.push(ScaleBar::velocity(d.velocity_scale));
+        }
+        if r.acceleration {
+            scales.push(ScaleBar::acceleration(d.acceleration_scale));
         }
         if r.rod_force || r.guide_force || r.tangential_force || r.radial_force {
             scales.push(ScaleBar::force(d.force_scale));
@@ -374,6 +383,11 @@ impl Problem {
         (2.0 * self.drive.crank_radius + self.drive.rod_length) / d.length_scale
             + 3.0 * pmax / d.force_scale
             + self.drive.crank_pin_speed / d.velocity_scale
+            + if self.request.acceleration {
+                2.0 * self.drive.v2_over_r() / d.acceleration_scale
+            } else {
+                0.0
+            }
     }
 
     /// Constructs the problem on a fresh board (`recording`: keep steps and checks).
@@ -400,6 +414,8 @@ impl Procedure for Scene {
         "guide_force",
         "tangential_force",
         "radial_force",
+        "acceleration",
+        "max_velocity",
     ];
     const GEOMETRY_FIELD: &'static str = "mechanism";
 
@@ -408,7 +424,14 @@ impl Procedure for Scene {
         let length = (2.0 * p.drive.crank_radius + p.drive.rod_length) / d.length_scale;
         let force = 3.0 * p.drive.piston_force.max_abs() / d.force_scale;
         let speed = p.drive.crank_pin_speed / d.velocity_scale;
-        if speed > length.max(force) {
+        let accel = if p.request.acceleration {
+            2.0 * p.drive.v2_over_r() / d.acceleration_scale
+        } else {
+            0.0
+        };
+        if accel > length.max(force).max(speed) {
+            (accel, "drawing.acceleration_scale_m_s2_per_mm")
+        } else if speed > length.max(force) {
             (speed, "drawing.velocity_scale_m_s_per_mm")
         } else {
             super::fields::larger(length, force)

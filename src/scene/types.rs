@@ -168,6 +168,12 @@ pub enum Output {
     TangentialForce,
     /// Radial crank-pin force K (LH Abb. 61, KG (302)).
     RadialForce,
+    /// Piston acceleration over the stroke by Tolle's parabola, outstroke and return
+    /// (LH Abb. 55-57, KG Abb. 1050).
+    Acceleration,
+    /// Esselborn's construction of the crank angle of the largest piston velocity (LH Abb. 52),
+    /// beside the exact maximum and the book's 79°16'.
+    MaxVelocity,
 }
 
 impl Output {
@@ -205,4 +211,7 @@ pub struct DrawingSpec {
     /// Velocity scale, m/s per mm of sheet.
     #[serde(default)]
     pub velocity_scale_m_s_per_mm: Option<f64>,
+    /// Acceleration scale, m/s² per mm of sheet (LH Abb. 55: 1 cm = 150 m/s² is 15).
+    #[serde(default)]
+    pub acceleration_scale_m_s2_per_mm: Option<f64>,
 }

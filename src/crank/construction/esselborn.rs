@@ -1,0 +1,249 @@
+//! Esselborn's construction of the crank position of the largest piston velocity (LH B.2,
+//! Abb. 52): at the dead centre T₁ of the crank circle erect the perpendicular T₁B₁ = L, swing
+//! B₁ about O onto the piston line at B, and the arc of L about B cuts the crank circle at A,
+//! where the rod OA ⊥ AB stands perpendicular to the crank (the triangle OT₁B₁ turned about O).
+//!
+//! The rod-perpendicular position is the book's claim for the maximum; the exact maximum lies
+//! a little later (79.100° against 78.690° for R/L = 1/5), and LH's printed 79°16' is neither:
+//! it is the zero of the approximate acceleration, Gl. 29. The three are set side by side.
+
+use super::super::closed_form as cf;
+use super::{Builder, MaxVelocity};
+use crate::kernel::{Branch, Circle, Line, Point, Vector};
+use crate::protocol::{note, ConstructionError, Label, Note, Role, Scale, Topic, H};
+
+const N_PERP: Note = note(
+    "perpendicular to the piston line at the dead centre T₁",
+    Some("Lot in T₁"),
+    "LH Abb. 52",
+    Topic::Velocity,
+);
+const N_B1: Note = note(
+    "lay off T₁B₁ = L on it",
+    Some("T₁B₁ = l"),
+    "LH Abb. 52",
+    Topic::Velocity,
+);
+const N_SWING: Note = note(
+    "swing B₁ about O (the triangle OT₁B₁ turned about O)",
+    Some("Drehung um O"),
+    "LH Abb. 52",
+    Topic::Velocity,
+);
+const N_B: Note = note(
+    "the arc cuts the piston line: crosshead B",
+    Some("Kreuzkopf B"),
+    "LH Abb. 52",
+    Topic::Velocity,
+);
+const N_ROD_ARC: Note = note(
+    "arc with the rod length L about B",
+    Some("Schubstangenkreisbogen"),
+    "LH Abb. 52",
+    Topic::Velocity,
+);
+const N_A: Note = note(
+    "it cuts the crank circle at A: the rod stands perpendicular to the crank",
+    Some("Kurbelstellung für c_max"),
+    "LH Abb. 52",
+    Topic::Velocity,
+);
+const N_A_INF: Note = note(
+    "infinite rod: the crank on the vertical through O",
+    Some("Kurbelstellung für c_max"),
+    "LH Abb. 54",
+    Topic::Velocity,
+);
+const N_ROD_INF: Note = note(
+    "infinite rod: the rod direction parallel to the piston line",
+    Some("Schubstangenrichtung"),
+    "LH Abb. 54",
+    Topic::Velocity,
+);
+const N_CRANK: Note = note(
+    "crank OA and rod AB",
+    Some("Kurbel und Schubstange"),
+    "LH Abb. 52",
+    Topic::Velocity,
+);
+const N_ANGLE: Note = note(
+    "crank angle of A from the dead centre",
+    Some("Kurbelwinkel α"),
+    "LH B.2",
+    Topic::Velocity,
+);
+const N_RIGHT: Note = note(
+    "the angle at A between crank and rod",
+    Some("rechter Winkel bei A"),
+    "LH Abb. 52",
+    Topic::Velocity,
+);
+const N_V: Note = note(
+    "v laid off on the crank ray OA",
+    Some("Kurbelzapfengeschwindigkeit v"),
+    "KG Abb. 1049",
+    Topic::Velocity,
+);
+const N_PAR: Note = note(
+    "parallel to the rod through the end of v cuts the vertical: c at A",
+    Some("Kolbengeschwindigkeit"),
+    "KG Abb. 1049",
+    Topic::Velocity,
+);
+const N_C: Note = note(
+    "piston velocity at Esselborn’s position",
+    Some("c_max"),
+    "LH Gl. 25; KG (288)",
+    Topic::Velocity,
+);
+
+/// Esselborn's figure: the crosshead B (or a point of the infinite rod), the pin A, the rod.
+type Position = (H<Point>, H<Point>, H<Line>);
+
+impl Builder<'_> {
+    /// Esselborn's construction, the velocity there by the parallel to the rod, and the exact
+    /// and book angles beside it.
+    pub(super) fn esselborn(&mut self) -> Result<MaxVelocity, ConstructionError> {
+        let f = self.frame()?;
+        let (o, axis, vertical, circle, dead) =
+            (f.o, f.piston_line, f.vertical, f.crank_circle, f.dead);
+        let (b_pt, a, rod) = if self.d.finite_rod {
+            self.esselborn_point(o, axis, circle, dead)?
+        } else {
+            self.infinite_rod_point(o, axis, vertical, circle)?
+        };
+        let angle = self
+            .b
+            .measure_angle(&o, &dead, &a, Label::plain("α"), N_ANGLE);
+        let lam = self.lambda();
+        self.b.check(
+            &angle,
+            "crank angle of the rod perpendicular to the crank (Esselborn)",
+            "°",
+            "tg α = L/R (LH Abb. 52)",
+            90.0,
+            || cf::rod_perpendicular_angle(lam),
+        );
+        let right = self.b.measure_angle(&a, &o, &b_pt, Label::NONE, N_RIGHT);
+        self.b.check(
+            &right,
+            "angle between crank and rod at A",
+            "°",
+            "LH Abb. 52",
+            90.0,
+            || 90.0,
+        );
+        let c = self.esselborn_velocity(o, vertical, a, rod)?;
+        let v = self.d.crank_pin_speed;
+        let phi = angle.g;
+        self.b.check(
+            &c,
+            "piston velocity at Esselborn’s position",
+            "m/s",
+            "c = v sin(α + β)/cos β (KG 288)",
+            v,
+            || v * cf::sin_factor(lam, phi, cf::Stroke::Out),
+        );
+        let exact = cf::max_velocity_angle(lam);
+        Ok(MaxVelocity {
+            esselborn_deg: angle.g,
+            c_esselborn: c.g,
+            exact_deg: exact,
+            c_max: v * cf::sin_factor(lam, exact, cf::Stroke::Out),
+            book_deg: cf::approx_zero_acceleration_angle(lam),
+        })
+    }
+
+    /// The points B (crosshead) and A (crank pin) of Esselborn's figure.
+    fn esselborn_point(
+        &mut self,
+        o: H<Point>,
+        axis: H<Line>,
+        circle: H<Circle>,
+        dead: H<Point>,
+    ) -> Result<Position, ConstructionError> {
+        let b = &mut *self.b;
+        let perp = b.perpendicular(&axis, &dead, Label::NONE, Role::Construction, N_PERP);
+        // Upwards: the pin runs over the upper half on the outstroke.
+        let up = if perp.g.dir.dot(&Vector::new(0.0, 1.0)) >= 0.0 {
+            1.0
+        } else {
+            -1.0
+        };
+        let b1 = b.lay_off(
+            &dead,
+            &perp,
+            up * self.l,
+            Label::plain("B₁"),
+            Role::Construction,
+            N_B1,
+        )?;
+        let swing = b.circle(
+            &o,
+            (b1.g - o.g).norm(),
+            false,
+            Label::NONE,
+            Role::Construction,
+            N_SWING,
+        )?;
+        let bp = b.cut_line_circle(&axis, &swing, Branch::First, Label::plain("B"), N_B)?;
+        let arc = b.circle(
+            &bp,
+            self.l,
+            false,
+            Label::NONE,
+            Role::Construction,
+            N_ROD_ARC,
+        )?;
+        let a = b.cut_circle_circle(&circle, &arc, Branch::Near(b1.g), Label::plain("A"), N_A)?;
+        b.segment(&o, &a, Label::NONE, Role::Result, N_CRANK);
+        b.segment(&a, &bp, Label::NONE, Role::Result, N_CRANK);
+        let rod = b.line_through(&bp, &a, Label::NONE, Role::Construction, N_CRANK)?;
+        Ok((bp, a, rod))
+    }
+
+    /// The infinitely long rod stays parallel to the piston line: it is perpendicular to the
+    /// crank where the crank stands on the vertical through O (90°, LH Abb. 54).
+    fn infinite_rod_point(
+        &mut self,
+        o: H<Point>,
+        axis: H<Line>,
+        vertical: H<Line>,
+        circle: H<Circle>,
+    ) -> Result<Position, ConstructionError> {
+        let b = &mut *self.b;
+        let top = Point::new(o.g.x, o.g.y + self.r);
+        let a = b.cut_line_circle(
+            &vertical,
+            &circle,
+            Branch::Near(top),
+            Label::plain("A"),
+            N_A_INF,
+        )?;
+        b.segment(&o, &a, Label::NONE, Role::Result, N_CRANK);
+        let rod = b.parallel(&axis, &a, Label::NONE, Role::Construction, N_ROD_INF);
+        let bp = b.lay_off(&a, &rod, -self.r, Label::NONE, Role::Result, N_ROD_INF)?;
+        Ok((bp, a, rod))
+    }
+
+    /// The piston velocity at A by the parallel to the rod through the end of v (KG Abb. 1049).
+    fn esselborn_velocity(
+        &mut self,
+        o: H<Point>,
+        vertical: H<Line>,
+        a: H<Point>,
+        rod: H<Line>,
+    ) -> Result<H<f64>, ConstructionError> {
+        let b = &mut *self.b;
+        let ray = b.line_through(&o, &a, Label::NONE, Role::Construction, N_V)?;
+        let v_mm = self.d.crank_pin_speed / self.scales.velocity_scale;
+        let e = b.lay_off(&o, &ray, v_mm, Label::NONE, Role::Velocity, N_V)?;
+        let par = b.parallel(&rod, &e, Label::NONE, Role::Auxiliary, N_PAR);
+        let fpt = b.meet_point(&par, &vertical, Label::NONE, N_PAR)?;
+        let scale = Scale {
+            per_mm: self.scales.velocity_scale,
+            unit: "m/s",
+        };
+        Ok(b.measure(&o, &fpt, &vertical, scale, Label::plain("c"), N_C))
+    }
+}
