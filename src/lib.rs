@@ -50,6 +50,7 @@
 #![warn(missing_docs)]
 
 pub mod crank;
+pub mod dynamics;
 pub mod fmt;
 pub mod io;
 pub mod kernel;

@@ -205,12 +205,13 @@ fn cli_check_exit_status_and_schema() {
     let o = Command::new(bin()).arg("schema").output().unwrap();
     assert_eq!(o.status.code(), Some(0));
     let schema: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert_eq!(schema["anyOf"].as_array().unwrap().len(), 6);
+    assert_eq!(schema["anyOf"].as_array().unwrap().len(), 7);
     let defs = &schema["$defs"];
     assert!(defs["Scene"]["properties"]["mechanism"].is_object());
     assert!(defs["BeamScene"]["properties"]["beam"].is_object());
     assert!(defs["TrussScene"]["properties"]["load_cases"].is_object());
     assert!(defs["ForceSystemScene"]["properties"]["forces"].is_object());
+    assert!(defs["DynamicsScene"]["properties"]["cylinders"].is_object());
     for s in ["Scene", "BeamScene", "ForceSystemScene"] {
         assert_eq!(
             defs[s]["additionalProperties"],

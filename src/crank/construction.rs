@@ -449,6 +449,8 @@ struct Builder<'a> {
     divided: Option<Vec<H<Point>>>,
     tolle: Option<Tolle>,
     cache: Vec<Cache>,
+    /// Where the shaft centre O stands on the sheet.
+    origin: Point,
 }
 
 /// Constructs the requested slider-crank quantities at every crank angle on `board`.
@@ -465,6 +467,19 @@ pub fn construct(
     drawing: &Drawing,
     angles: &Angles,
     request: &Request,
+) -> Result<CrankResults, ConstructionError> {
+    construct_at(board, drive, drawing, angles, request, Point::origin())
+}
+
+/// [`construct`] with the shaft centre O at `origin` on the sheet: several drives on one
+/// sheet (the cylinders of an engine, each with its polar force figure).
+pub fn construct_at(
+    board: &mut Board,
+    drive: &CrankDrive,
+    drawing: &Drawing,
+    angles: &Angles,
+    request: &Request,
+    origin: Point,
 ) -> Result<CrankResults, ConstructionError> {
     let thetas = angles.thetas();
     let n = thetas.len();
@@ -483,6 +498,7 @@ pub fn construct(
         polar: None,
         divided: None,
         tolle: None,
+        origin,
         cache: (0..n).map(|_| Cache::default()).collect(),
     };
     let want_c = request.velocity_parallel || request.velocity_instant_centre;
@@ -572,7 +588,7 @@ impl Builder<'_> {
     fn frame(&mut self) -> Result<&Frame, ConstructionError> {
         if self.frame.is_none() {
             let b = &mut *self.b;
-            let o = b.point(Point::origin(), Label::plain("O"), Role::Given, N_CENTRE);
+            let o = b.point(self.origin, Label::plain("O"), Role::Given, N_CENTRE);
             let piston_line = b.line_dir(
                 &o,
                 Vector::new(1.0, 0.0),
@@ -1068,7 +1084,7 @@ impl Builder<'_> {
             // Beside the mechanism, clear of the crank circle by the largest force.
             let pmax = self.d.piston_force.max_abs() / self.scales.force_scale;
             let gap = 0.15 * (self.r + self.l);
-            let centre = Point::new(self.r + gap + pmax * 1.05, 0.0);
+            let centre = self.origin + Vector::new(self.r + gap + pmax * 1.05, 0.0);
             self.b.clear_context();
             let o = self
                 .b

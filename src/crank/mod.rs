@@ -35,9 +35,9 @@
 
 pub mod closed_form;
 mod construction;
-mod tolle;
+pub(crate) mod tolle;
 
-pub use construction::{construct, AngleRow, CrankResults, MaxVelocity};
+pub use construction::{construct, construct_at, AngleRow, CrankResults, MaxVelocity};
 
 use serde::Serialize;
 

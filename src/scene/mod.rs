@@ -20,6 +20,7 @@
 
 mod beam;
 mod centroid;
+mod crank_dynamics;
 mod defaults;
 mod error;
 mod fields;
@@ -37,6 +38,11 @@ pub use beam::{
     MAX_LOADS,
 };
 pub use centroid::{CentroidDrawingSpec, CentroidProblem, CentroidScene};
+pub use crank_dynamics::{
+    CylinderSpec, DynamicsDrawingSpec, DynamicsEffects, DynamicsOutput, DynamicsProblem,
+    DynamicsScene, FlywheelSpec, IndicatorSpec, MassSpec, PointsSpec, SidePoints, SteamSpec,
+    Weights,
+};
 pub use error::SceneError;
 pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,

@@ -56,6 +56,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<super::centroid::CentroidScene>(),
     Entry::of::<super::shaft::ShaftScene>(),
     Entry::of::<super::truss::TrussScene>(),
+    Entry::of::<super::crank_dynamics::DynamicsScene>(),
 ];
 
 /// The registered procedure of this name.

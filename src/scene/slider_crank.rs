@@ -46,9 +46,9 @@ impl Scene {
 
     fn check_values(&self, origin: &str) -> Result<(), SceneError> {
         let f = Fields { origin };
-        let r = self.check_mechanism(f)?;
-        self.check_rod(f, r)?;
-        self.check_speed(f)?;
+        let r = self.mechanism.check(f)?;
+        self.mechanism.check_rod(f, r)?;
+        self.speed.check(f)?;
         let n_angles = self.check_angles(f)?;
         self.check_outputs_and_force(f, n_angles)?;
         if let Some(d) = &self.drawing {
@@ -67,100 +67,6 @@ impl Scene {
                 if let Some(v) = v {
                     f.positive(name, v)?;
                 }
-            }
-        }
-        Ok(())
-    }
-
-    /// The crank: its radius or its stroke, one of them, positive: the radius (mm).
-    fn check_mechanism(&self, f: Fields) -> Result<f64, SceneError> {
-        let m = &self.mechanism;
-        let r = match (m.crank_radius_mm, m.stroke_mm) {
-            (Some(r), None) => {
-                f.positive("mechanism.crank_radius_mm", r)?;
-                r
-            }
-            (None, Some(s)) => {
-                f.positive("mechanism.stroke_mm", s)?;
-                s / 2.0
-            }
-            (Some(_), Some(_)) => {
-                return Err(f.bad(
-                    "mechanism",
-                    "give either crank_radius_mm or stroke_mm, not both".into(),
-                ))
-            }
-            (None, None) => {
-                return Err(f.bad(
-                    "mechanism",
-                    "missing field `crank_radius_mm` (or `stroke_mm`)".into(),
-                ))
-            }
-        };
-        Ok(r)
-    }
-
-    /// The rod: positive and longer than the crank radius `r`.
-    fn check_rod(&self, f: Fields, r: f64) -> Result<(), SceneError> {
-        match self.mechanism.rod {
-            Rod::LengthMm(l) => {
-                f.positive("mechanism.rod.length_mm", l)?;
-                if l <= r {
-                    return Err(f.bad(
-                        "mechanism.rod.length_mm",
-                        format!(
-                            "the rod (L = {l} mm) must be longer than the crank (R = {r} mm): \
-                             otherwise the mechanism locks where the crank stands perpendicular \
-                             to the piston line"
-                        ),
-                    ));
-                }
-            }
-            Rod::LOverR(k) => {
-                f.positive("mechanism.rod.l_over_r", k)?;
-                if k <= 1.0 {
-                    return Err(f.bad(
-                        "mechanism.rod.l_over_r",
-                        format!(
-                            "L/R = {k}: the rod must be longer than the crank (L/R > 1), \
-                             otherwise the mechanism locks"
-                        ),
-                    ));
-                }
-            }
-        }
-        // Nearer to locking, the rod's arc cuts the piston line at 90° so glancingly that the
-        // forces lose more digits than their checks allow (at L/R = 1 + 1e-9 they were 0.35 kg
-        // off against a 0.022 kg tolerance): refused, with the reason.
-        let (l, field) = match self.mechanism.rod {
-            Rod::LengthMm(l) => (l, "mechanism.rod.length_mm"),
-            Rod::LOverR(k) => (k * r, "mechanism.rod.l_over_r"),
-        };
-        if l <= r * (1.0 + MIN_ROD_EXCESS) {
-            return Err(f.bad(
-                field,
-                format!(
-                    "the rod is only {} of the crank longer than the crank: the construction \
-                     near 90° needs at least {}",
-                    crate::fmt::sci((l - r) / r),
-                    crate::fmt::sci(MIN_ROD_EXCESS)
-                ),
-            ));
-        }
-        Ok(())
-    }
-
-    /// The speed: positive numbers.
-    fn check_speed(&self, f: Fields) -> Result<(), SceneError> {
-        match &self.speed {
-            Speed::Rpm(n) => f.positive("speed.rpm", *n)?,
-            Speed::CrankPinMS(v) => f.positive("speed.crank_pin_m_s", *v)?,
-            Speed::Train {
-                km_h,
-                wheel_diameter_mm,
-            } => {
-                f.positive("speed.train.km_h", *km_h)?;
-                f.positive("speed.train.wheel_diameter_mm", *wheel_diameter_mm)?;
             }
         }
         Ok(())
@@ -257,27 +163,14 @@ impl Scene {
 
     /// The crank radius in mm.
     pub fn crank_radius(&self) -> f64 {
-        self.mechanism
-            .crank_radius_mm
-            .unwrap_or_else(|| self.mechanism.stroke_mm.unwrap_or(0.0) / 2.0)
+        self.mechanism.radius()
     }
 
     /// Maps the validated scene to the problem the crank procedures solve.
     pub fn problem(&self) -> Problem {
         let r = self.crank_radius();
-        let l = match self.mechanism.rod {
-            Rod::LengthMm(l) => l,
-            Rod::LOverR(k) => k * r,
-        };
-        let v = match &self.speed {
-            Speed::Rpm(n) => 2.0 * std::f64::consts::PI * (r / 1000.0) * n / 60.0,
-            Speed::CrankPinMS(v) => *v,
-            // LH: v = v₁ · s / D₁ (crank pin against the wheel rim, same angular speed).
-            Speed::Train {
-                km_h,
-                wheel_diameter_mm,
-            } => km_h / 3.6 * (2.0 * r) / wheel_diameter_mm,
-        };
+        let l = self.mechanism.rod_length();
+        let v = self.speed.crank_pin_speed(r);
         let angles = match &self.angles {
             AngleSpec::Divisions(n) => Angles::Divisions(*n),
             AngleSpec::Degrees(v) => Angles::Degrees(v.clone()),
@@ -328,6 +221,131 @@ impl Scene {
             drawing,
             angles,
             request,
+        }
+    }
+}
+
+impl Mechanism {
+    /// The crank: its radius or its stroke, one of them, positive: the radius (mm).
+    pub(super) fn check(&self, f: Fields) -> Result<f64, SceneError> {
+        let m = self;
+        let r = match (m.crank_radius_mm, m.stroke_mm) {
+            (Some(r), None) => {
+                f.positive("mechanism.crank_radius_mm", r)?;
+                r
+            }
+            (None, Some(s)) => {
+                f.positive("mechanism.stroke_mm", s)?;
+                s / 2.0
+            }
+            (Some(_), Some(_)) => {
+                return Err(f.bad(
+                    "mechanism",
+                    "give either crank_radius_mm or stroke_mm, not both".into(),
+                ))
+            }
+            (None, None) => {
+                return Err(f.bad(
+                    "mechanism",
+                    "missing field `crank_radius_mm` (or `stroke_mm`)".into(),
+                ))
+            }
+        };
+        Ok(r)
+    }
+
+    /// The rod: positive and longer than the crank radius `r`.
+    pub(super) fn check_rod(&self, f: Fields, r: f64) -> Result<(), SceneError> {
+        match self.rod {
+            Rod::LengthMm(l) => {
+                f.positive("mechanism.rod.length_mm", l)?;
+                if l <= r {
+                    return Err(f.bad(
+                        "mechanism.rod.length_mm",
+                        format!(
+                            "the rod (L = {l} mm) must be longer than the crank (R = {r} mm): \
+                             otherwise the mechanism locks where the crank stands perpendicular \
+                             to the piston line"
+                        ),
+                    ));
+                }
+            }
+            Rod::LOverR(k) => {
+                f.positive("mechanism.rod.l_over_r", k)?;
+                if k <= 1.0 {
+                    return Err(f.bad(
+                        "mechanism.rod.l_over_r",
+                        format!(
+                            "L/R = {k}: the rod must be longer than the crank (L/R > 1), \
+                             otherwise the mechanism locks"
+                        ),
+                    ));
+                }
+            }
+        }
+        // Nearer to locking, the rod's arc cuts the piston line at 90° so glancingly that the
+        // forces lose more digits than their checks allow (at L/R = 1 + 1e-9 they were 0.35 kg
+        // off against a 0.022 kg tolerance): refused, with the reason.
+        let (l, field) = match self.rod {
+            Rod::LengthMm(l) => (l, "mechanism.rod.length_mm"),
+            Rod::LOverR(k) => (k * r, "mechanism.rod.l_over_r"),
+        };
+        if l <= r * (1.0 + MIN_ROD_EXCESS) {
+            return Err(f.bad(
+                field,
+                format!(
+                    "the rod is only {} of the crank longer than the crank: the construction \
+                     near 90° needs at least {}",
+                    crate::fmt::sci((l - r) / r),
+                    crate::fmt::sci(MIN_ROD_EXCESS)
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The crank radius R (mm): given, or half the stroke.
+    pub fn radius(&self) -> f64 {
+        self.crank_radius_mm
+            .unwrap_or_else(|| self.stroke_mm.unwrap_or(0.0) / 2.0)
+    }
+
+    /// The rod length L (mm).
+    pub fn rod_length(&self) -> f64 {
+        match self.rod {
+            Rod::LengthMm(l) => l,
+            Rod::LOverR(k) => k * self.radius(),
+        }
+    }
+}
+
+impl Speed {
+    /// The speed: positive numbers.
+    pub(super) fn check(&self, f: Fields) -> Result<(), SceneError> {
+        match self {
+            Speed::Rpm(n) => f.positive("speed.rpm", *n)?,
+            Speed::CrankPinMS(v) => f.positive("speed.crank_pin_m_s", *v)?,
+            Speed::Train {
+                km_h,
+                wheel_diameter_mm,
+            } => {
+                f.positive("speed.train.km_h", *km_h)?;
+                f.positive("speed.train.wheel_diameter_mm", *wheel_diameter_mm)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The crank-pin speed v (m/s) for the crank radius `r` (mm).
+    pub fn crank_pin_speed(&self, r: f64) -> f64 {
+        match self {
+            Speed::Rpm(n) => 2.0 * std::f64::consts::PI * (r / 1000.0) * n / 60.0,
+            Speed::CrankPinMS(v) => *v,
+            // LH: v = v₁ · s / D₁ (crank pin against the wheel rim, same angular speed).
+            Speed::Train {
+                km_h,
+                wheel_diameter_mm,
+            } => km_h / 3.6 * (2.0 * r) / wheel_diameter_mm,
         }
     }
 }

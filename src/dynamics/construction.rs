@@ -1,0 +1,463 @@
+//! The demand-driven construction of the engine's diagrams.
+
+use super::model::{self, Cylinder};
+use super::{DynamicsDrawing, DynamicsRequest, DynamicsResults, Engine, RayRow};
+use crate::crank::closed_form as cf;
+use crate::crank::tolle::{self, TolleAxis, TolleCurve};
+use crate::crank::{self, Angles, CrankDrive, Drawing, PistonForce, Request};
+use crate::kernel::{Line, Point};
+use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
+
+mod summary;
+
+const N_FOOT: Note = note(
+    "piston position on the diagram axis",
+    Some("Kolbenstellung"),
+    "LH Abb. 58",
+    Topic::Forces,
+);
+const N_ORD: Note = note(
+    "ordinate over the piston position",
+    Some("Ordinate"),
+    "LH Abb. 45, 58",
+    Topic::Forces,
+);
+const N_WORK: Note = note(
+    "working side: F_w · p laid off at force scale (reduction factor R = F_w/(f·k))",
+    Some("Kolbendruck P₁"),
+    "LH Gl. 16-19",
+    Topic::Forces,
+);
+const N_BACK: Note = note(
+    "back side laid off against it: the net pressure a_ü = a₁ − a₂",
+    Some("Überdruck"),
+    "LH Gl. 40-42, Abb. 58; KG (296-297)",
+    Topic::Forces,
+);
+const N_P: Note = note(
+    "net piston force P read off",
+    Some("Überdruck P"),
+    "LH Gl. 42; KG (297)",
+    Topic::Forces,
+);
+const N_B_TRANSFER: Note = note(
+    "the inertia ordinate transferred with the dividers and taken off",
+    Some("resultierende Überdruckkurve"),
+    "LH C.1, Abb. 58",
+    Topic::Forces,
+);
+const N_RES: Note = note(
+    "resulting force P − M·b read off",
+    Some("resultierender Überdruck"),
+    "LH Abb. 58; KG Abb. 1055",
+    Topic::Forces,
+);
+const N_CURVE_P: Note = note(
+    "net-pressure curve",
+    Some("Überdruckkurve"),
+    "LH Abb. 58",
+    Topic::Forces,
+);
+const N_CURVE_R: Note = note(
+    "resulting net-pressure curve",
+    Some("resultierende Überdruckkurve"),
+    "LH Abb. 58",
+    Topic::Forces,
+);
+
+/// One drawn ray: the foot on the axis, the ordinate line, the points of the net pressure and
+/// of the resulting force, and the values read off.
+#[derive(Clone, Copy)]
+struct Ray {
+    p_point: H<Point>,
+    r_point: H<Point>,
+    row_p: f64,
+    row_b: f64,
+    row_r: f64,
+}
+
+struct Diagram {
+    axis: TolleAxis,
+    curves: Option<[TolleCurve; 2]>,
+}
+
+pub(super) struct Builder<'a> {
+    b: &'a mut Board,
+    e: &'a Engine,
+    dr: &'a DynamicsDrawing,
+    thetas: Vec<f64>,
+    r_mm: f64,
+    diagrams: Vec<Option<Diagram>>,
+    rays: Vec<Vec<Option<Ray>>>,
+    tangential: Vec<Option<Vec<f64>>>,
+    row_height: f64,
+}
+
+/// Constructs what `request` asks for, at `divisions` equal shaft angles.
+///
+/// # Errors
+/// A [`ConstructionError`] where a step has no solution; a validated scene gives none.
+pub fn construct(
+    board: &mut Board,
+    engine: &Engine,
+    drawing: &DynamicsDrawing,
+    divisions: usize,
+    request: &DynamicsRequest,
+) -> Result<DynamicsResults, ConstructionError> {
+    let nc = engine.cylinders.len();
+    let fmax = max_force(engine);
+    let mut bl = Builder {
+        b: board,
+        e: engine,
+        dr: drawing,
+        thetas: (0..divisions)
+            .map(|k| 360.0 * k as f64 / divisions as f64)
+            .collect(),
+        r_mm: engine.kinematics.r / drawing.length_scale,
+        diagrams: (0..nc).map(|_| None).collect(),
+        rays: (0..nc).map(|_| vec![None; divisions]).collect(),
+        tangential: vec![None; nc],
+        row_height: 2.6 * fmax / drawing.force_scale + 20.0,
+    };
+    let mut res = DynamicsResults::default();
+    let want_t = request.turning_force || request.mean_height || request.power || request.flywheel;
+    if request.net_pressure || want_t {
+        for c in 0..nc {
+            for k in 0..divisions {
+                bl.ray(c, k)?;
+            }
+            bl.curves(c);
+        }
+    }
+    if want_t {
+        for c in 0..nc {
+            bl.tangential(c)?;
+        }
+        res.turning = bl.turning_diagram()?;
+    }
+    res.rays = bl.rows();
+    bl.b.clear_context();
+    let lowest = res.turning.iter().fold(0.0f64, |m, p| m.max(p.1.abs())) / drawing.force_scale;
+    let table_at = bl.turning_origin() - crate::kernel::Vector::new(0.0, lowest + 15.0);
+    summary::finish(bl.b, engine, drawing, request, &mut res, table_at);
+    Ok(res)
+}
+
+/// The largest |P|, |M·b| of a cylinder (kg): the scale its checks are judged at.
+fn max_abs_force(k: &model::Kinematics, c: &Cylinder) -> f64 {
+    let mut m: f64 = (c.mass * k.a() * (1.0 + k.lambda)).abs();
+    for i in 0..72 {
+        let t = 5.0 * i as f64;
+        m = m
+            .max(k.resulting_force(c, t).abs())
+            .max(c.pressure_force(t, k.x_frac(t)).abs());
+    }
+    m.max(f64::MIN_POSITIVE)
+}
+
+/// The largest force any diagram draws (kg), for the layout.
+fn max_force(e: &Engine) -> f64 {
+    e.cylinders
+        .iter()
+        .map(|c| max_abs_force(&e.kinematics, c))
+        .fold(1.0, f64::max)
+}
+
+impl Builder<'_> {
+    fn cyl(&self, c: usize) -> &Cylinder {
+        &self.e.cylinders[c]
+    }
+
+    fn crank_deg(&self, c: usize, k: usize) -> f64 {
+        (self.thetas[k] + self.cyl(c).offset_deg).rem_euclid(360.0)
+    }
+
+    fn force_scale(&self) -> Scale {
+        Scale::kg(self.dr.force_scale)
+    }
+
+    /// The net-pressure diagram of cylinder c: its axis under the stroke and, with masses,
+    /// the two inertia parabolas at force scale (LH B.4: CD = M·v²/r·3λ).
+    fn diagram(&mut self, c: usize) -> Result<&Diagram, ConstructionError> {
+        if self.diagrams[c].is_none() {
+            let k = self.e.kinematics;
+            let middle = Point::new(0.0, -(c as f64) * self.row_height);
+            self.b.clear_context();
+            let axis = tolle::axis(self.b, middle, self.r_mm, k.lambda)?;
+            let mass = self.cyl(c).mass;
+            let curves = if mass > 0.0 {
+                let a_mm = mass * k.a() / self.dr.force_scale;
+                let (out, _) = tolle::curve(self.b, &axis, a_mm, k.lambda, 1.0, "B₀")?;
+                let (ret, _) = tolle::curve(self.b, &axis, a_mm, k.lambda, -1.0, "B'₀")?;
+                for cv in [out, ret] {
+                    let pts = tolle::envelope(self.b, &cv, 10);
+                    if pts.len() >= 2 {
+                        self.b
+                            .curve(&pts, true, Label::plain("B"), Role::Construction, N_CURVE_B);
+                    }
+                }
+                Some([out, ret])
+            } else {
+                None
+            };
+            self.diagrams[c] = Some(Diagram { axis, curves });
+        }
+        Ok(self.diagrams[c].as_ref().expect("set above"))
+    }
+
+    /// The net pressure and resulting force on ray k of cylinder c (LH Abb. 58).
+    fn ray(&mut self, c: usize, k: usize) -> Result<Ray, ConstructionError> {
+        if let Some(r) = self.rays[c][k] {
+            return Ok(r);
+        }
+        let theta = self.crank_deg(c, k);
+        let name = self.cyl(c).name.clone();
+        let d = self.diagram(c)?;
+        let (axis, curves) = (d.axis, d.curves);
+        self.b
+            .set_context(|| format!("{name}, θ = {}°", crate::fmt::num(theta, 3)));
+        let kin = self.e.kinematics;
+        let x = kin.x_frac(theta);
+        let foot = self.b.lay_off(
+            &axis.ends[0],
+            &axis.axis,
+            x * 2.0 * self.r_mm,
+            Label::NONE,
+            Role::Construction,
+            N_FOOT,
+        )?;
+        let ord = self
+            .b
+            .perpendicular(&axis.axis, &foot, Label::NONE, Role::Construction, N_ORD);
+        let (p_point, p) = self.net_pressure(c, theta, x, foot, ord, axis.vertical)?;
+        let (r_point, b, r) = match curves {
+            Some(cv) => self.resulting(c, theta, (foot, p_point, ord), &axis, &cv)?,
+            None => (p_point, 0.0, p),
+        };
+        let ray = Ray {
+            p_point,
+            r_point,
+            row_p: p,
+            row_b: b,
+            row_r: r,
+        };
+        self.rays[c][k] = Some(ray);
+        Ok(ray)
+    }
+
+    /// The working side's force up, the back side's down from its end: the net pressure.
+    fn net_pressure(
+        &mut self,
+        c: usize,
+        theta: f64,
+        x: f64,
+        foot: H<Point>,
+        ord: H<Line>,
+        vertical: H<Line>,
+    ) -> Result<(H<Point>, f64), ConstructionError> {
+        let cyl = self.cyl(c);
+        let (stroke, _) = cf::book_angle(theta);
+        let (work, back) = match stroke {
+            cf::Stroke::Out => (
+                cyl.cover.area_cm2 * cyl.cover.indicator.working(x),
+                cyl.crank.area_cm2 * cyl.crank.indicator.back(1.0 - x),
+            ),
+            cf::Stroke::Return => (
+                cyl.crank.area_cm2 * cyl.crank.indicator.working(1.0 - x),
+                cyl.cover.area_cm2 * cyl.cover.indicator.back(x),
+            ),
+        };
+        let k = self.dr.force_scale;
+        let w = self
+            .b
+            .lay_off(&foot, &ord, work / k, Label::NONE, Role::Force, N_WORK)?;
+        let pp = self
+            .b
+            .lay_off(&w, &ord, -back / k, Label::NONE, Role::Construction, N_BACK)?;
+        let p = self
+            .b
+            .measure(&foot, &pp, &vertical, self.force_scale(), Label::NONE, N_P);
+        let cyl = self.cyl(c).clone();
+        self.b.check(
+            &p,
+            "net piston force P",
+            "kg",
+            "LH Gl. 40-42; KG (296-297)",
+            work.abs().max(back.abs()),
+            || cyl.pressure_force(theta, x),
+        );
+        Ok((pp, p.g))
+    }
+
+    /// The inertia force on Tolle's parabola, transferred onto the net-pressure ordinate.
+    fn resulting(
+        &mut self,
+        c: usize,
+        theta: f64,
+        (foot, pp, ord): (H<Point>, H<Point>, H<Line>),
+        axis: &TolleAxis,
+        curves: &[TolleCurve; 2],
+    ) -> Result<(H<Point>, f64, f64), ConstructionError> {
+        let (stroke, _) = cf::book_angle(theta);
+        let curve = curves[(stroke == cf::Stroke::Return) as usize];
+        let s = crate::kernel::angle::sin_cos_deg(theta / 2.0).0.powi(2);
+        let q = tolle::point_at(self.b, &curve, s, Label::NONE)?;
+        let xs = Scale {
+            per_mm: self.dr.length_scale,
+            unit: "mm",
+        };
+        let (_, bval) = tolle::read(
+            self.b,
+            axis,
+            &q,
+            xs,
+            self.force_scale(),
+            (Label::NONE, Label::NONE),
+        );
+        let kin = self.e.kinematics;
+        let mass = self.cyl(c).mass;
+        let bref = mass * kin.a() * (1.0 + kin.lambda);
+        self.b.check(
+            &bval,
+            "inertia force M·b (Tolle’s parabola)",
+            "kg",
+            "KG (298); LH Gl. 35, 39",
+            bref,
+            || kin.inertia(mass, theta),
+        );
+        let rp = self.b.lay_off(
+            &pp,
+            &ord,
+            -bval.g / self.dr.force_scale,
+            Label::NONE,
+            Role::Construction,
+            N_B_TRANSFER,
+        )?;
+        let r = self.b.measure(
+            &foot,
+            &rp,
+            &axis.vertical,
+            self.force_scale(),
+            Label::NONE,
+            N_RES,
+        );
+        let cyl = self.cyl(c).clone();
+        let pref = r.g.abs().max(bref);
+        self.b.check(
+            &r,
+            "resulting force P − M·b",
+            "kg",
+            "LH C.1, Abb. 58",
+            pref,
+            || kin.resulting_force(&cyl, theta),
+        );
+        Ok((rp, bval.g, r.g))
+    }
+
+    /// The net-pressure and resulting curves of cylinder c, outstroke and return.
+    fn curves(&mut self, c: usize) {
+        if !self.b.is_recording() {
+            return;
+        }
+        let n = self.thetas.len();
+        for ret in [false, true] {
+            let mut idx: Vec<usize> = (0..n)
+                .filter(|&k| (self.crank_deg(c, k) >= 180.0) == ret)
+                .collect();
+            idx.sort_by(|&a, &b| {
+                let (xa, xb) = (
+                    self.e.kinematics.x_frac(self.crank_deg(c, a)),
+                    self.e.kinematics.x_frac(self.crank_deg(c, b)),
+                );
+                xa.total_cmp(&xb)
+            });
+            let rays: Vec<Ray> = idx.iter().filter_map(|&k| self.rays[c][k]).collect();
+            let p: Vec<H<Point>> = rays.iter().map(|r| r.p_point).collect();
+            let r: Vec<H<Point>> = rays.iter().map(|r| r.r_point).collect();
+            if p.len() >= 2 {
+                self.b
+                    .curve(&p, true, Label::plain("P"), Role::Result, N_CURVE_P);
+                if self.cyl(c).mass > 0.0 {
+                    self.b.curve(&r, true, Label::NONE, Role::Result, N_CURVE_R);
+                }
+            }
+        }
+    }
+
+    /// The tangential force on every ray of cylinder c by the polar construction of
+    /// [`crank`] (LH Abb. 65; KG Abb. 1063), beside the cylinder's diagram.
+    fn tangential(&mut self, c: usize) -> Result<Vec<f64>, ConstructionError> {
+        if let Some(t) = &self.tangential[c] {
+            return Ok(t.clone());
+        }
+        let n = self.thetas.len();
+        let forces: Vec<f64> = (0..n)
+            .map(|k| self.rays[c][k].map_or(0.0, |r| r.row_r))
+            .collect();
+        let angles: Vec<f64> = (0..n).map(|k| self.crank_deg(c, k)).collect();
+        let kin = self.e.kinematics;
+        let drive = CrankDrive {
+            crank_radius: kin.r,
+            rod_length: kin.rod().unwrap_or(5.0 * kin.r),
+            finite_rod: kin.lambda > 0.0,
+            crank_pin_speed: kin.v,
+            piston_force: PistonForce::PerAngle(forces),
+        };
+        let drawing = Drawing {
+            length_scale: self.dr.length_scale,
+            force_scale: self.dr.force_scale,
+            velocity_scale: 1.0,
+            acceleration_scale: 1.0,
+        };
+        let l_mm = drive.rod_length / self.dr.length_scale;
+        let origin = Point::new(2.0 * self.r_mm + 20.0 + l_mm, -(c as f64) * self.row_height);
+        let req = Request {
+            tangential_force: true,
+            ..Request::default()
+        };
+        self.b.clear_context();
+        let res = crank::construct_at(
+            self.b,
+            &drive,
+            &drawing,
+            &Angles::Degrees(angles),
+            &req,
+            origin,
+        )?;
+        let t: Vec<f64> = res
+            .rows
+            .iter()
+            .map(|r| r.tangential_force.unwrap_or(0.0))
+            .collect();
+        self.tangential[c] = Some(t.clone());
+        Ok(t)
+    }
+
+    fn rows(&self) -> Vec<Vec<RayRow>> {
+        (0..self.e.cylinders.len())
+            .map(|c| {
+                (0..self.thetas.len())
+                    .filter_map(|k| {
+                        self.rays[c][k].map(|r| RayRow {
+                            shaft_deg: self.thetas[k],
+                            crank_deg: self.crank_deg(c, k),
+                            pressure_force: r.row_p,
+                            inertia: r.row_b,
+                            resulting: r.row_r,
+                            tangential: self.tangential[c].as_ref().map(|t| t[k]),
+                        })
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+}
+
+const N_CURVE_B: Note = note(
+    "inertia parabola at force scale (CD = M·v²/r·3λ)",
+    Some("Beschleunigungsdruckkurve"),
+    "LH B.4, Abb. 58",
+    Topic::Acceleration,
+);
+
+mod turning;

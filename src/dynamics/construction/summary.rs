@@ -1,0 +1,289 @@
+//! What is reckoned from the drawn turning-force diagram: its mean height by every rule of
+//! LH G, the indicated power both ways (LH H), and the flywheel (LH J, KG Abb. 1062).
+
+use super::super::rules::{self, Planimeter};
+use super::super::{
+    model, DynamicsDrawing, DynamicsRequest, DynamicsResults, Engine, Flywheel, MeanHeight, Power,
+    PS,
+};
+use crate::kernel::Point;
+use crate::protocol::{note, Board, Label, Note, Topic};
+
+const N_MEAN: Note = note(
+    "mean height of the turning-force diagram: T_m",
+    Some("mittlerer Tangentialdruck"),
+    "LH G, Gl. 52-60",
+    Topic::Forces,
+);
+const N_POWER: Note = note(
+    "indicated power from the mean pressures and from T_m",
+    Some("indizierte Leistung"),
+    "LH H, Gl. 65-70",
+    Topic::Forces,
+);
+const N_FLY: Note = note(
+    "excess work over the mean resistance and the flywheel",
+    Some("Schwungradberechnung"),
+    "LH J; KG Abb. 1062, 1064",
+    Topic::Forces,
+);
+const N_TABLE: Note = note(
+    "table of the mean heights, the power and the flywheel",
+    Some("Auswertung"),
+    "LH G, H, J",
+    Topic::Forces,
+);
+
+/// Millimetre paper: squares of 1 mm (LH G.c).
+const CELL_MM: f64 = 1.0;
+/// The planimeter's vernier reads a tenth of a unit in a thousand (LH G.d: 0.1 cm² on a
+/// 100 cm² wheel turn): its reading is held to 1e-3 of the diagram's bounding rectangle.
+const PLANIMETER_RESOLUTION: f64 = 1e-3;
+/// Trace step of the simulated planimeter (mm of sheet).
+const TRACE_STEP_MM: f64 = 0.05;
+/// Shaft angles per revolution for the reference of the flywheel's energy curve.
+const FLYWHEEL_REFERENCE: usize = 7200;
+
+/// Mean heights, power and flywheel as the request asks; written into `res` and, on a
+/// recording board, as tallies with their checks and a table.
+pub(super) fn finish(
+    b: &mut Board,
+    e: &Engine,
+    dr: &DynamicsDrawing,
+    request: &DynamicsRequest,
+    res: &mut DynamicsResults,
+    table_at: Point,
+) {
+    if res.turning.is_empty() {
+        return;
+    }
+    let exact = e.t_m();
+    res.t_m_exact = Some(exact);
+    if request.mean_height || request.power {
+        res.mean_heights = mean_heights(b, e, dr, &res.turning, exact);
+    }
+    if request.power {
+        res.power = Some(power(b, e, res));
+    }
+    if request.flywheel {
+        res.flywheel = Some(flywheel(b, e, &res.turning, exact));
+    }
+    table(b, res, table_at);
+}
+
+/// The diagram as drawn: (x, y) in sheet mm, x the developed arc, closed at 360°.
+fn drawn(e: &Engine, dr: &DynamicsDrawing, turning: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let r_mm = e.kinematics.r / dr.length_scale;
+    let mut pts: Vec<(f64, f64)> = turning
+        .iter()
+        .map(|&(t, v)| (r_mm * t.to_radians(), v / dr.force_scale))
+        .collect();
+    if let Some(&(_, v0)) = turning.first() {
+        pts.push((r_mm * std::f64::consts::TAU, v0 / dr.force_scale));
+    }
+    pts
+}
+
+fn mean_heights(
+    b: &mut Board,
+    e: &Engine,
+    dr: &DynamicsDrawing,
+    turning: &[(f64, f64)],
+    exact: f64,
+) -> Vec<MeanHeight> {
+    let mut ords: Vec<f64> = turning.iter().map(|p| p.1).collect();
+    ords.push(ords[0]);
+    let pts = drawn(e, dr, turning);
+    let length = pts.last().map_or(0.0, |p| p.0);
+    let to_tm = |area_mm2: f64| area_mm2 / length * dr.force_scale;
+    let mut closed = pts.clone();
+    closed.push((length, 0.0));
+    closed.push((0.0, 0.0));
+    // The drawn polygon's own area: what a rule over the drawn ordinates measures.
+    let polygon = -rules::polygon_area(&closed);
+    let mut out = vec![MeanHeight {
+        rule: "trapezoid (Gl. 55)".into(),
+        t_m: rules::trapezoid(&ords),
+        error: 0.0,
+    }];
+    let trap = b.tally(out[0].t_m, "kg", Label::plain("T_m"), &[], N_MEAN);
+    b.check(
+        &trap,
+        "T_m by the trapezoid rule = drawn polygon’s area / 2πr",
+        "kg",
+        "LH Gl. 55",
+        exact.abs(),
+        || to_tm(polygon),
+    );
+    if let Some(s) = rules::simpson(&ords) {
+        out.push(MeanHeight {
+            rule: "Simpson (Gl. 58)".into(),
+            t_m: s,
+            error: 0.0,
+        });
+    }
+    if let Some(s) = rules::three_eighths(&ords) {
+        out.push(MeanHeight {
+            rule: "3/8 rule (Gl. 59)".into(),
+            t_m: s,
+            error: 0.0,
+        });
+    }
+    let squares = rules::count_squares(&pts, CELL_MM);
+    let sq = b.tally(to_tm(squares), "kg", Label::NONE, &[], N_MEAN);
+    let columns = (length / CELL_MM).ceil();
+    b.check_within(
+        &sq,
+        "T_m by counting millimetre squares",
+        "kg",
+        "LH G.c",
+        exact.abs(),
+        || (to_tm(polygon), to_tm(columns * CELL_MM * CELL_MM)),
+    );
+    out.push(MeanHeight {
+        rule: "millimetre squares".into(),
+        t_m: sq.g,
+        error: 0.0,
+    });
+    let ymax = pts.iter().fold(0.0f64, |m, p| m.max(p.1.abs()));
+    let depth = 0.5 * length + ymax;
+    let planimeter = Planimeter {
+        pole: (0.5 * length, -depth),
+        pole_arm: depth + 0.5 * length,
+        tracer_arm: depth + 0.5 * length,
+        wheel: 0.4 * (depth + 0.5 * length),
+    };
+    if let Some(area) = planimeter.trace(&closed, TRACE_STEP_MM) {
+        let pl = b.tally(to_tm(-area), "kg", Label::NONE, &[], N_MEAN);
+        let bound = PLANIMETER_RESOLUTION * length * 2.0 * ymax;
+        b.check_within(
+            &pl,
+            "T_m by the polar planimeter (simulated)",
+            "kg",
+            "LH G.d, Abb. 71",
+            exact.abs(),
+            || (to_tm(polygon), to_tm(bound)),
+        );
+        out.push(MeanHeight {
+            rule: "polar planimeter".into(),
+            t_m: pl.g,
+            error: 0.0,
+        });
+    }
+    for m in &mut out {
+        m.error = m.t_m - exact;
+    }
+    out
+}
+
+fn power(b: &mut Board, e: &Engine, res: &DynamicsResults) -> Power {
+    let from_pressures = e.power_from_pressures();
+    let total: f64 = from_pressures.iter().sum();
+    let exact = res.t_m_exact.unwrap_or(0.0);
+    let v = e.kinematics.v;
+    let from_t_m = exact * v / PS;
+    let n = b.tally(from_t_m, "PS", Label::plain("N_i"), &[], N_POWER);
+    b.check(
+        &n,
+        "power from T_m = from the mean pressures (P_m/T_m = π/2)",
+        "PS",
+        "LH Gl. 68-70",
+        total.abs(),
+        || total,
+    );
+    let drawn = res.mean_heights.first().map_or(exact, |m| m.t_m);
+    Power {
+        from_pressures,
+        from_t_m,
+        from_drawn_t_m: drawn * v / PS,
+    }
+}
+
+/// The energy curve E(θ) = ∫ (T − T_m) r dθ (m·kg) over a revolution, from `samples`
+/// ordinates: its extremes and where they fall.
+fn excess(turning: &[(f64, f64)], t_m: f64, r_m: f64) -> (f64, f64, f64) {
+    let n = turning.len();
+    let h = std::f64::consts::TAU / n as f64;
+    let (mut e, mut emax, mut emin) = (0.0, 0.0, 0.0);
+    let (mut fast, mut slow) = (0.0, 0.0);
+    for k in 0..n {
+        let (a, b) = (turning[k].1, turning[(k + 1) % n].1);
+        e += 0.5 * (a + b - 2.0 * t_m) * r_m * h;
+        let theta = if k + 1 == n { 360.0 } else { turning[k + 1].0 };
+        if e > emax {
+            emax = e;
+            fast = theta;
+        }
+        if e < emin {
+            emin = e;
+            slow = theta;
+        }
+    }
+    (emax - emin, fast % 360.0, slow % 360.0)
+}
+
+fn flywheel(b: &mut Board, e: &Engine, turning: &[(f64, f64)], exact: f64) -> Flywheel {
+    let k = &e.kinematics;
+    let r_m = k.r / 1000.0;
+    let (de, fast, slow) = excess(turning, exact, r_m);
+    let reference: Vec<(f64, f64)> = (0..FLYWHEEL_REFERENCE)
+        .map(|i| {
+            let t = 360.0 * i as f64 / FLYWHEEL_REFERENCE as f64;
+            (t, model::turning_force(k, &e.cylinders, e.efficiency, t))
+        })
+        .collect();
+    let (de_ref, _, _) = excess(&reference, exact, r_m);
+    let t = b.tally(de, "m·kg", Label::plain("ΔE"), &[], N_FLY);
+    // The drawn ordinates resolve the energy curve to one division: the change of E over a
+    // division bounds how far the drawn extremes can fall from the true ones.
+    let step = std::f64::consts::TAU / turning.len() as f64;
+    let tmax = turning
+        .iter()
+        .fold(0.0f64, |m, p| m.max((p.1 - exact).abs()));
+    b.check_within(
+        &t,
+        "largest fluctuation of energy ΔE",
+        "m·kg",
+        "LH J; KG Abb. 1064",
+        de_ref.abs(),
+        || (de_ref, 2.0 * tmax * r_m * step),
+    );
+    let omega = k.v / r_m;
+    Flywheel {
+        resistance: exact,
+        delta_e: de,
+        fastest_deg: fast,
+        slowest_deg: slow,
+        moment_of_inertia: e.irregularity.map(|d| de / (d * omega * omega)),
+    }
+}
+
+fn table(b: &mut Board, res: &DynamicsResults, at: Point) {
+    if !b.is_recording() {
+        return;
+    }
+    use crate::fmt::num;
+    let mut rows = vec![vec!["".to_string(), "T_m [kg]".into(), "error [kg]".into()]];
+    for m in &res.mean_heights {
+        rows.push(vec![m.rule.clone(), num(m.t_m, 1), num(m.error, 2)]);
+    }
+    if let Some(x) = res.t_m_exact {
+        rows.push(vec!["exact".into(), num(x, 1), "".into()]);
+    }
+    if let Some(p) = &res.power {
+        let total: f64 = p.from_pressures.iter().sum();
+        rows.push(vec!["N_i from p_m [PS]".into(), num(total, 1), "".into()]);
+        rows.push(vec![
+            "N_i from T_m [PS]".into(),
+            num(p.from_t_m, 1),
+            "".into(),
+        ]);
+    }
+    if let Some(f) = &res.flywheel {
+        rows.push(vec!["ΔE [m·kg]".into(), num(f.delta_e, 1), "".into()]);
+        if let Some(j) = f.moment_of_inertia {
+            rows.push(vec!["J [kg·m·s²]".into(), num(j, 2), "".into()]);
+        }
+    }
+    b.table(at, rows, &[], N_TABLE);
+}

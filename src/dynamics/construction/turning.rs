@@ -1,0 +1,166 @@
+//! The turning-force diagram over the developed crank circle (LH F, Abb. 67; KG Abb. 1064):
+//! each cylinder's tangential force laid off at the arc r·θ, the ordinates of the cylinders
+//! added with the dividers, η applied.
+
+use super::super::model;
+use super::Builder;
+use crate::kernel::{Point, Vector};
+use crate::protocol::{note, ConstructionError, Label, Note, Role, Topic, H};
+
+const N_AXIS_O: Note = note(
+    "start of the developed crank circle",
+    Some("Abwicklung des Kurbelkreises"),
+    "LH F, Abb. 67",
+    Topic::Forces,
+);
+const N_AXIS: Note = note(
+    "the crank circle developed on a straight line, 2πr long",
+    Some("abgewickelte Kurbelkreislinie"),
+    "LH F, Abb. 67",
+    Topic::Forces,
+);
+const N_ARC: Note = note(
+    "the arc r·θ laid off along the developed circle",
+    Some("Bogen r·α"),
+    "LH F, Abb. 67",
+    Topic::Forces,
+);
+const N_ORD: Note = note(
+    "ordinate at the developed crank position",
+    Some("Ordinate"),
+    "LH Abb. 67",
+    Topic::Forces,
+);
+const N_T_EACH: Note = note(
+    "a cylinder’s tangential force (times η) laid off on top of the others",
+    Some("Tangentialdruck, Ordinaten addiert"),
+    "LH F; KG Abb. 1064",
+    Topic::Forces,
+);
+const N_T_SUM: Note = note(
+    "turning force on the shaft read off",
+    Some("resultierender Tangentialdruck"),
+    "LH Abb. 67; KG Abb. 1062, 1064",
+    Topic::Forces,
+);
+const N_MEAN_AT: Note = note(
+    "the mean height T_m laid off (trapezoid rule over the drawn ordinates)",
+    Some("mittlerer Tangentialdruck"),
+    "LH G, Gl. 55, 60",
+    Topic::Forces,
+);
+const N_MEAN_LINE: Note = note(
+    "the mean resistance: the rectangle of equal area",
+    Some("Widerstandslinie, Rechteck abcd"),
+    "LH J; KG Abb. 1064",
+    Topic::Forces,
+);
+const N_CURVE: Note = note(
+    "turning-force diagram",
+    Some("Tangentialdruckdiagramm"),
+    "LH Abb. 67; KG Abb. 1064",
+    Topic::Forces,
+);
+
+impl Builder<'_> {
+    /// Where the turning-force diagram's axis begins on the sheet.
+    pub(super) fn turning_origin(&self) -> Point {
+        let nc = self.e.cylinders.len() as f64;
+        Point::new(-self.r_mm, -(nc - 0.3) * self.row_height)
+    }
+
+    /// The diagram: the sum of the cylinders' T at every shaft angle and at 360°, read off and
+    /// checked against [`model::turning_force`]. Returns (θ, T) per shaft angle.
+    pub(super) fn turning_diagram(&mut self) -> Result<Vec<(f64, f64)>, ConstructionError> {
+        let ts: Vec<Vec<f64>> = (0..self.e.cylinders.len())
+            .map(|c| self.tangential[c].clone().unwrap_or_default())
+            .collect();
+        let o = self.b.point(
+            self.turning_origin(),
+            Label::plain("0"),
+            Role::Given,
+            N_AXIS_O,
+        );
+        let axis = self
+            .b
+            .line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, N_AXIS)?;
+        let up = self
+            .b
+            .perpendicular(&axis, &o, Label::NONE, Role::Axis, N_ORD);
+        let n = self.thetas.len();
+        let mut pts: Vec<H<Point>> = Vec::with_capacity(n + 1);
+        let mut out = Vec::with_capacity(n);
+        for k in 0..=n {
+            let kk = k % n;
+            let theta = if k == n { 360.0 } else { self.thetas[kk] };
+            self.b
+                .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+            let arc = self.r_mm * theta.to_radians();
+            let a = self
+                .b
+                .lay_off(&o, &axis, arc, Label::NONE, Role::Construction, N_ARC)?;
+            let ord = self
+                .b
+                .perpendicular(&axis, &a, Label::NONE, Role::Construction, N_ORD);
+            let mut end = a;
+            for t in &ts {
+                let len = self.e.efficiency * t[kk] / self.dr.force_scale;
+                end = self
+                    .b
+                    .lay_off(&end, &ord, len, Label::NONE, Role::Force, N_T_EACH)?;
+            }
+            let sum = self
+                .b
+                .measure(&a, &end, &up, self.force_scale(), Label::NONE, N_T_SUM);
+            let (kin, cyls, eta) = (self.e.kinematics, &self.e.cylinders, self.e.efficiency);
+            let reference = eta
+                * cyls
+                    .iter()
+                    .map(|c| super::max_abs_force(&kin, c))
+                    .sum::<f64>();
+            self.b.check(
+                &sum,
+                "turning force Σ η·T",
+                "kg",
+                "LH F; KG (303)",
+                reference,
+                || model::turning_force(&kin, cyls, eta, theta),
+            );
+            pts.push(end);
+            if k < n {
+                out.push((theta, sum.g));
+            }
+        }
+        self.b.clear_context();
+        self.b
+            .curve(&pts, false, Label::plain("T"), Role::Result, N_CURVE);
+        // The rectangle of equal area: the mean resistance over the developed circle.
+        let ords: Vec<f64> = out
+            .iter()
+            .map(|p| p.1)
+            .chain(out.first().map(|p| p.1))
+            .collect();
+        let mean = super::super::rules::trapezoid(&ords);
+        let m = self.b.lay_off(
+            &o,
+            &up,
+            mean / self.dr.force_scale,
+            Label::plain("T_m"),
+            Role::Construction,
+            N_MEAN_AT,
+        )?;
+        let line = self
+            .b
+            .parallel(&axis, &m, Label::NONE, Role::Auxiliary, N_MEAN_LINE);
+        let end = self.b.lay_off(
+            &m,
+            &line,
+            self.r_mm * std::f64::consts::TAU,
+            Label::NONE,
+            Role::Auxiliary,
+            N_MEAN_LINE,
+        )?;
+        let _ = end;
+        Ok(out)
+    }
+}

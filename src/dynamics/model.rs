@@ -1,0 +1,359 @@
+//! The engine's pressures and forces as functions, independent of any construction: the
+//! indicator diagrams (digitised or modelled), the piston forces of a double-acting cylinder,
+//! the inertia of the reciprocating masses and the turning force, with their exact integrals.
+//! The construction reads its ordinates from these, and the checks hold the construction to
+//! them.
+
+use crate::crank::closed_form as cf;
+
+/// Technical units (LH, KG): g in m/s².
+pub const G: f64 = 9.81;
+
+/// A cylinder side's pressures over its own stroke coordinate u ∈ [0, 1], from the dead
+/// centre where its working stroke begins (u = x/s on the cover side, 1 − x/s on the crank
+/// side), absolute pressures in at (kg/cm²).
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Indicator {
+    /// Digitised points (u, p), ordered along the stroke, joined by straight lines: the working
+    /// stroke (the side's volume grows) and the back stroke (it shrinks).
+    Points {
+        /// (u, p) of the working stroke, u rising from 0 to 1.
+        working: Vec<(f64, f64)>,
+        /// (u, p) of the back stroke, u rising from 0 to 1.
+        back: Vec<(f64, f64)>,
+    },
+    /// A steam distribution (LH Abb. 40): admission to cut-off, expansion pV^n = const to
+    /// release, exhaust falling straight to the back pressure at the dead centre; on the back
+    /// stroke the back pressure to the start of compression, then compression pV^n = const.
+    Steam(SteamModel),
+}
+
+/// The parameters of a modelled steam distribution; fractions of the stroke, absolute at.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct SteamModel {
+    /// Admission pressure (at abs).
+    pub admission: f64,
+    /// Cut-off, fraction of the stroke (0 < ε ≤ release).
+    pub cutoff: f64,
+    /// Exponent n of the expansion and compression lines (1 for Mariotte's law).
+    pub exponent: f64,
+    /// Release (Vorausströmung), fraction of the stroke (cutoff ≤ release ≤ 1).
+    pub release: f64,
+    /// Back pressure (at abs).
+    pub back: f64,
+    /// Compression begins when this fraction of the stroke is left on the back stroke.
+    pub compression: f64,
+    /// Clearance volume as a fraction of the swept volume (schädlicher Raum).
+    pub clearance: f64,
+}
+
+impl SteamModel {
+    /// Working-stroke pressure at u.
+    pub fn working(&self, u: f64) -> f64 {
+        let c = self.clearance;
+        if u <= self.cutoff {
+            self.admission
+        } else if u <= self.release {
+            self.admission * ((self.cutoff + c) / (u + c)).powf(self.exponent)
+        } else {
+            let p_rel =
+                self.admission * ((self.cutoff + c) / (self.release + c)).powf(self.exponent);
+            let t = (u - self.release) / (1.0 - self.release);
+            p_rel + (self.back - p_rel) * t
+        }
+    }
+
+    /// Back-stroke pressure at u (u falls from 1 to 0 as the side's volume shrinks).
+    pub fn back_stroke(&self, u: f64) -> f64 {
+        if u >= self.compression {
+            self.back
+        } else {
+            let c = self.clearance;
+            self.back * ((self.compression + c) / (u + c)).powf(self.exponent)
+        }
+    }
+
+    /// The points of the stroke where the curves have a corner (cut-off, release, start of
+    /// compression): where a quadrature should split.
+    pub fn corners(&self) -> [f64; 3] {
+        [self.cutoff, self.release, self.compression]
+    }
+}
+
+fn interpolate(pts: &[(f64, f64)], u: f64) -> f64 {
+    match pts.iter().position(|&(x, _)| x >= u) {
+        None => pts.last().map_or(0.0, |p| p.1),
+        Some(0) => pts[0].1,
+        Some(k) => {
+            let ((x0, y0), (x1, y1)) = (pts[k - 1], pts[k]);
+            if x1 > x0 {
+                y0 + (y1 - y0) * (u - x0) / (x1 - x0)
+            } else {
+                y1
+            }
+        }
+    }
+}
+
+impl Indicator {
+    /// Pressure on the working stroke at u (at abs).
+    pub fn working(&self, u: f64) -> f64 {
+        match self {
+            Indicator::Points { working, .. } => interpolate(working, u),
+            Indicator::Steam(m) => m.working(u),
+        }
+    }
+
+    /// Pressure on the back stroke at u (at abs).
+    pub fn back(&self, u: f64) -> f64 {
+        match self {
+            Indicator::Points { back, .. } => interpolate(back, u),
+            Indicator::Steam(m) => m.back_stroke(u),
+        }
+    }
+
+    /// Where the pressure curves have corners (u): the digitised points, or the model's
+    /// cut-off, release and compression.
+    pub fn corners(&self) -> Vec<f64> {
+        match self {
+            Indicator::Points { working, back } => {
+                working.iter().chain(back).map(|p| p.0).collect()
+            }
+            Indicator::Steam(m) => m.corners().to_vec(),
+        }
+    }
+
+    /// The mean pressure p_m of the diagram, ∫ (working − back) du, exactly (adaptive
+    /// quadrature split at the corners).
+    pub fn mean_pressure(&self) -> f64 {
+        integrate_split(
+            |u| self.working(u) - self.back(u),
+            0.0,
+            1.0,
+            &self.corners(),
+        )
+    }
+}
+
+/// One side of a double-acting cylinder.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Side {
+    /// Effective piston area F_w (cm²): the bore less a rod passing through this side.
+    pub area_cm2: f64,
+    /// Its pressures.
+    pub indicator: Indicator,
+}
+
+/// A cylinder of the engine: both sides, the reciprocating mass and the crank offset.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Cylinder {
+    /// Name in the figure ("HP", "left").
+    pub name: String,
+    /// Cover side (Deckelseite), working on the outstroke.
+    pub cover: Side,
+    /// Crank side (Kurbelseite), working on the return stroke.
+    pub crank: Side,
+    /// Reciprocating mass M = G/g (kg·s²/m); 0 without the effect `inertia`.
+    pub mass: f64,
+    /// How far this crank leads the first one (degrees).
+    pub offset_deg: f64,
+}
+
+impl Cylinder {
+    /// The net piston force from the pressures alone (KG 296-297, LH Gl. 40-42) at the full
+    /// crank angle θ of this cylinder and the piston position x (fraction of the stroke from
+    /// the inner dead centre), positive when it drives the piston the way it moves.
+    pub fn pressure_force(&self, theta_deg: f64, x: f64) -> f64 {
+        let (stroke, _) = cf::book_angle(theta_deg);
+        let (u_cover, u_crank) = (x, 1.0 - x);
+        match stroke {
+            cf::Stroke::Out => {
+                self.cover.area_cm2 * self.cover.indicator.working(u_cover)
+                    - self.crank.area_cm2 * self.crank.indicator.back(u_crank)
+            }
+            cf::Stroke::Return => {
+                self.crank.area_cm2 * self.crank.indicator.working(u_crank)
+                    - self.cover.area_cm2 * self.cover.indicator.back(u_cover)
+            }
+        }
+    }
+}
+
+/// The crank geometry and speed the dynamics need.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Kinematics {
+    /// Crank radius R (mm).
+    pub r: f64,
+    /// R/L, 0 for the infinitely long rod.
+    pub lambda: f64,
+    /// Crank-pin speed v (m/s).
+    pub v: f64,
+}
+
+impl Kinematics {
+    /// v²/R (m/s²).
+    pub fn a(&self) -> f64 {
+        self.v * self.v / (self.r / 1000.0)
+    }
+
+    /// The rod, `None` for the infinitely long rod.
+    pub fn rod(&self) -> Option<f64> {
+        (self.lambda > 0.0).then(|| self.r / self.lambda)
+    }
+
+    /// Piston position as a fraction of the stroke from the inner dead centre (exact, KG 285).
+    pub fn x_frac(&self, theta_deg: f64) -> f64 {
+        cf::piston_position(self.r, self.rod(), theta_deg) / (2.0 * self.r)
+    }
+
+    /// The inertia force M·b of the book (KG 298, LH Gl. 35 with Gl. 29), in the direction of
+    /// motion: the force the piston force spends accelerating the masses.
+    pub fn inertia(&self, mass: f64, theta_deg: f64) -> f64 {
+        let (stroke, _) = cf::book_angle(theta_deg);
+        mass * stroke.sign() * cf::acceleration_approx(self.a(), self.lambda, theta_deg)
+    }
+
+    /// The resulting driving force P − M·b (LH C.1, Abb. 58) of a cylinder at its crank angle.
+    pub fn resulting_force(&self, c: &Cylinder, theta_deg: f64) -> f64 {
+        c.pressure_force(theta_deg, self.x_frac(theta_deg)) - self.inertia(c.mass, theta_deg)
+    }
+
+    /// The tangential force T = P sin(φ ± ψ)/cos ψ of a cylinder at its crank angle (KG 303).
+    pub fn tangential(&self, c: &Cylinder, theta_deg: f64) -> f64 {
+        cf::tangential_force(self.resulting_force(c, theta_deg), self.lambda, theta_deg)
+    }
+}
+
+/// The turning force on the shaft at shaft angle θ: every cylinder at θ + its offset, summed,
+/// times the efficiency η (KG Abb. 1062, 1064; LH F).
+pub fn turning_force(k: &Kinematics, cyls: &[Cylinder], eta: f64, theta_deg: f64) -> f64 {
+    eta * cyls
+        .iter()
+        .map(|c| k.tangential(c, (theta_deg + c.offset_deg).rem_euclid(360.0)))
+        .sum::<f64>()
+}
+
+/// The shaft angles (degrees in [0, 360)) where some cylinder passes a corner of its
+/// pressure curves or a dead centre: the turning force has a kink there.
+pub fn turning_corners(k: &Kinematics, cyls: &[Cylinder]) -> Vec<f64> {
+    let mut out = Vec::new();
+    for c in cyls {
+        let mut xs: Vec<f64> = c.cover.indicator.corners();
+        xs.extend(c.crank.indicator.corners().iter().map(|u| 1.0 - u));
+        for x in xs.into_iter().filter(|x| (0.0..=1.0).contains(x)) {
+            for theta in crank_angles_at(k, x) {
+                out.push((theta - c.offset_deg).rem_euclid(360.0));
+            }
+        }
+        for dead in [0.0, 180.0] {
+            out.push((dead - c.offset_deg).rem_euclid(360.0));
+        }
+    }
+    out.sort_by(f64::total_cmp);
+    out.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
+    out
+}
+
+/// The two crank angles (out and return) where the piston stands at fraction x of the stroke,
+/// by bisection on the monotone outstroke position.
+pub fn crank_angles_at(k: &Kinematics, x: f64) -> [f64; 2] {
+    let (mut lo, mut hi) = (0.0f64, 180.0f64);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if k.x_frac(mid) < x {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let t = 0.5 * (lo + hi);
+    [t, 360.0 - t]
+}
+
+/// ∫ f over [a, b], split at the interior `corners`, each piece by adaptive Simpson to
+/// 1e-13 of its scale.
+pub fn integrate_split(f: impl Fn(f64) -> f64, a: f64, b: f64, corners: &[f64]) -> f64 {
+    let mut cuts: Vec<f64> = corners
+        .iter()
+        .copied()
+        .filter(|c| *c > a && *c < b)
+        .collect();
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    let mut edges = vec![a];
+    edges.extend(cuts);
+    edges.push(b);
+    edges
+        .windows(2)
+        .map(|w| adaptive_simpson(&f, w[0], w[1], 1e-13, 40))
+        .sum()
+}
+
+fn simpson(fa: f64, fm: f64, fb: f64, h: f64) -> f64 {
+    h / 6.0 * (fa + 4.0 * fm + fb)
+}
+
+/// A stretch [a, b] with f at its ends and middle, and its Simpson value.
+#[derive(Clone, Copy)]
+struct Piece {
+    a: f64,
+    b: f64,
+    fa: f64,
+    fm: f64,
+    fb: f64,
+    whole: f64,
+}
+
+fn adaptive_simpson(f: &impl Fn(f64) -> f64, a: f64, b: f64, rel: f64, depth: u32) -> f64 {
+    let (fa, fm, fb) = (f(a), f(0.5 * (a + b)), f(b));
+    let whole = simpson(fa, fm, fb, b - a);
+    let scale = (fa.abs() + fm.abs() + fb.abs()).max(f64::MIN_POSITIVE) * (b - a);
+    let piece = Piece {
+        a,
+        b,
+        fa,
+        fm,
+        fb,
+        whole,
+    };
+    refine(f, piece, rel * scale, depth)
+}
+
+fn refine(f: &impl Fn(f64) -> f64, p: Piece, tol: f64, depth: u32) -> f64 {
+    let m = 0.5 * (p.a + p.b);
+    let (flm, frm) = (f(0.5 * (p.a + m)), f(0.5 * (m + p.b)));
+    let left = simpson(p.fa, flm, p.fm, m - p.a);
+    let right = simpson(p.fm, frm, p.fb, p.b - m);
+    let diff = left + right - p.whole;
+    // A non-finite value cannot converge: stop rather than split it 2^depth times.
+    if depth == 0 || diff.abs() <= 15.0 * tol || !diff.is_finite() {
+        return left + right + diff / 15.0;
+    }
+    let l = Piece {
+        a: p.a,
+        b: m,
+        fa: p.fa,
+        fm: flm,
+        fb: p.fm,
+        whole: left,
+    };
+    let r = Piece {
+        a: m,
+        b: p.b,
+        fa: p.fm,
+        fm: frm,
+        fb: p.fb,
+        whole: right,
+    };
+    refine(f, l, tol / 2.0, depth - 1) + refine(f, r, tol / 2.0, depth - 1)
+}
+
+/// The exact mean turning force over one revolution (kg): ∫ T dθ / 2π, split at every kink.
+pub fn mean_turning_force(k: &Kinematics, cyls: &[Cylinder], eta: f64) -> f64 {
+    let corners = turning_corners(k, cyls);
+    integrate_split(|t| turning_force(k, cyls, eta, t), 0.0, 360.0, &corners) / 360.0
+}

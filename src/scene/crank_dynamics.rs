@@ -1,0 +1,498 @@
+//! The crank-dynamics scene (LH II A, C-J; KG XIV B.4): an engine of one or more
+//! double-acting cylinders on one shaft, its indicator diagrams digitised or modelled, and
+//! what to construct from them.
+
+use super::defaults::nice_at_least;
+use super::error::SceneError;
+use super::fields::{optional_positive, Fields};
+use super::{Mechanism, Speed};
+use crate::dynamics::model::{self, Cylinder, Indicator, Kinematics, Side, SteamModel};
+use crate::dynamics::{self, DynamicsDrawing, DynamicsRequest, DynamicsResults, Engine};
+use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
+use serde::{Deserialize, Serialize};
+
+super::header::scene_struct! {
+    /// An engine's dynamics: `"procedure": "crank_dynamics"`.
+    pub struct DynamicsScene {
+        /// The crank drive every cylinder works on (one crank radius for the shaft).
+        pub mechanism: Mechanism,
+        /// How fast the shaft turns.
+        pub speed: Speed,
+        /// The cylinders, in the order of their cranks; the first one's crank at 0°.
+        pub cylinders: Vec<CylinderSpec>,
+        /// Equal divisions of the crank circle (the crank rays), 2 to 3600.
+        pub divisions: usize,
+        /// The physical effects to include; only these are computed.
+        #[serde(default)]
+        pub effects: Option<DynamicsEffects>,
+        /// What the flywheel must achieve.
+        #[serde(default)]
+        pub flywheel: Option<FlywheelSpec>,
+        /// What to construct: `net_pressure`, `turning_force`, `mean_height`, `power`,
+        /// `flywheel`.
+        pub outputs: Vec<DynamicsOutput>,
+        /// Scales; any left out are chosen.
+        #[serde(default)]
+        pub drawing: Option<DynamicsDrawingSpec>,
+    }
+}
+
+/// One double-acting cylinder.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct CylinderSpec {
+    /// Name written in the figure ("right", "HP").
+    pub name: String,
+    /// Bore D (mm).
+    pub bore_mm: f64,
+    /// Piston rod through the crank side (mm).
+    #[serde(default)]
+    pub rod_crank_side_mm: f64,
+    /// Tail rod through the cover side (mm).
+    #[serde(default)]
+    pub rod_cover_side_mm: f64,
+    /// The cylinder's stroke if stated (mm): it must be the mechanism's, one crank radius on
+    /// one shaft.
+    #[serde(default)]
+    pub stroke_mm: Option<f64>,
+    /// How far its crank leads the first cylinder's (degrees; 90 for a locomotive's second
+    /// cylinder, 180 for a compound engine's).
+    #[serde(default)]
+    pub crank_offset_deg: f64,
+    /// Its indicator diagrams.
+    pub indicator: IndicatorSpec,
+    /// The reciprocating masses; used with the effect `inertia`.
+    #[serde(default)]
+    pub masses: Option<MassSpec>,
+}
+
+/// The indicator diagrams of a cylinder: digitised per side, or a steam distribution for
+/// both sides.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub enum IndicatorSpec {
+    /// Digitised diagrams.
+    #[serde(rename = "points")]
+    Points(PointsSpec),
+    /// A modelled steam distribution, the same on both sides.
+    #[serde(rename = "steam")]
+    Steam(SteamSpec),
+}
+
+/// Digitised diagrams of both sides.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct PointsSpec {
+    /// Cover side (Deckelseite).
+    pub cover: SidePoints,
+    /// Crank side (Kurbelseite).
+    pub crank: SidePoints,
+    /// Pressures are gauge (at über), not absolute: 1 at is added (LH A: 1 at abs = 0 at übd).
+    #[serde(default)]
+    pub gauge: bool,
+}
+
+/// One side's diagram as points [x_mm, p_at], x from the dead centre where this side's working
+/// stroke begins, rising to the stroke.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct SidePoints {
+    /// The working stroke (the side's volume grows).
+    pub working: Vec<[f64; 2]>,
+    /// The back stroke (its volume shrinks).
+    pub back: Vec<[f64; 2]>,
+}
+
+/// A steam distribution (LH Abb. 40).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct SteamSpec {
+    /// Admission pressure (at).
+    pub admission_at: f64,
+    /// Cut-off as a fraction of the stroke.
+    pub cutoff: f64,
+    /// Release as a fraction of the stroke (default 0.95).
+    #[serde(default)]
+    pub release: Option<f64>,
+    /// Exponent n of pV^n = const (default 1, Mariotte).
+    #[serde(default)]
+    pub exponent: Option<f64>,
+    /// Back pressure (at).
+    pub back_at: f64,
+    /// Compression begins when this fraction of the stroke is left (default 0).
+    #[serde(default)]
+    pub compression: Option<f64>,
+    /// Clearance volume as a fraction of the swept volume (default 0.05).
+    #[serde(default)]
+    pub clearance: Option<f64>,
+    /// Pressures are gauge (at über): 1 at is added.
+    #[serde(default)]
+    pub gauge: bool,
+}
+
+/// The reciprocating masses.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub enum MassSpec {
+    /// Part weights (kg): G = piston + piston rod + crosshead + others + the share of the
+    /// connecting rod (`effects.rod_mass_share`).
+    #[serde(rename = "weights_kg")]
+    Weights(Weights),
+    /// Radinger's specific weight q (kg per cm² of piston area; LH B.4: 0.28 without, 0.33
+    /// with condensation, 0.41 for combustion engines), on the area of `bore_mm` (default the
+    /// cylinder's own; a compound engine takes the low-pressure cylinder's).
+    #[serde(rename = "radinger")]
+    Radinger {
+        /// q (kg/cm²).
+        q_kg_per_cm2: f64,
+        /// The bore whose area q refers to (mm).
+        #[serde(default)]
+        bore_mm: Option<f64>,
+    },
+}
+
+/// Part weights in kg.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct Weights {
+    /// Piston.
+    pub piston: f64,
+    /// Piston rod.
+    pub piston_rod: f64,
+    /// Crosshead.
+    pub crosshead: f64,
+    /// Connecting rod (its share counts as reciprocating).
+    pub connecting_rod: f64,
+    /// Anything else moving with the piston (a pump plunger).
+    #[serde(default)]
+    pub other: f64,
+}
+
+/// The effects a dynamics scene can include.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct DynamicsEffects {
+    /// Inertia of the reciprocating masses (each cylinder's `masses`).
+    #[serde(default)]
+    pub inertia: bool,
+    /// The share of the connecting rod's weight that reciprocates (default 2/3, LH B.4; KG
+    /// gives 1/2 to 2/3).
+    #[serde(default)]
+    pub rod_mass_share: Option<f64>,
+    /// Mechanical efficiency η scaling the turning force (default 1; KG: 0.85-0.92).
+    #[serde(default)]
+    pub efficiency: Option<f64>,
+    /// Finite rod length (default true).
+    #[serde(default)]
+    pub finite_rod: Option<bool>,
+}
+
+/// The flywheel's task.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct FlywheelSpec {
+    /// Degree of irregularity δ = (ω_max − ω_min)/ω_m (e.g. 1/50).
+    pub irregularity: f64,
+}
+
+/// An output of the dynamics procedure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(rename_all = "snake_case")]
+pub enum DynamicsOutput {
+    /// Net pressure, inertia and resulting curves (LH Abb. 58; KG Abb. 1055).
+    NetPressure,
+    /// Tangential force on every ray and the turning-force diagram (LH Abb. 67; KG Abb. 1064).
+    TurningForce,
+    /// Mean height of the turning-force diagram by every rule (LH G).
+    MeanHeight,
+    /// Indicated power from the mean pressures and from T_m (LH H).
+    Power,
+    /// The flywheel (LH J; KG Abb. 1062).
+    Flywheel,
+}
+
+/// Scales of a dynamics drawing.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct DynamicsDrawingSpec {
+    /// Length scale 1 : n for the stroke and the crank circle.
+    #[serde(default)]
+    pub length_scale: Option<f64>,
+    /// Force scale, kg per mm (LH: 900).
+    #[serde(default)]
+    pub force_scale_kg_per_mm: Option<f64>,
+}
+
+/// A validated dynamics scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DynamicsProblem {
+    /// Title.
+    pub title: String,
+    /// Source.
+    pub source: String,
+    /// The engine.
+    pub engine: Engine,
+    /// Scales.
+    pub drawing: DynamicsDrawing,
+    /// Crank rays.
+    pub divisions: usize,
+    /// What to construct.
+    pub request: DynamicsRequest,
+}
+
+mod validate;
+
+impl DynamicsScene {
+    /// The problem the (validated) scene describes.
+    pub fn problem(&self) -> DynamicsProblem {
+        let r = self.mechanism.radius();
+        let eff = self.effects.unwrap_or_default();
+        let finite = eff.finite_rod.unwrap_or(true);
+        let kinematics = Kinematics {
+            r,
+            lambda: if finite {
+                r / self.mechanism.rod_length()
+            } else {
+                0.0
+            },
+            v: self.speed.crank_pin_speed(r),
+        };
+        let share = eff.rod_mass_share.unwrap_or(2.0 / 3.0);
+        let cylinders = self
+            .cylinders
+            .iter()
+            .map(|c| cylinder(c, eff.inertia, share, 2.0 * r))
+            .collect();
+        let engine = Engine {
+            kinematics,
+            cylinders,
+            efficiency: eff.efficiency.unwrap_or(1.0),
+            irregularity: self.flywheel.map(|f| f.irregularity),
+        };
+        let mut request = DynamicsRequest::default();
+        for o in &self.outputs {
+            match o {
+                DynamicsOutput::NetPressure => request.net_pressure = true,
+                DynamicsOutput::TurningForce => request.turning_force = true,
+                DynamicsOutput::MeanHeight => request.mean_height = true,
+                DynamicsOutput::Power => request.power = true,
+                DynamicsOutput::Flywheel => request.flywheel = true,
+            }
+        }
+        let d = self.drawing.unwrap_or(DynamicsDrawingSpec {
+            length_scale: None,
+            force_scale_kg_per_mm: None,
+        });
+        let fmax = engine
+            .cylinders
+            .iter()
+            .map(|c| largest_force(&engine.kinematics, c))
+            .fold(1.0, f64::max);
+        let drawing = DynamicsDrawing {
+            length_scale: d
+                .length_scale
+                .unwrap_or_else(|| nice_at_least(2.0 * r / 60.0)),
+            force_scale: d
+                .force_scale_kg_per_mm
+                .unwrap_or_else(|| nice_at_least(fmax / 25.0)),
+        };
+        DynamicsProblem {
+            title: self.title.clone(),
+            source: self.source.clone().unwrap_or_default(),
+            engine,
+            drawing,
+            divisions: self.divisions,
+            request,
+        }
+    }
+}
+
+/// The largest force a cylinder's diagrams draw (kg): pressure or inertia.
+fn largest_force(k: &Kinematics, c: &Cylinder) -> f64 {
+    let p = c.cover.area_cm2.max(c.crank.area_cm2)
+        * peak(&c.cover.indicator).max(peak(&c.crank.indicator));
+    p.max(c.mass * k.a() * (1.0 + k.lambda))
+}
+
+/// The largest pressure of a diagram (at), for choosing a scale.
+fn peak(ind: &Indicator) -> f64 {
+    (0..=20)
+        .map(|k| ind.working(k as f64 / 20.0).max(ind.back(k as f64 / 20.0)))
+        .fold(0.0, f64::max)
+}
+
+fn area_cm2(d_mm: f64, rod_mm: f64) -> f64 {
+    std::f64::consts::PI / 4.0 * ((d_mm / 10.0).powi(2) - (rod_mm / 10.0).powi(2))
+}
+
+/// A cylinder in machine units: areas (cm²), absolute pressures, mass (kg·s²/m).
+fn cylinder(c: &CylinderSpec, inertia: bool, share: f64, stroke: f64) -> Cylinder {
+    let (cover, crank) = match &c.indicator {
+        IndicatorSpec::Steam(s) => {
+            let m = Indicator::Steam(steam(s));
+            (m.clone(), m)
+        }
+        IndicatorSpec::Points(p) => (
+            points(&p.cover, p.gauge, stroke),
+            points(&p.crank, p.gauge, stroke),
+        ),
+    };
+    let mass = if inertia {
+        match c.masses {
+            Some(MassSpec::Weights(w)) => {
+                (w.piston + w.piston_rod + w.crosshead + w.other + share * w.connecting_rod)
+                    / model::G
+            }
+            Some(MassSpec::Radinger {
+                q_kg_per_cm2,
+                bore_mm,
+            }) => q_kg_per_cm2 * area_cm2(bore_mm.unwrap_or(c.bore_mm), 0.0) / model::G,
+            None => 0.0,
+        }
+    } else {
+        0.0
+    };
+    Cylinder {
+        name: c.name.clone(),
+        cover: Side {
+            area_cm2: area_cm2(c.bore_mm, c.rod_cover_side_mm),
+            indicator: cover,
+        },
+        crank: Side {
+            area_cm2: area_cm2(c.bore_mm, c.rod_crank_side_mm),
+            indicator: crank,
+        },
+        mass,
+        offset_deg: c.crank_offset_deg,
+    }
+}
+
+fn steam(s: &SteamSpec) -> SteamModel {
+    let add = if s.gauge { 1.0 } else { 0.0 };
+    SteamModel {
+        admission: s.admission_at + add,
+        cutoff: s.cutoff,
+        exponent: s.exponent.unwrap_or(1.0),
+        release: s.release.unwrap_or(0.95),
+        back: s.back_at + add,
+        compression: s.compression.unwrap_or(0.0),
+        clearance: s.clearance.unwrap_or(0.05),
+    }
+}
+
+fn points(s: &SidePoints, gauge: bool, stroke: f64) -> Indicator {
+    let add = if gauge { 1.0 } else { 0.0 };
+    let conv = |v: &Vec<[f64; 2]>| v.iter().map(|p| (p[0] / stroke, p[1] + add)).collect();
+    Indicator::Points {
+        working: conv(&s.working),
+        back: conv(&s.back),
+    }
+}
+
+impl DynamicsProblem {
+    /// Constructs the problem on a fresh board.
+    pub fn construct(
+        &self,
+        recording: bool,
+    ) -> Result<(Board, DynamicsResults), ConstructionError> {
+        let mut board = Board::for_construction(recording);
+        let res = dynamics::construct(
+            &mut board,
+            &self.engine,
+            &self.drawing,
+            self.divisions,
+            &self.request,
+        )?;
+        Ok((board, res))
+    }
+
+    /// Title, source and scale bars.
+    pub fn figure_meta(&self) -> FigureMeta {
+        use crate::fmt::num;
+        let k = &self.engine.kinematics;
+        FigureMeta {
+            title: self.title.clone(),
+            source: super::fields::source_line(
+                &self.source,
+                &format!(
+                    "R = {} mm, R/L = {}, v = {} m/s, {} cylinder(s)",
+                    num(k.r, 3),
+                    num(k.lambda, 4),
+                    num(k.v, 4),
+                    self.engine.cylinders.len()
+                ),
+            ),
+            scales: vec![
+                ScaleBar::length(self.drawing.length_scale, "mm"),
+                ScaleBar::force(self.drawing.force_scale),
+            ],
+        }
+    }
+}
+
+impl super::Procedure for DynamicsScene {
+    const NAME: &'static str = "crank_dynamics";
+    const ABOUT: &'static str = "an engine's dynamics: net pressure, inertia, turning force, mean heights, power, flywheel (LH II A, C-J; KG XIV B.4)";
+    const OUTPUTS: &'static [&'static str] = &[
+        "net_pressure",
+        "turning_force",
+        "mean_height",
+        "power",
+        "flywheel",
+    ];
+    const GEOMETRY_FIELD: &'static str = "mechanism";
+
+    fn sheet_extent(p: &DynamicsProblem) -> (f64, &'static str) {
+        let k = &p.engine.kinematics;
+        let l = k.rod().unwrap_or(5.0 * k.r);
+        let length = (4.0 * k.r + l) / p.drawing.length_scale * 2.0;
+        let force = p
+            .engine
+            .cylinders
+            .iter()
+            .map(|c| 3.0 * largest_force(k, c))
+            .sum::<f64>()
+            / p.drawing.force_scale;
+        super::fields::larger(length, force)
+    }
+    type Problem = DynamicsProblem;
+    type Results = DynamicsResults;
+
+    fn validate(&self, origin: &str) -> Result<(), SceneError> {
+        let f = Fields { origin };
+        self.check(f)?;
+        if let Some(d) = &self.drawing {
+            optional_positive(
+                origin,
+                &[
+                    ("drawing.length_scale", d.length_scale),
+                    ("drawing.force_scale_kg_per_mm", d.force_scale_kg_per_mm),
+                ],
+            )?;
+        }
+        Ok(())
+    }
+    fn problem(&self) -> DynamicsProblem {
+        DynamicsScene::problem(self)
+    }
+    fn construct(
+        problem: &DynamicsProblem,
+        recording: bool,
+    ) -> Result<(Board, DynamicsResults), ConstructionError> {
+        problem.construct(recording)
+    }
+    fn figure_meta(problem: &DynamicsProblem) -> FigureMeta {
+        problem.figure_meta()
+    }
+}

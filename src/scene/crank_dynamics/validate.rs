@@ -1,0 +1,280 @@
+//! The checks of a dynamics scene's values; every error names its field.
+
+use super::super::fields::Fields;
+use super::super::SceneError;
+use super::{CylinderSpec, DynamicsScene, IndicatorSpec, MassSpec, SidePoints, SteamSpec};
+use crate::kernel::tolerance::MAX_DIVISIONS;
+
+/// At most this many cylinders on one shaft.
+const MAX_CYLINDERS: usize = 64;
+/// At most this many digitised points per curve.
+const MAX_POINTS: usize = 100_000;
+
+impl DynamicsScene {
+    pub(super) fn check(&self, f: Fields) -> Result<(), SceneError> {
+        let r = self.mechanism.check(f)?;
+        self.mechanism.check_rod(f, r)?;
+        self.speed.check(f)?;
+        if self.divisions < 2 || self.divisions > MAX_DIVISIONS {
+            return Err(f.bad(
+                "divisions",
+                format!(
+                    "{} divisions: give between 2 and {MAX_DIVISIONS}",
+                    self.divisions
+                ),
+            ));
+        }
+        if self.outputs.is_empty() {
+            return Err(f.bad("outputs", "ask for at least one output".into()));
+        }
+        if self.cylinders.is_empty() || self.cylinders.len() > MAX_CYLINDERS {
+            return Err(f.bad(
+                "cylinders",
+                format!(
+                    "{} cylinders: give 1 to {MAX_CYLINDERS}",
+                    self.cylinders.len()
+                ),
+            ));
+        }
+        let inertia = self.check_effects(f)?;
+        for (i, c) in self.cylinders.iter().enumerate() {
+            check_cylinder(f, &format!("cylinders[{i}]"), c, 2.0 * r, inertia)?;
+        }
+        if let Some(fw) = &self.flywheel {
+            if !(fw.irregularity.is_finite() && fw.irregularity > 0.0 && fw.irregularity < 1.0) {
+                return Err(f.bad(
+                    "flywheel.irregularity",
+                    format!("δ = {}: give 0 < δ < 1 (e.g. 1/50 = 0.02)", fw.irregularity),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The effects: a share in [0, 1], 0 < η ≤ 1; whether inertia is on.
+    fn check_effects(&self, f: Fields) -> Result<bool, SceneError> {
+        let Some(e) = &self.effects else {
+            return Ok(false);
+        };
+        if let Some(s) = e.rod_mass_share {
+            if !(s.is_finite() && (0.0..=1.0).contains(&s)) {
+                return Err(f.bad(
+                    "effects.rod_mass_share",
+                    format!("{s}: give a share between 0 and 1 (LH: 2/3)"),
+                ));
+            }
+        }
+        if let Some(eta) = e.efficiency {
+            if !(eta.is_finite() && eta > 0.0 && eta <= 1.0) {
+                return Err(f.bad("effects.efficiency", format!("η = {eta}: give 0 < η ≤ 1")));
+            }
+        }
+        Ok(e.inertia)
+    }
+}
+
+fn check_cylinder(
+    f: Fields,
+    at: &str,
+    c: &CylinderSpec,
+    stroke: f64,
+    inertia: bool,
+) -> Result<(), SceneError> {
+    f.positive(&format!("{at}.bore_mm"), c.bore_mm)?;
+    for (name, d) in [
+        ("rod_crank_side_mm", c.rod_crank_side_mm),
+        ("rod_cover_side_mm", c.rod_cover_side_mm),
+    ] {
+        if !(d.is_finite() && d >= 0.0 && d < c.bore_mm) {
+            return Err(f.bad(
+                &format!("{at}.{name}"),
+                format!("must lie in [0, bore) = [0, {}), got {d}", c.bore_mm),
+            ));
+        }
+    }
+    f.finite(&format!("{at}.crank_offset_deg"), c.crank_offset_deg)?;
+    if let Some(s) = c.stroke_mm {
+        if (s - stroke).abs() > 1e-9 * stroke {
+            return Err(f.bad(
+                &format!("{at}.stroke_mm"),
+                format!(
+                    "{s} mm against the shaft's stroke {stroke} mm: cylinders of different \
+                     stroke on one shaft need a linkage this procedure does not model"
+                ),
+            ));
+        }
+    }
+    match &c.indicator {
+        IndicatorSpec::Steam(s) => check_steam(f, &format!("{at}.indicator.steam"), s)?,
+        IndicatorSpec::Points(p) => {
+            for (side, sp) in [("cover", &p.cover), ("crank", &p.crank)] {
+                let base = format!("{at}.indicator.points.{side}");
+                check_points(f, &format!("{base}.working"), &sp.working, stroke, p.gauge)?;
+                check_points(f, &format!("{base}.back"), &sp.back, stroke, p.gauge)?;
+                let _: &SidePoints = sp;
+            }
+        }
+    }
+    check_masses(f, at, c, inertia)
+}
+
+fn check_masses(f: Fields, at: &str, c: &CylinderSpec, inertia: bool) -> Result<(), SceneError> {
+    match (&c.masses, inertia) {
+        (None, true) => Err(f.bad(
+            &format!("{at}.masses"),
+            "missing: the effect `inertia` needs the reciprocating masses (weights_kg or \
+             radinger)"
+                .into(),
+        )),
+        (
+            Some(MassSpec::Radinger {
+                q_kg_per_cm2,
+                bore_mm,
+            }),
+            _,
+        ) => {
+            if !(q_kg_per_cm2.is_finite() && *q_kg_per_cm2 > 0.0) {
+                return Err(f.bad(
+                    &format!("{at}.masses.radinger.q_kg_per_cm2"),
+                    format!("q = {q_kg_per_cm2}: must be positive (LH: 0.28, 0.33, 0.41)"),
+                ));
+            }
+            if let Some(d) = bore_mm {
+                f.positive(&format!("{at}.masses.radinger.bore_mm"), *d)?;
+            }
+            Ok(())
+        }
+        (Some(MassSpec::Weights(w)), _) => {
+            for (name, v) in [
+                ("piston", w.piston),
+                ("piston_rod", w.piston_rod),
+                ("crosshead", w.crosshead),
+                ("connecting_rod", w.connecting_rod),
+                ("other", w.other),
+            ] {
+                if !(v.is_finite() && v >= 0.0) {
+                    return Err(f.bad(
+                        &format!("{at}.masses.weights_kg.{name}"),
+                        format!("a weight must be zero or positive, got {v}"),
+                    ));
+                }
+            }
+            Ok(())
+        }
+        (None, false) => Ok(()),
+    }
+}
+
+fn check_steam(f: Fields, at: &str, s: &SteamSpec) -> Result<(), SceneError> {
+    let add = if s.gauge { 1.0 } else { 0.0 };
+    for (name, p) in [("admission_at", s.admission_at), ("back_at", s.back_at)] {
+        if !(p.is_finite() && p + add > 0.0) {
+            return Err(f.bad(
+                &format!("{at}.{name}"),
+                format!(
+                    "{p} at{}: a pressure must lie above absolute zero",
+                    if s.gauge { " gauge" } else { "" }
+                ),
+            ));
+        }
+    }
+    if s.admission_at < s.back_at {
+        return Err(f.bad(
+            &format!("{at}.admission_at"),
+            "the admission pressure must not lie below the back pressure".into(),
+        ));
+    }
+    let release = s.release.unwrap_or(0.95);
+    if !(s.cutoff.is_finite() && s.cutoff > 0.0 && s.cutoff <= 1.0) {
+        return Err(f.bad(
+            &format!("{at}.cutoff"),
+            format!(
+                "cut-off {}: give a fraction of the stroke, 0 < ε ≤ 1",
+                s.cutoff
+            ),
+        ));
+    }
+    if !(release.is_finite() && release >= s.cutoff && release <= 1.0) {
+        return Err(f.bad(
+            &format!("{at}.release"),
+            format!("release {release}: give cut-off ≤ release ≤ 1"),
+        ));
+    }
+    let n = s.exponent.unwrap_or(1.0);
+    if !(n.is_finite() && n > 0.0 && n <= 3.0) {
+        return Err(f.bad(
+            &format!("{at}.exponent"),
+            format!("n = {n}: give 0 < n ≤ 3"),
+        ));
+    }
+    let comp = s.compression.unwrap_or(0.0);
+    if !(comp.is_finite() && (0.0..1.0).contains(&comp)) {
+        return Err(f.bad(
+            &format!("{at}.compression"),
+            format!("{comp}: give a fraction of the stroke, 0 ≤ c < 1"),
+        ));
+    }
+    let clear = s.clearance.unwrap_or(0.05);
+    if !(clear.is_finite() && (0.0..=1.0).contains(&clear)) || (comp > 0.0 && clear <= 0.0) {
+        return Err(f.bad(
+            &format!("{at}.clearance"),
+            format!(
+                "{clear}: give 0 ≤ clearance ≤ 1, and a positive clearance when steam is \
+                 compressed (else the compression line runs to infinity)"
+            ),
+        ));
+    }
+    Ok(())
+}
+
+fn check_points(
+    f: Fields,
+    at: &str,
+    pts: &[[f64; 2]],
+    stroke: f64,
+    gauge: bool,
+) -> Result<(), SceneError> {
+    if pts.len() < 2 || pts.len() > MAX_POINTS {
+        return Err(f.bad(
+            at,
+            format!(
+                "{} points: give 2 to {MAX_POINTS}, from x = 0 to the stroke",
+                pts.len()
+            ),
+        ));
+    }
+    let add = if gauge { 1.0 } else { 0.0 };
+    let slack = 1e-9 * stroke;
+    for (k, p) in pts.iter().enumerate() {
+        let [x, pr] = *p;
+        if !(x.is_finite() && pr.is_finite()) {
+            return Err(f.bad(&format!("{at}[{k}]"), "must be finite numbers".into()));
+        }
+        if pr + add < 0.0 {
+            return Err(f.bad(
+                &format!("{at}[{k}]"),
+                format!(
+                    "pressure {pr} at{} lies below absolute zero",
+                    if gauge { " gauge" } else { "" }
+                ),
+            ));
+        }
+        if k > 0 && x < pts[k - 1][0] {
+            return Err(f.bad(
+                &format!("{at}[{k}]"),
+                format!(
+                    "x = {x} mm comes after x = {} mm: give the points in order along the stroke",
+                    pts[k - 1][0]
+                ),
+            ));
+        }
+    }
+    let (first, last) = (pts[0][0], pts[pts.len() - 1][0]);
+    if first.abs() > slack || (last - stroke).abs() > slack {
+        return Err(f.bad(
+            at,
+            format!("the points run from x = {first} to {last} mm: give the whole stroke, 0 to {stroke} mm"),
+        ));
+    }
+    Ok(())
+}
