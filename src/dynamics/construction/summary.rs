@@ -145,35 +145,51 @@ fn mean_heights(
         t_m: sq.g,
         error: 0.0,
     });
-    let ymax = pts.iter().fold(0.0f64, |m, p| m.max(p.1.abs()));
-    let depth = 0.5 * length + ymax;
-    let planimeter = Planimeter {
-        pole: (0.5 * length, -depth),
-        pole_arm: depth + 0.5 * length,
-        tracer_arm: depth + 0.5 * length,
-        wheel: 0.4 * (depth + 0.5 * length),
-    };
-    if let Some(area) = planimeter.trace(&closed, TRACE_STEP_MM) {
-        let pl = b.tally(to_tm(-area), "kg", Label::NONE, &[], N_MEAN);
-        let bound = PLANIMETER_RESOLUTION * length * 2.0 * ymax;
-        b.check_within(
-            &pl,
-            "T_m by the polar planimeter (simulated)",
-            "kg",
-            "LH G.d, Abb. 71",
-            exact.abs(),
-            || (to_tm(polygon), to_tm(bound)),
-        );
-        out.push(MeanHeight {
-            rule: "polar planimeter".into(),
-            t_m: pl.g,
-            error: 0.0,
-        });
+    if let Some(pl) = planimeter(b, &pts, &closed, polygon, exact, &to_tm) {
+        out.push(pl);
     }
     for m in &mut out {
         m.error = m.t_m - exact;
     }
     out
+}
+
+/// T_m by a simulated polar planimeter traced round the drawn outline (pole below the
+/// diagram, arms long enough to reach every point), held to the polygon's area within the
+/// instrument's resolution.
+fn planimeter(
+    b: &mut Board,
+    pts: &[(f64, f64)],
+    closed: &[(f64, f64)],
+    polygon: f64,
+    exact: f64,
+    to_tm: &dyn Fn(f64) -> f64,
+) -> Option<MeanHeight> {
+    let length = pts.last().map_or(0.0, |p| p.0);
+    let ymax = pts.iter().fold(0.0f64, |m, p| m.max(p.1.abs()));
+    let depth = 0.5 * length + ymax;
+    let instrument = Planimeter {
+        pole: (0.5 * length, -depth),
+        pole_arm: depth + 0.5 * length,
+        tracer_arm: depth + 0.5 * length,
+        wheel: 0.4 * (depth + 0.5 * length),
+    };
+    let area = instrument.trace(closed, TRACE_STEP_MM)?;
+    let pl = b.tally(to_tm(-area), "kg", Label::NONE, &[], N_MEAN);
+    let bound = PLANIMETER_RESOLUTION * length * 2.0 * ymax;
+    b.check_within(
+        &pl,
+        "T_m by the polar planimeter (simulated)",
+        "kg",
+        "LH G.d, Abb. 71",
+        exact.abs(),
+        || (to_tm(polygon), to_tm(bound)),
+    );
+    Some(MeanHeight {
+        rule: "polar planimeter".into(),
+        t_m: pl.g,
+        error: 0.0,
+    })
 }
 
 fn power(b: &mut Board, e: &Engine, res: &DynamicsResults) -> Power {

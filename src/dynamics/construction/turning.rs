@@ -4,7 +4,7 @@
 
 use super::super::model;
 use super::Builder;
-use crate::kernel::{Point, Vector};
+use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{note, ConstructionError, Label, Note, Role, Topic, H};
 
 const N_AXIS_O: Note = note(
@@ -72,9 +72,6 @@ impl Builder<'_> {
     /// The diagram: the sum of the cylinders' T at every shaft angle and at 360°, read off and
     /// checked against [`model::turning_force`]. Returns (θ, T) per shaft angle.
     pub(super) fn turning_diagram(&mut self) -> Result<Vec<(f64, f64)>, ConstructionError> {
-        let ts: Vec<Vec<f64>> = (0..self.e.cylinders.len())
-            .map(|c| self.tangential[c].clone().unwrap_or_default())
-            .collect();
         let o = self.b.point(
             self.turning_origin(),
             Label::plain("0"),
@@ -87,54 +84,78 @@ impl Builder<'_> {
         let up = self
             .b
             .perpendicular(&axis, &o, Label::NONE, Role::Axis, N_ORD);
+        let frame = TurningFrame { o, axis, up };
         let n = self.thetas.len();
         let mut pts: Vec<H<Point>> = Vec::with_capacity(n + 1);
         let mut out = Vec::with_capacity(n);
         for k in 0..=n {
-            let kk = k % n;
-            let theta = if k == n { 360.0 } else { self.thetas[kk] };
-            self.b
-                .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
-            let arc = self.r_mm * theta.to_radians();
-            let a = self
-                .b
-                .lay_off(&o, &axis, arc, Label::NONE, Role::Construction, N_ARC)?;
-            let ord = self
-                .b
-                .perpendicular(&axis, &a, Label::NONE, Role::Construction, N_ORD);
-            let mut end = a;
-            for t in &ts {
-                let len = self.e.efficiency * t[kk] / self.dr.force_scale;
-                end = self
-                    .b
-                    .lay_off(&end, &ord, len, Label::NONE, Role::Force, N_T_EACH)?;
-            }
-            let sum = self
-                .b
-                .measure(&a, &end, &up, self.force_scale(), Label::NONE, N_T_SUM);
-            let (kin, cyls, eta) = (self.e.kinematics, &self.e.cylinders, self.e.efficiency);
-            let reference = eta
-                * cyls
-                    .iter()
-                    .map(|c| super::max_abs_force(&kin, c))
-                    .sum::<f64>();
-            self.b.check(
-                &sum,
-                "turning force Σ η·T",
-                "kg",
-                "LH F; KG (303)",
-                reference,
-                || model::turning_force(&kin, cyls, eta, theta),
-            );
+            let (end, sum) = self.turning_ordinate(&frame, k)?;
             pts.push(end);
             if k < n {
-                out.push((theta, sum.g));
+                out.push((self.thetas[k], sum));
             }
         }
         self.b.clear_context();
         self.b
             .curve(&pts, false, Label::plain("T"), Role::Result, N_CURVE);
-        // The rectangle of equal area: the mean resistance over the developed circle.
+        self.mean_line(&frame, &out)?;
+        Ok(out)
+    }
+
+    /// The ordinate at the k-th shaft angle (k = n is 360°): every cylinder's η·T laid off on
+    /// top of the others, the sum read off and checked.
+    fn turning_ordinate(
+        &mut self,
+        fr: &TurningFrame,
+        k: usize,
+    ) -> Result<(H<Point>, f64), ConstructionError> {
+        let n = self.thetas.len();
+        let kk = k % n;
+        let theta = if k == n { 360.0 } else { self.thetas[kk] };
+        self.b
+            .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+        let arc = self.r_mm * theta.to_radians();
+        let a = self
+            .b
+            .lay_off(&fr.o, &fr.axis, arc, Label::NONE, Role::Construction, N_ARC)?;
+        let ord = self
+            .b
+            .perpendicular(&fr.axis, &a, Label::NONE, Role::Construction, N_ORD);
+        let mut end = a;
+        for c in 0..self.e.cylinders.len() {
+            let t = self.tangential[c].as_ref().map_or(0.0, |t| t[kk]);
+            let len = self.e.efficiency * t / self.dr.force_scale;
+            end = self
+                .b
+                .lay_off(&end, &ord, len, Label::NONE, Role::Force, N_T_EACH)?;
+        }
+        let sum = self
+            .b
+            .measure(&a, &end, &fr.up, self.force_scale(), Label::NONE, N_T_SUM);
+        let (kin, cyls, eta) = (self.e.kinematics, &self.e.cylinders, self.e.efficiency);
+        let reference = eta
+            * cyls
+                .iter()
+                .map(|c| super::max_abs_force(&kin, c))
+                .sum::<f64>();
+        self.b.check(
+            &sum,
+            "turning force Σ η·T",
+            "kg",
+            "LH F; KG (303)",
+            reference,
+            || model::turning_force(&kin, cyls, eta, theta),
+        );
+        Ok((end, sum.g))
+    }
+
+    /// The rectangle of equal area: the mean resistance over the developed circle, at the
+    /// trapezoid mean of the drawn ordinates.
+    fn mean_line(
+        &mut self,
+        fr: &TurningFrame,
+        out: &[(f64, f64)],
+    ) -> Result<(), ConstructionError> {
         let ords: Vec<f64> = out
             .iter()
             .map(|p| p.1)
@@ -142,8 +163,8 @@ impl Builder<'_> {
             .collect();
         let mean = super::super::rules::trapezoid(&ords);
         let m = self.b.lay_off(
-            &o,
-            &up,
+            &fr.o,
+            &fr.up,
             mean / self.dr.force_scale,
             Label::plain("T_m"),
             Role::Construction,
@@ -151,8 +172,8 @@ impl Builder<'_> {
         )?;
         let line = self
             .b
-            .parallel(&axis, &m, Label::NONE, Role::Auxiliary, N_MEAN_LINE);
-        let end = self.b.lay_off(
+            .parallel(&fr.axis, &m, Label::NONE, Role::Auxiliary, N_MEAN_LINE);
+        self.b.lay_off(
             &m,
             &line,
             self.r_mm * std::f64::consts::TAU,
@@ -160,7 +181,13 @@ impl Builder<'_> {
             Role::Auxiliary,
             N_MEAN_LINE,
         )?;
-        let _ = end;
-        Ok(out)
+        Ok(())
     }
+}
+
+/// The axis of the developed crank circle, its start and its ordinate direction.
+struct TurningFrame {
+    o: H<Point>,
+    axis: H<Line>,
+    up: H<Line>,
 }
