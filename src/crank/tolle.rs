@@ -20,6 +20,10 @@ fn n(caption: &'static str, term: &'static str, book: &'static str) -> Note {
     crate::protocol::note(caption, Some(term), book, Topic::Acceleration)
 }
 
+fn nt(topic: Topic, caption: &'static str, term: &'static str, book: &'static str) -> Note {
+    crate::protocol::note(caption, Some(term), book, topic)
+}
+
 /// The axis of a Tolle diagram under the stroke: its middle O, the dead-centre ends and the
 /// ordinate lines there and at C (shared by the outstroke and return curves).
 #[derive(Debug, Clone, Copy)]
@@ -34,8 +38,16 @@ pub(crate) struct TolleAxis {
     pub ends: [H<Point>; 2],
     /// The ordinate lines at the two ends.
     pub ordinates: [H<Line>; 2],
-    /// C, at OC = λr from O towards the outer dead centre, and the ordinate through it.
-    pub c: (H<Point>, H<Line>),
+}
+
+/// C, at OC = λr from O towards the outer dead centre, and the ordinate through it: where
+/// the tangents of both curves meet below or above.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct TolleC {
+    /// The point C on the axis.
+    pub c: H<Point>,
+    /// The ordinate through C.
+    pub ord: H<Line>,
 }
 
 /// One curve: T, D, T₁ (sheet points) and its sense (+1: the outstroke as the books draw it,
@@ -47,18 +59,20 @@ pub(crate) struct TolleCurve {
     pub t1: H<Point>,
 }
 
-/// Lays out the axis with its middle at `middle` (sheet), half-stroke `half` mm, and C at λ·half.
+/// Lays out the axis with its middle at `middle` (sheet) and the dead centres at `half` mm
+/// either side, under `topic` (the acceleration diagram, or a net-pressure diagram).
 pub(crate) fn axis(
     b: &mut Board,
     middle: Point,
     half: f64,
-    lambda: f64,
+    topic: Topic,
 ) -> Result<TolleAxis, ConstructionError> {
     let o = b.point(
         middle,
         Label::plain("O"),
         Role::Given,
-        n(
+        nt(
+            topic,
             "middle of the stroke on the diagram axis",
             "Hubmitte",
             "LH Abb. 55",
@@ -69,7 +83,8 @@ pub(crate) fn axis(
         Vector::new(1.0, 0.0),
         Label::NONE,
         Role::Axis,
-        n(
+        nt(
+            topic,
             "diagram axis: the piston path laid out",
             "Abszissenachse",
             "LH Abb. 55",
@@ -80,12 +95,33 @@ pub(crate) fn axis(
         &o,
         Label::NONE,
         Role::Axis,
-        n("ordinate line through O", "Mittelsenkrechte", "LH Abb. 55"),
+        nt(
+            topic,
+            "ordinate line through O",
+            "Mittelsenkrechte",
+            "LH Abb. 55",
+        ),
     );
-    let (ends, ordinates) = ends(b, &o, &axis, half)?;
+    let (ends, ordinates) = ends(b, &o, &axis, half, topic)?;
+    Ok(TolleAxis {
+        o,
+        axis,
+        vertical,
+        ends,
+        ordinates,
+    })
+}
+
+/// C at OC = λ·half from O towards the outer dead centre, with its ordinate (Tolle).
+pub(crate) fn point_c(
+    b: &mut Board,
+    ax: &TolleAxis,
+    half: f64,
+    lambda: f64,
+) -> Result<TolleC, ConstructionError> {
     let c = b.lay_off(
-        &o,
-        &axis,
+        &ax.o,
+        &ax.axis,
         lambda * half,
         Label::plain("C"),
         Role::Construction,
@@ -95,34 +131,35 @@ pub(crate) fn axis(
             "LH B.3, Abb. 55",
         ),
     )?;
-    let c_ord = b.perpendicular(
-        &axis,
+    let ord = b.perpendicular(
+        &ax.axis,
         &c,
         Label::NONE,
         Role::Construction,
         n("ordinate through C", "Lot in C", "LH Abb. 55"),
     );
-    Ok(TolleAxis {
-        o,
-        axis,
-        vertical,
-        ends,
-        ordinates,
-        c: (c, c_ord),
-    })
+    Ok(TolleC { c, ord })
 }
 
 /// The two dead centres on the axis and the ordinate lines through them.
 type Ends = ([H<Point>; 2], [H<Line>; 2]);
 
 /// The dead centres at half a stroke either side of O and the ordinate lines through them.
-fn ends(b: &mut Board, o: &H<Point>, axis: &H<Line>, half: f64) -> Result<Ends, ConstructionError> {
-    let ends_note = n(
+fn ends(
+    b: &mut Board,
+    o: &H<Point>,
+    axis: &H<Line>,
+    half: f64,
+    topic: Topic,
+) -> Result<Ends, ConstructionError> {
+    let ends_note = nt(
+        topic,
         "the dead centres at half a stroke from O",
         "Totpunkte",
         "LH Abb. 55",
     );
-    let ord_note = n(
+    let ord_note = nt(
+        topic,
         "ordinate at the dead centre",
         "Totpunktordinate",
         "LH Abb. 55",
@@ -150,6 +187,7 @@ fn ends(b: &mut Board, o: &H<Point>, axis: &H<Line>, half: f64) -> Result<Ends, 
 pub(crate) fn curve(
     b: &mut Board,
     ax: &TolleAxis,
+    c: &TolleC,
     a_mm: f64,
     lambda: f64,
     sense: f64,
@@ -180,8 +218,8 @@ pub(crate) fn curve(
         ),
     )?;
     let d = b.lay_off(
-        &ax.c.0,
-        &ax.c.1,
+        &c.c,
+        &c.ord,
         -sense * 3.0 * lambda * a_mm,
         Label::plain("D"),
         Role::Construction,

@@ -183,12 +183,13 @@ impl Builder<'_> {
             let k = self.e.kinematics;
             let middle = Point::new(0.0, -(c as f64) * self.row_height);
             self.b.clear_context();
-            let axis = tolle::axis(self.b, middle, self.r_mm, k.lambda)?;
+            let axis = tolle::axis(self.b, middle, self.r_mm, Topic::Forces)?;
             let mass = self.cyl(c).mass;
             let curves = if mass > 0.0 {
                 let a_mm = mass * k.a() / self.dr.force_scale;
-                let (out, _) = tolle::curve(self.b, &axis, a_mm, k.lambda, 1.0, "B₀")?;
-                let (ret, _) = tolle::curve(self.b, &axis, a_mm, k.lambda, -1.0, "B'₀")?;
+                let cp = tolle::point_c(self.b, &axis, self.r_mm, k.lambda)?;
+                let (out, _) = tolle::curve(self.b, &axis, &cp, a_mm, k.lambda, 1.0, "B₀")?;
+                let (ret, _) = tolle::curve(self.b, &axis, &cp, a_mm, k.lambda, -1.0, "B'₀")?;
                 for cv in [out, ret] {
                     let pts = tolle::envelope(self.b, &cv, 10);
                     if pts.len() >= 2 {

@@ -163,9 +163,11 @@ impl Engine {
         self.cylinders
             .iter()
             .map(|c| {
-                let work = c.cover.area_cm2 * c.cover.indicator.mean_pressure()
-                    + c.crank.area_cm2 * c.crank.indicator.mean_pressure();
-                self.efficiency * work * s * n / (PS * 60.0)
+                let sides = [
+                    (c.cover.area_cm2, c.cover.indicator.mean_pressure()),
+                    (c.crank.area_cm2, c.crank.indicator.mean_pressure()),
+                ];
+                self.efficiency * model::indicated_power(sides, s, n)
             })
             .collect()
     }

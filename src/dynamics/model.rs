@@ -136,6 +136,43 @@ impl Indicator {
     }
 }
 
+/// An ordinate `a` (mm) drawn with the spring scale `f` (mm per at), redrawn with the spring
+/// scale `f_new`: `a' = a · f'/f` (LH Gl. 15; 13.5 · 2.5/1.5 = 22.5 mm).
+pub fn respring(a: f64, f: f64, f_new: f64) -> f64 {
+    a * f_new / f
+}
+
+/// The reduction factor `R = F_w/(f · k)` turning an indicator ordinate (mm at the spring
+/// scale f, mm per at) into a piston-force ordinate at the force scale k (kg per mm)
+/// (LH Gl. 18-19).
+///
+/// ```
+/// use graphostatik::dynamics::model::{area_cm2, reduction_factor};
+/// // LH A: the locomotive's crank side, D = 540, rod 90 mm, f = 1.5 mm/at, k = 900 kg/mm.
+/// let r_k = reduction_factor(area_cm2(540.0, 90.0), 1.5, 900.0);
+/// assert!((r_k - 1.65).abs() < 0.005);
+/// ```
+pub fn reduction_factor(area_cm2: f64, f: f64, k: f64) -> f64 {
+    area_cm2 / (f * k)
+}
+
+/// The effective piston area `π/4 (D² − d²)` (cm²) for a bore and a rod through the side (mm).
+pub fn area_cm2(bore_mm: f64, rod_mm: f64) -> f64 {
+    std::f64::consts::PI / 4.0 * ((bore_mm / 10.0).powi(2) - (rod_mm / 10.0).powi(2))
+}
+
+/// Indicated power of a double-acting cylinder (PS, LH Gl. 68):
+/// `(F_D p_m^D + F_K p_m^K) · s · n / (75 · 60)`, areas in cm², p_m in at, s in m, n per min.
+pub fn indicated_power(sides: [(f64, f64); 2], s_m: f64, n: f64) -> f64 {
+    let work: f64 = sides.iter().map(|(f, p)| f * p).sum();
+    work * s_m * n / (75.0 * 60.0)
+}
+
+/// Power from the mean turning force (PS, LH Gl. 69): `T_m · v / 75`.
+pub fn power_from_turning(t_m: f64, v: f64) -> f64 {
+    t_m * v / 75.0
+}
+
 /// One side of a double-acting cylinder.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Side {
@@ -274,8 +311,10 @@ pub fn crank_angles_at(k: &Kinematics, x: f64) -> [f64; 2] {
     [t, 360.0 - t]
 }
 
-/// ∫ f over [a, b], split at the interior `corners`, each piece by adaptive Simpson to
-/// 1e-13 of its scale.
+/// ∫ f over [a, b], split at the interior `corners`, each piece by adaptive Simpson to an
+/// absolute tolerance of 1e-13 of ∫|f| over the whole range, shared out by width: a piece
+/// where f is tiny (a sliver at a dead centre) is not refined below the rounding of the
+/// values around it.
 pub fn integrate_split(f: impl Fn(f64) -> f64, a: f64, b: f64, corners: &[f64]) -> f64 {
     let mut cuts: Vec<f64> = corners
         .iter()
@@ -287,9 +326,16 @@ pub fn integrate_split(f: impl Fn(f64) -> f64, a: f64, b: f64, corners: &[f64]) 
     let mut edges = vec![a];
     edges.extend(cuts);
     edges.push(b);
+    const PROBES: usize = 64;
+    let scale = (0..PROBES)
+        .map(|k| f(a + (b - a) * (k as f64 + 0.5) / PROBES as f64).abs())
+        .sum::<f64>()
+        / PROBES as f64
+        * (b - a);
+    let per_width = 1e-13 * scale.max(f64::MIN_POSITIVE) / (b - a);
     edges
         .windows(2)
-        .map(|w| adaptive_simpson(&f, w[0], w[1], 1e-13, 40))
+        .map(|w| adaptive_simpson(&f, w[0], w[1], per_width * (w[1] - w[0]), 40))
         .sum()
 }
 
@@ -308,10 +354,9 @@ struct Piece {
     whole: f64,
 }
 
-fn adaptive_simpson(f: &impl Fn(f64) -> f64, a: f64, b: f64, rel: f64, depth: u32) -> f64 {
+fn adaptive_simpson(f: &impl Fn(f64) -> f64, a: f64, b: f64, tol: f64, depth: u32) -> f64 {
     let (fa, fm, fb) = (f(a), f(0.5 * (a + b)), f(b));
     let whole = simpson(fa, fm, fb, b - a);
-    let scale = (fa.abs() + fm.abs() + fb.abs()).max(f64::MIN_POSITIVE) * (b - a);
     let piece = Piece {
         a,
         b,
@@ -320,7 +365,7 @@ fn adaptive_simpson(f: &impl Fn(f64) -> f64, a: f64, b: f64, rel: f64, depth: u3
         fb,
         whole,
     };
-    refine(f, piece, rel * scale, depth)
+    refine(f, piece, tol, depth)
 }
 
 fn refine(f: &impl Fn(f64) -> f64, p: Piece, tol: f64, depth: u32) -> f64 {
@@ -330,7 +375,9 @@ fn refine(f: &impl Fn(f64) -> f64, p: Piece, tol: f64, depth: u32) -> f64 {
     let right = simpson(p.fm, frm, p.fb, p.b - m);
     let diff = left + right - p.whole;
     // A non-finite value cannot converge: stop rather than split it 2^depth times.
-    if depth == 0 || diff.abs() <= 15.0 * tol || !diff.is_finite() {
+    // Below the rounding of the sum itself no split can help.
+    let floor = 64.0 * f64::EPSILON * (left.abs() + right.abs());
+    if depth == 0 || diff.abs() <= 15.0 * tol.max(floor) || !diff.is_finite() {
         return left + right + diff / 15.0;
     }
     let l = Piece {

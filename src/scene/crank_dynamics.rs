@@ -6,7 +6,7 @@ use super::defaults::nice_at_least;
 use super::error::SceneError;
 use super::fields::{optional_positive, Fields};
 use super::{Mechanism, Speed};
-use crate::dynamics::model::{self, Cylinder, Indicator, Kinematics, Side, SteamModel};
+use crate::dynamics::model::{self, area_cm2, Cylinder, Indicator, Kinematics, Side, SteamModel};
 use crate::dynamics::{self, DynamicsDrawing, DynamicsRequest, DynamicsResults, Engine};
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use serde::{Deserialize, Serialize};
@@ -330,10 +330,6 @@ fn peak(ind: &Indicator) -> f64 {
     (0..=20)
         .map(|k| ind.working(k as f64 / 20.0).max(ind.back(k as f64 / 20.0)))
         .fold(0.0, f64::max)
-}
-
-fn area_cm2(d_mm: f64, rod_mm: f64) -> f64 {
-    std::f64::consts::PI / 4.0 * ((d_mm / 10.0).powi(2) - (rod_mm / 10.0).powi(2))
 }
 
 /// A cylinder in machine units: areas (cm²), absolute pressures, mass (kg·s²/m).

@@ -31,10 +31,16 @@ impl Builder<'_> {
             let a_mm = self.d.v2_over_r() / self.scales.acceleration_scale;
             let below = self.r + 0.15 * (self.r + self.l) + (1.0 + lam) * a_mm;
             self.b.clear_context();
-            let ax = tolle::axis(self.b, Point::new(x0.x + self.r, -below), self.r, lam)?;
+            let ax = tolle::axis(
+                self.b,
+                Point::new(x0.x + self.r, -below),
+                self.r,
+                Topic::Acceleration,
+            )?;
+            let c_pt = tolle::point_c(self.b, &ax, self.r, lam)?;
             let mut curves = Vec::with_capacity(2);
             for (sense, name) in [(1.0, "T"), (-1.0, "T'")] {
-                let (c, cut) = tolle::curve(self.b, &ax, a_mm, lam, sense, name)?;
+                let (c, cut) = tolle::curve(self.b, &ax, &c_pt, a_mm, lam, sense, name)?;
                 let oc = self.b.measure(
                     &ax.o,
                     &cut,

@@ -4,7 +4,6 @@
 use super::super::rules::{self, Planimeter};
 use super::super::{
     model, DynamicsDrawing, DynamicsRequest, DynamicsResults, Engine, Flywheel, MeanHeight, Power,
-    PS,
 };
 use crate::kernel::Point;
 use crate::protocol::{note, Board, Label, Note, Topic};
@@ -176,7 +175,11 @@ fn planimeter(
     };
     let area = instrument.trace(closed, TRACE_STEP_MM)?;
     let pl = b.tally(to_tm(-area), "kg", Label::NONE, &[], N_MEAN);
-    let bound = PLANIMETER_RESOLUTION * length * 2.0 * ymax;
+    // The vernier's resolution over the diagram's rectangle, and the rounding of the trace
+    // (some 1e-12 of the arm's square per step) where the diagram is flat.
+    let steps = closed.len() as f64 + 2.0 * length / TRACE_STEP_MM;
+    let bound =
+        PLANIMETER_RESOLUTION * length * 2.0 * ymax + 1e-12 * instrument.tracer_arm.powi(2) * steps;
     b.check_within(
         &pl,
         "T_m by the polar planimeter (simulated)",
@@ -197,7 +200,7 @@ fn power(b: &mut Board, e: &Engine, res: &DynamicsResults) -> Power {
     let total: f64 = from_pressures.iter().sum();
     let exact = res.t_m_exact.unwrap_or(0.0);
     let v = e.kinematics.v;
-    let from_t_m = exact * v / PS;
+    let from_t_m = model::power_from_turning(exact, v);
     let n = b.tally(from_t_m, "PS", Label::plain("N_i"), &[], N_POWER);
     b.check(
         &n,
@@ -211,7 +214,7 @@ fn power(b: &mut Board, e: &Engine, res: &DynamicsResults) -> Power {
     Power {
         from_pressures,
         from_t_m,
-        from_drawn_t_m: drawn * v / PS,
+        from_drawn_t_m: model::power_from_turning(drawn, v),
     }
 }
 
