@@ -91,6 +91,8 @@ pub(super) struct Builder<'a> {
     rays: Vec<Vec<Option<Ray>>>,
     tangential: Vec<Option<Vec<f64>>>,
     row_height: f64,
+    /// Per cylinder, the largest force its diagrams draw: the scale its checks are judged at.
+    force_refs: Vec<f64>,
 }
 
 /// Constructs what `request` asks for, at `divisions` equal shaft angles.
@@ -118,7 +120,19 @@ pub fn construct(
         rays: (0..nc).map(|_| vec![None; divisions]).collect(),
         tangential: vec![None; nc],
         row_height: 2.6 * fmax / drawing.force_scale + 20.0,
+        force_refs: engine
+            .cylinders
+            .iter()
+            .map(|c| max_abs_force(&engine.kinematics, c))
+            .collect(),
     };
+    // Steps per ray and cylinder (net pressure 6, inertia 9, the crank's polar construction
+    // about 12) and per turning ordinate (3 + cylinders): reserved once.
+    let per = divisions * nc;
+    bl.b.reserve(
+        40 * nc + 27 * per + 4 * divisions,
+        60 * nc + 40 * per + 6 * divisions,
+    );
     let mut res = DynamicsResults::default();
     let want_t = request.turning_force || request.mean_height || request.power || request.flywheel;
     if request.net_pressure || want_t {
@@ -212,9 +226,10 @@ impl Builder<'_> {
             return Ok(r);
         }
         let theta = self.crank_deg(c, k);
-        let name = self.cyl(c).name.clone();
+        let e = self.e;
         let d = self.diagram(c)?;
         let (axis, curves) = (d.axis, d.curves);
+        let name = &e.cylinders[c].name;
         self.b
             .set_context(|| format!("{name}, θ = {}°", crate::fmt::num(theta, 3)));
         let kin = self.e.kinematics;
@@ -278,7 +293,7 @@ impl Builder<'_> {
         let p = self
             .b
             .measure(&foot, &pp, &vertical, self.force_scale(), Label::NONE, N_P);
-        let cyl = self.cyl(c).clone();
+        let cyl = &self.e.cylinders[c];
         self.b.check(
             &p,
             "net piston force P",
@@ -342,7 +357,7 @@ impl Builder<'_> {
             Label::NONE,
             N_RES,
         );
-        let cyl = self.cyl(c).clone();
+        let cyl = &self.e.cylinders[c];
         let pref = r.g.abs().max(bref);
         self.b.check(
             &r,

@@ -40,8 +40,6 @@ const CELL_MM: f64 = 1.0;
 const PLANIMETER_RESOLUTION: f64 = 1e-3;
 /// Trace step of the simulated planimeter (mm of sheet).
 const TRACE_STEP_MM: f64 = 0.05;
-/// Shaft angles per revolution for the reference of the flywheel's energy curve.
-const FLYWHEEL_REFERENCE: usize = 7200;
 
 /// Mean heights, power and flywheel as the request asks; written into `res` and, on a
 /// recording board, as tallies with their checks and a table.
@@ -53,7 +51,8 @@ pub(super) fn finish(
     res: &mut DynamicsResults,
     table_at: Point,
 ) {
-    if res.turning.is_empty() {
+    let wanted = request.mean_height || request.power || request.flywheel;
+    if res.turning.is_empty() || !wanted {
         return;
     }
     let exact = e.t_m();
@@ -245,13 +244,7 @@ fn flywheel(b: &mut Board, e: &Engine, turning: &[(f64, f64)], exact: f64) -> Fl
     let k = &e.kinematics;
     let r_m = k.r / 1000.0;
     let (de, fast, slow) = excess(turning, exact, r_m);
-    let reference: Vec<(f64, f64)> = (0..FLYWHEEL_REFERENCE)
-        .map(|i| {
-            let t = 360.0 * i as f64 / FLYWHEEL_REFERENCE as f64;
-            (t, model::turning_force(k, &e.cylinders, e.efficiency, t))
-        })
-        .collect();
-    let (de_ref, _, _) = excess(&reference, exact, r_m);
+    let (de_ref, _, _) = model::energy_extremes(k, &e.cylinders, e.efficiency, exact);
     let t = b.tally(de, "m·kg", Label::plain("ΔE"), &[], N_FLY);
     // The drawn ordinates resolve the energy curve to one division: the change of E over a
     // division bounds how far the drawn extremes can fall from the true ones.

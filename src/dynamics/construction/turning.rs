@@ -133,11 +133,7 @@ impl Builder<'_> {
             .b
             .measure(&a, &end, &fr.up, self.force_scale(), Label::NONE, N_T_SUM);
         let (kin, cyls, eta) = (self.e.kinematics, &self.e.cylinders, self.e.efficiency);
-        let reference = eta
-            * cyls
-                .iter()
-                .map(|c| super::max_abs_force(&kin, c))
-                .sum::<f64>();
+        let reference = eta * self.force_refs.iter().sum::<f64>();
         self.b.check(
             &sum,
             "turning force Σ η·T",
