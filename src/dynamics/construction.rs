@@ -365,7 +365,7 @@ impl Builder<'_> {
             "kg",
             "LH C.1, Abb. 58",
             pref,
-            || kin.resulting_force(&cyl, theta),
+            || kin.resulting_force(cyl, theta),
         );
         Ok((rp, bval.g, r.g))
     }
