@@ -40,6 +40,7 @@ const REQUEST: Request = Request {
     radial_force: false,
     acceleration: false,
     max_velocity: false,
+    polar_diagrams: false,
 };
 
 fn closed_form(n: usize) -> f64 {

@@ -27,6 +27,7 @@ fn all_outputs() -> Request {
         radial_force: true,
         acceleration: true,
         max_velocity: true,
+        polar_diagrams: true,
     }
 }
 

@@ -334,6 +334,31 @@ const N_POLAR_MEASURE: Note = note(
     Topic::Forces,
 );
 
+const N_POLAR_ZERO: Note = note(
+    "the crank circle about O' as the zero line of the polar turning-force diagram",
+    Some("Kurbelkreis als Nullinie"),
+    "LH F, Abb. 59",
+    Topic::Forces,
+);
+const N_POLAR_T: Note = note(
+    "T laid off on the crank ray from the crank circle (inside where it is negative)",
+    Some("polarer Tangentialdruck"),
+    "LH F, Abb. 59",
+    Topic::Forces,
+);
+const N_POLAR_P_CURVE: Note = note(
+    "polar net-pressure diagram: the ends of P on the crank rays joined",
+    Some("polares Überdruckdiagramm"),
+    "LH C.2, Abb. 59",
+    Topic::Forces,
+);
+const N_POLAR_T_CURVE: Note = note(
+    "polar turning-force diagram",
+    Some("polares Drehkraftdiagramm"),
+    "LH F, Abb. 59",
+    Topic::Forces,
+);
+
 /// The constructed values at one crank angle; `None` where not requested.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct AngleRow {
@@ -427,6 +452,8 @@ struct Cache {
     k: Option<H<f64>>,
     t_res: Option<H<f64>>,
     t_polar: Option<H<f64>>,
+    /// The end of P laid off on the crank ray of the polar figure, and the ray.
+    p_end: Option<(H<Point>, H<Line>)>,
     accel: Option<(H<f64>, H<f64>)>,
 }
 
@@ -513,32 +540,7 @@ pub fn construct_at(
         + 8 * (request.acceleration as usize);
     bl.b.reserve(16 + per_angle * n, 16 + 2 * per_angle * n);
     for i in 0..n {
-        let theta = bl.thetas[i];
-        bl.b.set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
-        if request.piston_path {
-            bl.x(i)?;
-        }
-        if request.velocity_parallel {
-            bl.c_parallel(i)?;
-        }
-        if request.velocity_instant_centre {
-            bl.c_instant_centre(i)?;
-        }
-        if want_c {
-            bl.c_point(i)?;
-        }
-        if request.rod_force || request.guide_force {
-            bl.s_n(i)?;
-        }
-        if request.radial_force {
-            bl.k_t(i)?;
-        }
-        if request.tangential_force {
-            bl.t_polar(i)?;
-        }
-        if request.acceleration {
-            bl.acceleration(i)?;
-        }
+        bl.angle(i, request)?;
     }
     bl.b.clear_context();
     let max_velocity = if request.max_velocity {
@@ -546,6 +548,9 @@ pub fn construct_at(
     } else {
         None
     };
+    if request.polar_diagrams && request.tangential_force && bl.b.is_recording() {
+        bl.polar_diagrams()?;
+    }
     if want_c && bl.b.is_recording() {
         bl.velocity_curve()?;
     }
@@ -554,6 +559,38 @@ pub fn construct_at(
 }
 
 impl Builder<'_> {
+    /// Everything `request` asks for at the i-th crank angle.
+    fn angle(&mut self, i: usize, request: &Request) -> Result<(), ConstructionError> {
+        let theta = self.thetas[i];
+        self.b
+            .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+        if request.piston_path {
+            self.x(i)?;
+        }
+        if request.velocity_parallel {
+            self.c_parallel(i)?;
+        }
+        if request.velocity_instant_centre {
+            self.c_instant_centre(i)?;
+        }
+        if request.velocity_parallel || request.velocity_instant_centre {
+            self.c_point(i)?;
+        }
+        if request.rod_force || request.guide_force {
+            self.s_n(i)?;
+        }
+        if request.radial_force {
+            self.k_t(i)?;
+        }
+        if request.tangential_force {
+            self.t_polar(i)?;
+        }
+        if request.acceleration {
+            self.acceleration(i)?;
+        }
+        Ok(())
+    }
+
     fn row(&self, i: usize) -> AngleRow {
         let c = &self.cache[i];
         let theta = self.thetas[i];
@@ -1155,6 +1192,69 @@ impl Builder<'_> {
             || cf::tangential_force(p, lam, theta),
         );
         self.cache[i].t_polar = Some(t);
+        self.cache[i].p_end = Some((bp, ray_f));
         Ok(t)
+    }
+
+    /// The polar diagrams on the polar figure's rays (LH Abb. 59): the ends of P joined in the
+    /// order of the crank angles, and T laid off from the crank circle drawn about O'.
+    fn polar_diagrams(&mut self) -> Result<(), ConstructionError> {
+        let Some(pf) = self.polar.as_ref() else {
+            return Ok(());
+        };
+        let o = pf.o;
+        self.b.clear_context();
+        let circle = self.b.circle(
+            &o,
+            self.r,
+            true,
+            Label::NONE,
+            Role::Construction,
+            N_POLAR_ZERO,
+        )?;
+        let mut idx: Vec<usize> = (0..self.thetas.len()).collect();
+        idx.sort_by(|a, b| self.thetas[*a].total_cmp(&self.thetas[*b]));
+        let mut p_pts = Vec::with_capacity(idx.len() + 1);
+        let mut t_pts = Vec::with_capacity(idx.len() + 1);
+        for &i in &idx {
+            let (Some((p_end, ray)), Some(t)) = (self.cache[i].p_end, self.cache[i].t_polar) else {
+                continue;
+            };
+            p_pts.push(p_end);
+            // The ray's direction points from O to the pin: the crank circle lies at +r on it.
+            let at = self.b.lay_off(
+                &o,
+                &ray,
+                self.r + t.g / self.scales.force_scale,
+                Label::NONE,
+                Role::Construction,
+                N_POLAR_T,
+            )?;
+            t_pts.push(at);
+        }
+        let _ = circle;
+        if self.divisions.is_some() {
+            if let (Some(&p0), Some(&t0)) = (p_pts.first(), t_pts.first()) {
+                p_pts.push(p0);
+                t_pts.push(t0);
+            }
+        }
+        if p_pts.len() >= 2 {
+            self.b.curve(
+                &p_pts,
+                false,
+                Label::plain("P"),
+                Role::Result,
+                N_POLAR_P_CURVE,
+            );
+            self.b.curve(
+                &t_pts,
+                false,
+                Label::plain("T"),
+                Role::Result,
+                N_POLAR_T_CURVE,
+            );
+        }
+        Ok(())
     }
 }

@@ -169,4 +169,8 @@ pub struct Request {
     /// Esselborn's construction of the crank angle of the largest piston velocity
     /// (LH Abb. 52), beside the exact maximum and the book's 79°16'.
     pub max_velocity: bool,
+    /// With the tangential force: the polar net-pressure diagram (the ends of P on the crank
+    /// rays joined, LH Abb. 59) and the polar turning-force diagram (T laid off on each ray
+    /// from the crank circle, outside when it drives, LH F, Abb. 59).
+    pub polar_diagrams: bool,
 }

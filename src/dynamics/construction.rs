@@ -429,6 +429,7 @@ impl Builder<'_> {
         let origin = Point::new(2.0 * self.r_mm + 20.0 + l_mm, -(c as f64) * self.row_height);
         let req = Request {
             tangential_force: true,
+            polar_diagrams: true,
             ..Request::default()
         };
         self.b.clear_context();
