@@ -335,7 +335,7 @@ const N_POLAR_MEASURE: Note = note(
 );
 
 const N_POLAR_ZERO: Note = note(
-    "the crank circle about O' as the zero line of the polar turning-force diagram",
+    "the crank circle about O′ as the zero line of the polar turning-force diagram",
     Some("Kurbelkreis als Nullinie"),
     "LH F, Abb. 59",
     Topic::Forces,
