@@ -206,7 +206,9 @@ fn acceleration_alone_draws_no_velocity_and_no_force_and_only_the_frame_it_stand
     // curve T, T₁, D, two tangents, chord, its cut, OC read off (8), the two tangents divided,
     // 9 joining lines with their points of contact, the curve (21); then one point per crank
     // angle: 7 steps (two divisions, the joining line, the point, its foot, two readings).
-    let fixed = 9 + 2 * (8 + 2 + 9 * 2 + 1);
+    // The axis now holds O, the axis, the vertical, the ends with their ordinates (7) and C
+    // with its ordinate (2); each curve adds the balance of its areas (a tally).
+    let fixed = 9 + 2 * (8 + 1 + 2 + 9 * 2 + 1);
     assert_eq!(t[&Topic::Acceleration], fixed + 12 * 7, "{t:?}");
     assert_eq!(count(&b, "piston acceleration b"), 12);
     assert_eq!(count(&b, "b against the finite rod"), 12);

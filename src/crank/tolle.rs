@@ -256,6 +256,56 @@ pub(crate) fn curve(
     Ok((TolleCurve { t, d, t1 }, c_cut))
 }
 
+/// The areas of acceleration and retardation (LH B.3, Abb. 56: "für die aufgewandte
+/// Beschleunigung und die Verzögerung gleich"): the signed area between the curve and the
+/// axis, from the constructed points T, D, T₁, exactly (the integrand y·x' of the quadratic
+/// curve is a cubic: two Gauss points integrate it without error), tallied and checked
+/// against zero relative to the rectangle of the stroke and the largest ordinate. Tolle's D
+/// makes it vanish: with CD other than 3λ·a it would not.
+pub(crate) fn balance(b: &mut Board, ax: &TolleAxis, c: &TolleCurve) -> H<f64> {
+    let (dir, up) = (ax.axis.g.dir, ax.vertical.g.dir);
+    let o = ax.o.g;
+    let coords = |s: f64| {
+        let w = [(1.0 - s) * (1.0 - s), 2.0 * s * (1.0 - s), s * s];
+        let p = [c.t.g, c.d.g, c.t1.g];
+        let v = (p[0] - o) * w[0] + (p[1] - o) * w[1] + (p[2] - o) * w[2];
+        let dv = ((c.d.g - c.t.g) * (1.0 - s) + (c.t1.g - c.d.g) * s) * 2.0;
+        (v.dot(&up), dv.dot(&dir))
+    };
+    let g = 0.5 / 3f64.sqrt();
+    let area: f64 = [0.5 - g, 0.5 + g]
+        .iter()
+        .map(|&s| {
+            let (y, dx) = coords(s);
+            0.5 * y * dx
+        })
+        .sum();
+    let width = (ax.ends[1].g - ax.ends[0].g).norm();
+    let height = (c.t.g - ax.ends[0].g)
+        .norm()
+        .max((c.t1.g - ax.ends[1].g).norm());
+    let h = b.tally(
+        area,
+        "mm²",
+        Label::NONE,
+        &[c.t.id, c.d.id, c.t1.id],
+        n(
+            "the areas of acceleration and retardation: their difference",
+            "Beschleunigungs- und Verzögerungsfläche gleich",
+            "LH B.3, Abb. 56; KG B.4b",
+        ),
+    );
+    b.check(
+        &h,
+        "area of acceleration − area of retardation (on the sheet)",
+        "mm²",
+        "LH B.3, Abb. 56",
+        width * height,
+        || 0.0,
+    );
+    h
+}
+
 /// The envelope as the book draws it: both tangents divided into `parts` equal parts, point k
 /// joined with point k; on each joining line the curve point dividing it as k : (parts − k).
 /// Returns the curve points from T to T₁ (only on a recording board: it is the drawing).
@@ -373,4 +423,31 @@ pub(crate) fn read(
         ),
     );
     (x, y)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_areas_balance_only_with_tolles_d() {
+        let mut b = Board::new(200.0, true);
+        let (half, lam, a) = (20.0, 0.2, 10.0);
+        let ax = axis(&mut b, Point::new(0.0, 0.0), half, Topic::Acceleration).unwrap();
+        let c = point_c(&mut b, &ax, half, lam).unwrap();
+        let (good, _) = curve(&mut b, &ax, &c, a, lam, 1.0, "T").unwrap();
+        assert!(balance(&mut b, &ax, &good).g.abs() < 1e-12);
+        // D at 2λ·a instead of 3λ·a: the lobes no longer balance, and the check says so.
+        let note = n("test", "test", "test");
+        let d = b.point(
+            Point::new(lam * half, -2.0 * lam * a),
+            Label::NONE,
+            Role::Given,
+            note,
+        );
+        let wrong = TolleCurve { d, ..good };
+        let area = balance(&mut b, &ax, &wrong);
+        assert!(area.g.abs() > 1.0, "{}", area.g);
+        assert_eq!(b.checks().filter(|c| !c.passed).count(), 1);
+    }
 }

@@ -205,6 +205,7 @@ impl Builder<'_> {
                 let (out, _) = tolle::curve(self.b, &axis, &cp, a_mm, k.lambda, 1.0, "B₀")?;
                 let (ret, _) = tolle::curve(self.b, &axis, &cp, a_mm, k.lambda, -1.0, "B'₀")?;
                 for cv in [out, ret] {
+                    tolle::balance(self.b, &axis, &cv);
                     let pts = tolle::envelope(self.b, &cv, 10);
                     if pts.len() >= 2 {
                         self.b

@@ -61,6 +61,7 @@ impl Builder<'_> {
                     r,
                     || lam * r,
                 );
+                tolle::balance(self.b, &ax, &c);
                 let pts = tolle::envelope(self.b, &c, ENVELOPE_PARTS);
                 if pts.len() >= 2 {
                     self.b
