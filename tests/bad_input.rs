@@ -650,3 +650,45 @@ fn render_on_every_core_writes_what_a_serial_run_writes_and_names_the_first_bad_
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn a_bad_engine_is_refused_by_the_command_line_with_its_field_and_nothing_written() {
+    // Issue 10's bad input through the CLI: one line naming the field, exit 2, no figure.
+    let d = tmp("engine");
+    let good = include_str!("../scenes/lh_j_locomotive_dynamics.json");
+    let cases = [
+        (
+            "\"cutoff\": 0.175",
+            "\"cutoff\": 1.5",
+            "indicator.steam.cutoff",
+        ),
+        (
+            "\"q_kg_per_cm2\": 0.28",
+            "\"q_kg_per_cm2\": -0.28",
+            "q_kg_per_cm2",
+        ),
+        (
+            "\"back_at\": 0.2",
+            "\"back_at\": -1.2",
+            "indicator.steam.back_at",
+        ),
+    ];
+    for (k, (from, to, field)) in cases.iter().enumerate() {
+        let bad = d.join(format!("engine{k}.json"));
+        std::fs::write(&bad, good.replacen(from, to, 1)).unwrap();
+        let out = d.join(format!("out{k}"));
+        let o = Command::new(bin())
+            .arg("render")
+            .arg(&bad)
+            .arg("--out")
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(2), "{field}");
+        let stderr = String::from_utf8_lossy(&o.stderr);
+        assert!(stderr.contains(field), "{stderr}");
+        assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+        assert!(!out.exists());
+    }
+    std::fs::remove_dir_all(&d).unwrap();
+}
