@@ -318,3 +318,39 @@ fn a_crank_angle_of_a_billionth_of_a_degree_keeps_its_digits() {
     }
     assert!(b.all_passed());
 }
+
+#[test]
+fn rays_by_rod_length_arcs_put_the_piston_at_equal_parts_of_the_stroke() {
+    // LH C.2, Abb. 59-60: the stroke in 10 equal parts, the crank pin by the arc with the rod
+    // length (a perpendicular for the infinite rod): 20 rays, the piston at k·s/10 on both
+    // strokes; every check passes, also near locking.
+    for &lambda in &LAMBDAS {
+        let mut board = Board::new(500.0, true);
+        let d = drive(lambda, 5000.0);
+        let req = Request {
+            piston_path: true,
+            tangential_force: true,
+            polar_diagrams: true,
+            ..Request::default()
+        };
+        let res = construct(&mut board, &d, &DRAWING, &Angles::StrokeParts(10), &req).unwrap();
+        assert_eq!(res.rows.len(), 20);
+        let s = 2.0 * d.crank_radius;
+        for (i, row) in res.rows.iter().enumerate() {
+            let k = if i <= 10 { i } else { 20 - i };
+            let x = row.x.unwrap();
+            assert!(
+                (x - s * k as f64 / 10.0).abs() < 1e-9 * s,
+                "λ = {lambda}, ray {i}: {x}"
+            );
+            assert_eq!(row.theta >= 180.0, i >= 10, "λ = {lambda}, ray {i}");
+        }
+        for c in board.checks() {
+            assert!(
+                c.passed,
+                "λ = {lambda}: {} {} vs {}",
+                c.quantity, c.constructed, c.closed_form
+            );
+        }
+    }
+}

@@ -87,6 +87,32 @@ pub fn piston_position(r: f64, l: Option<f64>, theta_deg: f64) -> f64 {
     }
 }
 
+/// The outstroke crank angle θ (degrees) at which the piston stands `x` from the inner dead
+/// centre (0 ≤ x ≤ 2R): the angle at O of the triangle of crank R, rod L and the distance
+/// d = L + R − x from O to the crosshead, by the half-angle formula
+/// `tg(θ/2) = √(x (2L − x) / ((2R + 2L − x)(2R − x)))`, whose factors carry no cancellation
+/// (acos of the law of cosines would lose half the digits near the dead centres); for the
+/// infinite rod `sin(θ/2) = √(x/2R)`.
+///
+/// ```
+/// use graphostatik::crank::closed_form::{crank_angle_at, piston_position};
+/// let t = crank_angle_at(300.0, Some(1500.0), 250.0);
+/// assert!((piston_position(300.0, Some(1500.0), t) - 250.0).abs() < 1e-9);
+/// assert_eq!(crank_angle_at(300.0, Some(1500.0), 600.0), 180.0);
+/// ```
+pub fn crank_angle_at(r: f64, l: Option<f64>, x: f64) -> f64 {
+    let x = x.clamp(0.0, 2.0 * r);
+    let half = match l {
+        None => (x / (2.0 * r)).sqrt().clamp(0.0, 1.0).asin(),
+        Some(l) => {
+            let num = x * (2.0 * l - x);
+            let den = (2.0 * r + 2.0 * l - x) * (2.0 * r - x);
+            num.sqrt().atan2(den.sqrt())
+        }
+    };
+    2.0 * half.to_degrees()
+}
+
 /// The factor `sin(φ ± ψ)/cos ψ` of KG (288, 303), LH Gl. 48 (Zusammenstellung 112, lower row).
 pub fn sin_factor(lambda: f64, phi_deg: f64, stroke: Stroke) -> f64 {
     let (s, c) = sc(phi_deg);

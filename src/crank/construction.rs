@@ -334,6 +334,42 @@ const N_POLAR_MEASURE: Note = note(
     Topic::Forces,
 );
 
+const N_STROKE_END: Note = note(
+    "the stroke laid off along the piston line",
+    Some("Hub"),
+    "LH C.2, Abb. 59",
+    Topic::PistonPath,
+);
+const N_STROKE_DIVIDE: Note = note(
+    "divide the stroke into equal parts",
+    Some("Teilung des Hubes"),
+    "LH C.2, Abb. 59",
+    Topic::PistonPath,
+);
+const N_OUTER_DEAD: Note = note(
+    "outer dead centre: the other end of the diameter",
+    Some("äußerer Totpunkt"),
+    "LH Abb. 59",
+    Topic::PistonPath,
+);
+const N_STROKE_ARC: Note = note(
+    "arc with the rod length about the division point",
+    Some("Schubstangenkreisbogen"),
+    "LH C.2, Abb. 59",
+    Topic::PistonPath,
+);
+const N_STROKE_PERP: Note = note(
+    "infinite rod: perpendicular through the division point",
+    Some("senkrechte Gerade"),
+    "LH C.2, Abb. 60",
+    Topic::PistonPath,
+);
+const N_STROKE_PIN: Note = note(
+    "it cuts the crank circle: the crank pin and its ray",
+    Some("Radiusvektor"),
+    "LH C.2, Abb. 59",
+    Topic::PistonPath,
+);
 const N_POLAR_ZERO: Note = note(
     "the crank circle about O′ as the zero line of the polar turning-force diagram",
     Some("Kurbelkreis als Nullinie"),
@@ -469,12 +505,16 @@ struct Builder<'a> {
     scales: &'a Drawing,
     thetas: Vec<f64>,
     divisions: Option<usize>,
+    /// The stroke divided into this many parts (LH Abb. 59), when the rays are found so.
+    stroke_parts: Option<usize>,
     r: f64,
     l: f64,
     frame: Option<Frame>,
     polar: Option<PolarFrame>,
     divided: Option<Vec<H<Point>>>,
     tolle: Option<Tolle>,
+    /// The division points of the stroke (LH Abb. 59).
+    stroke_points: Option<Vec<H<Point>>>,
     cache: Vec<Cache>,
     /// Where the shaft centre O stands on the sheet.
     origin: Point,
@@ -508,7 +548,7 @@ pub fn construct_at(
     request: &Request,
     origin: Point,
 ) -> Result<CrankResults, ConstructionError> {
-    let thetas = angles.thetas();
+    let thetas = angles.thetas(drive);
     let n = thetas.len();
     let mut bl = Builder {
         b: board,
@@ -516,7 +556,11 @@ pub fn construct_at(
         scales: drawing,
         divisions: match angles {
             Angles::Divisions(n) => Some(*n),
-            Angles::Degrees(_) => None,
+            Angles::Degrees(_) | Angles::StrokeParts(_) => None,
+        },
+        stroke_parts: match angles {
+            Angles::StrokeParts(n) => Some(*n),
+            _ => None,
         },
         thetas,
         r: drive.crank_radius / drawing.length_scale,
@@ -525,6 +569,7 @@ pub fn construct_at(
         polar: None,
         divided: None,
         tolle: None,
+        stroke_points: None,
         origin,
         cache: (0..n).map(|_| Cache::default()).collect(),
     };
@@ -559,6 +604,85 @@ pub fn construct_at(
 }
 
 impl Builder<'_> {
+    /// The pin of ray i found from the stroke's division point by the arc with the rod length
+    /// (LH Abb. 59), or the perpendicular for the infinite rod (Abb. 60); the dead centres are
+    /// the ends of the diameter, where the arc only touches the crank circle.
+    fn pin_by_rod_arc(&mut self, i: usize, n: usize) -> Result<H<Point>, ConstructionError> {
+        let f = self.frame.as_ref().expect("frame built");
+        let (circle, o, axis, dead, x0) = (f.crank_circle, f.o, f.piston_line, f.dead, f.x0);
+        if self.stroke_points.is_none() {
+            self.b.clear_context();
+            let end = self.b.lay_off(
+                &x0,
+                &axis,
+                2.0 * self.r,
+                Label::NONE,
+                Role::Construction,
+                N_STROKE_END,
+            )?;
+            let pts = self.b.divide_segment(&x0, &end, n, "X", N_STROKE_DIVIDE);
+            self.stroke_points = Some(pts);
+            let theta = self.thetas[i];
+            self.b
+                .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+        }
+        let (k, out) = if i <= n {
+            (i, true)
+        } else {
+            (2 * n - i, false)
+        };
+        let pin = if k == 0 {
+            dead
+        } else if k == n {
+            self.b.lay_off(
+                &dead,
+                &axis,
+                2.0 * self.r,
+                Label::NONE,
+                Role::Construction,
+                N_OUTER_DEAD,
+            )?
+        } else {
+            let xk = self.stroke_points.as_ref().expect("divided above")[k];
+            let side = o.g + Vector::new(0.0, if out { self.r } else { -self.r });
+            if self.d.finite_rod {
+                let arc = self.b.circle(
+                    &xk,
+                    self.l,
+                    false,
+                    Label::NONE,
+                    Role::Construction,
+                    N_STROKE_ARC,
+                )?;
+                self.b.cut_circle_circle(
+                    &circle,
+                    &arc,
+                    Branch::Near(side),
+                    Label::indexed("A", i as u32),
+                    N_STROKE_PIN,
+                )?
+            } else {
+                let perp = self.b.perpendicular(
+                    &axis,
+                    &xk,
+                    Label::NONE,
+                    Role::Construction,
+                    N_STROKE_PERP,
+                );
+                self.b.cut_line_circle(
+                    &perp,
+                    &circle,
+                    Branch::Near(side),
+                    Label::indexed("A", i as u32),
+                    N_STROKE_PIN,
+                )?
+            }
+        };
+        self.b
+            .segment(&o, &pin, Label::NONE, Role::Result, N_CRANK_AT);
+        Ok(pin)
+    }
+
     /// Everything `request` asks for at the i-th crank angle.
     fn angle(&mut self, i: usize, request: &Request) -> Result<(), ConstructionError> {
         let theta = self.thetas[i];
@@ -699,7 +823,9 @@ impl Builder<'_> {
         self.frame()?;
         let f = self.frame.as_ref().expect("frame built");
         let (circle, o) = (f.crank_circle, f.o);
-        let p = if let Some(n) = self.divisions {
+        let p = if let Some(n) = self.stroke_parts {
+            self.pin_by_rod_arc(i, n)?
+        } else if let Some(n) = self.divisions {
             if self.divided.is_none() {
                 // Clockwise from the inner dead centre (180° on the sheet): the pin runs over
                 // the upper half on the outstroke.
@@ -1233,7 +1359,7 @@ impl Builder<'_> {
             t_pts.push(at);
         }
         let _ = circle;
-        if self.divisions.is_some() {
+        if self.divisions.is_some() || self.stroke_parts.is_some() {
             if let (Some(&p0), Some(&t0)) = (p_pts.first(), t_pts.first()) {
                 p_pts.push(p0);
                 t_pts.push(t0);

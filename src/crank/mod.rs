@@ -133,14 +133,26 @@ pub enum Angles {
     Divisions(usize),
     /// Crank angles θ in degrees from the inner dead centre, each in [0, 360).
     Degrees(Vec<f64>),
+    /// The stroke divided into n equal parts and the crank pin found from each division point
+    /// by the arc with the rod length (LH C.2, Abb. 59; a perpendicular for the infinite rod,
+    /// Abb. 60): 2n rays, the outstroke's n + 1 then the return stroke's n − 1.
+    StrokeParts(usize),
 }
 
 impl Angles {
-    /// The crank angles θ in degrees.
-    pub fn thetas(&self) -> Vec<f64> {
+    /// The crank angles θ in degrees for the drive (the stroke parts depend on R and L).
+    pub fn thetas(&self, drive: &CrankDrive) -> Vec<f64> {
         match self {
             Angles::Divisions(n) => (0..*n).map(|k| 360.0 * k as f64 / *n as f64).collect(),
             Angles::Degrees(v) => v.clone(),
+            Angles::StrokeParts(n) => {
+                let (r, rod) = (drive.crank_radius, drive.rod());
+                let out: Vec<f64> = (0..=*n)
+                    .map(|k| closed_form::crank_angle_at(r, rod, 2.0 * r * k as f64 / *n as f64))
+                    .collect();
+                let back = out[1..*n].iter().rev().map(|t| 360.0 - t);
+                out.iter().copied().chain(back).collect()
+            }
         }
     }
 }

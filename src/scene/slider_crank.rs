@@ -102,6 +102,15 @@ impl Scene {
                 }
                 v.len()
             }
+            AngleSpec::StrokeParts(n) => {
+                if *n < 1 || 2 * n > MAX_DIVISIONS {
+                    return Err(f.bad(
+                        "angles.stroke_parts",
+                        format!("{n} parts: give between 1 and {}", MAX_DIVISIONS / 2),
+                    ));
+                }
+                2 * n
+            }
         })
     }
 
@@ -174,6 +183,7 @@ impl Scene {
         let angles = match &self.angles {
             AngleSpec::Divisions(n) => Angles::Divisions(*n),
             AngleSpec::Degrees(v) => Angles::Degrees(v.clone()),
+            AngleSpec::StrokeParts(n) => Angles::StrokeParts(*n),
         };
         let piston_force = match &self.piston_force {
             None => PistonForce::Constant(0.0),
@@ -211,6 +221,10 @@ impl Scene {
                 Output::RadialForce => request.radial_force = true,
                 Output::Acceleration => request.acceleration = true,
                 Output::MaxVelocity => request.max_velocity = true,
+                Output::PolarDiagrams => {
+                    request.tangential_force = true;
+                    request.polar_diagrams = true;
+                }
             }
         }
         let drawing = defaults::drawing(self.drawing.as_ref(), &drive);
@@ -434,6 +448,7 @@ impl Procedure for Scene {
         "radial_force",
         "acceleration",
         "max_velocity",
+        "polar_diagrams",
     ];
     const GEOMETRY_FIELD: &'static str = "mechanism";
 

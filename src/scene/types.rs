@@ -128,6 +128,11 @@ pub enum AngleSpec {
     /// outstroke (Hingang), θ ≥ 180 the return stroke (Rückgang).
     #[serde(rename = "degrees")]
     Degrees(Vec<f64>),
+    /// The stroke divided into n equal parts (LH: 10, giving 11 ordinates per stroke) and the
+    /// crank rays found by arcs with the rod length through the division points (LH C.2,
+    /// Abb. 59): 2n rays, 1 ≤ n ≤ 1800.
+    #[serde(rename = "stroke_parts")]
+    StrokeParts(usize),
 }
 
 /// Physical effects to include.
@@ -174,6 +179,9 @@ pub enum Output {
     /// Esselborn's construction of the crank angle of the largest piston velocity (LH Abb. 52),
     /// beside the exact maximum and the book's 79°16'.
     MaxVelocity,
+    /// The polar net-pressure diagram and the polar turning-force diagram on the crank rays
+    /// (LH C.2, F, Abb. 59), with the tangential force they need.
+    PolarDiagrams,
 }
 
 impl Output {
@@ -181,7 +189,11 @@ impl Output {
     pub fn is_force(&self) -> bool {
         matches!(
             self,
-            Output::RodForce | Output::GuideForce | Output::TangentialForce | Output::RadialForce
+            Output::RodForce
+                | Output::GuideForce
+                | Output::TangentialForce
+                | Output::RadialForce
+                | Output::PolarDiagrams
         )
     }
 }
