@@ -24,7 +24,10 @@ fn problem(divisions: usize) -> DynamicsProblem {
 /// (a): the model's turning force at the divisions, its trapezoid mean.
 fn sampled(p: &DynamicsProblem) -> f64 {
     let e = &p.engine;
-    let n = p.divisions;
+    let n = match p.rays {
+        graphostatik::crank::Angles::Divisions(n) => n,
+        _ => unreachable!("the benchmark divides the circle"),
+    };
     let mut ords: Vec<f64> = (0..n)
         .map(|k| {
             let t = 360.0 * k as f64 / n as f64;

@@ -486,3 +486,45 @@ fn a_scene_computes_only_what_it_asks_for() {
     assert_eq!(count(&turning, "largest fluctuation"), 0);
     assert_eq!(count(&turning, "T_m by"), 0);
 }
+
+#[test]
+fn rays_by_rod_length_arcs_for_the_engine() {
+    // LH C.2, F, Abb. 59, 67: the first cylinder's stroke in 10 parts, its 20 rays by
+    // rod-length arcs, the second cylinder 90° on; the turning-force diagram then has unequal
+    // abscissae, so the trapezoid rule takes the strips as they are and Simpson's and the
+    // 3/8 rule are not offered (LH G: new equal ordinates would be needed).
+    let p = with(LOCO, |v| {
+        v.as_object_mut().unwrap().remove("divisions");
+        v["stroke_parts"] = 10.into();
+    })
+    .unwrap();
+    let (board, res) = p.construct(true).unwrap();
+    let failed: Vec<_> = board.checks().filter(|c| !c.passed).collect();
+    assert!(failed.is_empty(), "{failed:#?}");
+    assert_eq!(res.turning.len(), 20);
+    let k = p.engine.kinematics;
+    for (i, r) in res.rays[0].iter().enumerate() {
+        let x = k.x_frac(r.crank_deg);
+        let part = if i <= 10 { i } else { 20 - i };
+        assert!((x - part as f64 / 10.0).abs() < 1e-12, "ray {i}: {x}");
+    }
+    let rules: Vec<&str> = res.mean_heights.iter().map(|m| m.rule.as_str()).collect();
+    assert!(
+        rules
+            .iter()
+            .all(|r| !r.starts_with("Simpson") && !r.starts_with("3/8")),
+        "{rules:?}"
+    );
+    let exact = res.t_m_exact.unwrap();
+    assert!((res.mean_heights[0].t_m - exact).abs() < 0.02 * exact);
+    // Both ray fields at once, and a first cylinder off its reference, are refused.
+    let e = with(LOCO, |v| v["stroke_parts"] = 10.into()).unwrap_err();
+    assert!(e.contains("stroke_parts"), "{e}");
+    let e = with(LOCO, |v| {
+        v.as_object_mut().unwrap().remove("divisions");
+        v["stroke_parts"] = 10.into();
+        v["cylinders"][0]["crank_offset_deg"] = 45.into();
+    })
+    .unwrap_err();
+    assert!(e.contains("cylinders[0].crank_offset_deg"), "{e}");
+}

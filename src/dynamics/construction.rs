@@ -85,6 +85,8 @@ pub(super) struct Builder<'a> {
     b: &'a mut Board,
     e: &'a Engine,
     dr: &'a DynamicsDrawing,
+    /// The first cylinder's rays by rod-length arcs through this many parts of the stroke.
+    stroke_parts: Option<usize>,
     thetas: Vec<f64>,
     r_mm: f64,
     diagrams: Vec<Option<Diagram>>,
@@ -95,7 +97,10 @@ pub(super) struct Builder<'a> {
     force_refs: Vec<f64>,
 }
 
-/// Constructs what `request` asks for, at `divisions` equal shaft angles.
+/// Constructs what `request` asks for on the crank `rays`: n equal divisions of the shaft's
+/// revolution, or the first cylinder's stroke in n equal parts with its rays by rod-length
+/// arcs (LH Abb. 59; the first cylinder's crank is then the reference, offset 0, and the other
+/// cylinders stand at the same shaft angles plus their offsets).
 ///
 /// # Errors
 /// A [`ConstructionError`] where a step has no solution; a validated scene gives none.
@@ -103,18 +108,22 @@ pub fn construct(
     board: &mut Board,
     engine: &Engine,
     drawing: &DynamicsDrawing,
-    divisions: usize,
+    rays: &Angles,
     request: &DynamicsRequest,
 ) -> Result<DynamicsResults, ConstructionError> {
     let nc = engine.cylinders.len();
     let fmax = max_force(engine);
+    let thetas = rays.thetas(&drive(&engine.kinematics, PistonForce::Constant(0.0)));
+    let divisions = thetas.len();
     let mut bl = Builder {
         b: board,
         e: engine,
         dr: drawing,
-        thetas: (0..divisions)
-            .map(|k| 360.0 * k as f64 / divisions as f64)
-            .collect(),
+        stroke_parts: match rays {
+            Angles::StrokeParts(n) => Some(*n),
+            _ => None,
+        },
+        thetas,
         r_mm: engine.kinematics.r / drawing.length_scale,
         diagrams: (0..nc).map(|_| None).collect(),
         rays: (0..nc).map(|_| vec![None; divisions]).collect(),
@@ -157,6 +166,17 @@ pub fn construct(
     Ok(res)
 }
 
+/// The crank drive of the engine's kinematics with the piston force `p`.
+fn drive(kin: &model::Kinematics, p: PistonForce) -> CrankDrive {
+    CrankDrive {
+        crank_radius: kin.r,
+        rod_length: kin.rod().unwrap_or(5.0 * kin.r),
+        finite_rod: kin.lambda > 0.0,
+        crank_pin_speed: kin.v,
+        piston_force: p,
+    }
+}
+
 /// The largest |P|, |M·b| of a cylinder (kg): the scale its checks are judged at.
 fn max_abs_force(k: &model::Kinematics, c: &Cylinder) -> f64 {
     let mut m: f64 = (c.mass * k.a() * (1.0 + k.lambda)).abs();
@@ -183,7 +203,12 @@ impl Builder<'_> {
     }
 
     fn crank_deg(&self, c: usize, k: usize) -> f64 {
-        (self.thetas[k] + self.cyl(c).offset_deg).rem_euclid(360.0)
+        let offset = self.cyl(c).offset_deg;
+        if offset == 0.0 {
+            self.thetas[k]
+        } else {
+            (self.thetas[k] + offset).rem_euclid(360.0)
+        }
     }
 
     fn force_scale(&self) -> Scale {
@@ -412,14 +437,7 @@ impl Builder<'_> {
             .map(|k| self.rays[c][k].map_or(0.0, |r| r.row_r))
             .collect();
         let angles: Vec<f64> = (0..n).map(|k| self.crank_deg(c, k)).collect();
-        let kin = self.e.kinematics;
-        let drive = CrankDrive {
-            crank_radius: kin.r,
-            rod_length: kin.rod().unwrap_or(5.0 * kin.r),
-            finite_rod: kin.lambda > 0.0,
-            crank_pin_speed: kin.v,
-            piston_force: PistonForce::PerAngle(forces),
-        };
+        let drive = drive(&self.e.kinematics, PistonForce::PerAngle(forces));
         let drawing = Drawing {
             length_scale: self.dr.length_scale,
             force_scale: self.dr.force_scale,
@@ -434,14 +452,13 @@ impl Builder<'_> {
             ..Request::default()
         };
         self.b.clear_context();
-        let res = crank::construct_at(
-            self.b,
-            &drive,
-            &drawing,
-            &Angles::Degrees(angles),
-            &req,
-            origin,
-        )?;
+        // The first cylinder's rays by rod-length arcs where the stroke is divided (its angles
+        // are the same), everyone else's at their crank angles.
+        let rays = match self.stroke_parts {
+            Some(n) if c == 0 => Angles::StrokeParts(n),
+            _ => Angles::Degrees(angles),
+        };
+        let res = crank::construct_at(self.b, &drive, &drawing, &rays, &req, origin)?;
         let t: Vec<f64> = res
             .rows
             .iter()

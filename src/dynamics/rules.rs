@@ -17,6 +17,28 @@ pub fn trapezoid(a: &[f64]) -> f64 {
     (0.5 * (a[0] + a[n]) + inner) / n as f64
 }
 
+/// Mean height by the trapezoid rule over strips of any width: the points (x, y) in order
+/// along the axis (the turning-force diagram over rays found by rod-length arcs, whose
+/// abscissae are unequal, LH F).
+///
+/// ```
+/// use graphostatik::dynamics::rules::trapezoid_xy;
+/// assert_eq!(trapezoid_xy(&[(0.0, 0.0), (1.0, 2.0), (4.0, 2.0)]), 1.75);
+/// ```
+pub fn trapezoid_xy(p: &[(f64, f64)]) -> f64 {
+    let (Some(first), Some(last)) = (p.first(), p.last()) else {
+        return 0.0;
+    };
+    let width = last.0 - first.0;
+    if width == 0.0 {
+        return first.1;
+    }
+    p.windows(2)
+        .map(|w| 0.5 * (w[1].0 - w[0].0) * (w[0].1 + w[1].1))
+        .sum::<f64>()
+        / width
+}
+
 /// Mean height by Simpson's rule (LH Gl. 56-58); `None` unless the number of strips is even.
 pub fn simpson(a: &[f64]) -> Option<f64> {
     let n = a.len().checked_sub(1)?;

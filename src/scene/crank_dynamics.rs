@@ -20,8 +20,14 @@ super::header::scene_struct! {
         pub speed: Speed,
         /// The cylinders, in the order of their cranks; the first one's crank at 0°.
         pub cylinders: Vec<CylinderSpec>,
-        /// Equal divisions of the crank circle (the crank rays), 2 to 3600.
-        pub divisions: usize,
+        /// Equal divisions of the crank circle (the crank rays), 2 to 3600; or give
+        /// `stroke_parts`.
+        #[serde(default)]
+        pub divisions: Option<usize>,
+        /// The first cylinder's stroke in n equal parts (LH: 10), its crank rays by arcs with
+        /// the rod length (LH C.2, Abb. 59): 2n rays, 1 ≤ n ≤ 1800. Its crank offset must be 0.
+        #[serde(default)]
+        pub stroke_parts: Option<usize>,
         /// The physical effects to include; only these are computed.
         #[serde(default)]
         pub effects: Option<DynamicsEffects>,
@@ -246,7 +252,7 @@ pub struct DynamicsProblem {
     /// Scales.
     pub drawing: DynamicsDrawing,
     /// Crank rays.
-    pub divisions: usize,
+    pub rays: crate::crank::Angles,
     /// What to construct.
     pub request: DynamicsRequest,
 }
@@ -312,7 +318,10 @@ impl DynamicsScene {
             source: self.source.clone().unwrap_or_default(),
             engine,
             drawing,
-            divisions: self.divisions,
+            rays: match (self.divisions, self.stroke_parts) {
+                (_, Some(n)) => crate::crank::Angles::StrokeParts(n),
+                (n, None) => crate::crank::Angles::Divisions(n.unwrap_or(2)),
+            },
             request,
         }
     }
@@ -407,7 +416,7 @@ impl DynamicsProblem {
             &mut board,
             &self.engine,
             &self.drawing,
-            self.divisions,
+            &self.rays,
             &self.request,
         )?;
         Ok((board, res))

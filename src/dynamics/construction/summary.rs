@@ -82,6 +82,17 @@ fn drawn(e: &Engine, dr: &DynamicsDrawing, turning: &[(f64, f64)]) -> Vec<(f64, 
     pts
 }
 
+/// Whether the shaft angles divide the revolution equally: Simpson's and the 3/8 rule need
+/// equal strips (LH G: "es müssen dann neue Ordinaten eingezeichnet werden"); the rays by
+/// rod-length arcs give unequal ones.
+fn equal_strips(turning: &[(f64, f64)]) -> bool {
+    let n = turning.len();
+    turning
+        .iter()
+        .enumerate()
+        .all(|(k, p)| (p.0 - 360.0 * k as f64 / n as f64).abs() < 1e-9)
+}
+
 fn mean_heights(
     b: &mut Board,
     e: &Engine,
@@ -91,6 +102,12 @@ fn mean_heights(
 ) -> Vec<MeanHeight> {
     let mut ords: Vec<f64> = turning.iter().map(|p| p.1).collect();
     ords.push(ords[0]);
+    let equal = equal_strips(turning);
+    let xy: Vec<(f64, f64)> = turning
+        .iter()
+        .copied()
+        .chain(turning.first().map(|p| (360.0, p.1)))
+        .collect();
     let pts = drawn(e, dr, turning);
     let length = pts.last().map_or(0.0, |p| p.0);
     let to_tm = |area_mm2: f64| area_mm2 / length * dr.force_scale;
@@ -101,7 +118,7 @@ fn mean_heights(
     let polygon = -rules::polygon_area(&closed);
     let mut out = vec![MeanHeight {
         rule: "trapezoid (Gl. 55)".into(),
-        t_m: rules::trapezoid(&ords),
+        t_m: rules::trapezoid_xy(&xy),
         error: 0.0,
     }];
     let trap = b.tally(out[0].t_m, "kg", Label::plain("T_m"), &[], N_MEAN);
@@ -113,14 +130,14 @@ fn mean_heights(
         exact.abs(),
         || to_tm(polygon),
     );
-    if let Some(s) = rules::simpson(&ords) {
+    if let Some(s) = rules::simpson(&ords).filter(|_| equal) {
         out.push(MeanHeight {
             rule: "Simpson (Gl. 58)".into(),
             t_m: s,
             error: 0.0,
         });
     }
-    if let Some(s) = rules::three_eighths(&ords) {
+    if let Some(s) = rules::three_eighths(&ords).filter(|_| equal) {
         out.push(MeanHeight {
             rule: "3/8 rule (Gl. 59)".into(),
             t_m: s,
@@ -221,13 +238,13 @@ fn power(b: &mut Board, e: &Engine, res: &DynamicsResults) -> Power {
 /// ordinates: its extremes and where they fall.
 fn excess(turning: &[(f64, f64)], t_m: f64, r_m: f64) -> (f64, f64, f64) {
     let n = turning.len();
-    let h = std::f64::consts::TAU / n as f64;
     let (mut e, mut emax, mut emin) = (0.0, 0.0, 0.0);
     let (mut fast, mut slow) = (0.0, 0.0);
     for k in 0..n {
         let (a, b) = (turning[k].1, turning[(k + 1) % n].1);
-        e += 0.5 * (a + b - 2.0 * t_m) * r_m * h;
         let theta = if k + 1 == n { 360.0 } else { turning[k + 1].0 };
+        let h = (theta - turning[k].0).to_radians();
+        e += 0.5 * (a + b - 2.0 * t_m) * r_m * h;
         if e > emax {
             emax = e;
             fast = theta;
@@ -248,7 +265,12 @@ fn flywheel(b: &mut Board, e: &Engine, turning: &[(f64, f64)], exact: f64) -> Fl
     let t = b.tally(de, "m·kg", Label::plain("ΔE"), &[], N_FLY);
     // The drawn ordinates resolve the energy curve to one division: the change of E over a
     // division bounds how far the drawn extremes can fall from the true ones.
-    let step = std::f64::consts::TAU / turning.len() as f64;
+    let step = turning
+        .windows(2)
+        .map(|w| w[1].0 - w[0].0)
+        .chain(turning.last().map(|p| 360.0 - p.0))
+        .fold(0.0f64, f64::max)
+        .to_radians();
     let tmax = turning
         .iter()
         .fold(0.0f64, |m, p| m.max((p.1 - exact).abs()));

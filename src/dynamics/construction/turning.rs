@@ -152,12 +152,12 @@ impl Builder<'_> {
         fr: &TurningFrame,
         out: &[(f64, f64)],
     ) -> Result<(), ConstructionError> {
-        let ords: Vec<f64> = out
+        let pts: Vec<(f64, f64)> = out
             .iter()
-            .map(|p| p.1)
-            .chain(out.first().map(|p| p.1))
+            .copied()
+            .chain(out.first().map(|p| (360.0, p.1)))
             .collect();
-        let mean = super::super::rules::trapezoid(&ords);
+        let mean = super::super::rules::trapezoid_xy(&pts);
         let m = self.b.lay_off(
             &fr.o,
             &fr.up,

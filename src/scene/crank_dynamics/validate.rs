@@ -15,15 +15,7 @@ impl DynamicsScene {
         let r = self.mechanism.check(f)?;
         self.mechanism.check_rod(f, r)?;
         self.speed.check(f)?;
-        if self.divisions < 2 || self.divisions > MAX_DIVISIONS {
-            return Err(f.bad(
-                "divisions",
-                format!(
-                    "{} divisions: give between 2 and {MAX_DIVISIONS}",
-                    self.divisions
-                ),
-            ));
-        }
+        self.check_rays(f)?;
         if self.outputs.is_empty() {
             return Err(f.bad("outputs", "ask for at least one output".into()));
         }
@@ -49,6 +41,43 @@ impl DynamicsScene {
             }
         }
         Ok(())
+    }
+
+    /// Either `divisions` (2 to MAX_DIVISIONS) or `stroke_parts` (1 to half that, the first
+    /// cylinder's crank at offset 0).
+    fn check_rays(&self, f: Fields) -> Result<(), SceneError> {
+        match (self.divisions, self.stroke_parts) {
+            (Some(_), Some(_)) => Err(f.bad(
+                "stroke_parts",
+                "give either divisions or stroke_parts, not both".into(),
+            )),
+            (None, None) => Err(f.bad(
+                "divisions",
+                "missing: give divisions (equal crank angles) or stroke_parts".into(),
+            )),
+            (Some(n), None) if !(2..=MAX_DIVISIONS).contains(&n) => Err(f.bad(
+                "divisions",
+                format!("{n} divisions: give between 2 and {MAX_DIVISIONS}"),
+            )),
+            (None, Some(n)) if !(1..=MAX_DIVISIONS / 2).contains(&n) => Err(f.bad(
+                "stroke_parts",
+                format!("{n} parts: give between 1 and {}", MAX_DIVISIONS / 2),
+            )),
+            (None, Some(_))
+                if self
+                    .cylinders
+                    .first()
+                    .is_some_and(|c| c.crank_offset_deg != 0.0) =>
+            {
+                Err(f.bad(
+                    "cylinders[0].crank_offset_deg",
+                    "with stroke_parts the first cylinder's crank is the reference: its \
+                     offset must be 0"
+                        .into(),
+                ))
+            }
+            _ => Ok(()),
+        }
     }
 
     /// The effects: a share in [0, 1], 0 < η ≤ 1; whether inertia is on.
