@@ -41,6 +41,7 @@ const REQUEST: Request = Request {
     acceleration: false,
     max_velocity: false,
     polar_diagrams: false,
+    piston_path_fixed_arc: false,
 };
 
 fn closed_form(n: usize) -> f64 {

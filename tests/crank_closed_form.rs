@@ -28,6 +28,7 @@ fn all_outputs() -> Request {
         acceleration: true,
         max_velocity: true,
         polar_diagrams: true,
+        piston_path_fixed_arc: true,
     }
 }
 
@@ -58,7 +59,8 @@ fn every_check_passes_at_many_angles_for_every_rod_ratio() {
         // b against the exact value at each of 72 angles; the two chords through C and
         // Esselborn's angle, right angle and velocity once.
         // The two curves' areas of acceleration and retardation balance: two more.
-        assert_eq!(checks.len(), 72 * 11 + 2 + 3 + 2, "λ = {lambda}");
+        // And the piston path by the arc drawn once (LH Abb. 49) at every angle.
+        assert_eq!(checks.len(), 72 * 12 + 2 + 3 + 2, "λ = {lambda}");
         for c in &checks {
             assert!(c.constructed.is_finite() && c.closed_form.is_finite());
             assert!(
@@ -331,6 +333,7 @@ fn rays_by_rod_length_arcs_put_the_piston_at_equal_parts_of_the_stroke() {
             piston_path: true,
             tangential_force: true,
             polar_diagrams: true,
+            piston_path_fixed_arc: true,
             ..Request::default()
         };
         let res = construct(&mut board, &d, &DRAWING, &Angles::StrokeParts(10), &req).unwrap();

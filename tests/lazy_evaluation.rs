@@ -166,6 +166,7 @@ fn a_board_that_does_not_record_keeps_nothing_and_gives_the_same_values() {
         acceleration: true,
         max_velocity: true,
         polar_diagrams: true,
+        piston_path_fixed_arc: true,
     };
     let d = CrankDrive {
         crank_radius: 300.0,
@@ -223,7 +224,6 @@ fn esselborn_alone_constructs_one_position_and_no_crank_division() {
     let b = run(
         Request {
             max_velocity: true,
-            polar_diagrams: true,
             ..Request::default()
         },
         true,

@@ -29,7 +29,7 @@ proptest! {
         let dr = Drawing { length_scale: ls, force_scale: 100.0, velocity_scale: v / 30.0, acceleration_scale: 10.0 };
         let request = Request {
             piston_path: true, velocity_parallel: true, velocity_instant_centre: true,
-            rod_force: true, guide_force: true, tangential_force: true, radial_force: true, acceleration: true, max_velocity: true, polar_diagrams: true,
+            rod_force: true, guide_force: true, tangential_force: true, radial_force: true, acceleration: true, max_velocity: true, polar_diagrams: true, piston_path_fixed_arc: true,
         };
         let mut b = Board::new((r + r / lambda) / ls, true);
         construct(&mut b, &d, &dr, &Angles::Degrees(thetas), &request).unwrap();

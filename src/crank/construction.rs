@@ -8,6 +8,7 @@ use serde::Serialize;
 
 mod accel;
 mod esselborn;
+mod fixed_arc;
 
 const N_CENTRE: Note = note(
     "crank shaft centre O",
@@ -408,6 +409,8 @@ pub struct AngleRow {
     pub piston_force: f64,
     /// Piston position from the inner dead centre (mm).
     pub x: Option<f64>,
+    /// The same by the arc drawn once (LH Abb. 49) (mm).
+    pub x_fixed_arc: Option<f64>,
     /// Piston velocity by the parallel to the rod (m/s).
     pub c_parallel: Option<f64>,
     /// Piston velocity by the instantaneous centre (m/s).
@@ -490,7 +493,15 @@ struct Cache {
     t_polar: Option<H<f64>>,
     /// The end of P laid off on the crank ray of the polar figure, and the ray.
     p_end: Option<(H<Point>, H<Line>)>,
+    x_fixed: Option<f64>,
     accel: Option<(H<f64>, H<f64>)>,
+}
+
+/// The two fixed curves: arcs (finite rod) or perpendiculars (infinite rod).
+#[derive(Clone, Copy)]
+enum Fixed {
+    Arcs([H<Circle>; 2]),
+    Lines([H<Line>; 2]),
 }
 
 /// Tolle's diagram: its axis and the outstroke and return curves.
@@ -515,6 +526,8 @@ struct Builder<'a> {
     tolle: Option<Tolle>,
     /// The division points of the stroke (LH Abb. 59).
     stroke_points: Option<Vec<H<Point>>>,
+    /// The arcs drawn once for the piston path (LH Abb. 49).
+    fixed: Option<Fixed>,
     cache: Vec<Cache>,
     /// Where the shaft centre O stands on the sheet.
     origin: Point,
@@ -570,6 +583,7 @@ pub fn construct_at(
         divided: None,
         tolle: None,
         stroke_points: None,
+        fixed: None,
         origin,
         cache: (0..n).map(|_| Cache::default()).collect(),
     };
@@ -691,6 +705,9 @@ impl Builder<'_> {
         if request.piston_path {
             self.x(i)?;
         }
+        if request.piston_path_fixed_arc {
+            self.x_fixed_arc(i)?;
+        }
         if request.velocity_parallel {
             self.c_parallel(i)?;
         }
@@ -725,6 +742,7 @@ impl Builder<'_> {
             phi,
             piston_force: self.d.piston_force.at(i),
             x: c.x.map(|h| h.g),
+            x_fixed_arc: c.x_fixed,
             c_parallel: c.c_parallel.map(|h| h.g),
             c_instant_centre: c.c_ic.map(|h| h.g),
             rod_force: c.s.map(|(s, _)| s.g),

@@ -160,8 +160,11 @@ impl Angles {
 /// What to construct. Each flag pulls in only the constructions it depends on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
 pub struct Request {
-    /// Piston path by the arc with the rod length (KG Abb. 1047, LH Abb. 49).
+    /// Piston path by the arc with the rod length about each crank pin (KG Abb. 1047, LH Abb. 46).
     pub piston_path: bool,
+    /// Piston path by one arc with the rod length drawn once about the crosshead's dead
+    /// position and cut by the horizontal through each pin (LH Abb. 49).
+    pub piston_path_fixed_arc: bool,
     /// Piston velocity by the parallel to the rod through the end of v (KG Abb. 1049).
     pub velocity_parallel: bool,
     /// Piston velocity by the instantaneous centre, c = ω·y (LH Abb. 53).

@@ -202,7 +202,18 @@ impl Scene {
         let mut request = Request::default();
         for o in &self.outputs {
             match o {
-                Output::PistonPath => request.piston_path = true,
+                Output::PistonPath => {
+                    let methods = self
+                        .piston_path_methods
+                        .clone()
+                        .unwrap_or_else(|| vec![PistonPathMethod::RodArc]);
+                    for m in methods {
+                        match m {
+                            PistonPathMethod::RodArc => request.piston_path = true,
+                            PistonPathMethod::FixedArc => request.piston_path_fixed_arc = true,
+                        }
+                    }
+                }
                 Output::Velocity => {
                     let methods = self
                         .velocity_methods

@@ -19,6 +19,9 @@ super::header::scene_struct! {
         pub effects: Option<Effects>,
         /// What to construct; only what these depend on is constructed.
         pub outputs: Vec<Output>,
+        /// Construction(s) of the piston path, default `["rod_arc"]`.
+        #[serde(default)]
+        pub piston_path_methods: Option<Vec<PistonPathMethod>>,
         /// Construction(s) of the piston velocity, default `["parallel"]`.
         #[serde(default)]
         pub velocity_methods: Option<Vec<VelocityMethod>>,
@@ -196,6 +199,18 @@ impl Output {
                 | Output::PolarDiagrams
         )
     }
+}
+
+/// A construction of the piston path.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(rename_all = "snake_case")]
+pub enum PistonPathMethod {
+    /// The arc with the rod length about each crank pin (KG Abb. 1047, LH Abb. 46).
+    RodArc,
+    /// One arc drawn once about the crosshead's dead position, cut by the horizontal through
+    /// each pin (LH Abb. 49).
+    FixedArc,
 }
 
 /// A construction of the piston velocity.
