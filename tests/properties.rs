@@ -26,7 +26,10 @@ proptest! {
             crank_pin_speed: v,
             piston_force: PistonForce::Constant(p),
         };
-        let dr = Drawing { length_scale: ls, force_scale: 100.0, velocity_scale: v / 30.0, acceleration_scale: 10.0 };
+        // Every quantity drawn some 30 mm long, as the scene defaults choose (an ordinate of
+        // 5e-6 mm under a 4 m sheet keeps only seven digits).
+        let dr = Drawing { length_scale: ls, force_scale: 100.0, velocity_scale: v / 30.0,
+            acceleration_scale: d.v2_over_r() / 30.0 };
         let request = Request {
             piston_path: true, velocity_parallel: true, velocity_instant_centre: true,
             rod_force: true, guide_force: true, tangential_force: true, radial_force: true, acceleration: true, max_velocity: true, polar_diagrams: true, piston_path_fixed_arc: true,
