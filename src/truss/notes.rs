@@ -140,7 +140,7 @@ pub(super) const N_RESULTANT: Note = note(
 );
 
 pub(super) const N_CULMANN_P: Note = note(
-    "the resultant meets the lone roller's line",
+    "the resultant meets the lone roller’s line",
     Some("Culmannsche Gerade"),
     "LH C.2",
     Topic::Reactions,
@@ -154,14 +154,14 @@ pub(super) const N_CULMANN_Q: Note = note(
 );
 
 pub(super) const N_CULMANN: Note = note(
-    "Culmann's line through both points",
+    "Culmann’s line through both points",
     Some("Culmannsche Gerade"),
     "LH C.2",
     Topic::Reactions,
 );
 
 pub(super) const N_CULMANN_PLAN: Note = note(
-    "in the force plan: the lone reaction, then the two along Culmann's line resolved",
+    "in the force plan: the lone reaction, then the two along Culmann’s line resolved",
     Some("Zerlegung"),
     "LH A.3, C.2",
     Topic::Reactions,
