@@ -41,50 +41,31 @@ pub fn trapezoid_xy(p: &[(f64, f64)]) -> f64 {
 
 /// Mean height by Simpson's rule (LH Gl. 56-58); `None` unless the number of strips is even.
 pub fn simpson(a: &[f64]) -> Option<f64> {
-    let n = a.len().checked_sub(1)?;
-    if n == 0 || n % 2 != 0 {
-        return None;
-    }
-    let s: f64 = a
-        .iter()
-        .enumerate()
-        .map(|(k, y)| {
-            let w = if k == 0 || k == n {
-                1.0
-            } else if k % 2 == 1 {
-                4.0
-            } else {
-                2.0
-            };
-            w * y
-        })
-        .sum();
-    Some(s / (3.0 * n as f64))
+    // Weights 1, 4, 2, 4, …, 4, 1 over 3n.
+    composite(a, 2, |k| if k % 2 == 1 { 4.0 } else { 2.0 }, 1.0 / 3.0)
 }
 
 /// Mean height by the 3/8 rule; `None` unless the number of strips n is a multiple of 3.
 /// The weights are 1, 3, 3, 2, 3, 3, 2, …, 3, 3, 1 times 3/(8n) (LH Gl. 59 prints the factor
 /// 3/80, which is 3/(8n) for n = 10 strips, a number of strips the rule does not allow).
 pub fn three_eighths(a: &[f64]) -> Option<f64> {
+    composite(a, 3, |k| if k % 3 == 0 { 2.0 } else { 3.0 }, 3.0 / 8.0)
+}
+
+/// A closed Newton-Cotes rule repeated over groups of `group` strips: the ends weigh 1, an
+/// inner ordinate `inner(k)`, the sum times `factor`/n is the mean height; `None` unless the
+/// number of strips is a positive multiple of `group`.
+fn composite(a: &[f64], group: usize, inner: impl Fn(usize) -> f64, factor: f64) -> Option<f64> {
     let n = a.len().checked_sub(1)?;
-    if n == 0 || n % 3 != 0 {
+    if n == 0 || n % group != 0 {
         return None;
     }
     let s: f64 = a
         .iter()
         .enumerate()
-        .map(|(k, y)| {
-            let w = if k == 0 || k == n {
-                1.0
-            } else if k % 3 == 0 {
-                2.0
-            } else {
-                3.0
-            };
-            w * y
-        })
+        .map(|(k, y)| if k == 0 || k == n { *y } else { inner(k) * y })
         .sum();
-    Some(3.0 * s / (8.0 * n as f64))
+    Some(factor * s / n as f64)
 }
 
 /// The area between a drawn curve and its axis counted in squares of side `cell` (mm), as on

@@ -309,6 +309,19 @@ impl Board {
         })
     }
 
+    /// A length or ratio that must be a finite number for the step `note` would take.
+    fn finite(&self, x: f64, note: &Note) -> Result<(), ConstructionError> {
+        if x.is_finite() {
+            Ok(())
+        } else {
+            Err(ConstructionError::Primitive {
+                step: self.step_id_next(),
+                caption: note.caption.clone(),
+                source: PrimitiveError::NotFinite,
+            })
+        }
+    }
+
     /// A given point.
     pub fn point(&mut self, p: Point, label: Label, role: Role, note: Note) -> H<Point> {
         self.grow(&p);
@@ -514,13 +527,7 @@ impl Board {
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
         // The line's direction is a unit vector already: no normalisation needed.
-        if !length.is_finite() {
-            return Err(ConstructionError::Primitive {
-                step: self.step_id_next(),
-                caption: note.caption.clone(),
-                source: PrimitiveError::NotFinite,
-            });
-        }
+        self.finite(length, &note)?;
         let p = from.g + along.g.dir * length;
         self.grow(&p);
         self.begin(StepKind::LayOff, &note, &[from.id, along.id]);
@@ -826,13 +833,7 @@ impl Board {
         label: Label,
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
-        if !t.is_finite() {
-            return Err(ConstructionError::Primitive {
-                step: self.step_id_next(),
-                caption: note.caption.clone(),
-                source: PrimitiveError::NotFinite,
-            });
-        }
+        self.finite(t, &note)?;
         let p = construct::point_at_ratio(&Segment { a: a.g, b: b.g }, t);
         self.grow(&p);
         self.begin(StepKind::Divide, &note, &[a.id, b.id]);
