@@ -112,7 +112,13 @@ pub fn construct(
     request: &DynamicsRequest,
 ) -> Result<DynamicsResults, ConstructionError> {
     let nc = engine.cylinders.len();
-    let fmax = max_force(engine);
+    // Per cylinder, the largest force its diagrams draw: the checks' scale and the layout's.
+    let force_refs: Vec<f64> = engine
+        .cylinders
+        .iter()
+        .map(|c| max_abs_force(&engine.kinematics, c))
+        .collect();
+    let fmax = force_refs.iter().copied().fold(1.0, f64::max);
     let thetas = rays.thetas(&drive(&engine.kinematics, PistonForce::Constant(0.0)));
     let divisions = thetas.len();
     let mut bl = Builder {
@@ -129,11 +135,7 @@ pub fn construct(
         rays: (0..nc).map(|_| vec![None; divisions]).collect(),
         tangential: vec![None; nc],
         row_height: 2.6 * fmax / drawing.force_scale + 20.0,
-        force_refs: engine
-            .cylinders
-            .iter()
-            .map(|c| max_abs_force(&engine.kinematics, c))
-            .collect(),
+        force_refs,
     };
     // Steps per ray and cylinder (net pressure 6, inertia 9, the crank's polar construction
     // about 12) and per turning ordinate (3 + cylinders): reserved once.
@@ -187,14 +189,6 @@ fn max_abs_force(k: &model::Kinematics, c: &Cylinder) -> f64 {
             .max(c.pressure_force(t, k.x_frac(t)).abs());
     }
     m.max(f64::MIN_POSITIVE)
-}
-
-/// The largest force any diagram draws (kg), for the layout.
-fn max_force(e: &Engine) -> f64 {
-    e.cylinders
-        .iter()
-        .map(|c| max_abs_force(&e.kinematics, c))
-        .fold(1.0, f64::max)
 }
 
 impl Builder<'_> {

@@ -292,22 +292,10 @@ pub fn turning_corners(k: &Kinematics, cyls: &[Cylinder]) -> Vec<f64> {
     out
 }
 
-/// The two crank angles (out and return) where the piston stands at fraction x of the stroke,
-/// by bisection on the monotone outstroke position.
+/// The two crank angles (out and return) where the piston stands at fraction x of the stroke
+/// ([`cf::crank_angle_at`], the half-angle formula).
 pub fn crank_angles_at(k: &Kinematics, x: f64) -> [f64; 2] {
-    let (mut lo, mut hi) = (0.0f64, 180.0f64);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        if k.x_frac(mid) < x {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    let t = 0.5 * (lo + hi);
+    let t = cf::crank_angle_at(k.r, k.rod(), x * 2.0 * k.r);
     [t, 360.0 - t]
 }
 
