@@ -36,6 +36,11 @@ enum Command {
         /// Print JSON instead of a text table.
         #[arg(long)]
         json: bool,
+        /// Replay every step in double-double beside f64 and print, per step, the digits f64
+        /// lost against the replay and the digits the propagated bound predicted; exit
+        /// status 1 if the bound fails anywhere.
+        #[arg(long)]
+        reference: bool,
     },
     /// Write one cumulative SVG per construction step and an index.html that pages through them.
     Steps {
@@ -141,7 +146,16 @@ fn commit(batch: Batch) -> Result<(), Fail> {
 fn run(cli: Cli) -> Result<ExitCode, Fail> {
     match cli.command {
         Command::Render { scenes, out, jobs } => render_cmd(&scenes, &out, jobs),
-        Command::Check { scene, json } => check_cmd(&scene, json),
+        Command::Check {
+            scene,
+            json,
+            reference: false,
+        } => check_cmd(&scene, json),
+        Command::Check {
+            scene,
+            json,
+            reference: true,
+        } => reference_cmd(&scene, json),
         Command::Steps { scene, out } => steps_cmd(&scene, &out),
         Command::Protocol { scene } => {
             let p = load(&scene)?;
@@ -244,6 +258,28 @@ fn check_cmd(scene: &Path, json: bool) -> Result<ExitCode, Fail> {
     }
     let failed = render::check_rows(&board).iter().any(|r| !r.passed);
     Ok(if failed {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+/// `check --reference`: the construction replayed in double-double beside f64.
+fn reference_cmd(scene: &Path, json: bool) -> Result<ExitCode, Fail> {
+    use graphostatik::protocol::{with_setup, Setup};
+    let p = load(scene)?;
+    let setup = Setup {
+        reference: true,
+        ..Setup::default()
+    };
+    let board = with_setup(setup, || construct(scene, &p))?;
+    if json {
+        say(&(render::reference_table_json(&board) + "\n"))?;
+    } else {
+        say(&render::reference_table_text(&board))?;
+    }
+    let over = render::reference_rows(&board).iter().any(|r| !r.within);
+    Ok(if over {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS

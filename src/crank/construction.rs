@@ -1090,10 +1090,10 @@ impl Builder<'_> {
         let normal = self
             .b
             .perpendicular(&axis, &b, Label::NONE, Role::Auxiliary, N_C_NORMAL);
-        let q = self.b.lay_off(
+        let q = self.b.transfer(
             &b,
             &normal,
-            c.g / self.scales.velocity_scale,
+            (&c, self.scales.velocity_scale),
             Label::quiet("Q", i as u32),
             Role::Construction,
             N_C_ORDINATE,
@@ -1195,10 +1195,10 @@ impl Builder<'_> {
         let crank =
             self.b
                 .line_through(&pin, &o, Label::NONE, Role::Construction, N_CRANK_LINE_F)?;
-        let g = self.b.lay_off(
+        let g = self.b.transfer(
             &pin,
             &rod,
-            s.g / self.scales.force_scale,
+            (&s, self.scales.force_scale),
             Label::quiet("G", i as u32),
             Role::Force,
             N_S_AT_PIN,

@@ -284,11 +284,12 @@ pub(crate) fn balance(b: &mut Board, ax: &TolleAxis, c: &TolleCurve) -> H<f64> {
     let height = (c.t.g - ax.ends[0].g)
         .norm()
         .max((c.t1.g - ax.ends[1].g).norm());
-    let h = b.tally(
+    // A point of the three moved by 1 mm changes the area by less than the sheet's
+    // width plus height (mm² per mm).
+    let h = b.reckon(
         area,
-        "mm²",
-        Label::NONE,
-        &[c.t.id, c.d.id, c.t1.id],
+        ("mm²", Label::NONE),
+        (&[c.t.id, c.d.id, c.t1.id], width + height),
         n(
             "the areas of acceleration and retardation: their difference",
             "Beschleunigungs- und Verzögerungsfläche gleich",

@@ -361,10 +361,10 @@ impl Builder<'_> {
             bref,
             || kin.inertia(mass, theta),
         );
-        let rp = self.b.lay_off(
+        let rp = self.b.transfer(
             &pp,
             &ord,
-            -bval.g / self.dr.force_scale,
+            (&bval, -self.dr.force_scale),
             Label::NONE,
             Role::Construction,
             N_B_TRANSFER,

@@ -167,3 +167,9 @@ impl Tolerance {
         }
     }
 }
+
+/// The rounding an operation of the kernel adds, relative to the magnitude it computes: four
+/// units of f64's roundoff (2⁻⁵³ each), for the few products, sums and one normalisation or
+/// square root of a step. The propagated error bound of a constructed value (the protocol's
+/// `Check::bound`) starts from this at every step and is amplified by every cut downstream.
+pub const OP_ROUNDOFF: f64 = 4.0 * (f64::EPSILON / 2.0);

@@ -1,5 +1,8 @@
 //! The board: every kernel operation, recorded as a step.
 
+use super::accuracy::{ErrorModel, Track, WorstCut};
+use super::reference::{self as refr, ReferenceRow, Shadow, DP};
+use super::setup::Jitter;
 use super::step::*;
 use crate::kernel::construct;
 use crate::kernel::tolerance::CHECK_REL;
@@ -87,6 +90,18 @@ pub struct Board {
     context: Option<std::sync::Arc<str>>,
     #[serde(skip)]
     next_step: u32,
+    /// The error model the bounds follow.
+    #[serde(skip)]
+    model: ErrorModel,
+    /// Each object's propagated error bound (recording only), in object order.
+    #[serde(skip)]
+    tracks: Vec<Track>,
+    /// Each object's double-double reference value, where a reference replay was asked for.
+    #[serde(skip)]
+    shadows: Option<Vec<Shadow>>,
+    /// A draftsman's hand, where the setup asks for one.
+    #[serde(skip)]
+    jitter: Option<Jitter>,
     objects: Vec<Object>,
     steps: Vec<Step>,
 }
@@ -127,12 +142,17 @@ impl Board {
             recording: false,
             context: None,
             next_step: 0,
+            model: self.model,
+            tracks: Vec::new(),
+            shadows: None,
+            jitter: None,
             objects: Vec::new(),
             steps: Vec::new(),
         }
     }
 
     fn sized(figure_size: Option<f64>, recording: bool) -> Board {
+        let setup = super::setup::current();
         Board {
             tolerance: Tolerance::for_figure(figure_size.unwrap_or(0.0)),
             follows_extent: figure_size.is_none(),
@@ -140,8 +160,152 @@ impl Board {
             recording,
             context: None,
             next_step: 0,
+            model: setup.model.unwrap_or(ErrorModel::ROUNDING),
+            tracks: Vec::new(),
+            shadows: (recording && setup.reference).then(Vec::new),
+            jitter: setup.hand.map(Jitter::new),
             objects: Vec::new(),
             steps: Vec::new(),
+        }
+    }
+
+    /// This board, with every step evaluated a second time in double-double from its inputs'
+    /// reference values (a recording board only): [`Board::reference_report`] then sets what
+    /// f64 lost beside what the propagated bound predicted.
+    ///
+    /// ```
+    /// use graphostatik::prelude::*;
+    /// let mut b = Board::recording().with_reference();
+    /// let n = Note::new("a glancing cut", Topic::Custom("demo"));
+    /// let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, n.clone());
+    /// let a = b.point(Point::new(0.0, 1.0), Label::plain("A"), Role::Given, n.clone());
+    /// let x = b.line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, n.clone())?;
+    /// let y = b.line_dir(&a, Vector::new(1.0, -1e-6), Label::NONE, Role::Construction, n.clone())?;
+    /// let p = b.meet_point(&x, &y, Label::plain("P"), n)?;
+    /// let row = b.reference_report().into_iter().find(|r| r.step == b.steps()[4].id).unwrap();
+    /// assert!(row.observed <= row.bound);       // f64 kept within the bound ...
+    /// assert!(row.bound > 1e5 * 1e6 * 1e-16);  // ... which the 1e-6 rad cut amplified
+    /// # Ok::<(), ConstructionError>(())
+    /// ```
+    pub fn with_reference(mut self) -> Board {
+        if self.recording {
+            self.shadows = Some(Vec::new());
+        }
+        self
+    }
+
+    /// This board, its error bounds following `model` instead of f64's rounding (a
+    /// draftsman's pencil and set squares: [`ErrorModel::drafting`]).
+    pub fn with_error_model(mut self, model: ErrorModel) -> Board {
+        self.model = model;
+        self
+    }
+
+    /// The error model the bounds follow.
+    pub fn error_model(&self) -> ErrorModel {
+        self.model
+    }
+
+    /// Whether the board replays its steps in double-double ([`Board::with_reference`]).
+    pub fn has_reference(&self) -> bool {
+        self.shadows.is_some()
+    }
+
+    /// A point as the draftsman marks it (as it is, without a hand).
+    fn mark(&mut self, p: Point) -> Point {
+        match self.jitter.as_mut() {
+            Some(j) => j.mark(p),
+            None => p,
+        }
+    }
+
+    /// A line as the draftsman rules it: its origin marked, its direction turned.
+    fn rule(&mut self, l: Line) -> Line {
+        match self.jitter.as_mut() {
+            Some(j) => Line {
+                origin: j.mark(l.origin),
+                dir: j.turn(l.dir),
+            },
+            None => l,
+        }
+    }
+
+    /// A length (mm) as the draftsman sets or reads it on the scale rule.
+    fn read(&mut self, mm: f64) -> f64 {
+        match self.jitter.as_mut() {
+            Some(j) => j.read(mm),
+            None => mm,
+        }
+    }
+
+    /// The propagated error bound of an object (mm for a point, its unit for a number) and
+    /// the worst cut it depends on; `None` on a board that does not record.
+    pub fn bound(&self, id: ObjId) -> Option<(f64, Option<WorstCut>)> {
+        let t = self.tracks.get((id.0 as usize).wrapping_sub(1))?;
+        Some((t.err, t.worst))
+    }
+
+    fn tr(&self, id: ObjId) -> Track {
+        self.tracks
+            .get((id.0 as usize).wrapping_sub(1))
+            .copied()
+            .unwrap_or_default()
+    }
+
+    fn set_tr(&mut self, id: ObjId, t: impl FnOnce(&Board) -> Track) {
+        if self.recording && id != ObjId::NONE {
+            let t = t(self);
+            self.tracks[id.0 as usize - 1] = t;
+        }
+    }
+
+    fn shadow(&self, id: ObjId) -> Shadow {
+        self.shadows
+            .as_ref()
+            .and_then(|s| s.get((id.0 as usize).wrapping_sub(1)).copied())
+            .unwrap_or_default()
+    }
+
+    fn set_shadow(&mut self, id: ObjId, f: impl FnOnce(&Board) -> Shadow) {
+        if self.shadows.is_some() && id != ObjId::NONE {
+            let v = f(self);
+            if let Some(s) = self.shadows.as_mut() {
+                s[id.0 as usize - 1] = v;
+            }
+        }
+    }
+
+    // The reference of a handle is its object's, unless a procedure made the handle with an
+    // object's id but geometry of its own (a line's normal, a value's magnitude): then the
+    // handle's f64 geometry is taken as given.
+
+    fn sp(&self, h: &H<Point>) -> DP {
+        match (self.shadow(h.id), self.object(h.id).map(|o| &o.geom)) {
+            (Shadow::Point(p), Some(Geom::Point { at })) if *at == h.g => p,
+            _ => DP::of(&h.g),
+        }
+    }
+
+    fn sl(&self, h: &H<Line>) -> (DP, DP) {
+        match (self.shadow(h.id), self.object(h.id).map(|o| &o.geom)) {
+            (Shadow::Line { o, d }, Some(Geom::Line { line, .. })) if *line == h.g => (o, d),
+            _ => (DP::of(&h.g.origin), DP::of_vec(&h.g.dir)),
+        }
+    }
+
+    fn sc(&self, h: &H<Circle>) -> (DP, twofloat::TwoFloat) {
+        match (self.shadow(h.id), self.object(h.id).map(|o| &o.geom)) {
+            (Shadow::Circle { c, r }, Some(Geom::Circle { circle, .. })) if *circle == h.g => {
+                (c, r)
+            }
+            _ => (DP::of(&h.g.center), h.g.radius.into()),
+        }
+    }
+
+    fn sv(&self, h: &H<f64>) -> twofloat::TwoFloat {
+        match (self.shadow(h.id), self.object(h.id).map(|o| &o.geom)) {
+            (Shadow::Scalar(v), Some(Geom::Scalar { value, .. })) if *value == h.g => v,
+            _ => h.g.into(),
         }
     }
 
@@ -257,6 +421,10 @@ impl Board {
         }
         let id = ObjId(self.objects.len() as u32 + 1);
         let step = StepId(self.next_step);
+        self.tracks.push(Track::default());
+        if let Some(s) = self.shadows.as_mut() {
+            s.push(Shadow::None);
+        }
         self.objects.push(Object {
             id,
             step,
@@ -324,9 +492,12 @@ impl Board {
 
     /// A given point.
     pub fn point(&mut self, p: Point, label: Label, role: Role, note: Note) -> H<Point> {
+        let p = self.mark(p);
         self.grow(&p);
         self.begin(StepKind::Given, &note, &[]);
         let id = self.add(label, role, || Geom::Point { at: p });
+        self.set_tr(id, |b| b.model.given(&p));
+        self.set_shadow(id, |_| Shadow::Point(DP::of(&p)));
         H { id, g: p }
     }
 
@@ -341,6 +512,7 @@ impl Board {
         note: Note,
     ) -> Result<H<Line>, ConstructionError> {
         let line = self.prim(Line::new(p.g, dir), &note)?;
+        let line = self.rule(line);
         let kind = if p.id == ObjId::NONE || note.topic == Topic::Setup {
             StepKind::Given
         } else {
@@ -350,6 +522,11 @@ impl Board {
         let id = self.add(label, role, || Geom::Line {
             line,
             extent: [0.0, 0.0],
+        });
+        self.set_tr(id, |b| b.model.line_at(&b.tr(p.id)));
+        self.set_shadow(id, |b| Shadow::Line {
+            o: b.sp(p),
+            d: DP::of_vec(&dir).unit(),
         });
         Ok(H { id, g: line })
     }
@@ -364,11 +541,23 @@ impl Board {
         note: Note,
     ) -> Result<H<Line>, ConstructionError> {
         let line = self.prim(Line::through(a.g, b.g, self.tolerance.length), &note)?;
+        let line = self.rule(line);
         self.begin(StepKind::Line, &note, &[a.id, b.id]);
         let tb = line.param_of(&b.g);
         let id = self.add(label, role, || Geom::Line {
             line,
             extent: [tb.min(0.0), tb.max(0.0)],
+        });
+        self.set_tr(id, |bd| {
+            bd.model
+                .ruled(&bd.tr(a.id), &bd.tr(b.id), (b.g - a.g).norm())
+        });
+        self.set_shadow(id, |bd| {
+            let (pa, pb) = (bd.sp(a), bd.sp(b));
+            Shadow::Line {
+                o: pa,
+                d: pb.sub(&pa).unit(),
+            }
         });
         Ok(H { id, g: line })
     }
@@ -383,11 +572,13 @@ impl Board {
         note: Note,
     ) -> H<Line> {
         let g = construct::parallel_through(&line.g, p.g);
+        let g = self.rule(g);
         self.begin(StepKind::Parallel, &note, &[line.id, p.id]);
         let id = self.add(label, role, || Geom::Line {
             line: g,
             extent: [0.0, 0.0],
         });
+        self.slid(id, line, p, false);
         H { id, g }
     }
 
@@ -401,12 +592,26 @@ impl Board {
         note: Note,
     ) -> H<Line> {
         let g = construct::perpendicular_through(&line.g, p.g);
+        let g = self.rule(g);
         self.begin(StepKind::Perpendicular, &note, &[line.id, p.id]);
         let id = self.add(label, role, || Geom::Line {
             line: g,
             extent: [0.0, 0.0],
         });
+        self.slid(id, line, p, true);
         H { id, g }
+    }
+
+    /// The bound and reference of a line slid along `line` to `p` (turned 90°: `turned`).
+    fn slid(&mut self, id: ObjId, line: &H<Line>, p: &H<Point>, turned: bool) {
+        self.set_tr(id, |b| b.model.slid(&b.tr(line.id), &b.tr(p.id)));
+        self.set_shadow(id, |b| {
+            let d = b.sl(line).1;
+            Shadow::Line {
+                o: b.sp(p),
+                d: if turned { d.normal() } else { d },
+            }
+        });
     }
 
     /// The circle about `center` with `radius` mm (the compass). `full` draws it whole;
@@ -420,6 +625,7 @@ impl Board {
         role: Role,
         note: Note,
     ) -> Result<H<Circle>, ConstructionError> {
+        let radius = self.read(radius);
         let c = self.prim(Circle::new(center.g, radius), &note)?;
         self.grow(&(c.center + Vector::new(c.radius, c.radius)));
         self.grow(&(c.center - Vector::new(c.radius, c.radius)));
@@ -433,6 +639,13 @@ impl Board {
             circle: c,
             full,
             marks: Vec::new(),
+        });
+        self.set_tr(id, |b| {
+            b.model.compass(&b.tr(center.id), &c.center, c.radius)
+        });
+        self.set_shadow(id, |b| Shadow::Circle {
+            c: b.sp(center),
+            r: c.radius.into(),
         });
         Ok(H { id, g: c })
     }
@@ -464,14 +677,30 @@ impl Board {
     ) -> H<Point> {
         let g = &circle.g;
         let p = Point::new(g.center.x + g.radius * c, g.center.y + g.radius * s);
+        let p = self.mark(p);
         self.begin(StepKind::Divide, &note, &[circle.id]);
         let id = self.add(label, Role::Given, || Geom::Point { at: p });
+        self.on_circle(id, circle, &p, (s, c));
         let c = circle.g.center;
         self.add(Label::NONE, role, || Geom::Segment {
             segment: Segment { a: c, b: p },
         });
         self.touch(circle.id, &p);
         H { id, g: p }
+    }
+
+    /// The bound and reference of the point `p` of a circle in the direction `(sin, cos)`.
+    fn on_circle(&mut self, id: ObjId, circle: &H<Circle>, p: &Point, (s, c): (f64, f64)) {
+        self.set_tr(id, |b| {
+            b.model.on_circle(&b.tr(circle.id), p, circle.g.radius)
+        });
+        self.set_shadow(id, |b| {
+            let (cc, r) = b.sc(circle);
+            Shadow::Point(DP {
+                x: cc.x + r * c,
+                y: cc.y + r * s,
+            })
+        });
     }
 
     /// Divides a circle into `n` equal parts from `start_deg` (one step, `n` points).
@@ -484,13 +713,19 @@ impl Board {
         label: &'static str,
         note: Note,
     ) -> Vec<H<Point>> {
-        let pts = construct::divide_circle(&circle.g, start_deg, n, clockwise);
+        let mut pts = construct::divide_circle(&circle.g, start_deg, n, clockwise);
+        pts.iter_mut().for_each(|p| *p = self.mark(*p));
         self.begin(StepKind::Divide, &note, &[circle.id]);
         let mut out = Vec::with_capacity(pts.len());
+        let sign = if clockwise { -1.0 } else { 1.0 };
         for (k, p) in pts.into_iter().enumerate() {
             let id = self.add(Label::indexed(label, k as u32), Role::Given, || {
                 Geom::Point { at: p }
             });
+            if self.recording {
+                let deg = start_deg + sign * 360.0 * k as f64 / n.max(1) as f64;
+                self.on_circle(id, circle, &p, crate::kernel::angle::sin_cos_deg(deg));
+            }
             self.touch(circle.id, &p);
             out.push(H { id, g: p });
         }
@@ -527,12 +762,61 @@ impl Board {
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
         // The line's direction is a unit vector already: no normalisation needed.
+        self.lay_off_carried(from, along, (length, None), label, role, note)
+    }
+
+    /// Lays off a value read earlier (a force, a velocity measured elsewhere) at `per_mm`
+    /// units per mm from `from` along `along`: the dividers' transfer, whose error and
+    /// reference follow the value it carries.
+    pub fn transfer(
+        &mut self,
+        from: &H<Point>,
+        along: &H<Line>,
+        (value, per_mm): (&H<f64>, f64),
+        label: Label,
+        role: Role,
+        note: Note,
+    ) -> Result<H<Point>, ConstructionError> {
+        let length = value.g / per_mm;
+        self.lay_off_carried(
+            from,
+            along,
+            (length, Some((value, per_mm))),
+            label,
+            role,
+            note,
+        )
+    }
+
+    fn lay_off_carried(
+        &mut self,
+        from: &H<Point>,
+        along: &H<Line>,
+        (length, carried): (f64, Option<(&H<f64>, f64)>),
+        label: Label,
+        role: Role,
+        note: Note,
+    ) -> Result<H<Point>, ConstructionError> {
         self.finite(length, &note)?;
+        let length = self.read(length);
         let p = from.g + along.g.dir * length;
         self.grow(&p);
-        self.begin(StepKind::LayOff, &note, &[from.id, along.id]);
+        match carried {
+            Some((v, _)) => self.begin(StepKind::LayOff, &note, &[from.id, along.id, v.id]),
+            None => self.begin(StepKind::LayOff, &note, &[from.id, along.id]),
+        }
         let a = from.g;
         let id = self.add(label, Role::Given, || Geom::Point { at: p });
+        self.set_tr(id, |b| {
+            let mut c = carried.map_or(Track::default(), |(v, _)| b.tr(v.id));
+            c.err /= carried.map_or(1.0, |(_, per_mm)| per_mm.abs());
+            b.model
+                .laid(&b.tr(from.id), &b.tr(along.id), length, &p, &c)
+        });
+        self.set_shadow(id, |b| {
+            let len = carried.map_or(length.into(), |(v, per_mm)| b.sv(v) / per_mm);
+            Shadow::Point(b.sp(from).add(&b.sl(along).1.scale(len)))
+        });
         self.add(Label::NONE, role, || match role {
             Role::Force | Role::Velocity => Geom::Vector {
                 segment: Segment { a, b: p },
@@ -555,8 +839,17 @@ impl Board {
         note: Note,
     ) -> H<Point> {
         let f = construct::foot_on_line(&line.g, &p.g);
+        let f = self.mark(f);
         self.begin(StepKind::Foot, &note, &[line.id, p.id]);
         let id = self.add(label, Role::Given, || Geom::Point { at: f });
+        self.set_tr(id, |b| {
+            b.model
+                .foot(&b.tr(line.id), &line.g, (&b.tr(p.id), &p.g), &f)
+        });
+        self.set_shadow(id, |b| {
+            let ((o, d), q) = (b.sl(line), b.sp(p));
+            Shadow::Point(o.add(&d.scale(q.sub(&o).dot(&d))))
+        });
         let a = p.g;
         self.add(Label::NONE, role, || Geom::Segment {
             segment: Segment { a, b: f },
@@ -575,10 +868,12 @@ impl Board {
                 conditioning,
                 ..
             } => {
+                let point = self.mark(point);
                 if let Some(s) = self.last_step() {
                     s.conditioning = Some(conditioning);
                 }
                 let id = self.add(label, Role::Given, || Geom::Point { at: point });
+                self.lines_met(id, (a, b), &point, conditioning);
                 self.touch(a.id, &point);
                 self.touch(b.id, &point);
                 Cut::Point(H { id, g: point }, conditioning)
@@ -599,6 +894,28 @@ impl Board {
                 Cut::Coincident
             }
         }
+    }
+
+    /// The bound and reference of the point where two lines met.
+    fn lines_met(
+        &mut self,
+        id: ObjId,
+        (a, b): (&H<Line>, &H<Line>),
+        p: &Point,
+        cond: Conditioning,
+    ) {
+        let step = StepId(self.next_step);
+        self.set_tr(id, |bd| {
+            let (ta, tb) = (bd.tr(a.id), bd.tr(b.id));
+            let delta = ta.across(&a.g, p) + tb.across(&b.g, p);
+            let extent = p.coords.norm() + a.g.origin.coords.norm() + b.g.origin.coords.norm();
+            let worst = super::accuracy::worse(ta.worst, tb.worst);
+            bd.model.cut(step, cond, (delta, extent, 0.0), worst)
+        });
+        self.set_shadow(id, |bd| {
+            let ((ao, ad), (bo, bdir)) = (bd.sl(a), bd.sl(b));
+            Shadow::Point(refr::meet(&ao, &ad, &bo, &bdir))
+        });
     }
 
     /// Intersects two lines where the construction needs a point: a degenerate case is an error.
@@ -651,7 +968,21 @@ impl Board {
                 return Err(self.fail_cut(step, &note, CutOutcome::Misses { gap }));
             }
         };
-        Ok(self.finish_cut(p, cond, br, [line.id, circle.id], label))
+        let h = self.finish_cut(p, cond, br, [line.id, circle.id], label);
+        let step = StepId(self.next_step);
+        self.set_tr(h.id, |b| {
+            let (tl, tc) = (b.tr(line.id), b.tr(circle.id));
+            let delta = tl.across(&line.g, &p) + tc.err;
+            let (c, r) = (circle.g.center, circle.g.radius);
+            let extent = p.coords.norm() + r + c.coords.norm() + line.g.origin.coords.norm();
+            let worst = super::accuracy::worse(tl.worst, tc.worst);
+            b.model.cut(step, cond, (delta, extent, r), worst)
+        });
+        self.set_shadow(h.id, |b| {
+            let ((o, d), (c, r)) = (b.sl(line), b.sc(circle));
+            Shadow::Point(refr::line_circle(&o, &d, &c, r, &p))
+        });
+        Ok(h)
     }
 
     /// Records a cut that has no point and returns the error naming its case.
@@ -683,6 +1014,7 @@ impl Board {
                 s.outcome = Some("tangent: one double point".into());
             }
         }
+        let p = self.mark(p);
         let id = self.add(label, Role::Given, || Geom::Point { at: p });
         self.touch(on[0], &p);
         self.touch(on[1], &p);
@@ -720,7 +1052,25 @@ impl Board {
                 return Err(self.fail_cut(step, &note, outcome));
             }
         };
-        Ok(self.finish_cut(p, cond, br, [a.id, b.id], label))
+        let h = self.finish_cut(p, cond, br, [a.id, b.id], label);
+        let step = StepId(self.next_step);
+        self.set_tr(h.id, |bd| {
+            let (ta, tb) = (bd.tr(a.id), bd.tr(b.id));
+            let (ga, gb) = (&a.g, &b.g);
+            let extent = p.coords.norm()
+                + ga.radius
+                + gb.radius
+                + ga.center.coords.norm()
+                + gb.center.coords.norm();
+            let worst = super::accuracy::worse(ta.worst, tb.worst);
+            let geom = (ta.err + tb.err, extent, ga.radius.max(gb.radius));
+            bd.model.cut(step, cond, geom, worst)
+        });
+        self.set_shadow(h.id, |bd| {
+            let ((c1, r1), (c2, r2)) = (bd.sc(a), bd.sc(b));
+            Shadow::Point(refr::circle_circle(&c1, r1, &c2, r2, &p))
+        });
+        Ok(h)
     }
 
     /// Measures the signed distance from `from` to `to` along the direction of `axis` and
@@ -735,16 +1085,27 @@ impl Board {
         note: Note,
     ) -> H<f64> {
         let mm = (to.g - from.g).dot(&axis.g.dir);
+        let mm = self.read(mm);
         let value = mm * scale.per_mm;
         self.begin(StepKind::Measure, &note, &[from.id, to.id, axis.id]);
         let unit = scale.unit;
         let id = self.add(label, Role::Result, || Geom::Scalar { value, unit });
+        self.set_tr(id, |b| {
+            let ends = (&b.tr(from.id), &b.tr(to.id));
+            b.model
+                .measured(ends, &b.tr(axis.id), mm, scale.per_mm, (&from.g, &to.g))
+        });
+        self.set_shadow(id, |b| {
+            let mm = b.sp(to).sub(&b.sp(from)).dot(&b.sl(axis).1);
+            Shadow::Scalar(mm * scale.per_mm)
+        });
         H { id, g: value }
     }
 
     /// Records a number reckoned from constructed values (`inputs`), not drawn: a value the
     /// checks can hold against its closed form, as the balance of the joints under a plan's
-    /// forces is held against zero.
+    /// forces is held against zero. Its error bound is the sum of its number inputs' bounds
+    /// and the rounding of summing them.
     pub fn tally(
         &mut self,
         value: f64,
@@ -753,8 +1114,37 @@ impl Board {
         inputs: &[ObjId],
         note: Note,
     ) -> H<f64> {
+        self.reckon(value, (unit, label), (inputs, 0.0), note)
+    }
+
+    /// [`Board::tally`] for a number reckoned from points as well (an area from the points
+    /// of a curve): `per_mm` is how much it changes per mm that one of its point inputs
+    /// moves, so that the points' bounds follow into it.
+    pub fn reckon(
+        &mut self,
+        value: f64,
+        (unit, label): (&'static str, Label),
+        (inputs, per_mm): (&[ObjId], f64),
+        note: Note,
+    ) -> H<f64> {
         self.begin(StepKind::Tally, &note, inputs);
         let id = self.add(label, Role::Result, || Geom::Scalar { value, unit });
+        self.set_tr(id, |b| {
+            let t: Vec<(Track, f64)> = inputs
+                .iter()
+                .map(|i| {
+                    let mut t = b.tr(*i);
+                    match b.object(*i).map(|o| &o.geom) {
+                        Some(Geom::Scalar { value, .. }) => (t, *value),
+                        _ => {
+                            t.err *= per_mm.abs();
+                            (t, 0.0)
+                        }
+                    }
+                })
+                .collect();
+            b.model.reckoned(t.iter(), value)
+        });
         H { id, g: value }
     }
 
@@ -803,9 +1193,12 @@ impl Board {
         label: &'static str,
         note: Note,
     ) -> Vec<H<Point>> {
-        let pts = construct::divide_segment(&Segment { a: a.g, b: b.g }, n);
+        let mut pts = construct::divide_segment(&Segment { a: a.g, b: b.g }, n);
+        let last = pts.len() - 1;
+        pts[1..last].iter_mut().for_each(|p| *p = self.mark(*p));
         self.begin(StepKind::Divide, &note, &[a.id, b.id]);
         let last = pts.len() - 1;
+        let n = n.max(1);
         let mut out = Vec::with_capacity(pts.len());
         for (k, p) in pts.into_iter().enumerate() {
             if k == 0 {
@@ -816,6 +1209,7 @@ impl Board {
                 let id = self.add(Label::quiet(label, k as u32), Role::Given, || Geom::Point {
                     at: p,
                 });
+                self.between(id, (a, b), k as f64 / n as f64, &p);
                 out.push(H { id, g: p });
             }
         }
@@ -835,10 +1229,18 @@ impl Board {
     ) -> Result<H<Point>, ConstructionError> {
         self.finite(t, &note)?;
         let p = construct::point_at_ratio(&Segment { a: a.g, b: b.g }, t);
+        let p = self.mark(p);
         self.grow(&p);
         self.begin(StepKind::Divide, &note, &[a.id, b.id]);
         let id = self.add(label, Role::Given, || Geom::Point { at: p });
+        self.between(id, (a, b), t, &p);
         Ok(H { id, g: p })
+    }
+
+    /// The bound and reference of the point `p` at the ratio `t` from `a` to `b`.
+    fn between(&mut self, id: ObjId, (a, b): (&H<Point>, &H<Point>), t: f64, p: &Point) {
+        self.set_tr(id, |bd| bd.model.between(&bd.tr(a.id), &bd.tr(b.id), t, p));
+        self.set_shadow(id, |bd| Shadow::Point(DP::between(&bd.sp(a), &bd.sp(b), t)));
     }
 
     /// The angle at `vertex` from the ray through `from` to the ray through `to`, in degrees
@@ -856,6 +1258,13 @@ impl Board {
         let value = u.perp(&v).abs().atan2(u.dot(&v)).to_degrees();
         self.begin(StepKind::Measure, &note, &[vertex.id, from.id, to.id]);
         let id = self.add(label, Role::Result, || Geom::Scalar { value, unit: "°" });
+        self.set_tr(id, |b| {
+            let (tv, tf, tt) = (b.tr(vertex.id), b.tr(from.id), b.tr(to.id));
+            b.model.angle(&tv, &tf, &tt, (u.norm(), v.norm()), value)
+        });
+        self.set_shadow(id, |b| {
+            Shadow::Scalar(refr::angle_deg(&b.sp(vertex), &b.sp(from), &b.sp(to)))
+        });
         H { id, g: value }
     }
 
@@ -875,9 +1284,12 @@ impl Board {
         if !self.recording {
             return;
         }
-        let (closed, bound) = closed_and_bound();
-        let tolerance = bound.max(CHECK_REL * closed.abs().max(reference.abs()));
+        let (closed, model_bound) = closed_and_bound();
+        let tolerance = model_bound.max(CHECK_REL * closed.abs().max(reference.abs()));
         let error = (value.g - closed).abs();
+        let (bound, worst_cut) = self
+            .bound(value.id)
+            .unwrap_or((self.model.rel * value.g.abs(), None));
         self.push_check(
             value.id,
             Check {
@@ -890,6 +1302,8 @@ impl Board {
                 tolerance,
                 reference,
                 passed: error <= tolerance,
+                bound,
+                worst_cut,
             },
         );
     }
@@ -916,6 +1330,48 @@ impl Board {
         if let Some(s) = step.and_then(|step| self.steps.get_mut(step.0 as usize - 1)) {
             s.checks.push(check);
         }
+    }
+
+    /// Per step with a point or a number among its results: how far f64 strayed from the
+    /// double-double replay and what the propagated bound predicted (empty unless the board
+    /// was made [`Board::with_reference`]).
+    pub fn reference_report(&self) -> Vec<ReferenceRow> {
+        let figure = self.tolerance.length / crate::kernel::tolerance::REL_LENGTH_EPS;
+        let mut rows = Vec::new();
+        for step in &self.steps {
+            let checked = step
+                .checks
+                .iter()
+                .map(|c| c.reference.abs())
+                .fold(0.0, f64::max);
+            let mut row: Option<ReferenceRow> = None;
+            for id in &step.outputs {
+                let (Some(obj), t) = (self.object(*id), self.tr(*id)) else {
+                    continue;
+                };
+                let (observed, scale) = match (self.shadow(*id), &obj.geom) {
+                    (Shadow::Point(r), Geom::Point { at }) => (r.off(at), figure),
+                    (Shadow::Scalar(r), Geom::Scalar { value, .. }) => {
+                        let dev = (twofloat::TwoFloat::from(*value) - r).hi().abs();
+                        (dev, r.hi().abs().max(checked))
+                    }
+                    _ => continue,
+                };
+                let r = row.get_or_insert(ReferenceRow {
+                    step: step.id,
+                    observed: 0.0,
+                    bound: 0.0,
+                    scale,
+                    worst_cut: None,
+                });
+                r.observed = r.observed.max(observed);
+                r.bound = r.bound.max(t.err);
+                r.scale = r.scale.max(scale);
+                r.worst_cut = super::accuracy::worse(r.worst_cut, t.worst);
+            }
+            rows.extend(row);
+        }
+        rows
     }
 
     /// The protocol as pretty JSON (deterministic: objects and steps in the order made).

@@ -3,14 +3,20 @@
 //! after GeoGebra's construction protocol. The protocol is data: it serialises to JSON, and
 //! every view (figure, check table, walk-through, benchmark) reads it.
 
+mod accuracy;
 mod board;
 mod error;
 mod figure;
+mod reference;
+mod setup;
 mod step;
 
+pub use accuracy::{ErrorModel, WorstCut};
 pub use board::{Board, Cut, Scale, H};
 pub use error::{ConstructionError, CutOutcome};
 pub use figure::{nice_at_least, FigureMeta, ScaleBar};
+pub use reference::ReferenceRow;
+pub use setup::{with_setup, Hand, Setup};
 pub use step::{
     note, Check, Geom, Ids, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Text, Topic,
     TABLE_BLOCK_ROWS,

@@ -396,6 +396,21 @@ pub struct Check {
     pub reference: f64,
     /// Whether the error is within the tolerance.
     pub passed: bool,
+    /// What the constructed value's error can be, propagated through every step it depends
+    /// on from f64's rounding (the board's error model): each cut amplifies the errors of the
+    /// curves it cuts by 1 / sin of its angle.
+    pub bound: f64,
+    /// The most glancing cut the constructed value depends on, its own step's or any before.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub worst_cut: Option<crate::protocol::WorstCut>,
+}
+
+impl Check {
+    /// Whether the value depends on a glancing cut (below
+    /// [`GLANCING_ANGLE`](crate::kernel::tolerance::GLANCING_ANGLE)).
+    pub fn glancing(&self) -> bool {
+        self.worst_cut.is_some_and(|w| w.conditioning.glancing())
+    }
 }
 
 /// One step of the construction protocol.

@@ -10,5 +10,8 @@ mod walkthrough;
 
 pub use crate::protocol::{FigureMeta, ScaleBar};
 pub use figure::figure;
-pub use table::{check_rows, check_table_json, check_table_text, CheckRow};
+pub use table::{
+    check_rows, check_table_json, check_table_text, reference_rows, reference_table_json,
+    reference_table_text, CheckRow, ReferenceTableRow,
+};
 pub use walkthrough::{walkthrough, walkthrough_cost, Page, MAX_PAGES, MAX_WALKTHROUGH_OBJECTS};

@@ -27,10 +27,15 @@ pub struct CheckRow {
     pub tolerance: f64,
     /// Passed?
     pub passed: bool,
-    /// Meeting angle (degrees) of the glancing-most intersection the value depends on directly
-    /// (the intersection step that made the measured point), if any.
+    /// The propagated bound of the constructed value's error (f64's rounding amplified by
+    /// every cut the value depends on).
+    pub bound: f64,
+    /// Meeting angle (degrees) of the most glancing cut the value depends on, in its own step
+    /// or any step before, if any.
     pub meeting_angle_deg: Option<f64>,
-    /// Whether that intersection was glancing.
+    /// The step of that cut.
+    pub cut_step: Option<String>,
+    /// Whether that cut was glancing.
     pub glancing: bool,
 }
 
@@ -40,20 +45,6 @@ pub fn check_rows(board: &Board) -> Vec<CheckRow> {
     for step in board.steps() {
         if step.checks.is_empty() {
             continue;
-        }
-        // The conditioning of the intersections that made the measured points.
-        let mut angle: Option<f64> = None;
-        let mut glancing = false;
-        for id in &step.inputs {
-            if let Some(obj) = board.object(*id) {
-                if let Some(src) = board.steps().get(obj.step.0 as usize - 1) {
-                    if let Some(c) = src.conditioning {
-                        let a = c.angle_deg();
-                        angle = Some(angle.map_or(a, |m: f64| m.min(a)));
-                        glancing |= c.glancing();
-                    }
-                }
-            }
         }
         for c in &step.checks {
             rows.push(CheckRow {
@@ -67,8 +58,10 @@ pub fn check_rows(board: &Board) -> Vec<CheckRow> {
                 error: c.error,
                 tolerance: c.tolerance,
                 passed: c.passed,
-                meeting_angle_deg: angle,
-                glancing,
+                bound: c.bound,
+                meeting_angle_deg: c.worst_cut.map(|w| w.conditioning.angle_deg()),
+                cut_step: c.worst_cut.map(|w| w.step.to_string()),
+                glancing: c.glancing(),
             });
         }
     }
@@ -85,8 +78,9 @@ pub fn check_table_text(board: &Board) -> String {
         "constructed",
         "closed form",
         "error",
+        "bound",
         "tolerance",
-        "cut angle",
+        "worst cut",
         "ok",
     ];
     let mut cells: Vec<Vec<String>> = vec![head.iter().map(|s| s.to_string()).collect()];
@@ -98,19 +92,152 @@ pub fn check_table_text(board: &Board) -> String {
             num(r.constructed, 6),
             num(r.closed_form, 6),
             sci(r.error),
+            sci(r.bound),
             sci(r.tolerance),
-            match r.meeting_angle_deg {
-                Some(a) => format!(
-                    "{}°{}",
+            match (r.meeting_angle_deg, &r.cut_step) {
+                (Some(a), Some(at)) => format!(
+                    "{}° at {at}{}",
                     num(a, 1),
                     if r.glancing { " glancing" } else { "" }
                 ),
-                None => "-".into(),
+                _ => "-".into(),
             },
             if r.passed { "ok" } else { "FAIL" }.into(),
         ]);
     }
-    let ncol = head.len();
+    let mut out = aligned(&cells, 3..=7);
+    let failed = rows.iter().filter(|r| !r.passed).count();
+    let glancing = rows.iter().filter(|r| r.glancing).count();
+    out.push_str(&format!(
+        "{} checks, {} passed, {} failed, {} depending on a glancing cut\n",
+        rows.len(),
+        rows.len() - failed,
+        failed,
+        glancing
+    ));
+    out
+}
+
+/// The check table as pretty JSON.
+pub fn check_table_json(board: &Board) -> String {
+    serde_json::to_string_pretty(&check_rows(board)).expect("rows are plain data")
+}
+
+/// One row of the reference table: a step replayed in double-double.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ReferenceTableRow {
+    /// Step number.
+    pub step: String,
+    /// The situation ("θ = 30°").
+    pub context: String,
+    /// The step's caption.
+    pub caption: String,
+    /// |f64 − double-double| of the step's results (mm on the sheet, or the value's unit).
+    pub observed: f64,
+    /// The propagated bound of the same results.
+    pub bound: f64,
+    /// Digits f64 lost against the replay.
+    pub digits_lost: f64,
+    /// Digits the propagated bound predicted.
+    pub digits_predicted: f64,
+    /// Meeting angle (degrees) of the most glancing cut the results depend on.
+    pub meeting_angle_deg: Option<f64>,
+    /// The step of that cut.
+    pub cut_step: Option<String>,
+    /// Whether the observed error is within the bound.
+    pub within: bool,
+}
+
+/// The rows of the reference table (empty unless the board replayed in double-double).
+pub fn reference_rows(board: &Board) -> Vec<ReferenceTableRow> {
+    board
+        .reference_report()
+        .into_iter()
+        .map(|r| {
+            let step = &board.steps()[r.step.0 as usize - 1];
+            ReferenceTableRow {
+                step: r.step.to_string(),
+                context: step.context.as_deref().unwrap_or("").to_string(),
+                caption: step.caption.to_string(),
+                observed: r.observed,
+                bound: r.bound,
+                digits_lost: r.digits_lost(),
+                digits_predicted: r.digits_predicted(),
+                meeting_angle_deg: r.worst_cut.map(|w| w.conditioning.angle_deg()),
+                cut_step: r.worst_cut.map(|w| w.step.to_string()),
+                within: r.observed <= r.bound,
+            }
+        })
+        .collect()
+}
+
+/// The reference table as text: the steps that lost or were predicted to lose a digit or
+/// more (and every step where the bound failed), then a summary of all.
+pub fn reference_table_text(board: &Board) -> String {
+    let rows = reference_rows(board);
+    let shown: Vec<&ReferenceTableRow> = rows
+        .iter()
+        .filter(|r| r.digits_lost >= 1.0 || r.digits_predicted >= 1.0 || !r.within)
+        .collect();
+    let head = [
+        "step",
+        "context",
+        "caption",
+        "f64 error",
+        "bound",
+        "lost",
+        "predicted",
+        "worst cut",
+        "ok",
+    ];
+    let mut cells: Vec<Vec<String>> = vec![head.iter().map(|s| s.to_string()).collect()];
+    for r in &shown {
+        cells.push(vec![
+            r.step.clone(),
+            r.context.clone(),
+            r.caption.clone(),
+            sci(r.observed),
+            sci(r.bound),
+            num(r.digits_lost, 1),
+            num(r.digits_predicted, 1),
+            match (r.meeting_angle_deg, &r.cut_step) {
+                (Some(a), Some(at)) => format!("{}° at {at}", num(a, 3)),
+                _ => "-".into(),
+            },
+            if r.within { "ok" } else { "OVER" }.into(),
+        ]);
+    }
+    let mut out = aligned(&cells, 3..=6);
+    let over = rows.iter().filter(|r| !r.within).count();
+    let worst = rows
+        .iter()
+        .max_by(|a, b| a.digits_lost.total_cmp(&b.digits_lost));
+    out.push_str(&format!(
+        "{} steps replayed in double-double ({} listed, the rest lost and were predicted to lose less than one digit); the bound held at {} of them{}\n",
+        rows.len(),
+        shown.len(),
+        rows.len() - over,
+        match worst {
+            Some(w) => format!(
+                "; most digits lost: {} at step {} (predicted {})",
+                num(w.digits_lost, 1),
+                w.step,
+                num(w.digits_predicted, 1)
+            ),
+            None => String::new(),
+        }
+    ));
+    out
+}
+
+/// The reference table as pretty JSON (every replayed step).
+pub fn reference_table_json(board: &Board) -> String {
+    serde_json::to_string_pretty(&reference_rows(board)).expect("rows are plain data")
+}
+
+/// Cells as aligned text with a rule under the header; `right` columns right-aligned.
+fn aligned(cells: &[Vec<String>], right: std::ops::RangeInclusive<usize>) -> String {
+    let ncol = cells[0].len();
     let widths: Vec<usize> = (0..ncol)
         .map(|c| {
             cells
@@ -126,11 +253,11 @@ pub fn check_table_text(board: &Board) -> String {
             .iter()
             .enumerate()
             .map(|(c, s)| {
-                let pad = widths[c] - s.chars().count();
-                if (3..=6).contains(&c) {
-                    format!("{}{}", " ".repeat(pad), s)
+                let pad = " ".repeat(widths[c] - s.chars().count());
+                if right.contains(&c) {
+                    format!("{pad}{s}")
                 } else {
-                    format!("{}{}", s, " ".repeat(pad))
+                    format!("{s}{pad}")
                 }
             })
             .collect();
@@ -142,19 +269,5 @@ pub fn check_table_text(board: &Board) -> String {
             out.push('\n');
         }
     }
-    let failed = rows.iter().filter(|r| !r.passed).count();
-    let glancing = rows.iter().filter(|r| r.glancing).count();
-    out.push_str(&format!(
-        "{} checks, {} passed, {} failed, {} on a glancing intersection\n",
-        rows.len(),
-        rows.len() - failed,
-        failed,
-        glancing
-    ));
     out
-}
-
-/// The check table as pretty JSON.
-pub fn check_table_json(board: &Board) -> String {
-    serde_json::to_string_pretty(&check_rows(board)).expect("rows are plain data")
 }

@@ -192,6 +192,44 @@ impl ForceSystemScene {
             if self.forces.len() != 2 || !self.resolve.is_empty() {
                 return Err(f.bad("auxiliary_force_kg", "the auxiliary-force construction takes exactly two parallel forces and no resolutions".into()));
             }
+            self.check_auxiliary_pair(f, aux)?;
+        }
+        Ok(())
+    }
+
+    /// The pair of Abb. 21 can be constructed: parallel forces at two points off their common
+    /// line of action, whose partial resultants with the auxiliary forces meet at an angle
+    /// the board can cut (a pair nearly equal and opposite is a couple to the drawing's
+    /// precision: its partial resultants run parallel).
+    fn check_auxiliary_pair(&self, f: Fields, aux: f64) -> Result<(), SceneError> {
+        use crate::kernel::tolerance::PARALLEL_SIN_EPS;
+        use crate::kernel::{cross, Vector};
+        let (Some(a), Some(b)) = (self.forces[0].vector(), self.forces[1].vector()) else {
+            return Ok(());
+        };
+        let (v1, v2) = (Vector::new(a[0], a[1]), Vector::new(b[0], b[1]));
+        if cross(&v1, &v2).abs() > PARALLEL_SIN_EPS * v1.norm() * v2.norm() {
+            return Err(f.bad("forces[1]", "is not parallel to forces[0]: the auxiliary-force construction takes two parallel forces".into()));
+        }
+        let (p, q) = (self.forces[0].at_m, self.forces[1].at_m);
+        let join = Vector::new(q[0] - p[0], q[1] - p[1]);
+        if cross(&join, &(v1 / v1.norm())).abs() <= PARALLEL_SIN_EPS * join.norm() {
+            return Err(f.bad("forces[1].at_m", "lies on the line of action of forces[0]: the resultant acts on that line, and the auxiliary forces have no line to act along".into()));
+        }
+        let across = join / join.norm() * aux;
+        let (d1, d2) = (v1 + across, v2 - across);
+        let sin = cross(&d1, &d2).abs() / (d1.norm() * d2.norm());
+        // Ten times the board's parallel limit, so that the constructed lines (whose sine
+        // rounds differently) are never judged parallel after this passed.
+        if sin.is_nan() || sin <= 10.0 * PARALLEL_SIN_EPS {
+            let sum = v1 + v2;
+            return Err(f.bad(
+                "forces[1]",
+                format!(
+                    "and forces[0] sum to {} kg, nearly equal and opposite: their partial resultants with the auxiliary forces meet at {sin:.1e} rad, parallel on the board (a couple to the drawing's precision); leave out auxiliary_force_kg to draw the pair by the funicular polygon",
+                    crate::fmt::sci(sum.norm())
+                ),
+            ));
         }
         Ok(())
     }

@@ -152,7 +152,7 @@ pub(super) fn cremona_plan(
     if let Some(m) = found.forces.iter().position(|f| f.is_none()) {
         return Err(stalls(t, g, &found.forces, m));
     }
-    let result = plan_result(b, ctx, &found.forces, &found.plan_mm);
+    let result = plan_result(b, ctx, (&found.forces, &found.ids), &found.plan_mm);
     Ok((result, bx))
 }
 
@@ -253,6 +253,8 @@ struct Found<'a> {
     space_of_half: &'a [usize],
     reference: f64,
     forces: Vec<Option<f64>>,
+    /// The objects the forces were read as (their error bounds follow into the balance).
+    ids: Vec<crate::protocol::ObjId>,
     plan_mm: Vec<f64>,
 }
 
@@ -264,6 +266,7 @@ impl<'a> Found<'a> {
             space_of_half,
             reference: check_reference(ctx.maxload, ctx.ext),
             forces: vec![None; n],
+            ids: vec![crate::protocol::ObjId::NONE; n],
             plan_mm: vec![0.0; n],
         }
     }
@@ -288,6 +291,7 @@ impl<'a> Found<'a> {
                 let v = b.measure(&pl, &pr, &mline[m], kg, member_label(t, m), N_FORCE);
                 check_member(b, &v, m, sol, self.reference);
                 self.forces[m] = Some(v.g);
+                self.ids[m] = v.id;
                 self.plan_mm[m] = (pr.g - pl.g).norm();
             }
         }

@@ -65,6 +65,8 @@ struct Polygons<'a> {
     ext_at: Vec<Vec<Vector>>,
     reference: f64,
     force: Vec<Option<f64>>,
+    /// The objects the forces were read as (their error bounds follow into the balance).
+    ids: Vec<crate::protocol::ObjId>,
     plan_mm: Vec<f64>,
     bx: [f64; 4],
     cursor: f64,
@@ -107,6 +109,7 @@ pub(crate) fn joint_polygons(
         for (m, h, mm) in found {
             check_member(b, &h, m, sol, p.reference);
             p.force[m] = Some(h.g);
+            p.ids[m] = h.id;
             p.plan_mm[m] = mm;
             for &e in &t.members[m].ends {
                 if !queued[e] {
@@ -128,7 +131,7 @@ pub(crate) fn joint_polygons(
             ),
         });
     }
-    let result = plan_result(b, ctx, &p.force, &p.plan_mm);
+    let result = plan_result(b, ctx, (&p.force, &p.ids), &p.plan_mm);
     let bx = if p.bx[0].is_finite() { p.bx } else { [0.0; 4] };
     Ok((result, bx))
 }
@@ -152,6 +155,7 @@ impl<'a> Polygons<'a> {
             ext_at,
             reference: check_reference(ctx.maxload, ctx.ext),
             force: vec![None; t.members.len()],
+            ids: vec![crate::protocol::ObjId::NONE; t.members.len()],
             plan_mm: vec![0.0; t.members.len()],
             bx: EMPTY,
             cursor: ctx.at.x,

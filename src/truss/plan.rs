@@ -71,7 +71,7 @@ pub(super) fn ext_max(ext: &External) -> f64 {
 pub(crate) fn plan_result(
     b: &mut Board,
     ctx: &PlanContext,
-    forces: &[Option<f64>],
+    (forces, ids): (&[Option<f64>], &[crate::protocol::ObjId]),
     plan_mm: &[f64],
 ) -> CaseResult {
     let PlanContext {
@@ -88,7 +88,7 @@ pub(crate) fn plan_result(
         .collect();
     let mut result = case_result(t, case, &members, plan_mm, &matrix, &ext.reactions, dr);
     result.matrix_residual = sol.map(|s| matrix::max_residual(t, case, &s.members, &s.reactions));
-    check_balance(b, ctx, &members);
+    check_balance(b, ctx, &members, ids);
     result
 }
 
@@ -96,7 +96,12 @@ pub(crate) fn plan_result(
 /// every size, that names the joint that balances worst. It is
 /// judged against the largest force of the case (a load, a reaction or a member force: the
 /// chord of a long girder carries many times its largest load, and its rounding with it).
-fn check_balance(b: &mut Board, ctx: &PlanContext, members: &[f64]) {
+fn check_balance(
+    b: &mut Board,
+    ctx: &PlanContext,
+    members: &[f64],
+    ids: &[crate::protocol::ObjId],
+) {
     if !b.is_recording() {
         return;
     }
@@ -107,11 +112,17 @@ fn check_balance(b: &mut Board, ctx: &PlanContext, members: &[f64]) {
     };
     let largest = members.iter().fold(0.0, |a: f64, f| a.max(f.abs()));
     let reference = check_reference(ctx.maxload, ctx.ext).max(largest);
+    // Reckoned from the forces of the joint's members, whose bounds it carries.
+    let at_joint: Vec<_> = (0..t.members.len())
+        .filter(|&m| t.members[m].ends.contains(&joint))
+        .map(|m| ids[m])
+        .filter(|id| *id != crate::protocol::ObjId::NONE)
+        .collect();
     let v = b.tally(
         residual,
         "kg",
         crate::protocol::Label::NONE,
-        &[],
+        &at_joint,
         super::notes::N_BALANCE,
     );
     let name = &t.joints[joint].name;

@@ -1,0 +1,268 @@
+//! How far a constructed value can be off: a first-order error bound that every object on a
+//! recording board carries, propagated through each step from the objects the step uses.
+//!
+//! The drafter knows the rule: a point found by two lines meeting at θ is off by `δ / sin θ`
+//! when either line is off by `δ` across itself, and a line ruled through two points is
+//! turned by their errors over their distance. Applied step by step, the rule gives every
+//! point, line, circle and measured number a bound of its error, amplified by every cut it
+//! depends on, not only by the last one. The crank's rod force S is found by cutting the rod
+//! with a perpendicular after the crosshead was found by cutting the rod-length circle with
+//! the guide: near λ = 1 at 90° both cuts are glancing, and S's error grows as the square of
+//! their amplification, which the bound follows and the row's own cut angle would not.
+//!
+//! Which errors the steps add is an [`ErrorModel`]: f64's rounding
+//! ([`ErrorModel::ROUNDING`], what a board uses) or a draftsman's pencil, set square and
+//! scale rule ([`ErrorModel::drafting`]).
+
+use super::step::StepId;
+use crate::kernel::tolerance::OP_ROUNDOFF;
+use crate::kernel::{Conditioning, Line, Point};
+use serde::Serialize;
+
+/// The errors each step adds before the amplification of the cuts.
+///
+/// ```
+/// use graphostatik::protocol::ErrorModel;
+/// let m = ErrorModel::drafting(0.1, 0.001, 0.05);
+/// assert_eq!(m.mark_mm, 0.1);
+/// assert!(ErrorModel::ROUNDING.rel < 1e-15);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ErrorModel {
+    /// Relative error of every coordinate or number a step computes (f64's rounding).
+    pub rel: f64,
+    /// Error (mm) of every point marked and every line drawn: half a pencil line.
+    pub mark_mm: f64,
+    /// Error (rad) of every direction set with a set square or a protractor.
+    pub angle_rad: f64,
+    /// Error (mm) of every length set on, or read off, the scale rule.
+    pub read_mm: f64,
+}
+
+impl ErrorModel {
+    /// f64's rounding: [`OP_ROUNDOFF`] relative per step, nothing else.
+    pub const ROUNDING: ErrorModel = ErrorModel {
+        rel: OP_ROUNDOFF,
+        mark_mm: 0.0,
+        angle_rad: 0.0,
+        read_mm: 0.0,
+    };
+
+    /// A draftsman: points and lines off by `mark_mm` (half the pencil line), directions by
+    /// `angle_rad`, lengths by `read_mm` on the scale rule; f64's rounding besides.
+    pub const fn drafting(mark_mm: f64, angle_rad: f64, read_mm: f64) -> ErrorModel {
+        ErrorModel {
+            rel: OP_ROUNDOFF,
+            mark_mm,
+            angle_rad,
+            read_mm,
+        }
+    }
+
+    fn round(&self, p: &Point) -> f64 {
+        self.rel * p.coords.norm()
+    }
+}
+
+/// The worst-conditioned cut a value depends on: its step and its meeting angle.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct WorstCut {
+    /// The step of the cut.
+    pub step: StepId,
+    /// Its meeting angle and amplification.
+    pub conditioning: Conditioning,
+}
+
+/// The more glancing of two cuts (the earlier one on a tie).
+pub(crate) fn worse(a: Option<WorstCut>, b: Option<WorstCut>) -> Option<WorstCut> {
+    match (a, b) {
+        (Some(x), Some(y)) => {
+            if y.conditioning.amplification() > x.conditioning.amplification() {
+                Some(y)
+            } else {
+                Some(x)
+            }
+        }
+        (x, None) => x,
+        (None, y) => y,
+    }
+}
+
+/// The error bound an object carries. For a point: its distance from where it should be
+/// (mm); for a line: its offset at its origin (mm) and its turn (rad), so that it is off by
+/// `err + turn·d` at distance `d` along it; for a circle: its radial error (mm); for a number:
+/// its error in its unit.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct Track {
+    pub err: f64,
+    pub turn: f64,
+    pub worst: Option<WorstCut>,
+}
+
+impl Track {
+    /// How far a line carrying this track is off across itself at `p`.
+    pub fn across(&self, line: &Line, p: &Point) -> f64 {
+        self.err + self.turn * (p - line.origin).norm()
+    }
+
+    fn with(err: f64, turn: f64, worst: Option<WorstCut>) -> Track {
+        Track { err, turn, worst }
+    }
+}
+
+/// The tracks of the kernel's steps under an error model.
+impl ErrorModel {
+    /// A given point.
+    pub(crate) fn given(&self, p: &Point) -> Track {
+        Track::with(self.round(p) + self.mark_mm, 0.0, None)
+    }
+
+    /// A line through a point in a given direction.
+    pub(crate) fn line_at(&self, p: &Track) -> Track {
+        Track::with(p.err + self.mark_mm, self.angle_rad + self.rel, p.worst)
+    }
+
+    /// The line from `a` through `b` (`len` mm apart).
+    pub(crate) fn ruled(&self, a: &Track, b: &Track, len: f64) -> Track {
+        let turn = (a.err + b.err + self.mark_mm) / len + self.rel;
+        Track::with(a.err + self.mark_mm, turn, worse(a.worst, b.worst))
+    }
+
+    /// A parallel or perpendicular to a line through a point (set squares).
+    pub(crate) fn slid(&self, line: &Track, p: &Track) -> Track {
+        let turn = line.turn + self.angle_rad + self.rel;
+        Track::with(p.err + self.mark_mm, turn, worse(line.worst, p.worst))
+    }
+
+    /// A circle of radius `r` about a centre (the compass set on the scale rule).
+    pub(crate) fn compass(&self, c: &Track, center: &Point, r: f64) -> Track {
+        let err = c.err + self.read_mm + self.mark_mm + self.rel * (center.coords.norm() + r);
+        Track::with(err, 0.0, c.worst)
+    }
+
+    /// The point of a circle of radius `r` at a given angle (protractor or equal division).
+    pub(crate) fn on_circle(&self, circle: &Track, p: &Point, r: f64) -> Track {
+        let err = circle.err + self.round(p) + r * self.angle_rad + self.mark_mm;
+        Track::with(err, 0.0, circle.worst)
+    }
+
+    /// `len` mm laid off from a point along a line, to `p`; `carried` is the error (mm) of a
+    /// length taken from a value read earlier (the dividers' transfer).
+    pub(crate) fn laid(
+        &self,
+        from: &Track,
+        along: &Track,
+        len: f64,
+        p: &Point,
+        carried: &Track,
+    ) -> Track {
+        let err = from.err
+            + len.abs() * along.turn
+            + carried.err
+            + self.read_mm
+            + self.mark_mm
+            + self.round(p);
+        Track::with(
+            err,
+            0.0,
+            worse(worse(from.worst, along.worst), carried.worst),
+        )
+    }
+
+    /// A point between two points at the ratio `t` (an equal division, a tangent divided).
+    pub(crate) fn between(&self, a: &Track, b: &Track, t: f64, p: &Point) -> Track {
+        let err = (1.0 - t).abs() * a.err + t.abs() * b.err + self.round(p) + self.mark_mm;
+        Track::with(err, 0.0, worse(a.worst, b.worst))
+    }
+
+    /// The foot `f` of the perpendicular from a point (`at`) on a line.
+    pub(crate) fn foot(
+        &self,
+        line: &Track,
+        l: &Line,
+        (p, at): (&Track, &Point),
+        f: &Point,
+    ) -> Track {
+        let err = p.err
+            + line.across(l, f)
+            + self.angle_rad * (at - f).norm()
+            + self.round(f)
+            + self.mark_mm;
+        Track::with(err, 0.0, worse(line.worst, p.worst))
+    }
+
+    /// The point `p` where two curves meet at `cond`, each off by `delta` (mm, summed) across
+    /// itself there, `extent` the magnitude of the coordinates the cut computes with, `radius`
+    /// the larger radius of a curved cut (`0` for two lines): `δ / sin θ`, and no more than
+    /// the `√(2rδ) + δ` by which a circle shifted by `δ` moves a near-tangent point.
+    pub(crate) fn cut(
+        &self,
+        step: StepId,
+        cond: Conditioning,
+        (delta, extent, radius): (f64, f64, f64),
+        worst: Option<WorstCut>,
+    ) -> Track {
+        let delta = delta + self.rel * extent;
+        let amp = cond.amplification();
+        let mut err = amp * delta;
+        if radius > 0.0 {
+            err = err.min((2.0 * radius * delta).sqrt() + delta);
+        }
+        let own = Some(WorstCut {
+            step,
+            conditioning: cond,
+        });
+        Track::with(err + self.mark_mm, 0.0, worse(worst, own))
+    }
+
+    /// A length between two points, read along a line's direction (`len` mm) at `per_mm`.
+    pub(crate) fn measured(
+        &self,
+        ends: (&Track, &Track),
+        axis: &Track,
+        len: f64,
+        per_mm: f64,
+        at: (&Point, &Point),
+    ) -> Track {
+        let mm = ends.0.err
+            + ends.1.err
+            + len.abs() * axis.turn
+            + self.read_mm
+            + self.rel * (at.0.coords.norm() + at.1.coords.norm());
+        let worst = worse(worse(ends.0.worst, ends.1.worst), axis.worst);
+        Track::with(
+            mm * per_mm.abs() + self.rel * (len * per_mm).abs(),
+            0.0,
+            worst,
+        )
+    }
+
+    /// An angle (degrees) at a vertex between rays of lengths `lu` and `lv` mm.
+    pub(crate) fn angle(
+        &self,
+        v: &Track,
+        from: &Track,
+        to: &Track,
+        (lu, lv): (f64, f64),
+        deg: f64,
+    ) -> Track {
+        let rad = (v.err + from.err) / lu + (v.err + to.err) / lv + self.angle_rad;
+        let worst = worse(worse(v.worst, from.worst), to.worst);
+        Track::with(rad.to_degrees() + self.rel * deg.abs(), 0.0, worst)
+    }
+
+    /// A number reckoned from numbers (each with its track and value): the sum of their
+    /// errors and the rounding of summing them.
+    pub(crate) fn reckoned<'a>(
+        &self,
+        inputs: impl Iterator<Item = &'a (Track, f64)>,
+        value: f64,
+    ) -> Track {
+        let mut t = Track::with(self.rel * value.abs(), 0.0, None);
+        for (i, v) in inputs {
+            t.err += i.err + self.rel * v.abs();
+            t.worst = worse(t.worst, i.worst);
+        }
+        t
+    }
+}
