@@ -42,6 +42,19 @@ enum Command {
         #[arg(long)]
         reference: bool,
     },
+    /// Sweep the knobs that trade time for accuracy (crank divisions, integration rules, point
+    /// loads for a uniform load, f64 against a double-double replay): error against the exact
+    /// value and time per run, as a table (and as a log-log plot with --svg).
+    Accuracy {
+        /// The scene file.
+        scene: PathBuf,
+        /// Also write the plot of error against time to this SVG file.
+        #[arg(long)]
+        svg: Option<PathBuf>,
+        /// Print JSON instead of a text table.
+        #[arg(long)]
+        json: bool,
+    },
     /// Write one cumulative SVG per construction step and an index.html that pages through them.
     Steps {
         /// The scene file.
@@ -157,6 +170,7 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
             reference: true,
         } => reference_cmd(&scene, json),
         Command::Steps { scene, out } => steps_cmd(&scene, &out),
+        Command::Accuracy { scene, svg, json } => accuracy_cmd(&scene, svg.as_deref(), json),
         Command::Protocol { scene } => {
             let p = load(&scene)?;
             let board = construct(&scene, &p)?;
@@ -284,6 +298,45 @@ fn reference_cmd(scene: &Path, json: bool) -> Result<ExitCode, Fail> {
     } else {
         ExitCode::SUCCESS
     })
+}
+
+/// `accuracy`: the knobs swept, with a progress line on a terminal (none otherwise).
+fn accuracy_cmd(scene: &Path, svg: Option<&Path>, json: bool) -> Result<ExitCode, Fail> {
+    use std::io::{IsTerminal, Write};
+    let p = load(scene)?;
+    let tty = std::io::stderr().is_terminal();
+    let mut progress = |done: usize, total: usize| {
+        if tty {
+            let bar = "#".repeat(done * 30 / total.max(1));
+            eprint!("\r[{bar:<30}] {done}/{total} settings");
+            let _ = std::io::stderr().flush();
+            if done == total {
+                eprintln!();
+            }
+        }
+    };
+    let sweeps = graphostatik::scene::sweeps(&p, &mut progress).map_err(|e| {
+        Fail(format!(
+            "{}: a setting of the sweep did not construct: {e}",
+            scene.display()
+        ))
+    })?;
+    if let Some(path) = svg {
+        let title = format!("What accuracy costs: {}", p.figure_meta().title);
+        let mut batch = Batch::default();
+        batch.add(
+            path.to_path_buf(),
+            render::accuracy_plot_svg(&title, &sweeps),
+        );
+        commit(batch)?;
+    }
+    if json {
+        let text = serde_json::to_string_pretty(&sweeps).expect("sweeps are plain data");
+        say(&(text + "\n"))?;
+    } else {
+        say(&render::accuracy_table_text(&sweeps))?;
+    }
+    Ok(ExitCode::SUCCESS)
 }
 
 /// `steps`: one cumulative SVG per step and the page that walks through them.

@@ -218,3 +218,49 @@ proptest! {
         }
     }
 }
+
+fn sweeps_of(path: &str) -> Vec<graphostatik::scene::Sweep> {
+    let p = AnyScene::load(std::path::Path::new(&format!(
+        "{}/scenes/{path}",
+        env!("CARGO_MANIFEST_DIR")
+    )))
+    .unwrap()
+    .problem();
+    let mut calls = 0;
+    let s = graphostatik::scene::sweeps(&p, &mut |_, _| calls += 1).unwrap();
+    assert!(calls > 0);
+    s
+}
+
+/// `graphostatik accuracy` on a crank: T_m of a constant piston force by the divisions
+/// converges as n⁻² to 2P/π (the turning force has kinks at the dead centres), and f64
+/// keeps every digit but one against the double-double replay.
+#[test]
+fn the_crank_sweep_converges_as_the_square_of_the_divisions() {
+    let s = sweeps_of("lh_aufgabe1_forces.json");
+    let crank = s.iter().find(|s| s.knob == "crank divisions").unwrap();
+    let err = |n: &str| crank.points.iter().find(|p| p.setting == n).unwrap().error;
+    let order = (err("36") / err("3600")).log10() / 2.0;
+    assert!((order - 2.0).abs() < 0.05, "order {order}");
+    assert!((crank.exact.unwrap() - 2.0 * 8713.0 / std::f64::consts::PI).abs() < 1.0);
+    let precision = s.iter().find(|s| s.knob == "precision").unwrap();
+    assert!(precision.points[0].error < 1e-14 && precision.points[1].seconds > 0.0);
+}
+
+/// On a uniformly loaded beam, n point loads at the strips' centres make a polygon that lies
+/// q·Δ²/8 off the parabola (exactly 1/n² of q·l²/8 for a load over the span); the
+/// parabola by its tangents is exact at every division.
+#[test]
+fn the_beam_sweep_shows_the_funicular_polygon_off_the_parabola_by_one_over_n_squared() {
+    let s = sweeps_of("lh_aufgabe6_abb36_uniform.json");
+    let loads = s
+        .iter()
+        .find(|s| s.knob.starts_with("n point loads"))
+        .unwrap();
+    for p in &loads.points {
+        let n: f64 = p.setting.parse().unwrap();
+        assert!((loads.relative(p) * n * n - 1.0).abs() < 1e-9, "{p:?}");
+    }
+    let tangents = s.iter().find(|s| s.knob.starts_with("parabola")).unwrap();
+    assert!(tangents.points.iter().all(|p| tangents.relative(p) < 1e-14));
+}

@@ -150,9 +150,28 @@ fn cli_exits_2_with_one_clear_line_and_writes_nothing() {
     );
     assert!(!stderr.contains("panicked"));
     assert!(!out.exists());
-    for cmd in ["check", "protocol"] {
-        let o = Command::new(bin()).arg(cmd).arg(&bad).output().unwrap();
-        assert_eq!(o.status.code(), Some(2), "{cmd}");
+    let svg = d.join("plot.svg");
+    let plot = ["--svg", svg.to_str().unwrap()];
+    for cmd in [
+        &["check"][..],
+        &["check", "--reference"],
+        &["protocol"],
+        &["accuracy"],
+        &plot,
+    ] {
+        let cmd = if cmd[0] == "--svg" {
+            [&["accuracy"][..], cmd].concat()
+        } else {
+            cmd.to_vec()
+        };
+        let o = Command::new(bin()).args(&cmd).arg(&bad).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{cmd:?}");
+        let stderr = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            stderr.contains("mechanism.rod.length_mm") && stderr.lines().count() == 1,
+            "{cmd:?}: {stderr}"
+        );
+        assert!(!svg.exists(), "{cmd:?}: nothing is written");
     }
     let o = Command::new(bin())
         .arg("check")

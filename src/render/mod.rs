@@ -4,12 +4,14 @@
 
 mod figure;
 pub mod forces;
+mod plot;
 mod style;
 mod table;
 mod walkthrough;
 
 pub use crate::protocol::{FigureMeta, ScaleBar};
 pub use figure::figure;
+pub use plot::{accuracy_plot_svg, accuracy_table_text};
 pub use table::{
     check_rows, check_table_json, check_table_text, reference_rows, reference_table_json,
     reference_table_text, CheckRow, ReferenceTableRow,

@@ -14,7 +14,7 @@ pub struct Page {
     pub contents: String,
 }
 
-fn html_escape(s: &str) -> String {
+pub(super) fn html_escape(s: &str) -> String {
     crate::fmt::sheet_text(s)
         .replace('&', "&amp;")
         .replace('<', "&lt;")

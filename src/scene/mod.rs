@@ -18,6 +18,7 @@
 //! assert!(problem.request.piston_path && !problem.request.tangential_force);
 //! ```
 
+mod accuracy;
 mod beam;
 mod centroid;
 mod crank_dynamics;
@@ -33,6 +34,7 @@ mod slider_crank;
 mod truss;
 mod types;
 
+pub use accuracy::{sweeps, Sweep, SweepPoint};
 pub use beam::{
     BeamDrawingSpec, BeamOutput, BeamProblem, BeamScene, BeamSpec, PointLoadSpec, UniformLoadSpec,
     MAX_LOADS,
