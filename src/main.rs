@@ -55,6 +55,34 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Draw the scene many times by a simulated draftsman's hand (pencil, set square, scale
+    /// rule, each a random error of every step) on every core, and print the spread of every
+    /// checked value beside the bound the board propagates for that hand.
+    Drafting {
+        /// The scene file.
+        scene: PathBuf,
+        /// Standard deviation of a marked point or ruled line (mm): half a pencil line.
+        #[arg(long, default_value_t = 0.1)]
+        pencil_mm: f64,
+        /// Standard deviation of a direction set with the set square or protractor (degrees).
+        #[arg(long, default_value_t = 0.1)]
+        angle_deg: f64,
+        /// Standard deviation of a length set or read on the scale rule (mm).
+        #[arg(long, default_value_t = 0.1)]
+        read_mm: f64,
+        /// Drawings made.
+        #[arg(long, default_value_t = 200, value_parser = clap::value_parser!(u32).range(2..=100_000))]
+        runs: u32,
+        /// Seed of the first drawing (the same seed gives the same table).
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Drawings made at once (default: every core). The table is the same for any value.
+        #[arg(long, value_parser = clap::value_parser!(u16).range(1..))]
+        jobs: Option<u16>,
+        /// Print JSON instead of a text table.
+        #[arg(long)]
+        json: bool,
+    },
     /// Write one cumulative SVG per construction step and an index.html that pages through them.
     Steps {
         /// The scene file.
@@ -171,6 +199,41 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
         } => reference_cmd(&scene, json),
         Command::Steps { scene, out } => steps_cmd(&scene, &out),
         Command::Accuracy { scene, svg, json } => accuracy_cmd(&scene, svg.as_deref(), json),
+        Command::Drafting {
+            scene,
+            pencil_mm,
+            angle_deg,
+            read_mm,
+            runs,
+            seed,
+            jobs,
+            json,
+        } => {
+            let hand = [
+                ("--pencil-mm", pencil_mm),
+                ("--angle-deg", angle_deg),
+                ("--read-mm", read_mm),
+            ];
+            if let Some((name, v)) = hand
+                .iter()
+                .find(|(_, v)| !(v.is_finite() && *v >= 0.0 && *v <= 100.0))
+            {
+                return Err(Fail(format!(
+                    "{name}: must be a number from 0 to 100, got {v}"
+                )));
+            }
+            let options = graphostatik::scene::DraftingOptions {
+                hand: graphostatik::protocol::ErrorModel::drafting(
+                    pencil_mm,
+                    angle_deg.to_radians(),
+                    read_mm,
+                ),
+                runs: runs as usize,
+                seed,
+                jobs: jobs.map_or_else(cores, usize::from),
+            };
+            drafting_cmd(&scene, options, json)
+        }
         Command::Protocol { scene } => {
             let p = load(&scene)?;
             let board = construct(&scene, &p)?;
@@ -230,10 +293,7 @@ fn render_all(files: &[PathBuf], jobs: Option<u16>) -> Vec<Result<String, Fail>>
         let board = construct(f, &p)?;
         Ok(render::figure(&p.figure_meta(), &board, None))
     };
-    let workers = jobs
-        .map(usize::from)
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from))
-        .min(files.len());
+    let workers = jobs.map(usize::from).unwrap_or_else(cores).min(files.len());
     if workers <= 1 {
         return files.iter().map(one).collect();
     }
@@ -339,6 +399,27 @@ fn accuracy_cmd(scene: &Path, svg: Option<&Path>, json: bool) -> Result<ExitCode
     Ok(ExitCode::SUCCESS)
 }
 
+/// `drafting`: the scene drawn by a simulated hand, many times.
+fn drafting_cmd(
+    scene: &Path,
+    options: graphostatik::scene::DraftingOptions,
+    json: bool,
+) -> Result<ExitCode, Fail> {
+    let p = load(scene)?;
+    let report =
+        graphostatik::scene::drafting(&p, options).map_err(|e| match p.error_field(&e) {
+            Some(field) => Fail(format!("{}: {field}: {e}", scene.display())),
+            None => Fail(format!("{}: {e}", scene.display())),
+        })?;
+    if json {
+        let text = serde_json::to_string_pretty(&report).expect("the report is plain data");
+        say(&(text + "\n"))?;
+    } else {
+        say(&render::drafting_table_text(&report))?;
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
 /// `steps`: one cumulative SVG per step and the page that walks through them.
 fn steps_cmd(scene: &Path, out: &Path) -> Result<ExitCode, Fail> {
     let p = load(scene)?;
@@ -428,6 +509,11 @@ fn procedures_cmd() -> Result<ExitCode, Fail> {
     }
     say(&text)?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// The cores this machine offers (1 if it cannot say).
+fn cores() -> usize {
+    std::thread::available_parallelism().map_or(1, usize::from)
 }
 
 fn main() -> ExitCode {

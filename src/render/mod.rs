@@ -2,6 +2,7 @@
 //! pages, and the check table. The renderer reads a recorded [`Board`](crate::protocol::Board)
 //! and computes no mechanics: the scales and title it writes come in a [`FigureMeta`].
 
+mod drafting;
 mod figure;
 pub mod forces;
 mod plot;
@@ -10,6 +11,7 @@ mod table;
 mod walkthrough;
 
 pub use crate::protocol::{FigureMeta, ScaleBar};
+pub use drafting::drafting_table_text;
 pub use figure::figure;
 pub use plot::{accuracy_plot_svg, accuracy_table_text};
 pub use table::{

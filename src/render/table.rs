@@ -236,7 +236,7 @@ pub fn reference_table_json(board: &Board) -> String {
 }
 
 /// Cells as aligned text with a rule under the header; `right` columns right-aligned.
-fn aligned(cells: &[Vec<String>], right: std::ops::RangeInclusive<usize>) -> String {
+pub(super) fn aligned(cells: &[Vec<String>], right: std::ops::RangeInclusive<usize>) -> String {
     let ncol = cells[0].len();
     let widths: Vec<usize> = (0..ncol)
         .map(|c| {

@@ -23,6 +23,7 @@ mod beam;
 mod centroid;
 mod crank_dynamics;
 mod defaults;
+mod drafting;
 mod error;
 mod fields;
 mod force_system;
@@ -45,6 +46,7 @@ pub use crank_dynamics::{
     DynamicsScene, FlywheelSpec, IndicatorSpec, MassSpec, PointsSpec, SidePoints, SteamSpec,
     Weights,
 };
+pub use drafting::{drafting, DraftedValue, DraftingOptions, DraftingReport};
 pub use error::SceneError;
 pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,

@@ -66,6 +66,11 @@ pub struct ShaftProblem {
     pub shaft: Shaft,
     /// Scales.
     pub drawing: BeamDrawing,
+    /// Where x = 0 of [`ShaftProblem::shaft`] lies in the scene (m): support A for a shaft
+    /// farther from the scene's origin than
+    /// [`REL_LOCAL_FRAME`](crate::kernel::tolerance::REL_LOCAL_FRAME) times its length, which
+    /// is then built in its own frame (issue 12, case 3); 0 otherwise.
+    pub offset: f64,
 }
 
 impl ShaftScene {
@@ -175,9 +180,16 @@ impl ShaftScene {
     pub fn problem(&self) -> ShaftProblem {
         let [a, b] = self.shaft.supports_m;
         let ends = self.shaft.ends_m.unwrap_or([a, b]);
+        let reach = ends[0].abs().max(ends[1].abs());
+        let far = reach > crate::kernel::tolerance::REL_LOCAL_FRAME * (ends[1] - ends[0]);
+        let o = if far { a } else { 0.0 };
+        let (a, b, ends) = (a - o, b - o, [ends[0] - o, ends[1] - o]);
         let loads = |v: &[super::PointLoadSpec]| {
             v.iter()
-                .map(|l| PointLoad { x: l.x_m, p: l.kg })
+                .map(|l| PointLoad {
+                    x: l.x_m - o,
+                    p: l.kg,
+                })
                 .collect::<Vec<_>>()
         };
         let shaft = Shaft {
@@ -187,8 +199,8 @@ impl ShaftScene {
             plane_2: loads(&self.plane_2_loads),
             angle_deg: self.angle_between_planes_deg.unwrap_or(90.0),
             torque: self.torque.map(|t| Torque {
-                from: t.from_m,
-                to: t.to_m,
+                from: t.from_m - o,
+                to: t.to_m - o,
                 md: t.kg_m,
                 radius: t.radius_m,
             }),
@@ -222,6 +234,7 @@ impl ShaftScene {
                 origin: crate::kernel::Point::origin(),
             },
             shaft,
+            offset: o,
         }
     }
 }
@@ -230,7 +243,8 @@ impl ShaftProblem {
     /// Constructs the shaft on a fresh board.
     pub fn construct(&self, recording: bool) -> Result<(Board, Vec<ShaftRow>), ConstructionError> {
         let mut board = Board::for_construction(recording);
-        let r = shaft::construct_shaft(&mut board, &self.shaft, &self.drawing)?;
+        let mut r = shaft::construct_shaft(&mut board, &self.shaft, &self.drawing)?;
+        r.iter_mut().for_each(|row| row.x += self.offset);
         Ok((board, r))
     }
 

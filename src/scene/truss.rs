@@ -847,13 +847,14 @@ impl TrussScene {
             .enumerate()
             .map(|(i, j)| (j.name.as_str(), i))
             .collect();
+        let o = self.local_origin();
         Truss {
             joints: self
                 .joints
                 .iter()
                 .map(|j| Joint {
                     name: j.name.clone(),
-                    at: Point::new(j.at_m[0], j.at_m[1]),
+                    at: Point::new(j.at_m[0] - o[0], j.at_m[1] - o[1]),
                 })
                 .collect(),
             members: self
@@ -880,6 +881,35 @@ impl TrussScene {
                     }
                 })
                 .collect(),
+        }
+    }
+
+    /// The origin the truss is built from: the first joint, for a truss farther from the
+    /// scene's origin than [`REL_LOCAL_FRAME`](crate::kernel::tolerance::REL_LOCAL_FRAME)
+    /// times its size (issue 12, case 3: at 1e6 m the plan lost six digits in absolute
+    /// coordinates); the scene's origin otherwise, so that a truss near it is drawn as given.
+    /// Member forces and reactions do not depend on where the truss stands.
+    fn local_origin(&self) -> [f64; 2] {
+        let Some(first) = self.joints.first() else {
+            return [0.0, 0.0];
+        };
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for j in &self.joints {
+            for k in 0..2 {
+                lo[k] = lo[k].min(j.at_m[k]);
+                hi[k] = hi[k].max(j.at_m[k]);
+            }
+        }
+        let size = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+        let reach = lo[0]
+            .abs()
+            .max(lo[1].abs())
+            .max(hi[0].abs())
+            .max(hi[1].abs());
+        if reach > crate::kernel::tolerance::REL_LOCAL_FRAME * size {
+            first.at_m
+        } else {
+            [0.0, 0.0]
         }
     }
 

@@ -1,0 +1,61 @@
+//! The draftsman's drawings as a table: the spread of every checked value.
+
+use crate::fmt::{num, sci};
+use crate::scene::DraftingReport;
+
+/// The drafting report as text: per checked value the closed form, the construction drawn
+/// without error, the drawings' mean, standard deviation (also relative to the quantity's
+/// natural magnitude), 95 %
+/// range, the linear bound for the hand, and the most glancing cut.
+pub fn drafting_table_text(r: &DraftingReport) -> String {
+    let head = [
+        "step",
+        "context",
+        "quantity",
+        "closed form",
+        "drawn exactly",
+        "mean",
+        "sd",
+        "sd %",
+        "95 % of the drawings",
+        "bound",
+        "worst cut",
+    ];
+    let mut cells: Vec<Vec<String>> = vec![head.iter().map(|s| s.to_string()).collect()];
+    for v in &r.values {
+        let rel = v.sd / v.reference;
+        cells.push(vec![
+            v.step.clone(),
+            v.context.clone(),
+            format!("{} [{}]", v.quantity, v.unit),
+            num(v.closed_form, 4),
+            num(v.drawn_exactly, 4),
+            num(v.mean, 4),
+            sci(v.sd),
+            if rel.is_finite() {
+                num(100.0 * rel, 2)
+            } else {
+                "-".into()
+            },
+            format!("{} … {}", num(v.range[0], 3), num(v.range[1], 3)),
+            sci(v.bound),
+            v.worst_cut.map_or("-".into(), |w| {
+                format!("{}° at {}", num(w.conditioning.angle_deg(), 1), w.step)
+            }),
+        ]);
+    }
+    let mut out = super::table::aligned(&cells, 3..=9);
+    let o = &r.options;
+    out.push_str(&format!(
+        "{} drawings by a hand of pencil {} mm, set square {}°, scale rule {} mm (standard deviations), seeds {}…; {} could not be finished{}{}\n",
+        o.runs,
+        num(o.hand.mark_mm, 3),
+        num(o.hand.angle_rad.to_degrees(), 3),
+        num(o.hand.read_mm, 3),
+        o.seed,
+        r.failed,
+        r.first_failure.as_ref().map_or(String::new(), |e| format!(" (the first: {})", crate::fmt::clip(e, 160))),
+        if r.missing > 0 { format!("; {} checked values no finished drawing gave", r.missing) } else { String::new() }
+    ));
+    out
+}

@@ -1,0 +1,210 @@
+//! The draftsman simulated: the same construction drawn many times by an unsteady hand
+//! (every point marked within the pencil's width, every line ruled a little turned, every
+//! length set and read on the scale rule a little off), across every core, and the spread
+//! of every checked value set beside the error bound the board propagates for that hand.
+//!
+//! A book's printed numbers were read off drawings like these: the spread says which of
+//! their disagreements with the closed form a drawing explains, and at what pencil and scale.
+
+use super::registry::AnyProblem;
+use crate::protocol::{with_setup, Board, ConstructionError, ErrorModel, Hand, Setup, WorstCut};
+use serde::Serialize;
+use std::collections::HashMap;
+
+/// How the draftsman is simulated.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct DraftingOptions {
+    /// The hand's standard deviations: pencil (mm), set square (rad), scale rule (mm).
+    pub hand: ErrorModel,
+    /// Drawings made.
+    pub runs: usize,
+    /// The seed of the first drawing (drawing k has seed + k).
+    pub seed: u64,
+    /// Threads drawing at once.
+    pub jobs: usize,
+}
+
+/// One checked value, as the drawings came out.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DraftedValue {
+    /// The step of the check.
+    pub step: String,
+    /// Its situation ("θ = 30°").
+    pub context: String,
+    /// The quantity and its unit.
+    pub quantity: String,
+    /// Its unit.
+    pub unit: String,
+    /// The construction without a hand's errors.
+    pub drawn_exactly: f64,
+    /// The closed form.
+    pub closed_form: f64,
+    /// The natural magnitude of the quantity (the check's reference: the largest force of
+    /// the case, the crank-pin speed), against which a relative spread is read.
+    pub reference: f64,
+    /// Mean of the drawings.
+    pub mean: f64,
+    /// Standard deviation of the drawings.
+    pub sd: f64,
+    /// The 2.5 % and 97.5 % points of the drawings.
+    pub range: [f64; 2],
+    /// The linear error bound the board propagates for a hand whose every error is one
+    /// standard deviation (a worst case: the errors all adding up).
+    pub bound: f64,
+    /// The most glancing cut the value depends on.
+    pub worst_cut: Option<WorstCut>,
+    /// Drawings that gave this value.
+    pub drawings: usize,
+}
+
+/// The drawings, summed up.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DraftingReport {
+    /// The options.
+    pub options: DraftingOptions,
+    /// Drawings that could not be finished (a cut the hand's errors made miss), and the first
+    /// reason.
+    pub failed: usize,
+    /// Why the first of them failed.
+    pub first_failure: Option<String>,
+    /// Every checked value that some drawing gave.
+    pub values: Vec<DraftedValue>,
+    /// Checked values that no finished drawing gave (a branch the hand's errors switched).
+    pub missing: usize,
+}
+
+type Key = (u32, String);
+
+/// The checked values of a board by step and quantity.
+fn readings(b: &Board) -> HashMap<Key, f64> {
+    b.steps()
+        .iter()
+        .flat_map(|s| {
+            s.checks
+                .iter()
+                .map(move |c| ((s.id.0, c.quantity.to_string()), c.constructed))
+        })
+        .collect()
+}
+
+/// Draws the problem `options.runs` times with the hand's errors, on `options.jobs` threads.
+///
+/// # Errors
+/// The construction's error if it fails without a hand (a validated scene does not).
+pub fn drafting(
+    p: &AnyProblem,
+    options: DraftingOptions,
+) -> Result<DraftingReport, ConstructionError> {
+    let exact = with_setup(
+        Setup {
+            model: Some(options.hand),
+            ..Setup::default()
+        },
+        || p.construct(true),
+    )?;
+    let runs = draw_all(p, options);
+    let mut failed = 0;
+    let mut first_failure = None;
+    let mut samples: HashMap<Key, Vec<f64>> = HashMap::new();
+    for r in runs {
+        match r {
+            Ok(m) => {
+                for (k, v) in m {
+                    samples.entry(k).or_default().push(v);
+                }
+            }
+            Err(e) => {
+                failed += 1;
+                first_failure.get_or_insert(e);
+            }
+        }
+    }
+    let all: Vec<Option<DraftedValue>> = exact
+        .steps()
+        .iter()
+        .flat_map(|s| s.checks.iter().map(move |c| (s, c)))
+        .map(|(s, c)| {
+            let v = samples
+                .remove(&(s.id.0, c.quantity.to_string()))
+                .unwrap_or_default();
+            summarise(s, c, v)
+        })
+        .collect();
+    let missing = all.iter().filter(|v| v.is_none()).count();
+    Ok(DraftingReport {
+        options,
+        failed,
+        first_failure,
+        values: all.into_iter().flatten().collect(),
+        missing,
+    })
+}
+
+/// Every drawing's readings (or why it failed), in the order of the seeds.
+fn draw_all(p: &AnyProblem, o: DraftingOptions) -> Vec<Result<HashMap<Key, f64>, String>> {
+    let jobs = o.jobs.clamp(1, o.runs.max(1));
+    let per = o.runs.div_ceil(jobs);
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..jobs)
+            .map(|j| {
+                scope.spawn(move || {
+                    (j * per..((j + 1) * per).min(o.runs))
+                        .map(|k| {
+                            let hand = Hand {
+                                model: o.hand,
+                                seed: o.seed.wrapping_add(k as u64),
+                            };
+                            let setup = Setup {
+                                hand: Some(hand),
+                                ..Setup::default()
+                            };
+                            with_setup(setup, || p.construct(true))
+                                .map(|b| readings(&b))
+                                .map_err(|e| e.to_string())
+                        })
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .flat_map(|h| h.join().expect("a drawing thread does not panic"))
+            .collect()
+    })
+}
+
+/// The statistics of one value's drawings; `None` if no drawing gave it.
+fn summarise(
+    s: &crate::protocol::Step,
+    c: &crate::protocol::Check,
+    mut v: Vec<f64>,
+) -> Option<DraftedValue> {
+    v.retain(|x| x.is_finite());
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n == 0 {
+        return None;
+    }
+    let mean = v.iter().sum::<f64>() / n as f64;
+    let sd = if n > 1 {
+        (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64).sqrt()
+    } else {
+        0.0
+    };
+    let at = |q: f64| v[((n - 1) as f64 * q).round() as usize];
+    Some(DraftedValue {
+        step: s.id.to_string(),
+        context: s.context.as_deref().unwrap_or("").to_string(),
+        quantity: c.quantity.to_string(),
+        unit: c.unit.to_string(),
+        drawn_exactly: c.constructed,
+        closed_form: c.closed_form,
+        reference: c.reference.abs().max(c.closed_form.abs()),
+        mean,
+        sd,
+        range: [at(0.025), at(0.975)],
+        bound: c.bound,
+        worst_cut: c.worst_cut,
+        drawings: n,
+    })
+}
