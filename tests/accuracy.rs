@@ -264,3 +264,66 @@ fn the_beam_sweep_shows_the_funicular_polygon_off_the_parabola_by_one_over_n_squ
     let tangents = s.iter().find(|s| s.knob.starts_with("parabola")).unwrap();
     assert!(tangents.points.iter().all(|p| tangents.relative(p) < 1e-14));
 }
+
+fn drafted(
+    path: &str,
+    hand: (f64, f64, f64),
+    runs: usize,
+    jobs: usize,
+) -> graphostatik::scene::DraftingReport {
+    let p = AnyScene::load(std::path::Path::new(&format!(
+        "{}/scenes/{path}",
+        env!("CARGO_MANIFEST_DIR")
+    )))
+    .unwrap()
+    .problem();
+    let options = graphostatik::scene::DraftingOptions {
+        hand: graphostatik::protocol::ErrorModel::drafting(hand.0, hand.1.to_radians(), hand.2),
+        runs,
+        seed: 11,
+        jobs,
+    };
+    graphostatik::scene::drafting(&p, options).unwrap()
+}
+
+/// The simulated draftsman: repeatable by seed on any number of threads; without errors it
+/// draws the construction itself; its spread grows linearly with the pencil (the same seeds
+/// scaled); and the spread stays within the linear bound the board propagates for the hand.
+#[test]
+fn the_draftsman_is_repeatable_linear_and_within_the_propagated_bound() {
+    let one = drafted("lh_aufgabe3_slewing_crane.json", (0.1, 0.1, 0.1), 64, 1);
+    let two = drafted("lh_aufgabe3_slewing_crane.json", (0.1, 0.1, 0.1), 64, 2);
+    assert_eq!(one.values, two.values);
+    assert_eq!((one.failed, one.missing), (0, 0));
+
+    let still = drafted("lh_abb43_locomotive.json", (0.0, 0.0, 0.0), 8, 2);
+    for v in &still.values {
+        assert!(v.sd == 0.0 && v.mean == v.drawn_exactly, "{v:?}");
+    }
+
+    let thin = drafted("lh_aufgabe1_forces.json", (0.01, 0.0, 0.0), 100, 2);
+    let thick = drafted("lh_aufgabe1_forces.json", (0.02, 0.0, 0.0), 100, 2);
+    for (a, b) in thin.values.iter().zip(&thick.values) {
+        if a.sd > 1e-9 * a.reference {
+            let ratio = b.sd / a.sd;
+            assert!((ratio - 2.0).abs() < 0.02, "{}: {ratio}", a.quantity);
+        }
+    }
+
+    for scene in [
+        "lh_aufgabe1_forces.json",
+        "lh_aufgabe4_shed_roof.json",
+        "lh_abb24_beam.json",
+    ] {
+        let r = drafted(scene, (0.1, 0.1, 0.1), 200, 2);
+        for v in &r.values {
+            assert!(
+                v.sd <= 1.2 * v.bound + 1e-9 * v.reference,
+                "{scene}: {} sd {} bound {}",
+                v.quantity,
+                v.sd,
+                v.bound
+            );
+        }
+    }
+}

@@ -158,7 +158,7 @@ pub fn construct(
         for c in 0..nc {
             bl.tangential(c)?;
         }
-        res.turning = bl.turning_diagram()?;
+        (res.turning, res.turning_ids) = bl.turning_diagram()?;
     }
     res.rays = bl.rows();
     bl.b.clear_context();

@@ -135,6 +135,10 @@ pub struct DynamicsResults {
     pub rays: Vec<Vec<RayRow>>,
     /// The turning force at each shaft angle (kg).
     pub turning: Vec<(f64, f64)>,
+    /// The ordinates of the turning force as read on the board, in the order of `turning`:
+    /// the mean heights are reckoned from them, their error bounds with them.
+    #[serde(skip)]
+    pub turning_ids: Vec<crate::protocol::ObjId>,
     /// The exact mean turning force (kg).
     pub t_m_exact: Option<f64>,
     /// Mean heights by rule.

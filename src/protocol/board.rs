@@ -1114,17 +1114,18 @@ impl Board {
         inputs: &[ObjId],
         note: Note,
     ) -> H<f64> {
-        self.reckon(value, (unit, label), (inputs, 0.0), note)
+        self.reckon(value, (unit, label), (inputs, 1.0), note)
     }
 
-    /// [`Board::tally`] for a number reckoned from points as well (an area from the points
-    /// of a curve): `per_mm` is how much it changes per mm that one of its point inputs
-    /// moves, so that the points' bounds follow into it.
+    /// [`Board::tally`] with the weight of its inputs: `weight` is how much the number
+    /// changes when one of its inputs moves by one unit (a number input) or one mm (a point
+    /// input), so that their bounds follow into it: `1/n` for a mean of n ordinates, the
+    /// sheet's width plus height for an area reckoned from points of a curve.
     pub fn reckon(
         &mut self,
         value: f64,
         (unit, label): (&'static str, Label),
-        (inputs, per_mm): (&[ObjId], f64),
+        (inputs, weight): (&[ObjId], f64),
         note: Note,
     ) -> H<f64> {
         self.begin(StepKind::Tally, &note, inputs);
@@ -1134,12 +1135,10 @@ impl Board {
                 .iter()
                 .map(|i| {
                     let mut t = b.tr(*i);
+                    t.err *= weight.abs();
                     match b.object(*i).map(|o| &o.geom) {
-                        Some(Geom::Scalar { value, .. }) => (t, *value),
-                        _ => {
-                            t.err *= per_mm.abs();
-                            (t, 0.0)
-                        }
+                        Some(Geom::Scalar { value, .. }) => (t, *value * weight),
+                        _ => (t, 0.0),
                     }
                 })
                 .collect();

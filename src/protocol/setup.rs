@@ -102,19 +102,30 @@ impl Jitter {
     }
 
     /// A point marked with the pencil.
+    /// (A hand without that error leaves the value alone, bit for bit: adding 0.0 would turn
+    /// a −0.0 into +0.0, and an angle taken of it by half a turn.)
     pub fn mark(&mut self, p: Point) -> Point {
         let m = self.model.mark_mm;
+        if m == 0.0 {
+            return p;
+        }
         Point::new(p.x + m * self.normal(), p.y + m * self.normal())
     }
 
     /// A direction set with the set square or protractor (turned by a random angle).
     pub fn turn(&mut self, d: Vector) -> Vector {
+        if self.model.angle_rad == 0.0 {
+            return d;
+        }
         let (s, c) = (self.model.angle_rad * self.normal()).sin_cos();
         Vector::new(d.x * c - d.y * s, d.x * s + d.y * c)
     }
 
     /// A length (mm) set on, or read off, the scale rule.
     pub fn read(&mut self, mm: f64) -> f64 {
+        if self.model.read_mm == 0.0 {
+            return mm;
+        }
         mm + self.model.read_mm * self.normal()
     }
 }

@@ -185,7 +185,10 @@ fn summarise(
     if n == 0 {
         return None;
     }
-    let mean = v.iter().sum::<f64>() / n as f64;
+    // Summed as offsets from the middle drawing: equal drawings give their value exactly,
+    // and the spread does not drown in the value's own size.
+    let mid = v[n / 2];
+    let mean = mid + v.iter().map(|x| x - mid).sum::<f64>() / n as f64;
     let sd = if n > 1 {
         (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64).sqrt()
     } else {

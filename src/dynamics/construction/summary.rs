@@ -58,7 +58,7 @@ pub(super) fn finish(
     let exact = e.t_m();
     res.t_m_exact = Some(exact);
     if request.mean_height || request.power {
-        res.mean_heights = mean_heights(b, e, dr, &res.turning, exact);
+        res.mean_heights = mean_heights(b, e, dr, (&res.turning, &res.turning_ids), exact);
     }
     if request.power {
         res.power = Some(power(b, e, res));
@@ -97,9 +97,12 @@ fn mean_heights(
     b: &mut Board,
     e: &Engine,
     dr: &DynamicsDrawing,
-    turning: &[(f64, f64)],
+    (turning, ids): (&[(f64, f64)], &[crate::protocol::ObjId]),
     exact: f64,
 ) -> Vec<MeanHeight> {
+    // Each rule is a weighted mean of the ordinates read off the diagram: their bounds
+    // follow into it, each with the weight 1/n.
+    let ords_read = (ids, 1.0 / ids.len().max(1) as f64);
     let mut ords: Vec<f64> = turning.iter().map(|p| p.1).collect();
     ords.push(ords[0]);
     let equal = equal_strips(turning);
@@ -121,7 +124,7 @@ fn mean_heights(
         t_m: rules::trapezoid_xy(&xy),
         error: 0.0,
     }];
-    let trap = b.tally(out[0].t_m, "kg", Label::plain("T_m"), &[], N_MEAN);
+    let trap = b.reckon(out[0].t_m, ("kg", Label::plain("T_m")), ords_read, N_MEAN);
     b.check(
         &trap,
         "T_m by the trapezoid rule = drawn polygon’s area / 2πr",
@@ -145,7 +148,7 @@ fn mean_heights(
         });
     }
     let squares = rules::count_squares(&pts, CELL_MM);
-    let sq = b.tally(to_tm(squares), "kg", Label::NONE, &[], N_MEAN);
+    let sq = b.reckon(to_tm(squares), ("kg", Label::NONE), ords_read, N_MEAN);
     let columns = (length / CELL_MM).ceil();
     b.check_within(
         &sq,
@@ -160,7 +163,7 @@ fn mean_heights(
         t_m: sq.g,
         error: 0.0,
     });
-    if let Some(pl) = planimeter(b, &pts, &closed, polygon, exact, &to_tm) {
+    if let Some(pl) = planimeter(b, (&pts, &closed), polygon, exact, &to_tm, ords_read) {
         out.push(pl);
     }
     for m in &mut out {
@@ -172,13 +175,16 @@ fn mean_heights(
 /// T_m by a simulated polar planimeter traced round the drawn outline (pole below the
 /// diagram, arms long enough to reach every point), held to the polygon's area within the
 /// instrument's resolution.
+/// A point of the drawn diagram (mm on the sheet).
+type Xy = (f64, f64);
+
 fn planimeter(
     b: &mut Board,
-    pts: &[(f64, f64)],
-    closed: &[(f64, f64)],
+    (pts, closed): (&[Xy], &[Xy]),
     polygon: f64,
     exact: f64,
     to_tm: &dyn Fn(f64) -> f64,
+    ords_read: (&[crate::protocol::ObjId], f64),
 ) -> Option<MeanHeight> {
     let length = pts.last().map_or(0.0, |p| p.0);
     let ymax = pts.iter().fold(0.0f64, |m, p| m.max(p.1.abs()));
@@ -190,7 +196,7 @@ fn planimeter(
         wheel: 0.4 * (depth + 0.5 * length),
     };
     let area = instrument.trace(closed, TRACE_STEP_MM)?;
-    let pl = b.tally(to_tm(-area), "kg", Label::NONE, &[], N_MEAN);
+    let pl = b.reckon(to_tm(-area), ("kg", Label::NONE), ords_read, N_MEAN);
     // The vernier's resolution over the diagram's rectangle, and the rounding of the trace
     // (some 1e-12 of the arm's square per step) where the diagram is flat.
     let steps = closed.len() as f64 + 2.0 * length / TRACE_STEP_MM;

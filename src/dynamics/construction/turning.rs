@@ -71,7 +71,7 @@ impl Builder<'_> {
 
     /// The diagram: the sum of the cylinders' T at every shaft angle and at 360°, read off and
     /// checked against [`model::turning_force`]. Returns (θ, T) per shaft angle.
-    pub(super) fn turning_diagram(&mut self) -> Result<Vec<(f64, f64)>, ConstructionError> {
+    pub(super) fn turning_diagram(&mut self) -> Result<Ordinates, ConstructionError> {
         let o = self.b.point(
             self.turning_origin(),
             Label::plain("0"),
@@ -87,19 +87,20 @@ impl Builder<'_> {
         let frame = TurningFrame { o, axis, up };
         let n = self.thetas.len();
         let mut pts: Vec<H<Point>> = Vec::with_capacity(n + 1);
-        let mut out = Vec::with_capacity(n);
+        let (mut out, mut ids) = (Vec::with_capacity(n), Vec::with_capacity(n));
         for k in 0..=n {
             let (end, sum) = self.turning_ordinate(&frame, k)?;
             pts.push(end);
             if k < n {
-                out.push((self.thetas[k], sum));
+                out.push((self.thetas[k], sum.g));
+                ids.push(sum.id);
             }
         }
         self.b.clear_context();
         self.b
             .curve(&pts, false, Label::plain("T"), Role::Result, N_CURVE);
         self.mean_line(&frame, &out)?;
-        Ok(out)
+        Ok((out, ids))
     }
 
     /// The ordinate at the k-th shaft angle (k = n is 360°): every cylinder's η·T laid off on
@@ -108,7 +109,7 @@ impl Builder<'_> {
         &mut self,
         fr: &TurningFrame,
         k: usize,
-    ) -> Result<(H<Point>, f64), ConstructionError> {
+    ) -> Result<(H<Point>, H<f64>), ConstructionError> {
         let n = self.thetas.len();
         let kk = k % n;
         let theta = if k == n { 360.0 } else { self.thetas[kk] };
@@ -142,7 +143,7 @@ impl Builder<'_> {
             reference,
             || model::turning_force(&kin, cyls, eta, theta),
         );
-        Ok((end, sum.g))
+        Ok((end, sum))
     }
 
     /// The rectangle of equal area: the mean resistance over the developed circle, at the
@@ -180,6 +181,9 @@ impl Builder<'_> {
         Ok(())
     }
 }
+
+/// The turning force at each shaft angle (degrees, kg) and the objects it was read as.
+pub(super) type Ordinates = (Vec<(f64, f64)>, Vec<crate::protocol::ObjId>);
 
 /// The axis of the developed crank circle, its start and its ordinate direction.
 struct TurningFrame {
