@@ -75,7 +75,12 @@ pub fn lay_off(origin: Point, dir: Vector, length: f64) -> Result<Point, Primiti
     if !length.is_finite() {
         return Err(PrimitiveError::NotFinite);
     }
-    Ok(origin + dir * (length / n))
+    let p = origin + dir * (length / n);
+    // A length beyond f64 along a tiny direction (cargo fuzz: 9.4e305 along 1.2e-130).
+    if !(p.x.is_finite() && p.y.is_finite()) {
+        return Err(PrimitiveError::NotFinite);
+    }
+    Ok(p)
 }
 
 /// Divides a segment into `n ≥ 1` equal parts: the `n + 1` division points, ends included

@@ -56,16 +56,23 @@ impl Line {
         if !finite(&origin) || !dir.x.is_finite() || !dir.y.is_finite() {
             return Err(PrimitiveError::NotFinite);
         }
-        let n = dir.norm();
-        // x² + y² loses digits below 1e-154 (subnormal) and overflows above 1e154: hypot
-        // does neither (and the usual directions keep their bits), and a
-        // direction that is zero in f64 is refused rather than made of NaN.
-        let n = if (1e-150..1e150).contains(&n) {
-            n
+        // x² + y² loses digits below 1e-154 (subnormal) and overflows above 1e154: such a
+        // direction is first scaled by an exact power of two into the range where the norm
+        // keeps every bit (a subnormal norm has lost some: cargo fuzz found a unit vector
+        // 2.7e-12 too long), and a direction that is zero in f64 is refused, not made of NaN.
+        let big = dir.x.abs().max(dir.y.abs());
+        if big == 0.0 {
+            return Err(PrimitiveError::ZeroDirection);
+        }
+        let dir = if (1e-150..1e150).contains(&big) {
+            dir
         } else {
-            dir.x.hypot(dir.y)
+            // 2^-⌊log₂ big⌋ brings the larger component to [1, 2): exact, as any power of two.
+            let e = (-big.log2().floor()).clamp(-1000.0, 1000.0) as i32;
+            dir * 2f64.powi(e)
         };
-        if n == 0.0 {
+        let n = dir.norm();
+        if n == 0.0 || !n.is_finite() {
             return Err(PrimitiveError::ZeroDirection);
         }
         let unit = dir / n;

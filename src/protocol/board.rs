@@ -800,6 +800,8 @@ impl Board {
         self.finite(length, &note)?;
         let length = self.read(length);
         let p = from.g + along.g.dir * length;
+        self.finite(p.x, &note)?;
+        self.finite(p.y, &note)?;
         self.grow(&p);
         match carried {
             Some((v, _)) => self.begin(StepKind::LayOff, &note, &[from.id, along.id, v.id]),

@@ -27,7 +27,11 @@ pub fn drafting_table_text(r: &DraftingReport) -> String {
         cells.push(vec![
             v.step.clone(),
             v.context.clone(),
-            format!("{} [{}]", v.quantity, v.unit),
+            if v.object.is_empty() {
+                format!("{} [{}]", v.quantity, v.unit)
+            } else {
+                format!("{} {} [{}]", v.quantity, v.object, v.unit)
+            },
             num(v.closed_form, 4),
             num(v.drawn_exactly, 4),
             num(v.mean, 4),

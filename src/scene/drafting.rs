@@ -31,8 +31,10 @@ pub struct DraftedValue {
     pub step: String,
     /// Its situation ("θ = 30°").
     pub context: String,
-    /// The quantity and its unit.
+    /// The quantity.
     pub quantity: String,
+    /// The name of the object the value was read as (a member's name), if it has one.
+    pub object: String,
     /// Its unit.
     pub unit: String,
     /// The construction without a hand's errors.
@@ -73,17 +75,41 @@ pub struct DraftingReport {
     pub missing: usize,
 }
 
-type Key = (u32, String);
+/// A checked value across drawings: its quantity, the name of the object it was read as, and
+/// its place among the values of that quantity and name. Not the step number: a drawing's
+/// errors may switch a tension-only diagonal and with it the number of steps before.
+type Key = (String, String, usize);
 
-/// The checked values of a board by step and quantity.
-fn readings(b: &Board) -> HashMap<Key, f64> {
-    b.steps()
+/// The name of the object a step made that a check was read as (a member's name).
+fn object_of(b: &Board, s: &crate::protocol::Step) -> String {
+    s.outputs
         .iter()
-        .flat_map(|s| {
-            s.checks
-                .iter()
-                .map(move |c| ((s.id.0, c.quantity.to_string()), c.constructed))
-        })
+        .filter_map(|id| b.object(*id))
+        .map(|o| o.label.to_string())
+        .find(|l| !l.is_empty())
+        .unwrap_or_default()
+}
+
+/// Every check of a board with its key, in step order.
+fn keyed(b: &Board) -> Vec<(Key, &crate::protocol::Step, &crate::protocol::Check)> {
+    let mut seen: HashMap<(String, String), usize> = HashMap::new();
+    let mut out = Vec::new();
+    for s in b.steps() {
+        for c in &s.checks {
+            let name = (c.quantity.to_string(), object_of(b, s));
+            let k = seen.entry(name.clone()).or_default();
+            out.push(((name.0, name.1, *k), s, c));
+            *k += 1;
+        }
+    }
+    out
+}
+
+/// The checked values of a board by key.
+fn readings(b: &Board) -> HashMap<Key, f64> {
+    keyed(b)
+        .into_iter()
+        .map(|(k, _, c)| (k, c.constructed))
         .collect()
 }
 
@@ -119,15 +145,11 @@ pub fn drafting(
             }
         }
     }
-    let all: Vec<Option<DraftedValue>> = exact
-        .steps()
-        .iter()
-        .flat_map(|s| s.checks.iter().map(move |c| (s, c)))
-        .map(|(s, c)| {
-            let v = samples
-                .remove(&(s.id.0, c.quantity.to_string()))
-                .unwrap_or_default();
-            summarise(s, c, v)
+    let all: Vec<Option<DraftedValue>> = keyed(&exact)
+        .into_iter()
+        .map(|(key, s, c)| {
+            let v = samples.remove(&key).unwrap_or_default();
+            summarise(s, c, v).map(|d| DraftedValue { object: key.1, ..d })
         })
         .collect();
     let missing = all.iter().filter(|v| v.is_none()).count();
@@ -199,6 +221,7 @@ fn summarise(
         step: s.id.to_string(),
         context: s.context.as_deref().unwrap_or("").to_string(),
         quantity: c.quantity.to_string(),
+        object: String::new(),
         unit: c.unit.to_string(),
         drawn_exactly: c.constructed,
         closed_form: c.closed_form,

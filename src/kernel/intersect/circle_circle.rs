@@ -61,6 +61,54 @@ pub enum CircleCircle {
 /// ```
 pub fn intersect_circle_circle(c1: &Circle, c2: &Circle, tol: &Tolerance) -> CircleCircle {
     let w = c2.center - c1.center;
+    let big = w.x.abs().max(w.y.abs()).max(c1.radius).max(c2.radius);
+    if big > 0.0 && big.is_finite() && !(1e-150..1e150).contains(&big) {
+        return scaled(c1, c2, tol, big);
+    }
+    in_range(c1, c2, tol)
+}
+
+/// Circles whose radii or distance lie beyond 1e±150, where r² would overflow or lose its
+/// digits (cargo fuzz: radii of 4e204): cut at a power-of-two scale, which is exact, with
+/// the first centre at the origin, and the results scaled back.
+fn scaled(c1: &Circle, c2: &Circle, tol: &Tolerance, big: f64) -> CircleCircle {
+    let e = (-big.log2().floor()).clamp(-1000.0, 1000.0) as i32;
+    let (k, back) = (2f64.powi(e), 2f64.powi(-e));
+    let w = c2.center - c1.center;
+    let a = Circle {
+        center: Point::origin(),
+        radius: c1.radius * k,
+    };
+    let b = Circle {
+        center: Point::from(w * k),
+        radius: c2.radius * k,
+    };
+    let t = Tolerance {
+        length: tol.length * k,
+    };
+    let at = |p: Point| c1.center + p.coords * back;
+    match in_range(&a, &b, &t) {
+        CircleCircle::Two {
+            points,
+            conditioning,
+        } => CircleCircle::Two {
+            points: points.map(at),
+            conditioning,
+        },
+        CircleCircle::TangentExternal { point } => {
+            CircleCircle::TangentExternal { point: at(point) }
+        }
+        CircleCircle::TangentInternal { point } => {
+            CircleCircle::TangentInternal { point: at(point) }
+        }
+        CircleCircle::Separate { gap } => CircleCircle::Separate { gap: gap * back },
+        CircleCircle::Contained { gap } => CircleCircle::Contained { gap: gap * back },
+        other => other,
+    }
+}
+
+fn in_range(c1: &Circle, c2: &Circle, tol: &Tolerance) -> CircleCircle {
+    let w = c2.center - c1.center;
     let d = w.norm();
     let (r1, r2) = (c1.radius, c2.radius);
     if d <= tol.length {
