@@ -327,3 +327,43 @@ fn the_draftsman_is_repeatable_linear_and_within_the_propagated_bound() {
         }
     }
 }
+
+/// A diagram drawn to nothing beside its sheet (an acceleration scale of 1e9 m/s² per mm
+/// under a 150 mm figure) would keep too few digits against the sheet's rounding: refused at
+/// validation, naming the scale; the bundled scales are far from it.
+#[test]
+fn a_diagram_too_small_for_its_sheet_is_refused_naming_its_scale() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/lh_abb55_acceleration.json"
+    ))
+    .unwrap();
+    assert!(AnyScene::from_json(&text, "a.json").is_ok());
+    let tiny = text.replace(
+        "\"acceleration_scale_m_s2_per_mm\": 15",
+        "\"acceleration_scale_m_s2_per_mm\": 1e9",
+    );
+    assert_ne!(tiny, text);
+    let e = AnyScene::from_json(&tiny, "a.json")
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(
+        e.contains("drawing.acceleration_scale_m_s2_per_mm") && e.contains("drown"),
+        "{e}"
+    );
+    let small_force = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/lh_aufgabe1_forces.json"
+    ))
+    .unwrap()
+    .replace(
+        "\"force_scale_kg_per_mm\": 200",
+        "\"force_scale_kg_per_mm\": 1e12",
+    );
+    let e = AnyScene::from_json(&small_force, "f.json")
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(e.contains("drawing.force_scale_kg_per_mm"), "{e}");
+}

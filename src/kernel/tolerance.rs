@@ -168,6 +168,12 @@ impl Tolerance {
     }
 }
 
+/// The smallest a diagram may be drawn against its sheet: a velocity or acceleration curve,
+/// a force plan whose largest ordinate is less than this times the figure's extent is drawn
+/// in coordinates whose rounding (2⁻⁵³ of the sheet) is more than 1e-10 of the diagram, and
+/// a cut amplifying that would fail its 1e-9 check. Refused at validation, naming the scale.
+pub const MIN_PART_REL: f64 = 1e-6;
+
 /// The rounding an operation of the kernel adds, relative to the magnitude it computes: four
 /// units of f64's roundoff (2⁻⁵³ each), for the few products, sums and one normalisation or
 /// square root of a step. The propagated error bound of a constructed value (the protocol's

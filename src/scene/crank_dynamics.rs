@@ -471,6 +471,21 @@ impl super::Procedure for DynamicsScene {
             / p.drawing.force_scale;
         super::fields::larger(length, force)
     }
+    fn smallest_part(p: &DynamicsProblem) -> Option<(f64, &'static str)> {
+        let k = &p.engine.kinematics;
+        let force = p
+            .engine
+            .cylinders
+            .iter()
+            .map(|c| largest_force(k, c))
+            .fold(0.0, f64::max);
+        (force > 0.0).then(|| {
+            (
+                force / p.drawing.force_scale,
+                "drawing.force_scale_kg_per_mm",
+            )
+        })
+    }
     type Problem = DynamicsProblem;
     type Results = DynamicsResults;
 

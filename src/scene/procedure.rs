@@ -89,6 +89,16 @@ pub trait Procedure:
         (0.0, "")
     }
 
+    /// The smallest diagram the problem asks to draw (its largest ordinate, mm on the sheet)
+    /// and the scale field that sets it; checked against
+    /// [`MIN_PART_REL`](crate::kernel::tolerance::MIN_PART_REL) times the figure's extent
+    /// when a scene is read, so that a scale that shrinks a diagram to nothing beside its
+    /// sheet is named. `None`: the procedure draws one part.
+    fn smallest_part(problem: &Self::Problem) -> Option<(f64, &'static str)> {
+        let _ = problem;
+        None
+    }
+
     /// How the procedure's own inputs (`ConstructionError::Unsupported::input`, e.g.
     /// `"forces[2]"`, `"pole"`) are called in the scene: pairs of (input prefix, scene field).
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[];
@@ -136,7 +146,8 @@ pub fn parse_scene<P: Procedure>(text: &str, origin: &str) -> Result<P, SceneErr
     let scene: P = serde_path_to_error::deserialize(&mut *de).map_err(|e| json_error(e, origin))?;
     de.end().map_err(|e| syntax_error(e, origin))?;
     scene.validate(origin)?;
-    let (mm, field) = P::sheet_extent(&scene.problem());
+    let problem = scene.problem();
+    let (mm, field) = P::sheet_extent(&problem);
     let fits = mm.partial_cmp(&MAX_SHEET_MM).is_some_and(|o| o.is_le());
     if !fits && !field.is_empty() {
         return Err(SceneError::Invalid {
@@ -151,6 +162,23 @@ pub fn parse_scene<P: Procedure>(text: &str, origin: &str) -> Result<P, SceneErr
                     crate::fmt::sci(mm / 1000.0)
                 },
                 crate::fmt::num(MAX_SHEET_MM / 1000.0, 3)
+            ),
+        });
+    }
+    let min = crate::kernel::tolerance::MIN_PART_REL * mm;
+    if let Some((part, field)) = P::smallest_part(&problem).filter(|(p, _)| p.is_nan() || *p < min)
+    {
+        return Err(SceneError::Invalid {
+            origin: origin.to_string(),
+            field: field.to_string(),
+            message: format!(
+                "with this value its diagram would be {} mm on a figure {} mm across, less than \
+                 {} of it: its digits would drown in the sheet's rounding; choose a scale that \
+                 draws it at least {} mm long",
+                crate::fmt::sci(part),
+                crate::fmt::num(mm, 1),
+                crate::fmt::sci(crate::kernel::tolerance::MIN_PART_REL),
+                crate::fmt::sci(min)
             ),
         });
     }

@@ -481,6 +481,35 @@ impl Procedure for Scene {
             super::fields::larger(length, force)
         }
     }
+    fn smallest_part(p: &Problem) -> Option<(f64, &'static str)> {
+        let (d, r) = (&p.drawing, &p.request);
+        let forces = r.rod_force || r.guide_force || r.tangential_force || r.radial_force;
+        let parts = [
+            (r.velocity_parallel || r.velocity_instant_centre || r.max_velocity).then(|| {
+                (
+                    p.drive.crank_pin_speed / d.velocity_scale,
+                    "drawing.velocity_scale_m_s_per_mm",
+                )
+            }),
+            // The largest acceleration is (1 + λ)·v²/r, at least v²/r.
+            r.acceleration.then(|| {
+                (
+                    p.drive.v2_over_r() / d.acceleration_scale,
+                    "drawing.acceleration_scale_m_s2_per_mm",
+                )
+            }),
+            (forces && p.drive.piston_force.max_abs() > 0.0).then(|| {
+                (
+                    p.drive.piston_force.max_abs() / d.force_scale,
+                    "drawing.force_scale_kg_per_mm",
+                )
+            }),
+        ];
+        parts
+            .into_iter()
+            .flatten()
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+    }
     type Problem = Problem;
     type Results = CrankResults;
 
