@@ -303,6 +303,14 @@ fn the_draftsman_is_repeatable_linear_and_within_the_propagated_bound() {
 
     let thin = drafted("lh_aufgabe1_forces.json", (0.01, 0.0, 0.0), 100, 2);
     let thick = drafted("lh_aufgabe1_forces.json", (0.02, 0.0, 0.0), 100, 2);
+    for a in &thin.values {
+        // A hand with a pencil only: the budget puts all of the spread on the pencil.
+        assert_eq!(
+            (a.budget[0], a.budget[1], a.budget[2]),
+            (a.sd, 0.0, 0.0),
+            "{a:?}"
+        );
+    }
     for (a, b) in thin.values.iter().zip(&thick.values) {
         if a.sd > 1e-9 * a.reference {
             let ratio = b.sd / a.sd;

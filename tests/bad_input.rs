@@ -711,3 +711,18 @@ fn a_bad_engine_is_refused_by_the_command_line_with_its_field_and_nothing_writte
     }
     std::fs::remove_dir_all(&d).unwrap();
 }
+
+/// Found by cargo fuzz: an unknown key holding a newline (JSON `\n`) was echoed raw by the
+/// library's error (the command line escaped it, a library user got two lines).
+#[test]
+fn an_unknown_key_with_a_newline_is_one_line_in_the_library_error_too() {
+    let text = "{ \"title\\nX\": \"t\", \"title\": \"t\", \"mechanism\": { \"crank_radius_mm\": 300, \"rod\": { \"l_over_r\": 5 } } }";
+    let e = graphostatik::scene::AnyScene::from_json(text, "a\nb.json")
+        .err()
+        .unwrap()
+        .to_string();
+    assert!(
+        !e.contains('\n') && e.contains("title\\nX") && e.contains("a\\nb.json"),
+        "{e}"
+    );
+}

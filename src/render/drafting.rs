@@ -6,7 +6,8 @@ use crate::scene::DraftingReport;
 /// The drafting report as text: per checked value the closed form, the construction drawn
 /// without error, the drawings' mean, standard deviation (also relative to the quantity's
 /// natural magnitude), 95 %
-/// range, the linear bound for the hand, and the most glancing cut.
+/// range, the linear bound for the hand, the error budget (the shares of the variance that
+/// the pencil, the set square and the scale rule cause alone), and the most glancing cut.
 pub fn drafting_table_text(r: &DraftingReport) -> String {
     let head = [
         "step",
@@ -19,6 +20,7 @@ pub fn drafting_table_text(r: &DraftingReport) -> String {
         "sd %",
         "95 % of the drawings",
         "bound",
+        "pencil/square/rule",
         "worst cut",
     ];
     let mut cells: Vec<Vec<String>> = vec![head.iter().map(|s| s.to_string()).collect()];
@@ -43,12 +45,13 @@ pub fn drafting_table_text(r: &DraftingReport) -> String {
             },
             format!("{} … {}", num(v.range[0], 3), num(v.range[1], 3)),
             sci(v.bound),
+            shares(&v.budget),
             v.worst_cut.map_or("-".into(), |w| {
                 format!("{}° at {}", num(w.conditioning.angle_deg(), 1), w.step)
             }),
         ]);
     }
-    let mut out = super::table::aligned(&cells, 3..=9);
+    let mut out = super::table::aligned(&cells, 3..=10);
     let o = &r.options;
     out.push_str(&format!(
         "{} drawings by a hand of pencil {} mm, set square {}°, scale rule {} mm (standard deviations), seeds {}…; {} could not be finished{}{}\n",
@@ -62,4 +65,17 @@ pub fn drafting_table_text(r: &DraftingReport) -> String {
         if r.missing > 0 { format!("; {} checked values no finished drawing gave", r.missing) } else { String::new() }
     ));
     out
+}
+
+/// The error budget as shares of the variance: pencil / set square / scale rule, in percent.
+fn shares(b: &[f64; 3]) -> String {
+    let total: f64 = b.iter().map(|s| s * s).sum();
+    if total.is_nan() || total <= 0.0 {
+        return "-".into();
+    }
+    let p: Vec<String> = b
+        .iter()
+        .map(|s| format!("{:.0}", 100.0 * s * s / total))
+        .collect();
+    format!("{} %", p.join("/"))
 }

@@ -57,6 +57,9 @@ pub struct DraftedValue {
     pub worst_cut: Option<WorstCut>,
     /// Drawings that gave this value.
     pub drawings: usize,
+    /// The error budget: the standard deviation with only the pencil's, only the set
+    /// square's, only the scale rule's errors (the same seeds).
+    pub budget: [f64; 3],
 }
 
 /// The drawings, summed up.
@@ -113,6 +116,48 @@ fn readings(b: &Board) -> HashMap<Key, f64> {
         .collect()
 }
 
+/// Every drawing's readings gathered by key, with the count of drawings that failed and the
+/// first reason.
+fn sample(
+    p: &AnyProblem,
+    options: DraftingOptions,
+) -> (HashMap<Key, Vec<f64>>, usize, Option<String>) {
+    let mut failed = 0;
+    let mut first_failure = None;
+    let mut samples: HashMap<Key, Vec<f64>> = HashMap::new();
+    for r in draw_all(p, options) {
+        match r {
+            Ok(m) => {
+                for (k, v) in m {
+                    samples.entry(k).or_default().push(v);
+                }
+            }
+            Err(e) => {
+                failed += 1;
+                first_failure.get_or_insert(e);
+            }
+        }
+    }
+    (samples, failed, first_failure)
+}
+
+/// Mean and standard deviation, summed as offsets from the middle value: equal drawings give
+/// their value exactly, and the spread does not drown in the value's own size.
+fn spread(v: &[f64]) -> (f64, f64) {
+    let n = v.len();
+    if n == 0 {
+        return (0.0, 0.0);
+    }
+    let mid = v[n / 2];
+    let mean = mid + v.iter().map(|x| x - mid).sum::<f64>() / n as f64;
+    let sd = if n > 1 {
+        (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64).sqrt()
+    } else {
+        0.0
+    };
+    (mean, sd)
+}
+
 /// Draws the problem `options.runs` times with the hand's errors, on `options.jobs` threads.
 ///
 /// # Errors
@@ -128,28 +173,51 @@ pub fn drafting(
         },
         || p.construct(true),
     )?;
-    let runs = draw_all(p, options);
-    let mut failed = 0;
-    let mut first_failure = None;
-    let mut samples: HashMap<Key, Vec<f64>> = HashMap::new();
-    for r in runs {
-        match r {
-            Ok(m) => {
-                for (k, v) in m {
-                    samples.entry(k).or_default().push(v);
-                }
-            }
-            Err(e) => {
-                failed += 1;
-                first_failure.get_or_insert(e);
-            }
-        }
-    }
+    let (mut samples, failed, first_failure) = sample(p, options);
+    // The budget: the same drawings by a hand with one kind of error only.
+    let h = options.hand;
+    let only = [
+        ErrorModel::drafting(h.mark_mm, 0.0, 0.0),
+        ErrorModel::drafting(0.0, h.angle_rad, 0.0),
+        ErrorModel::drafting(0.0, 0.0, h.read_mm),
+    ];
+    let by_source: Vec<HashMap<Key, Vec<f64>>> = only
+        .iter()
+        .map(|m| {
+            sample(
+                p,
+                DraftingOptions {
+                    hand: *m,
+                    ..options
+                },
+            )
+            .0
+        })
+        .collect();
     let all: Vec<Option<DraftedValue>> = keyed(&exact)
         .into_iter()
         .map(|(key, s, c)| {
             let v = samples.remove(&key).unwrap_or_default();
-            summarise(s, c, v).map(|d| DraftedValue { object: key.1, ..d })
+            let budget = by_source
+                .iter()
+                .map(|m| {
+                    let v: Vec<f64> = m
+                        .get(&key)
+                        .into_iter()
+                        .flatten()
+                        .copied()
+                        .filter(|x| x.is_finite())
+                        .collect();
+                    let mut v = v;
+                    v.sort_by(f64::total_cmp);
+                    spread(&v).1
+                })
+                .collect::<Vec<_>>();
+            summarise(s, c, v).map(|d| DraftedValue {
+                object: key.1.clone(),
+                budget: [budget[0], budget[1], budget[2]],
+                ..d
+            })
         })
         .collect();
     let missing = all.iter().filter(|v| v.is_none()).count();
@@ -207,15 +275,7 @@ fn summarise(
     if n == 0 {
         return None;
     }
-    // Summed as offsets from the middle drawing: equal drawings give their value exactly,
-    // and the spread does not drown in the value's own size.
-    let mid = v[n / 2];
-    let mean = mid + v.iter().map(|x| x - mid).sum::<f64>() / n as f64;
-    let sd = if n > 1 {
-        (v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64).sqrt()
-    } else {
-        0.0
-    };
+    let (mean, sd) = spread(&v);
     let at = |q: f64| v[((n - 1) as f64 * q).round() as usize];
     Some(DraftedValue {
         step: s.id.to_string(),
@@ -232,5 +292,6 @@ fn summarise(
         bound: c.bound,
         worst_cut: c.worst_cut,
         drawings: n,
+        budget: [0.0; 3],
     })
 }
