@@ -190,13 +190,8 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
         Command::Check {
             scene,
             json,
-            reference: false,
-        } => check_cmd(&scene, json),
-        Command::Check {
-            scene,
-            json,
-            reference: true,
-        } => reference_cmd(&scene, json),
+            reference,
+        } => check_cmd(&scene, json, reference),
         Command::Steps { scene, out } => steps_cmd(&scene, &out),
         Command::Accuracy { scene, svg, json } => accuracy_cmd(&scene, svg.as_deref(), json),
         Command::Drafting {
@@ -321,39 +316,29 @@ fn render_all(files: &[PathBuf], jobs: Option<u16>) -> Vec<Result<String, Fail>>
         .collect()
 }
 
-/// `check`: the table of every check; exit status 1 if any fails.
-fn check_cmd(scene: &Path, json: bool) -> Result<ExitCode, Fail> {
-    let p = load(scene)?;
-    let board = construct(scene, &p)?;
-    if json {
-        say(&(render::check_table_json(&board) + "\n"))?;
-    } else {
-        say(&render::check_table_text(&board))?;
-    }
-    let failed = render::check_rows(&board).iter().any(|r| !r.passed);
-    Ok(if failed {
-        ExitCode::from(1)
-    } else {
-        ExitCode::SUCCESS
-    })
-}
-
-/// `check --reference`: the construction replayed in double-double beside f64.
-fn reference_cmd(scene: &Path, json: bool) -> Result<ExitCode, Fail> {
+/// `check`: the table of every check, exit status 1 if any fails; with `reference`, every
+/// step replayed in double-double beside f64, exit status 1 if the bound fails anywhere.
+fn check_cmd(scene: &Path, json: bool, reference: bool) -> Result<ExitCode, Fail> {
     use graphostatik::protocol::{with_setup, Setup};
     let p = load(scene)?;
     let setup = Setup {
-        reference: true,
+        reference,
         ..Setup::default()
     };
     let board = with_setup(setup, || construct(scene, &p))?;
-    if json {
-        say(&(render::reference_table_json(&board) + "\n"))?;
+    let text = match (reference, json) {
+        (false, false) => render::check_table_text(&board),
+        (false, true) => render::check_table_json(&board) + "\n",
+        (true, false) => render::reference_table_text(&board),
+        (true, true) => render::reference_table_json(&board) + "\n",
+    };
+    say(&text)?;
+    let failed = if reference {
+        render::reference_rows(&board).iter().any(|r| !r.within)
     } else {
-        say(&render::reference_table_text(&board))?;
-    }
-    let over = render::reference_rows(&board).iter().any(|r| !r.within);
-    Ok(if over {
+        render::check_rows(&board).iter().any(|r| !r.passed)
+    };
+    Ok(if failed {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS

@@ -21,11 +21,19 @@ fuzz_target!(|v: [f64; 12]| {
     }
     let p = |i: usize| Point::new(v[i], v[i + 1]);
     let tol = Tolerance::for_figure(v[11].abs());
-    let (Ok(a), Ok(b)) = (Line::new(p(0), Vector::new(v[2], v[3])), Line::new(p(4), Vector::new(v[6], v[7]))) else {
+    let (Ok(a), Ok(b)) = (
+        Line::new(p(0), Vector::new(v[2], v[3])),
+        Line::new(p(4), Vector::new(v[6], v[7])),
+    ) else {
         return;
     };
     assert!(a.dir.x.is_finite() && (a.dir.norm() - 1.0).abs() < 1e-12);
-    if let LineLine::Point { point, conditioning, .. } = intersect_line_line(&a, &b, &tol) {
+    if let LineLine::Point {
+        point,
+        conditioning,
+        ..
+    } = intersect_line_line(&a, &b, &tol)
+    {
         assert!(finite(&point) && conditioning.angle().is_finite());
     }
     if let Ok(c) = Circle::new(p(4), v[8]) {
@@ -37,7 +45,8 @@ fuzz_target!(|v: [f64; 12]| {
         if let Ok(d) = Circle::new(p(0), v[9]) {
             match intersect_circle_circle(&c, &d, &tol) {
                 CircleCircle::Two { points, .. } => assert!(points.iter().all(finite)),
-                CircleCircle::TangentExternal { point } | CircleCircle::TangentInternal { point } => {
+                CircleCircle::TangentExternal { point }
+                | CircleCircle::TangentInternal { point } => {
                     assert!(finite(&point))
                 }
                 _ => {}
@@ -50,7 +59,11 @@ fuzz_target!(|v: [f64; 12]| {
         let s = Segment { a: p(0), b: p(4) };
         let t = v[10];
         if t.is_finite() && t.abs() <= 1.0 {
-            assert!(finite(&point_at_ratio(&s, t)) || !(s.a - s.b).x.is_finite() || !(s.a - s.b).y.is_finite());
+            assert!(
+                finite(&point_at_ratio(&s, t))
+                    || !(s.a - s.b).x.is_finite()
+                    || !(s.a - s.b).y.is_finite()
+            );
         }
         let _ = divide_segment(&s, (v[10].abs() as usize) % 64);
     }

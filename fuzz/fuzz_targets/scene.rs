@@ -13,7 +13,10 @@ fuzz_target!(|data: &[u8]| {
     let scene = match AnyScene::from_json(text, "fuzz.json") {
         Ok(s) => s,
         Err(e) => {
-            assert!(!e.to_string().contains('\n'), "error of more than one line: {e}");
+            assert!(
+                !e.to_string().contains('\n'),
+                "error of more than one line: {e}"
+            );
             return;
         }
     };
