@@ -35,10 +35,29 @@ fuzz_target!(|data: &[u8]| {
     }
     let _ = graphostatik::render::check_table_text(&board);
     let svg = graphostatik::render::figure(&problem.figure_meta(), &board, None);
-    // A number Rust writes as NaN or inf stands alone between the SVG's separators (a title
-    // may say "Infinitely long rod").
-    let bad = svg
-        .split(|c: char| !(c.is_alphanumeric() || c == '.' || c == '-'))
-        .any(|t| matches!(t, "NaN" | "inf" | "-inf"));
+    // The geometry's attributes hold no NaN or inf (text may: a title can say "-inf").
+    let geometry = [
+        " d=\"",
+        " points=\"",
+        " x=\"",
+        " y=\"",
+        " cx=\"",
+        " cy=\"",
+        " r=\"",
+        " x1=\"",
+        " y1=\"",
+        " x2=\"",
+        " y2=\"",
+        " width=\"",
+        " height=\"",
+        " viewBox=\"",
+        " transform=\"",
+    ];
+    let bad = geometry.iter().any(|attr| {
+        svg.split(attr).skip(1).any(|rest| {
+            let value = rest.split('"').next().unwrap_or("");
+            value.contains("NaN") || value.contains("inf")
+        })
+    });
     assert!(!bad, "a figure with a NaN or inf");
 });

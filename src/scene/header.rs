@@ -15,6 +15,11 @@ macro_rules! scene_struct {
         #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
         #[serde(deny_unknown_fields)]
         pub struct $name {
+            /// Where an editor finds the JSON Schema of the scene format, to complete and
+            /// check fields as they are typed (`"../schema/scene.schema.json"` in the bundled
+            /// scenes; `graphostatik schema` writes it). Not read by graphostatik.
+            #[serde(default, rename = "$schema", skip_serializing_if = "Option::is_none")]
+            pub schema: Option<String>,
             /// Which book procedure the scene is for (`graphostatik procedures` lists them);
             /// `"slider_crank"` when absent.
             #[serde(default)]
