@@ -43,6 +43,29 @@ pub fn sci(x: f64) -> String {
     }
 }
 
+/// A number with every digit it has: the shortest decimal that reads back as the same f64
+/// (Rust's round-trip formatting), in exponent form beyond 1e16 and below 1e-5, `0` for
+/// either zero, no trailing `.0`. For files a program reads again (CSV).
+///
+/// ```
+/// use graphostatik::fmt::full;
+/// assert_eq!(full(0.1 + 0.2), "0.30000000000000004");
+/// assert_eq!(full(-1575.0), "-1575");
+/// assert_eq!(full(-0.0), "0");
+/// assert_eq!(full(2.5e-7), "2.5e-7");
+/// assert_eq!(full(1e300).parse::<f64>().unwrap(), 1e300);
+/// ```
+pub fn full(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    let s = format!("{x:?}");
+    match s.strip_suffix(".0") {
+        Some(t) => t.to_string(),
+        None => s,
+    }
+}
+
 /// A user's string as an error message quotes it: on one line (control characters escaped)
 /// and at most `max` characters, an ellipsis marking the cut.
 ///

@@ -1442,3 +1442,20 @@ fn a_large_determinate_truss_gets_its_rank_without_the_svd() {
     assert_eq!(a.rank, Some(2 * t.joints.len()));
     assert_eq!(a.determinacy, Determinacy::Determinate);
 }
+
+/// The CSV table holds every digit: each force and plan length reads back as the very f64
+/// the construction found (issue 14: it rounded to 3 decimals).
+#[test]
+fn the_csv_table_reads_back_as_the_same_numbers() {
+    let p = load_scene("lh_aufgabe4_shed_roof.json");
+    let (_, r) = p.construct(false).unwrap();
+    let csv = graphostatik::render::forces::csv(&r, &p.combinations);
+    let row: Vec<&str> = csv.lines().nth(3).unwrap().split(',').collect();
+    assert_eq!(row[0], "\"3\"");
+    for (k, case) in r.iter().enumerate() {
+        let plan: f64 = row[1 + 2 * k].parse().unwrap();
+        let force: f64 = row[2 + 2 * k].parse().unwrap();
+        assert_eq!(plan, case.members[2].plan_mm);
+        assert_eq!(force, case.members[2].force);
+    }
+}

@@ -118,10 +118,12 @@ pub fn markdown(results: &[CaseResult], combos: &[Combination]) -> String {
     out
 }
 
-/// The same as CSV (comma-separated, plain minus signs, one header line); each support
+/// The same as CSV (comma-separated, plain minus signs, one header line), every number
+/// with all its digits (the shortest decimal that reads back as the same f64); each support
 /// reaction as two rows, its x and y components, with the plan column left empty.
 pub fn csv(results: &[CaseResult], combos: &[Combination]) -> String {
     let q = |s: &str| crate::fmt::csv_text(s);
+    let full = crate::fmt::full;
     let mut head = vec![q("member")];
     for r in results {
         head.push(q(&format!("{} plan_mm", r.case)));
@@ -135,11 +137,11 @@ pub fn csv(results: &[CaseResult], combos: &[Combination]) -> String {
     for m in 0..n {
         let mut row = vec![q(&results[0].members[m].member)];
         for r in results {
-            row.push(num(r.members[m].plan_mm, 3));
-            row.push(num(r.members[m].force, 3));
+            row.push(full(r.members[m].plan_mm));
+            row.push(full(r.members[m].force));
         }
         for c in combos {
-            row.push(num(c.force(results, m), 3));
+            row.push(full(c.force(results, m)));
         }
         out.push_str(&(row.join(",") + "\n"));
     }
@@ -151,10 +153,10 @@ pub fn csv(results: &[CaseResult], combos: &[Combination]) -> String {
             let mut row = vec![q(&format!("{} ({}) {axis}", r0.support, r0.joint))];
             for r in results {
                 row.push(String::new());
-                row.push(num(r.reactions[s].force[comp], 3));
+                row.push(full(r.reactions[s].force[comp]));
             }
             for c in combos {
-                row.push(num(c.reaction(results, s)[comp], 3));
+                row.push(full(c.reaction(results, s)[comp]));
             }
             out.push_str(&(row.join(",") + "\n"));
         }
