@@ -108,6 +108,15 @@ enum Command {
     Schema,
     /// List the procedures a scene can name, with what each constructs and its outputs.
     Procedures,
+    /// Print the shell completion script for bash, zsh, fish, elvish or powershell (e.g.
+    /// `graphostatik completions bash > ~/.local/share/bash-completion/completions/graphostatik`).
+    Completions {
+        /// The shell.
+        shell: clap_complete::Shell,
+    },
+    /// Print the manual page (roff), generated from the command line's definition
+    /// (`graphostatik man > graphostatik.1; man ./graphostatik.1`).
+    Man,
 }
 
 /// Formats of the member-force table.
@@ -237,6 +246,22 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
         }
         Command::Forces { scene, format } => forces_cmd(&scene, format),
         Command::Procedures => procedures_cmd(),
+        Command::Completions { shell } => {
+            use clap::CommandFactory;
+            let mut out = Vec::new();
+            clap_complete::generate(shell, &mut Cli::command(), "graphostatik", &mut out);
+            say(&String::from_utf8_lossy(&out))?;
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Man => {
+            use clap::CommandFactory;
+            let mut out = Vec::new();
+            clap_mangen::Man::new(Cli::command())
+                .render(&mut out)
+                .map_err(|e| Fail(format!("the manual page: {e}")))?;
+            say(&String::from_utf8_lossy(&out))?;
+            Ok(ExitCode::SUCCESS)
+        }
         Command::Schema => {
             say(&(graphostatik::scene::schema_json() + "\n"))?;
             Ok(ExitCode::SUCCESS)

@@ -726,3 +726,43 @@ fn an_unknown_key_with_a_newline_is_one_line_in_the_library_error_too() {
         "{e}"
     );
 }
+
+/// Shell completions and the manual page come from the command line's own definition, so
+/// they know every subcommand and option (issue 14, item 5).
+#[test]
+fn completions_and_the_manual_page_know_every_command() {
+    for shell in ["bash", "zsh", "fish", "elvish", "powershell"] {
+        let o = Command::new(bin())
+            .args(["completions", shell])
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{shell}");
+        let text = String::from_utf8_lossy(&o.stdout);
+        for cmd in ["render", "check", "accuracy", "drafting", "forces"] {
+            assert!(text.contains(cmd), "{shell}: {cmd}");
+        }
+    }
+    assert!(text_of(&["completions", "bash"]).contains("--reference"));
+    let man = text_of(&["man"]);
+    assert!(
+        man.starts_with(".ie") && man.contains(".TH graphostatik 1"),
+        "{man}"
+    );
+    for cmd in ["render", "check", "accuracy", "drafting", "completions"] {
+        assert!(
+            man.contains(&format!("graphostatik\\-{cmd}")) || man.contains(cmd),
+            "{cmd}"
+        );
+    }
+    let o = Command::new(bin())
+        .args(["completions", "tcsh"])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+}
+
+fn text_of(args: &[&str]) -> String {
+    let o = Command::new(bin()).args(args).output().unwrap();
+    assert!(o.status.success(), "{args:?}");
+    String::from_utf8(o.stdout).unwrap()
+}
