@@ -13,6 +13,47 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// Print only what the command produces (tables, JSON) and errors: no list of files
+    /// written, no progress.
+    #[arg(short, long, global = true)]
+    quiet: bool,
+    /// Also print, per scene, its steps, checks and time (on standard error).
+    #[arg(short, long, global = true, conflicts_with = "quiet")]
+    verbose: bool,
+}
+
+/// How much the command says besides its product: 0 quiet, 1 normal, 2 verbose.
+static VERBOSITY: std::sync::atomic::AtomicU8 = std::sync::atomic::AtomicU8::new(1);
+
+fn verbosity() -> u8 {
+    VERBOSITY.load(std::sync::atomic::Ordering::Relaxed)
+}
+
+/// Says a line of chatter (a file written, pages made) unless `--quiet`.
+fn chatter(text: &str) -> Result<(), Fail> {
+    if verbosity() >= 1 {
+        say(text)
+    } else {
+        Ok(())
+    }
+}
+
+/// A progress bar on standard error for long batch work: shown only on a terminal and not
+/// with `--quiet`; `unit` names what is counted.
+fn progress(done: usize, total: usize, unit: &str) {
+    use std::io::{IsTerminal, Write};
+    // Redrawn when the percentage moves (not 1,200 times for 1,200 drawings).
+    let moved = done == total || done * 100 / total.max(1) != (done - 1) * 100 / total.max(1);
+    if verbosity() == 0 || !moved || !std::io::stderr().is_terminal() {
+        return;
+    }
+    let bar = "#".repeat(done * 30 / total.max(1));
+    let mut e = std::io::stderr().lock();
+    let _ = write!(e, "\r[{bar:<30}] {done}/{total} {unit}");
+    if done == total {
+        let _ = writeln!(e);
+    }
+    let _ = e.flush();
 }
 
 #[derive(Subcommand)]
@@ -299,7 +340,7 @@ fn render_cmd(scenes: &[PathBuf], out: &Path, jobs: Option<u16>) -> Result<ExitC
     let paths: Vec<PathBuf> = batch.paths().map(Path::to_path_buf).collect();
     commit(batch)?;
     for path in paths {
-        say(&format!("{}\n", path.display()))?;
+        chatter(&format!("{}\n", path.display()))?;
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -308,10 +349,24 @@ fn render_cmd(scenes: &[PathBuf], out: &Path, jobs: Option<u16>) -> Result<ExitC
 /// at a time (a large truss does not hold up the small ones behind it) and the results come back in
 /// the order of `files`, so the output and the first error reported are those of a serial run.
 fn render_all(files: &[PathBuf], jobs: Option<u16>) -> Vec<Result<String, Fail>> {
+    let done = std::sync::atomic::AtomicUsize::new(0);
     let one = |f: &PathBuf| -> Result<String, Fail> {
+        let start = std::time::Instant::now();
         let p = load(f)?;
         let board = construct(f, &p)?;
-        Ok(render::figure(&p.figure_meta(), &board, None))
+        let svg = render::figure(&p.figure_meta(), &board, None);
+        if verbosity() >= 2 {
+            eprintln!(
+                "{}: {} steps, {} checks, {:.1} ms",
+                f.display(),
+                board.steps().len(),
+                board.checks().count(),
+                start.elapsed().as_secs_f64() * 1e3
+            );
+        }
+        let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+        progress(k, files.len(), "scenes");
+        Ok(svg)
     };
     let workers = jobs.map(usize::from).unwrap_or_else(cores).min(files.len());
     if workers <= 1 {
@@ -372,19 +427,8 @@ fn check_cmd(scene: &Path, json: bool, reference: bool) -> Result<ExitCode, Fail
 
 /// `accuracy`: the knobs swept, with a progress line on a terminal (none otherwise).
 fn accuracy_cmd(scene: &Path, svg: Option<&Path>, json: bool) -> Result<ExitCode, Fail> {
-    use std::io::{IsTerminal, Write};
     let p = load(scene)?;
-    let tty = std::io::stderr().is_terminal();
-    let mut progress = |done: usize, total: usize| {
-        if tty {
-            let bar = "#".repeat(done * 30 / total.max(1));
-            eprint!("\r[{bar:<30}] {done}/{total} settings");
-            let _ = std::io::stderr().flush();
-            if done == total {
-                eprintln!();
-            }
-        }
-    };
+    let mut progress = |done: usize, total: usize| progress(done, total, "settings");
     let sweeps = graphostatik::scene::sweeps(&p, &mut progress).map_err(|e| {
         Fail(format!(
             "{}: a setting of the sweep did not construct: {e}",
@@ -416,10 +460,13 @@ fn drafting_cmd(
     json: bool,
 ) -> Result<ExitCode, Fail> {
     let p = load(scene)?;
+    let bar = |done: usize, total: usize| progress(done, total, "drawings");
     let report =
-        graphostatik::scene::drafting(&p, options).map_err(|e| match p.error_field(&e) {
-            Some(field) => Fail(format!("{}: {field}: {e}", scene.display())),
-            None => Fail(format!("{}: {e}", scene.display())),
+        graphostatik::scene::drafting_with_progress(&p, options, &bar).map_err(|e| {
+            match p.error_field(&e) {
+                Some(field) => Fail(format!("{}: {field}: {e}", scene.display())),
+                None => Fail(format!("{}: {e}", scene.display())),
+            }
         })?;
     if json {
         let text = serde_json::to_string_pretty(&report).expect("the report is plain data");
@@ -453,7 +500,7 @@ fn steps_cmd(scene: &Path, out: &Path) -> Result<ExitCode, Fail> {
     // The folder's pages are this walk-through's: stale pages of an earlier, longer one go.
     let keep: std::collections::BTreeSet<&str> = pages.iter().map(|p| p.name.as_str()).collect();
     remove_stale_pages(out, &keep)?;
-    say(&format!("{} pages in {}\n", pages.len(), out.display()))?;
+    chatter(&format!("{} pages in {}\n", pages.len(), out.display()))?;
     Ok(ExitCode::SUCCESS)
 }
 
@@ -528,6 +575,14 @@ fn cores() -> usize {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    let level = if cli.quiet {
+        0
+    } else if cli.verbose {
+        2
+    } else {
+        1
+    };
+    VERBOSITY.store(level, std::sync::atomic::Ordering::Relaxed);
     match run(cli) {
         Ok(code) => code,
         Err(Fail(msg)) => {

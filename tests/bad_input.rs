@@ -766,3 +766,54 @@ fn text_of(args: &[&str]) -> String {
     assert!(o.status.success(), "{args:?}");
     String::from_utf8(o.stdout).unwrap()
 }
+
+/// `--quiet` leaves only the product and errors; `--verbose` adds a line per scene on
+/// standard error; the progress bar is never written where standard error is not a terminal
+/// (as here); the two flags together are refused as usage.
+#[test]
+fn quiet_and_verbose() {
+    let d = tmp("quiet");
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lh_c2_couple.json");
+    let run = |flags: &[&str]| {
+        let o = Command::new(bin())
+            .args(flags)
+            .arg("render")
+            .arg(&scene)
+            .arg("--out")
+            .arg(&d)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{flags:?}");
+        (
+            String::from_utf8(o.stdout).unwrap(),
+            String::from_utf8(o.stderr).unwrap(),
+        )
+    };
+    let (out, err) = run(&[]);
+    assert!(
+        out.contains("lh_c2_couple.svg") && err.is_empty(),
+        "{out} / {err}"
+    );
+    let (out, err) = run(&["--quiet"]);
+    assert!(out.is_empty() && err.is_empty(), "{out} / {err}");
+    let (out, err) = run(&["-v"]);
+    assert!(out.contains("lh_c2_couple.svg"), "{out}");
+    assert!(
+        err.contains("lh_c2_couple.json: ") && err.contains(" steps, 3 checks, "),
+        "{err}"
+    );
+    let o = Command::new(bin())
+        .args(["-q", "-v", "check"])
+        .arg(&scene)
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    // The check table is the product: --quiet keeps it.
+    let o = Command::new(bin())
+        .args(["check", "-q"])
+        .arg(&scene)
+        .output()
+        .unwrap();
+    assert!(String::from_utf8_lossy(&o.stdout).contains("3 checks, 3 passed"));
+    std::fs::remove_dir_all(&d).unwrap();
+}

@@ -121,11 +121,12 @@ fn readings(b: &Board) -> HashMap<Key, f64> {
 fn sample(
     p: &AnyProblem,
     options: DraftingOptions,
+    tick: &(dyn Fn() + Sync),
 ) -> (HashMap<Key, Vec<f64>>, usize, Option<String>) {
     let mut failed = 0;
     let mut first_failure = None;
     let mut samples: HashMap<Key, Vec<f64>> = HashMap::new();
-    for r in draw_all(p, options) {
+    for r in draw_all(p, options, tick) {
         match r {
             Ok(m) => {
                 for (k, v) in m {
@@ -166,6 +167,24 @@ pub fn drafting(
     p: &AnyProblem,
     options: DraftingOptions,
 ) -> Result<DraftingReport, ConstructionError> {
+    drafting_with_progress(p, options, &|_, _| {})
+}
+
+/// [`drafting`], calling `progress(done, total)` after each drawing (from the drawing
+/// threads), for a progress bar: the report's drawings and the budget's, four times `runs`.
+///
+/// # Errors
+/// As [`drafting`].
+pub fn drafting_with_progress(
+    p: &AnyProblem,
+    options: DraftingOptions,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<DraftingReport, ConstructionError> {
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let tick = || {
+        let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+        progress(k, 4 * options.runs);
+    };
     let exact = with_setup(
         Setup {
             model: Some(options.hand),
@@ -173,7 +192,7 @@ pub fn drafting(
         },
         || p.construct(true),
     )?;
-    let (mut samples, failed, first_failure) = sample(p, options);
+    let (mut samples, failed, first_failure) = sample(p, options, &tick);
     // The budget: the same drawings by a hand with one kind of error only.
     let h = options.hand;
     let only = [
@@ -190,6 +209,7 @@ pub fn drafting(
                     hand: *m,
                     ..options
                 },
+                &tick,
             )
             .0
         })
@@ -231,7 +251,11 @@ pub fn drafting(
 }
 
 /// Every drawing's readings (or why it failed), in the order of the seeds.
-fn draw_all(p: &AnyProblem, o: DraftingOptions) -> Vec<Result<HashMap<Key, f64>, String>> {
+fn draw_all(
+    p: &AnyProblem,
+    o: DraftingOptions,
+    tick: &(dyn Fn() + Sync),
+) -> Vec<Result<HashMap<Key, f64>, String>> {
     let jobs = o.jobs.clamp(1, o.runs.max(1));
     let per = o.runs.div_ceil(jobs);
     std::thread::scope(|scope| {
@@ -248,9 +272,11 @@ fn draw_all(p: &AnyProblem, o: DraftingOptions) -> Vec<Result<HashMap<Key, f64>,
                                 hand: Some(hand),
                                 ..Setup::default()
                             };
-                            with_setup(setup, || p.construct(true))
+                            let r = with_setup(setup, || p.construct(true))
                                 .map(|b| readings(&b))
-                                .map_err(|e| e.to_string())
+                                .map_err(|e| e.to_string());
+                            tick();
+                            r
                         })
                         .collect::<Vec<_>>()
                 })

@@ -46,7 +46,9 @@ pub use crank_dynamics::{
     DynamicsScene, FlywheelSpec, IndicatorSpec, MassSpec, PointsSpec, SidePoints, SteamSpec,
     Weights,
 };
-pub use drafting::{drafting, DraftedValue, DraftingOptions, DraftingReport};
+pub use drafting::{
+    drafting, drafting_with_progress, DraftedValue, DraftingOptions, DraftingReport,
+};
 pub use error::SceneError;
 pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,
