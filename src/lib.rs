@@ -40,6 +40,8 @@
 //! 3. the procedures: [`crank`], the slider-crank (LH II, KG XIV B); [`statics`], force
 //!    and funicular polygons, beams, centroids, shafts (LH I A, C); [`truss`], determinacy,
 //!    reactions, Cremona plans, Ritter sections, counter-diagonals, envelopes (LH I B);
+//!    [`dynamics`], an engine's net pressure, turning force and flywheel (LH II, KG XIV B.4);
+//!    [`mechanisms`], the other mechanisms of KG XIV (the scotch yoke);
 //! 4. [`scene`]: the JSON scene format, the [`scene::Procedure`] trait and its registry;
 //! 5. [`render`]: textbook-style SVG, one layer per step, walk-through pages, the check
 //!    table and the tables of member forces;
@@ -54,6 +56,7 @@ pub mod dynamics;
 pub mod fmt;
 pub mod io;
 pub mod kernel;
+pub mod mechanisms;
 pub mod prelude;
 pub mod protocol;
 pub mod render;

@@ -150,7 +150,7 @@ fn layer(m: &Module) -> usize {
         None => 6, // lib.rs, main.rs: the crate root and the command line
         Some("kernel" | "fmt" | "io") => 0,
         Some("protocol") => 1,
-        Some("crank" | "dynamics" | "statics" | "truss") => 2,
+        Some("crank" | "dynamics" | "mechanisms" | "statics" | "truss") => 2,
         Some("scene") => 3,
         Some("render") => 4,
         Some("prelude") => 5,

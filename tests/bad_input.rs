@@ -224,7 +224,8 @@ fn cli_check_exit_status_and_schema() {
     let o = Command::new(bin()).arg("schema").output().unwrap();
     assert_eq!(o.status.code(), Some(0));
     let schema: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert_eq!(schema["anyOf"].as_array().unwrap().len(), 7);
+    assert_eq!(schema["anyOf"].as_array().unwrap().len(), 8);
+    assert!(schema["$defs"]["YokeScene"]["properties"]["compare_rod"].is_object());
     let defs = &schema["$defs"];
     assert!(defs["Scene"]["properties"]["mechanism"].is_object());
     assert!(defs["BeamScene"]["properties"]["beam"].is_object());

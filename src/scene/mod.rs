@@ -30,6 +30,7 @@ mod force_system;
 mod header;
 mod procedure;
 mod registry;
+mod scotch_yoke;
 mod shaft;
 mod slider_crank;
 mod truss;
@@ -57,6 +58,7 @@ pub use procedure::{parse_scene, scene_field, Procedure, SceneHeader, SchemaType
 #[cfg(feature = "schema")]
 pub use registry::schema_json;
 pub use registry::{AnyProblem, AnyScene, Entry, REGISTRY};
+pub use scotch_yoke::{YokeCrank, YokeDrawingSpec, YokeOutput, YokeProblem, YokeScene};
 pub use shaft::{ShaftProblem, ShaftScene, TorqueSpec};
 pub use slider_crank::Problem;
 pub use truss::{TrussProblem, TrussScene};

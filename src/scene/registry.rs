@@ -57,6 +57,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<super::shaft::ShaftScene>(),
     Entry::of::<super::truss::TrussScene>(),
     Entry::of::<super::crank_dynamics::DynamicsScene>(),
+    Entry::of::<super::scotch_yoke::YokeScene>(),
 ];
 
 /// The registered procedure of this name.

@@ -1,0 +1,7 @@
+//! The other mechanisms of KG XIV beside the straight slider-crank ([`crate::crank`]), each a
+//! procedure of ruler and compass on a [`Board`](crate::protocol::Board), checked against the
+//! closed form of its loop (PROCEDURES.md K6-K8).
+//!
+//! - [`scotch_yoke`]: the Kurbelschleife, KG Abb. 1069.
+
+pub mod scotch_yoke;
