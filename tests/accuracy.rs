@@ -375,3 +375,15 @@ fn a_diagram_too_small_for_its_sheet_is_refused_naming_its_scale() {
         .to_string();
     assert!(e.contains("drawing.force_scale_kg_per_mm"), "{e}");
 }
+
+/// The scotch yoke's sweep: its mean speed 2v/π by the divisions converges as n⁻², as the
+/// slider-crank's does (|c′| = v·|sin φ| has kinks at the dead centres).
+#[test]
+fn the_yoke_sweep_converges_as_the_square_of_the_divisions() {
+    let s = sweeps_of("kg_abb1069_scotch_yoke.json");
+    let yoke = s.iter().find(|s| s.knob == "crank divisions").unwrap();
+    assert!(yoke.quantity.contains("yoke"));
+    let err = |n: &str| yoke.points.iter().find(|p| p.setting == n).unwrap().error;
+    let order = (err("36") / err("3600")).log10() / 2.0;
+    assert!((order - 2.0).abs() < 0.05, "order {order}");
+}

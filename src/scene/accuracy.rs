@@ -101,6 +101,9 @@ pub fn sweeps(
     if let Some(b) = p.get::<BeamScene>() {
         plan.extend(beam_loads(b));
     }
+    if let Some(y) = p.get::<super::scotch_yoke::YokeScene>() {
+        plan.extend(yoke_divisions(y));
+    }
     plan.push(Box::new(move || precision(p).map(|s| vec![s])));
     let total = plan.len();
     let mut out: Vec<Sweep> = Vec::new();
@@ -122,6 +125,38 @@ pub fn sweeps(
 type Setting<'a> = Box<dyn Fn() -> Result<Vec<Sweep>, ConstructionError> + 'a>;
 
 const CRANK_DIVISIONS: [usize; 10] = [4, 8, 12, 24, 36, 72, 180, 360, 1200, 3600];
+
+/// A scotch yoke's crank angles swept, against its mean speed 2v/π (velocity asked for):
+/// |c′| = v·|sin φ| has kinks at the dead centres, so the mean of the divisions converges as
+/// n⁻², as the slider-crank's does.
+fn yoke_divisions(y: &super::scotch_yoke::YokeProblem) -> Vec<Setting<'_>> {
+    if !y.request.velocity {
+        return Vec::new();
+    }
+    CRANK_DIVISIONS
+        .iter()
+        .map(|&n| -> Setting<'_> {
+            Box::new(move || {
+                let mut q = y.clone();
+                q.angles = Angles::Divisions(n);
+                let (r, secs) = timed(|| q.construct(true));
+                let rows = r?.1.rows;
+                let speeds: Vec<f64> = rows.iter().filter_map(|r| r.c).map(f64::abs).collect();
+                let value = speeds.iter().sum::<f64>() / speeds.len().max(1) as f64;
+                let exact = 2.0 * y.yoke.crank_pin_speed / std::f64::consts::PI;
+                Ok(vec![one(
+                    "crank divisions",
+                    "mean yoke speed (of the divisions)",
+                    "m/s",
+                    Some(exact),
+                    n.to_string(),
+                    value,
+                    secs,
+                )])
+            })
+        })
+        .collect()
+}
 
 /// Crank angles swept, against 2P/π (constant piston force, tangential force asked for) or
 /// 2v/π (the mean piston speed, velocity asked for).
