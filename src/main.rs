@@ -444,13 +444,22 @@ fn accuracy_cmd(scene: &Path, svg: Option<&Path>, json: bool) -> Result<ExitCode
         );
         commit(batch)?;
     }
-    if json {
-        let text = serde_json::to_string_pretty(&sweeps).expect("sweeps are plain data");
-        say(&(text + "\n"))?;
-    } else {
-        say(&render::accuracy_table_text(&sweeps))?;
-    }
+    say_report(json, sweeps.as_slice(), render::accuracy_table_text)?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// A report as pretty JSON (`json`) or as the text table `text` makes of it.
+fn say_report<T: serde::Serialize + ?Sized>(
+    json: bool,
+    value: &T,
+    text: impl FnOnce(&T) -> String,
+) -> Result<(), Fail> {
+    if json {
+        let s = serde_json::to_string_pretty(value).expect("reports are plain data");
+        say(&(s + "\n"))
+    } else {
+        say(&text(value))
+    }
 }
 
 /// `drafting`: the scene drawn by a simulated hand, many times.
@@ -468,12 +477,7 @@ fn drafting_cmd(
                 None => Fail(format!("{}: {e}", scene.display())),
             }
         })?;
-    if json {
-        let text = serde_json::to_string_pretty(&report).expect("the report is plain data");
-        say(&(text + "\n"))?;
-    } else {
-        say(&render::drafting_table_text(&report))?;
-    }
+    say_report(json, &report, render::drafting_table_text)?;
     Ok(ExitCode::SUCCESS)
 }
 

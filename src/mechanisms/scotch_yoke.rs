@@ -33,6 +33,14 @@ pub struct Yoke {
     pub compare_rod: Option<f64>,
 }
 
+impl Yoke {
+    /// The pin's centripetal acceleration v²/R (m/s²): the yoke's largest, at the dead
+    /// centres.
+    pub fn v2_over_r(&self) -> f64 {
+        self.crank_pin_speed * self.crank_pin_speed / (self.crank_radius / 1000.0)
+    }
+}
+
 /// What to draw.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct YokeRequest {
@@ -160,7 +168,7 @@ fn frame(
     let t = b.point_on_circle(&circle, 0.0, Label::plain("T"), Role::Axis, setup.clone());
     let axis = b.line_through(&t, &o, Label::NONE, Role::Axis, setup.clone())?;
     let c_mm = yoke.crank_pin_speed / dr.velocity_scale;
-    let a_mm = yoke.crank_pin_speed.powi(2) / (yoke.crank_radius / 1000.0) / dr.acceleration_scale;
+    let a_mm = yoke.v2_over_r() / dr.acceleration_scale;
     let mut depth = r + 12.0;
     let mut bases = [None, None];
     for (k, (on, up, down)) in [(rq.velocity, c_mm, c_mm), (rq.acceleration, a_mm, a_mm)]
@@ -265,7 +273,7 @@ fn vectors(
     (at, phi, rq): (&At, f64, YokeRequest),
     row: &mut YokeRow,
 ) -> Result<Ordinates, ConstructionError> {
-    let (r_m, v) = (yoke.crank_radius, yoke.crank_pin_speed);
+    let v = yoke.crank_pin_speed;
     let (s, c) = crate::kernel::angle::sin_cos_deg(phi);
     let pin = at.pin;
     let mut pts = [None, None];
@@ -305,7 +313,7 @@ fn vectors(
         (row.c, pts[0]) = (Some(cv), p);
     }
     if rq.acceleration {
-        let a = v * v / (r_m / 1000.0);
+        let a = yoke.v2_over_r();
         let tip = b.lay_off(
             &pin,
             &crank,

@@ -133,78 +133,82 @@ fn yoke_divisions(y: &super::scotch_yoke::YokeProblem) -> Vec<Setting<'_>> {
     if !y.request.velocity {
         return Vec::new();
     }
-    CRANK_DIVISIONS
-        .iter()
-        .map(|&n| -> Setting<'_> {
-            Box::new(move || {
-                let mut q = y.clone();
-                q.angles = Angles::Divisions(n);
-                let (r, secs) = timed(|| q.construct(true));
-                let rows = r?.1.rows;
-                let speeds: Vec<f64> = rows.iter().filter_map(|r| r.c).map(f64::abs).collect();
-                let value = speeds.iter().sum::<f64>() / speeds.len().max(1) as f64;
-                let exact = 2.0 * y.yoke.crank_pin_speed / std::f64::consts::PI;
-                Ok(vec![one(
-                    "crank divisions",
-                    "mean yoke speed (of the divisions)",
-                    "m/s",
-                    Some(exact),
-                    n.to_string(),
-                    value,
-                    secs,
-                )])
-            })
-        })
-        .collect()
+    let what = MeanOf {
+        quantity: "mean yoke speed (of the divisions)",
+        unit: "m/s",
+        exact: 2.0 * y.yoke.crank_pin_speed / std::f64::consts::PI,
+    };
+    mean_over_divisions(what, move |n| {
+        let mut q = y.clone();
+        q.angles = Angles::Divisions(n);
+        let (r, secs) = timed(|| q.construct(true));
+        Ok((r?.1.rows.iter().filter_map(|r| r.c).collect(), secs))
+    })
 }
 
 /// Crank angles swept, against 2P/π (constant piston force, tangential force asked for) or
 /// 2v/π (the mean piston speed, velocity asked for).
 fn crank_divisions(c: &super::slider_crank::Problem) -> Vec<Setting<'_>> {
-    let constant = matches!(c.drive.piston_force, PistonForce::Constant(_));
-    let by_t = constant && c.request.tangential_force;
-    let by_c = c.request.velocity_parallel || c.request.velocity_instant_centre;
-    if !(by_t || by_c) {
+    let by_t =
+        c.request.tangential_force && matches!(c.drive.piston_force, PistonForce::Constant(_));
+    let what = if by_t {
+        MeanOf {
+            quantity: "mean tangential force T_m (of the divisions)",
+            unit: "kg",
+            exact: 2.0 * c.drive.piston_force.max_abs() / std::f64::consts::PI,
+        }
+    } else if c.request.velocity_parallel || c.request.velocity_instant_centre {
+        MeanOf {
+            quantity: "mean piston speed (of the divisions)",
+            unit: "m/s",
+            exact: 2.0 * c.drive.crank_pin_speed / std::f64::consts::PI,
+        }
+    } else {
         return Vec::new();
-    }
+    };
+    mean_over_divisions(what, move |n| {
+        let mut q = c.clone();
+        q.angles = Angles::Divisions(n);
+        let (r, secs) = timed(|| super::types::Scene::construct(&q, true));
+        let rows = r?.1.rows;
+        let sample = rows.iter().filter_map(|r| {
+            if by_t {
+                r.tangential_force
+            } else {
+                r.c_parallel.or(r.c_instant_centre)
+            }
+        });
+        Ok((sample.collect(), secs))
+    })
+}
+
+/// The mean of |value| over a revolution that [`mean_over_divisions`] holds against its
+/// exact value.
+struct MeanOf {
+    quantity: &'static str,
+    unit: &'static str,
+    exact: f64,
+}
+
+/// One setting per entry of [`CRANK_DIVISIONS`]: `run(n)` constructs at n equal divisions and
+/// gives the values read at them with the seconds a run took; their mean |value| is the
+/// setting's value.
+fn mean_over_divisions<'a>(
+    what: MeanOf,
+    run: impl Fn(usize) -> Result<(Vec<f64>, f64), ConstructionError> + Clone + 'a,
+) -> Vec<Setting<'a>> {
     CRANK_DIVISIONS
         .iter()
-        .map(|&n| -> Setting<'_> {
+        .map(|&n| -> Setting<'a> {
+            let (run, q, u, exact) = (run.clone(), what.quantity, what.unit, what.exact);
             Box::new(move || {
-                let mut q = c.clone();
-                q.angles = Angles::Divisions(n);
-                let (r, secs) = timed(|| super::types::Scene::construct(&q, true));
-                let rows = r?.1.rows;
-                let (quantity, unit, exact, sample): (&str, &str, f64, Vec<f64>) = if by_t {
-                    let PistonForce::Constant(p) = c.drive.piston_force else {
-                        unreachable!("by_t needs a constant force")
-                    };
-                    let t = rows.iter().filter_map(|r| r.tangential_force).collect();
-                    (
-                        "mean tangential force T_m (of the divisions)",
-                        "kg",
-                        2.0 * p.abs() / std::f64::consts::PI,
-                        t,
-                    )
-                } else {
-                    let v = c.drive.crank_pin_speed;
-                    let cs = rows
-                        .iter()
-                        .filter_map(|r| r.c_parallel.or(r.c_instant_centre))
-                        .map(f64::abs)
-                        .collect();
-                    (
-                        "mean piston speed (of the divisions)",
-                        "m/s",
-                        2.0 * v / std::f64::consts::PI,
-                        cs,
-                    )
-                };
-                let value = sample.iter().map(|x| x.abs()).sum::<f64>() / sample.len() as f64;
+                let (sample, secs) = run(n)?;
+                let value =
+                    sample.iter().map(|x| x.abs()).sum::<f64>() / sample.len().max(1) as f64;
                 Ok(vec![one(
                     "crank divisions",
-                    quantity,
-                    unit,
+                    q,
+                    u,
                     Some(exact),
                     n.to_string(),
                     value,
@@ -259,7 +263,8 @@ fn dynamics_divisions(d: &super::crank_dynamics::DynamicsProblem) -> Vec<Setting
                     .mean_heights
                     .iter()
                     .map(|m| {
-                        let mut s = one(
+                        // m.error is m.t_m − exact: the error `one` finds.
+                        one(
                             &format!("divisions, {}", m.rule),
                             "mean turning force T_m",
                             "kg",
@@ -267,9 +272,7 @@ fn dynamics_divisions(d: &super::crank_dynamics::DynamicsProblem) -> Vec<Setting
                             n.to_string(),
                             m.t_m,
                             secs,
-                        );
-                        s.points[0].error = m.error.abs();
-                        s
+                        )
                     })
                     .collect())
             })
@@ -340,6 +343,7 @@ fn moment_error(
         .iter()
         .map(|s| (s.moment - cf.moment(s.x)).abs())
         .fold(0.0, f64::max);
+    // No single exact value: the setting's value is its error.
     let mut s = one(
         knob,
         "largest moment error at the sections",
@@ -349,7 +353,6 @@ fn moment_error(
         err,
         secs,
     );
-    s.points[0].error = err;
     s.scale = crate::statics::closed_form::max_abs_moment(&orig.beam)
         .0
         .abs();

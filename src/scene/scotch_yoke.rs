@@ -2,9 +2,9 @@
 
 use super::error::SceneError;
 use super::fields::Fields;
+use super::slider_crank::{check_crank, crank_radius};
 use super::types::{AngleSpec, Rod, Speed};
 use crate::crank::{Angles, Drawing};
-use crate::kernel::tolerance::{MAX_DIVISIONS, MIN_ROD_EXCESS};
 use crate::mechanisms::scotch_yoke::{self, Yoke, YokeRequest, YokeResults};
 use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
 use serde::{Deserialize, Serialize};
@@ -92,48 +92,22 @@ pub struct YokeProblem {
 
 impl YokeScene {
     fn radius(&self) -> f64 {
-        self.crank
-            .crank_radius_mm
-            .unwrap_or_else(|| self.crank.stroke_mm.unwrap_or(0.0) / 2.0)
+        crank_radius((self.crank.crank_radius_mm, self.crank.stroke_mm))
     }
 
     fn check_values(&self, origin: &str) -> Result<(), SceneError> {
         let f = Fields { origin };
-        match (self.crank.crank_radius_mm, self.crank.stroke_mm) {
-            (Some(r), None) => f.positive("crank.crank_radius_mm", r)?,
-            (None, Some(s)) => f.positive("crank.stroke_mm", s)?,
-            _ => {
-                return Err(f.bad(
-                    "crank",
-                    "give crank_radius_mm or stroke_mm, one of them".into(),
-                ))
-            }
-        }
+        let r = check_crank(
+            f,
+            "crank",
+            (self.crank.crank_radius_mm, self.crank.stroke_mm),
+        )?;
         self.speed.check(f)?;
-        match &self.angles {
-            AngleSpec::Divisions(n) if !(2..=MAX_DIVISIONS).contains(n) => {
-                return Err(f.bad(
-                    "angles.divisions",
-                    format!("{n}: give 2 to {MAX_DIVISIONS}"),
-                ));
-            }
-            AngleSpec::Degrees(v)
-                if v.is_empty()
-                    || v.len() > MAX_DIVISIONS
-                    || v.iter()
-                        .any(|a| !(a.is_finite() && (0.0..360.0).contains(a))) =>
-            {
-                return Err(f.bad(
-                    "angles.degrees",
-                    format!("give 1 to {MAX_DIVISIONS} angles, each 0 ≤ θ < 360"),
-                ));
-            }
-            AngleSpec::StrokeParts(_) => {
-                return Err(f.bad("angles.stroke_parts", "the stroke divided by rod arcs is the slider-crank's construction: give divisions or degrees".into()));
-            }
-            _ => {}
+        if let AngleSpec::StrokeParts(_) = self.angles {
+            return Err(f.bad("angles.stroke_parts", "the stroke divided by rod arcs is the slider-crank's construction: give divisions or degrees".into()));
         }
-        self.check_rod(f)?;
+        self.angles.check(f)?;
+        self.check_rod(f, r)?;
         if let Some(d) = &self.drawing {
             for (name, v) in [
                 ("drawing.length_scale", d.length_scale),
@@ -154,23 +128,14 @@ impl YokeScene {
         Ok(())
     }
 
-    /// The rod of the comparison: asked for with `slider_crank`, longer than the crank.
-    fn check_rod(&self, f: Fields) -> Result<(), SceneError> {
+    /// The rod of the comparison: asked for with `slider_crank`, longer than the crank
+    /// (`r`) as a slider-crank's rod must be.
+    fn check_rod(&self, f: Fields, r: f64) -> Result<(), SceneError> {
         let wants = self.outputs.contains(&YokeOutput::SliderCrank);
         match (wants, self.compare_rod) {
             (true, None) => Err(f.bad("compare_rod", "the slider_crank output draws a slider-crank beside the yoke: give its rod, e.g. {\"l_over_r\": 5}".into())),
             (false, Some(_)) => Err(f.bad("compare_rod", "is drawn only with the slider_crank output: add it, or leave the rod out".into())),
-            (_, Some(rod)) => {
-                let r = self.radius();
-                let (l, field) = match rod {
-                    Rod::LengthMm(l) => (l, "compare_rod.length_mm"),
-                    Rod::LOverR(k) => (k * r, "compare_rod.l_over_r"),
-                };
-                if !(l.is_finite() && l > r * (1.0 + MIN_ROD_EXCESS)) {
-                    return Err(f.bad(field, format!("the rod ({}) must be longer than the crank (R = {r} mm) by more than {MIN_ROD_EXCESS} of it", crate::fmt::num(l, 6))));
-                }
-                Ok(())
-            }
+            (true, Some(rod)) => rod.check(f, "compare_rod", r),
             (false, None) => Ok(()),
         }
     }
@@ -186,17 +151,15 @@ impl YokeScene {
             acceleration_scale_m_s2_per_mm: None,
         });
         let nice = super::defaults::nice_at_least;
+        let yoke = Yoke {
+            crank_radius: r,
+            crank_pin_speed: v,
+            compare_rod: self.compare_rod.map(|rod| rod.length(r)),
+        };
         YokeProblem {
             title: self.title.clone(),
             source: self.source.clone().unwrap_or_default(),
-            yoke: Yoke {
-                crank_radius: r,
-                crank_pin_speed: v,
-                compare_rod: self.compare_rod.map(|rod| match rod {
-                    Rod::LengthMm(l) => l,
-                    Rod::LOverR(k) => k * r,
-                }),
-            },
+            yoke,
             drawing: Drawing {
                 length_scale: d.length_scale.unwrap_or_else(|| nice(2.0 * r / 100.0)),
                 force_scale: 1.0,
@@ -205,13 +168,9 @@ impl YokeScene {
                     .unwrap_or_else(|| nice(v / 30.0)),
                 acceleration_scale: d
                     .acceleration_scale_m_s2_per_mm
-                    .unwrap_or_else(|| nice(v * v / (r / 1000.0) / 30.0)),
+                    .unwrap_or_else(|| nice(yoke.v2_over_r() / 30.0)),
             },
-            angles: match &self.angles {
-                AngleSpec::Divisions(n) => Angles::Divisions(*n),
-                AngleSpec::Degrees(v) => Angles::Degrees(v.clone()),
-                AngleSpec::StrokeParts(n) => Angles::StrokeParts(*n),
-            },
+            angles: self.angles.angles(),
             request: YokeRequest {
                 velocity: self.outputs.contains(&YokeOutput::Velocity),
                 acceleration: self.outputs.contains(&YokeOutput::Acceleration),
@@ -263,8 +222,7 @@ impl super::Procedure for YokeScene {
         let y = &p.yoke;
         let length = 4.0 * y.crank_radius / d.length_scale;
         let speed = 4.0 * y.crank_pin_speed / d.velocity_scale;
-        let accel =
-            4.0 * y.crank_pin_speed.powi(2) / (y.crank_radius / 1000.0) / d.acceleration_scale;
+        let accel = 4.0 * y.v2_over_r() / d.acceleration_scale;
         if accel > length.max(speed) && p.request.acceleration {
             (accel, "drawing.acceleration_scale_m_s2_per_mm")
         } else if speed > length && p.request.velocity {
@@ -284,7 +242,7 @@ impl super::Procedure for YokeScene {
             }),
             rq.acceleration.then(|| {
                 (
-                    y.crank_pin_speed.powi(2) / (y.crank_radius / 1000.0) / d.acceleration_scale,
+                    y.v2_over_r() / d.acceleration_scale,
                     "drawing.acceleration_scale_m_s2_per_mm",
                 )
             }),

@@ -49,7 +49,7 @@ impl Scene {
         let r = self.mechanism.check(f)?;
         self.mechanism.check_rod(f, r)?;
         self.speed.check(f)?;
-        let n_angles = self.check_angles(f)?;
+        let n_angles = self.angles.check(f)?;
         self.check_outputs_and_force(f, n_angles)?;
         if let Some(d) = &self.drawing {
             for (name, v) in [
@@ -70,48 +70,6 @@ impl Scene {
             }
         }
         Ok(())
-    }
-
-    /// The crank angles: 2 to MAX_DIVISIONS divisions, or 1 to MAX_DIVISIONS angles in
-    /// [0°, 360°): their number.
-    fn check_angles(&self, f: Fields) -> Result<usize, SceneError> {
-        Ok(match &self.angles {
-            AngleSpec::Divisions(n) => {
-                if *n < 2 || *n > MAX_DIVISIONS {
-                    return Err(f.bad(
-                        "angles.divisions",
-                        format!("{n} divisions: give between 2 and {MAX_DIVISIONS}"),
-                    ));
-                }
-                *n
-            }
-            AngleSpec::Degrees(v) => {
-                if v.is_empty() || v.len() > MAX_DIVISIONS {
-                    return Err(f.bad(
-                        "angles.degrees",
-                        format!("{} angles: give between 1 and {MAX_DIVISIONS}", v.len()),
-                    ));
-                }
-                for (k, a) in v.iter().enumerate() {
-                    if !(a.is_finite() && (0.0..360.0).contains(a)) {
-                        return Err(f.bad(
-                            &format!("angles.degrees[{k}]"),
-                            format!("crank angle {a}° is out of range: give 0 ≤ θ < 360"),
-                        ));
-                    }
-                }
-                v.len()
-            }
-            AngleSpec::StrokeParts(n) => {
-                if *n < 1 || 2 * n > MAX_DIVISIONS {
-                    return Err(f.bad(
-                        "angles.stroke_parts",
-                        format!("{n} parts: give between 1 and {}", MAX_DIVISIONS / 2),
-                    ));
-                }
-                2 * n
-            }
-        })
     }
 
     /// At least one output; the piston force where a force is asked for, finite, and one per
@@ -180,11 +138,7 @@ impl Scene {
         let r = self.crank_radius();
         let l = self.mechanism.rod_length();
         let v = self.speed.crank_pin_speed(r);
-        let angles = match &self.angles {
-            AngleSpec::Divisions(n) => Angles::Divisions(*n),
-            AngleSpec::Degrees(v) => Angles::Degrees(v.clone()),
-            AngleSpec::StrokeParts(n) => Angles::StrokeParts(*n),
-        };
+        let angles = self.angles.angles();
         let piston_force = match &self.piston_force {
             None => PistonForce::Constant(0.0),
             Some(PistonForceSpec::Kg(p)) => PistonForce::Constant(*p),
@@ -253,40 +207,76 @@ impl Scene {
 impl Mechanism {
     /// The crank: its radius or its stroke, one of them, positive: the radius (mm).
     pub(super) fn check(&self, f: Fields) -> Result<f64, SceneError> {
-        let m = self;
-        let r = match (m.crank_radius_mm, m.stroke_mm) {
-            (Some(r), None) => {
-                f.positive("mechanism.crank_radius_mm", r)?;
-                r
-            }
-            (None, Some(s)) => {
-                f.positive("mechanism.stroke_mm", s)?;
-                s / 2.0
-            }
-            (Some(_), Some(_)) => {
-                return Err(f.bad(
-                    "mechanism",
-                    "give either crank_radius_mm or stroke_mm, not both".into(),
-                ))
-            }
-            (None, None) => {
-                return Err(f.bad(
-                    "mechanism",
-                    "missing field `crank_radius_mm` (or `stroke_mm`)".into(),
-                ))
-            }
-        };
-        Ok(r)
+        check_crank(f, "mechanism", (self.crank_radius_mm, self.stroke_mm))
     }
 
     /// The rod: positive and longer than the crank radius `r`.
     pub(super) fn check_rod(&self, f: Fields, r: f64) -> Result<(), SceneError> {
-        match self.rod {
+        self.rod.check(f, "mechanism.rod", r)
+    }
+
+    /// The crank radius R (mm): given, or half the stroke.
+    pub fn radius(&self) -> f64 {
+        crank_radius((self.crank_radius_mm, self.stroke_mm))
+    }
+
+    /// The rod length L (mm).
+    pub fn rod_length(&self) -> f64 {
+        self.rod.length(self.radius())
+    }
+}
+
+/// The crank radius (mm) of a crank given by its radius or its stroke.
+pub(super) fn crank_radius((radius, stroke): (Option<f64>, Option<f64>)) -> f64 {
+    radius.unwrap_or_else(|| stroke.unwrap_or(0.0) / 2.0)
+}
+
+/// A crank given by its radius or its stroke (the fields `crank_radius_mm`, `stroke_mm` under
+/// `at`), one of them, positive: the radius (mm). Shared by every scene with a crank.
+pub(super) fn check_crank(
+    f: Fields,
+    at: &str,
+    (radius, stroke): (Option<f64>, Option<f64>),
+) -> Result<f64, SceneError> {
+    match (radius, stroke) {
+        (Some(r), None) => {
+            f.positive(&format!("{at}.crank_radius_mm"), r)?;
+            Ok(r)
+        }
+        (None, Some(s)) => {
+            f.positive(&format!("{at}.stroke_mm"), s)?;
+            Ok(s / 2.0)
+        }
+        (Some(_), Some(_)) => Err(f.bad(
+            at,
+            "give either crank_radius_mm or stroke_mm, not both".into(),
+        )),
+        (None, None) => Err(f.bad(
+            at,
+            "missing field `crank_radius_mm` (or `stroke_mm`)".into(),
+        )),
+    }
+}
+
+impl Rod {
+    /// The rod length L (mm) beside a crank of radius `r`.
+    pub fn length(&self, r: f64) -> f64 {
+        match *self {
+            Rod::LengthMm(l) => l,
+            Rod::LOverR(k) => k * r,
+        }
+    }
+
+    /// The rod (the field `at`): positive and longer than the crank radius `r` by more
+    /// than [`MIN_ROD_EXCESS`] of it. Shared by every scene with a rod.
+    pub(super) fn check(&self, f: Fields, at: &str, r: f64) -> Result<(), SceneError> {
+        let field = |name: &str| format!("{at}.{name}");
+        match *self {
             Rod::LengthMm(l) => {
-                f.positive("mechanism.rod.length_mm", l)?;
+                f.positive(&field("length_mm"), l)?;
                 if l <= r {
                     return Err(f.bad(
-                        "mechanism.rod.length_mm",
+                        &field("length_mm"),
                         format!(
                             "the rod (L = {l} mm) must be longer than the crank (R = {r} mm): \
                              otherwise the mechanism locks where the crank stands perpendicular \
@@ -296,10 +286,10 @@ impl Mechanism {
                 }
             }
             Rod::LOverR(k) => {
-                f.positive("mechanism.rod.l_over_r", k)?;
+                f.positive(&field("l_over_r"), k)?;
                 if k <= 1.0 {
                     return Err(f.bad(
-                        "mechanism.rod.l_over_r",
+                        &field("l_over_r"),
                         format!(
                             "L/R = {k}: the rod must be longer than the crank (L/R > 1), \
                              otherwise the mechanism locks"
@@ -311,13 +301,13 @@ impl Mechanism {
         // Nearer to locking, the rod's arc cuts the piston line at 90° so glancingly that the
         // forces lose more digits than their checks allow (at L/R = 1 + 1e-9 they were 0.35 kg
         // off against a 0.022 kg tolerance): refused, with the reason.
-        let (l, field) = match self.rod {
-            Rod::LengthMm(l) => (l, "mechanism.rod.length_mm"),
-            Rod::LOverR(k) => (k * r, "mechanism.rod.l_over_r"),
+        let (l, name) = match *self {
+            Rod::LengthMm(l) => (l, "length_mm"),
+            Rod::LOverR(k) => (k * r, "l_over_r"),
         };
         if l <= r * (1.0 + MIN_ROD_EXCESS) {
             return Err(f.bad(
-                field,
+                &field(name),
                 format!(
                     "the rod is only {} of the crank longer than the crank: the construction \
                      near 90° needs at least {}",
@@ -328,18 +318,57 @@ impl Mechanism {
         }
         Ok(())
     }
+}
 
-    /// The crank radius R (mm): given, or half the stroke.
-    pub fn radius(&self) -> f64 {
-        self.crank_radius_mm
-            .unwrap_or_else(|| self.stroke_mm.unwrap_or(0.0) / 2.0)
+impl AngleSpec {
+    /// The crank angles: 2 to MAX_DIVISIONS divisions, or 1 to MAX_DIVISIONS angles in
+    /// [0°, 360°): their number.
+    pub(super) fn check(&self, f: Fields) -> Result<usize, SceneError> {
+        Ok(match self {
+            AngleSpec::Divisions(n) => {
+                if *n < 2 || *n > MAX_DIVISIONS {
+                    return Err(f.bad(
+                        "angles.divisions",
+                        format!("{n} divisions: give between 2 and {MAX_DIVISIONS}"),
+                    ));
+                }
+                *n
+            }
+            AngleSpec::Degrees(v) => {
+                if v.is_empty() || v.len() > MAX_DIVISIONS {
+                    return Err(f.bad(
+                        "angles.degrees",
+                        format!("{} angles: give between 1 and {MAX_DIVISIONS}", v.len()),
+                    ));
+                }
+                for (k, a) in v.iter().enumerate() {
+                    if !(a.is_finite() && (0.0..360.0).contains(a)) {
+                        return Err(f.bad(
+                            &format!("angles.degrees[{k}]"),
+                            format!("crank angle {a}° is out of range: give 0 ≤ θ < 360"),
+                        ));
+                    }
+                }
+                v.len()
+            }
+            AngleSpec::StrokeParts(n) => {
+                if *n < 1 || 2 * n > MAX_DIVISIONS {
+                    return Err(f.bad(
+                        "angles.stroke_parts",
+                        format!("{n} parts: give between 1 and {}", MAX_DIVISIONS / 2),
+                    ));
+                }
+                2 * n
+            }
+        })
     }
 
-    /// The rod length L (mm).
-    pub fn rod_length(&self) -> f64 {
-        match self.rod {
-            Rod::LengthMm(l) => l,
-            Rod::LOverR(k) => k * self.radius(),
+    /// The angles in machine terms.
+    pub(super) fn angles(&self) -> Angles {
+        match self {
+            AngleSpec::Divisions(n) => Angles::Divisions(*n),
+            AngleSpec::Degrees(v) => Angles::Degrees(v.clone()),
+            AngleSpec::StrokeParts(n) => Angles::StrokeParts(*n),
         }
     }
 }
