@@ -224,7 +224,11 @@ fn cli_check_exit_status_and_schema() {
     let o = Command::new(bin()).arg("schema").output().unwrap();
     assert_eq!(o.status.code(), Some(0));
     let schema: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert_eq!(schema["anyOf"].as_array().unwrap().len(), 8);
+    assert_eq!(
+        schema["anyOf"].as_array().unwrap().len(),
+        graphostatik::scene::REGISTRY.len()
+    );
+    assert!(schema["$defs"]["LinkScene"]["properties"]["link"].is_object());
     assert!(schema["$defs"]["YokeScene"]["properties"]["compare_rod"].is_object());
     let defs = &schema["$defs"];
     assert!(defs["Scene"]["properties"]["mechanism"].is_object());

@@ -2,6 +2,8 @@
 //! procedure of ruler and compass on a [`Board`](crate::protocol::Board), checked against the
 //! closed form of its loop (PROCEDURES.md K6-K8).
 //!
-//! - [`scotch_yoke`]: the Kurbelschleife, KG Abb. 1069.
+//! - [`scotch_yoke`]: the Kurbelschleife, KG Abb. 1069;
+//! - [`slotted_link`]: the oscillating slotted link (quick return), KG Abb. 1071-1072.
 
 pub mod scotch_yoke;
+pub mod slotted_link;

@@ -33,6 +33,7 @@ mod registry;
 mod scotch_yoke;
 mod shaft;
 mod slider_crank;
+mod slotted_link;
 mod truss;
 mod types;
 
@@ -61,5 +62,6 @@ pub use registry::{AnyProblem, AnyScene, Entry, REGISTRY};
 pub use scotch_yoke::{YokeCrank, YokeDrawingSpec, YokeOutput, YokeProblem, YokeScene};
 pub use shaft::{ShaftProblem, ShaftScene, TorqueSpec};
 pub use slider_crank::Problem;
+pub use slotted_link::{LinkDrawingSpec, LinkOutput, LinkProblem, LinkScene, LinkSpec};
 pub use truss::{TrussProblem, TrussScene};
 pub use types::*;

@@ -58,6 +58,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<super::truss::TrussScene>(),
     Entry::of::<super::crank_dynamics::DynamicsScene>(),
     Entry::of::<super::scotch_yoke::YokeScene>(),
+    Entry::of::<super::slotted_link::LinkScene>(),
 ];
 
 /// The registered procedure of this name.
