@@ -3,7 +3,9 @@
 //! closed form of its loop (PROCEDURES.md K6-K8).
 //!
 //! - [`scotch_yoke`]: the Kurbelschleife, KG Abb. 1069;
-//! - [`slotted_link`]: the oscillating slotted link (quick return), KG Abb. 1071-1072.
+//! - [`slotted_link`]: the oscillating slotted link (quick return), KG Abb. 1071-1072;
+//! - [`offset_crank`]: the offset (geschränkt) slider-crank, KG Abb. 1046.
 
+pub mod offset_crank;
 pub mod scotch_yoke;
 pub mod slotted_link;

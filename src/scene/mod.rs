@@ -28,6 +28,7 @@ mod error;
 mod fields;
 mod force_system;
 mod header;
+mod offset_crank;
 mod procedure;
 mod registry;
 mod scotch_yoke;
@@ -55,6 +56,7 @@ pub use error::SceneError;
 pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,
 };
+pub use offset_crank::{OffsetDrawingSpec, OffsetOutput, OffsetProblem, OffsetScene};
 pub use procedure::{parse_scene, scene_field, Procedure, SceneHeader, SchemaType};
 #[cfg(feature = "schema")]
 pub use registry::schema_json;

@@ -59,6 +59,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<super::crank_dynamics::DynamicsScene>(),
     Entry::of::<super::scotch_yoke::YokeScene>(),
     Entry::of::<super::slotted_link::LinkScene>(),
+    Entry::of::<super::offset_crank::OffsetScene>(),
 ];
 
 /// The registered procedure of this name.
