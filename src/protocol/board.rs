@@ -90,6 +90,9 @@ pub struct Board {
     context: Option<std::sync::Arc<str>>,
     #[serde(skip)]
     next_step: u32,
+    /// Whether the last cut found only one double point (a tangency).
+    #[serde(skip)]
+    last_touched: bool,
     /// The error model the bounds follow.
     #[serde(skip)]
     model: ErrorModel,
@@ -142,6 +145,7 @@ impl Board {
             recording: false,
             context: None,
             next_step: 0,
+            last_touched: false,
             model: self.model,
             tracks: Vec::new(),
             shadows: None,
@@ -160,6 +164,7 @@ impl Board {
             recording,
             context: None,
             next_step: 0,
+            last_touched: false,
             model: setup.model.unwrap_or(ErrorModel::ROUNDING),
             tracks: Vec::new(),
             shadows: (recording && setup.reference).then(Vec::new),
@@ -1009,6 +1014,7 @@ impl Board {
         on: [ObjId; 2],
         label: Label,
     ) -> H<Point> {
+        self.last_touched = br.is_none();
         if let Some(s) = self.last_step() {
             s.conditioning = Some(cond);
             s.branch = br;
@@ -1021,6 +1027,13 @@ impl Board {
         self.touch(on[0], &p);
         self.touch(on[1], &p);
         H { id, g: p }
+    }
+
+    /// Whether the last cut of a line or circle with a circle found the two touching: one
+    /// double point, no branch to choose (a linkage whose links fall into one line). Typed,
+    /// on silent boards too.
+    pub fn last_cut_touched(&self) -> bool {
+        self.last_touched
     }
 
     /// Cuts two circles and takes the branch given (`First`/`Second` mean right/left of the

@@ -27,6 +27,7 @@ mod drafting;
 mod error;
 mod fields;
 mod force_system;
+mod four_bar;
 mod header;
 mod offset_crank;
 mod procedure;
@@ -56,6 +57,7 @@ pub use error::SceneError;
 pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,
 };
+pub use four_bar::{FourBarDrawingSpec, FourBarOutput, FourBarProblem, FourBarScene, LinksSpec};
 pub use offset_crank::{OffsetDrawingSpec, OffsetOutput, OffsetProblem, OffsetScene};
 pub use procedure::{parse_scene, scene_field, Procedure, SceneHeader, SchemaType};
 #[cfg(feature = "schema")]

@@ -60,6 +60,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<super::scotch_yoke::YokeScene>(),
     Entry::of::<super::slotted_link::LinkScene>(),
     Entry::of::<super::offset_crank::OffsetScene>(),
+    Entry::of::<super::four_bar::FourBarScene>(),
 ];
 
 /// The registered procedure of this name.

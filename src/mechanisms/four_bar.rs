@@ -1,0 +1,552 @@
+//! The four-bar linkages of KG XIV (Abb. 1043, 1045): the crank-rocker (Bogenschubkurbel),
+//! whose crank OP turns round and whose rocker AB swings, and the parallel crank
+//! (Parallelkurbel) of equal cranks and a coupler as long as the frame, as on a locomotive's
+//! coupled axles (PROCEDURES.md K8).
+//!
+//! Per crank angle the coupler's far joint B is the cut of two circles: the coupler length L
+//! about the pin P and the rocker length ρ about its pivot A, with the branch named (left or
+//! right of the ray from P to A; for the parallel crank the branch that closes the
+//! parallelogram). The rocker's dead positions (Totlagen) lie where crank and coupler are in
+//! one line: B on the arcs L + R and L − R about O. The transmission angle μ at B between
+//! coupler and rocker is reported and flagged where it falls below the limit a scene states.
+//!
+//! Grashof's rule decides whether the crank can turn round: with the shortest link s, the
+//! longest l and the others p, q, it can when s + l ≤ p + q and the crank or the frame is the
+//! shortest. At s + l = p + q (the parallel crank is such a linkage) the links fall into one
+//! line at two crank angles: the two circles touch there, a typed tangency whose branch is
+//! undetermined (the parallel crank may turn into the antiparallel one).
+
+use crate::kernel::{Branch, Circle, Point, Vector};
+use crate::protocol::{Board, ConstructionError, Label, Note, Role, Topic, H};
+
+fn n(caption: &'static str, term: Option<&'static str>) -> Note {
+    crate::protocol::note(
+        caption,
+        term,
+        "KG XIV, Abb. 1043, 1045",
+        Topic::Custom("four-bar"),
+    )
+}
+
+/// Which of the two closures of the loop B takes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(rename_all = "snake_case")]
+pub enum Assembly {
+    /// B to the left of the ray from the pin P to the rocker's pivot A.
+    Left,
+    /// B to the right of that ray.
+    Right,
+    /// The parallel crank's closure: OPBA a parallelogram (PB parallel to OA).
+    Parallel,
+}
+
+/// A four-bar linkage in mm of the machine: the frame OA along +x, the crank OP, the coupler
+/// PB and the rocker AB.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FourBar {
+    /// Frame OA (the distance of the pivots) d.
+    pub frame: f64,
+    /// Crank OP = R.
+    pub crank: f64,
+    /// Coupler PB = L.
+    pub coupler: f64,
+    /// Rocker AB = ρ.
+    pub rocker: f64,
+    /// The closure taken.
+    pub assembly: Assembly,
+    /// The transmission angle below which a position is flagged (degrees).
+    pub min_transmission: f64,
+}
+
+/// Why a four-bar cannot be driven round by its crank.
+#[derive(Debug, Clone, PartialEq)]
+pub enum FourBarError {
+    /// A length is not a positive finite number (the link's name).
+    NotPositive(&'static str),
+    /// The longest link is at least as long as the other three together: the loop does not
+    /// close (or only in one flat position).
+    LoopOpen {
+        /// The longest link's name.
+        longest: &'static str,
+    },
+    /// Grashof's rule fails, or the shortest link is not the crank or the frame: the crank
+    /// cannot turn round.
+    NotGrashof {
+        /// The lengths in the order frame, crank, coupler, rocker.
+        lengths: [f64; 4],
+    },
+    /// The parallel closure asked of links that are not a parallel crank.
+    NotParallel,
+}
+
+impl FourBarError {
+    /// The input the error is about and a one-line reason.
+    pub fn describe(&self) -> (&'static str, String) {
+        match self {
+            FourBarError::NotPositive(name) => (name, "must be a positive finite number".into()),
+            FourBarError::LoopOpen { longest } => (longest, format!(
+                "the {longest} is at least as long as the other three links together: the link lengths do not close the loop"
+            )),
+            FourBarError::NotGrashof { lengths: [d, r, l, p] } => ("crank", format!(
+                "the crank cannot turn round (Grashof: shortest + longest ≤ the other two, and the crank or the frame the shortest): frame {}, crank {}, coupler {}, rocker {} mm",
+                crate::fmt::num(*d, 6), crate::fmt::num(*r, 6), crate::fmt::num(*l, 6), crate::fmt::num(*p, 6)
+            )),
+            FourBarError::NotParallel => ("assembly", "the parallel closure needs a parallel crank: the rocker as long as the crank and the coupler as long as the frame".into()),
+        }
+    }
+}
+
+impl FourBar {
+    fn lengths(&self) -> [(&'static str, f64); 4] {
+        [
+            ("frame", self.frame),
+            ("crank", self.crank),
+            ("coupler", self.coupler),
+            ("rocker", self.rocker),
+        ]
+    }
+
+    /// Whether the crank can turn round (Grashof, the crank or the frame shortest), and the
+    /// closure fits the links.
+    pub fn validate(&self) -> Result<(), FourBarError> {
+        let links = self.lengths();
+        if let Some((name, _)) = links.iter().find(|(_, x)| !(x.is_finite() && *x > 0.0)) {
+            return Err(FourBarError::NotPositive(name));
+        }
+        let mut sorted = links;
+        sorted.sort_by(|a, b| a.1.total_cmp(&b.1));
+        let [s, p, q, l] = sorted.map(|x| x.1);
+        if l >= s + p + q {
+            return Err(FourBarError::LoopOpen {
+                longest: sorted[3].0,
+            });
+        }
+        let shortest_ok = self.crank <= s || self.frame <= s;
+        if s + l > p + q || !shortest_ok {
+            return Err(FourBarError::NotGrashof {
+                lengths: links.map(|x| x.1),
+            });
+        }
+        if self.assembly == Assembly::Parallel && !self.is_parallel() {
+            return Err(FourBarError::NotParallel);
+        }
+        Ok(())
+    }
+
+    /// A parallel crank: rocker = crank and coupler = frame (to 1e-12 of the frame).
+    pub fn is_parallel(&self) -> bool {
+        let tol = 1e-12 * self.frame;
+        (self.rocker - self.crank).abs() <= tol && (self.coupler - self.frame).abs() <= tol
+    }
+
+    /// Whether the rocker swings (a crank-rocker) rather than turning round too (a double
+    /// crank: the frame the shortest link; or the rocker as short as the crank, as in the
+    /// parallel crank).
+    pub fn rocker_swings(&self) -> bool {
+        let s = self
+            .lengths()
+            .map(|x| x.1)
+            .into_iter()
+            .fold(f64::INFINITY, f64::min);
+        self.frame > s && self.rocker > s
+    }
+
+    /// The closed forms at the crank angle θ (degrees from OA, counter-clockwise): B, the
+    /// rocker's angle ∠OAB and the transmission angle μ = ∠PBA (degrees).
+    pub fn exact(&self, theta: f64) -> (Point, f64, f64) {
+        let (d, r, l, rho) = (self.frame, self.crank, self.coupler, self.rocker);
+        let (s, c) = crate::kernel::angle::sin_cos_deg(theta);
+        let p = Vector::new(r * c, r * s);
+        let a = Vector::new(d, 0.0);
+        let pa = a - p;
+        let f2 = pa.norm_squared();
+        let f = f2.sqrt();
+        let b = match self.assembly {
+            Assembly::Parallel => p + a,
+            side => {
+                let u = pa / f;
+                let cos_g = ((l * l + f2 - rho * rho) / (2.0 * l * f)).clamp(-1.0, 1.0);
+                let sin_g = (1.0 - cos_g * cos_g).sqrt();
+                let perp = Vector::new(-u.y, u.x) * if side == Assembly::Left { 1.0 } else { -1.0 };
+                p + (u * cos_g + perp * sin_g) * l
+            }
+        };
+        let ab = b - a;
+        let psi = ab.y.abs().atan2(-ab.x).to_degrees();
+        let cos_mu = ((l * l + rho * rho - f2) / (2.0 * l * rho)).clamp(-1.0, 1.0);
+        (Point::from(b), psi, cos_mu.acos().to_degrees())
+    }
+
+    /// The rocker's swing between its dead positions and the angle ϑ between the crank lines
+    /// there (degrees): the crank takes 180° + ϑ one way and 180° − ϑ the other.
+    pub fn dead_positions(&self) -> (f64, f64) {
+        let (d, r, l, rho) = (self.frame, self.crank, self.coupler, self.rocker);
+        let at_a = |reach: f64| {
+            ((d * d + rho * rho - reach * reach) / (2.0 * d * rho))
+                .clamp(-1.0, 1.0)
+                .acos()
+        };
+        let at_o = |reach: f64| {
+            ((d * d + reach * reach - rho * rho) / (2.0 * d * reach))
+                .clamp(-1.0, 1.0)
+                .acos()
+        };
+        (
+            (at_a(l + r) - at_a(l - r)).abs().to_degrees(),
+            (at_o(l + r) - at_o(l - r)).abs().to_degrees(),
+        )
+    }
+}
+
+/// What to construct besides the positions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct FourBarRequest {
+    /// The rocker's dead positions by the arcs L ± R.
+    pub dead_positions: bool,
+    /// The transmission angle at every position.
+    pub transmission: bool,
+}
+
+/// One crank angle's values read off the construction.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct FourBarRow {
+    /// Crank angle θ (degrees from OA).
+    pub theta: f64,
+    /// The rocker's angle ∠OAB (degrees).
+    pub rocker_angle: f64,
+    /// The transmission angle μ = ∠PBA (degrees), if asked for.
+    pub transmission: Option<f64>,
+    /// μ (or 180° − μ) below the limit.
+    pub flagged: bool,
+    /// The two circles touched: the links lie in one line and the branch is undetermined.
+    pub change_point: bool,
+}
+
+/// The results.
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize)]
+pub struct FourBarResults {
+    /// Per crank angle.
+    pub rows: Vec<FourBarRow>,
+    /// The rocker's swing and the angle ϑ of the crank lines at the dead positions (degrees),
+    /// if asked for and the rocker swings.
+    pub dead: Option<(f64, f64)>,
+}
+
+struct Frame {
+    o: H<Point>,
+    a: H<Point>,
+    crank: H<Circle>,
+    rocker: H<Circle>,
+}
+
+impl FourBar {
+    /// The branch of the cut of the coupler's circle about the pin with the rocker's circle
+    /// (from the pin's centre to A: `First` right, `Second` left).
+    fn branch(&self, pin: Point, a: Point) -> Branch {
+        match self.assembly {
+            Assembly::Left => Branch::Second,
+            Assembly::Right => Branch::First,
+            Assembly::Parallel => Branch::Near(pin + (a - Point::origin())),
+        }
+    }
+}
+
+/// Constructs the four-bar at every crank angle θ (degrees from OA, counter-clockwise): B by
+/// the two circles, the rocker's angle, and as asked the transmission angle and the rocker's
+/// dead positions, each checked against the loop's closed form.
+///
+/// # Errors
+/// [`ConstructionError::Unsupported`] naming the link at fault ([`FourBar::validate`]); a
+/// kernel refusal otherwise.
+///
+/// ```
+/// use graphostatik::mechanisms::four_bar::*;
+/// use graphostatik::protocol::Board;
+/// // A crank-rocker: frame 400, crank 100, coupler 350, rocker 300 mm (Grashof: 100 + 400 ≤ 650).
+/// let fb = FourBar { frame: 400.0, crank: 100.0, coupler: 350.0, rocker: 300.0, assembly: Assembly::Left, min_transmission: 40.0 };
+/// let rq = FourBarRequest { dead_positions: true, transmission: true };
+/// let mut b = Board::recording();
+/// let r = construct(&mut b, &fb, 5.0, &[0.0, 90.0, 180.0, 270.0], rq).unwrap();
+/// let (swing, theta) = r.dead.unwrap();
+/// assert!(swing > 0.0 && theta > 0.0);
+/// assert!(b.all_passed());
+/// ```
+pub fn construct(
+    b: &mut Board,
+    fb: &FourBar,
+    length_scale: f64,
+    thetas: &[f64],
+    rq: FourBarRequest,
+) -> Result<FourBarResults, ConstructionError> {
+    fb.validate().map_err(|e| {
+        let (input, reason) = e.describe();
+        ConstructionError::Unsupported {
+            input: input.into(),
+            reason,
+        }
+    })?;
+    let fr = frame(b, fb, length_scale)?;
+    let dead = if rq.dead_positions && fb.rocker_swings() {
+        Some(dead_positions(b, &fr, fb, length_scale)?)
+    } else {
+        None
+    };
+    let mut rows = Vec::with_capacity(thetas.len());
+    let mut flagged = Vec::new();
+    for (i, &theta) in thetas.iter().enumerate() {
+        b.set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+        let row = position(b, &fr, (fb, length_scale), (i as u32, theta, rq))?;
+        if row.flagged {
+            flagged.push(row);
+        }
+        rows.push(row);
+    }
+    b.clear_context();
+    if rq.transmission {
+        flag_table(b, &fr, fb, &flagged);
+    }
+    Ok(FourBarResults { rows, dead })
+}
+
+/// O and A on the frame line, the crank circle about O and the rocker's circle about A.
+fn frame(b: &mut Board, fb: &FourBar, ls: f64) -> Result<Frame, ConstructionError> {
+    let setup = n(
+        "the pivots O and A, the crank circle and the rocker’s circle",
+        Some("Gestell"),
+    );
+    let o = b.point(
+        Point::origin(),
+        Label::plain("O"),
+        Role::Given,
+        setup.clone(),
+    );
+    let a = b.point(
+        Point::new(fb.frame / ls, 0.0),
+        Label::plain("A"),
+        Role::Given,
+        setup.clone(),
+    );
+    b.segment(&o, &a, Label::NONE, Role::Given, setup.clone());
+    let crank = b.circle(
+        &o,
+        fb.crank / ls,
+        true,
+        Label::NONE,
+        Role::Given,
+        setup.clone(),
+    )?;
+    let rocker = b.circle(
+        &a,
+        fb.rocker / ls,
+        !fb.rocker_swings(),
+        Label::NONE,
+        Role::Given,
+        setup,
+    )?;
+    Ok(Frame {
+        o,
+        a,
+        crank,
+        rocker,
+    })
+}
+
+/// The rocker's dead positions: crank and coupler in one line, B on the arcs L + R and L − R
+/// about O; the swing ∠B₁AB₂ and the angle ϑ = ∠B₁OB₂ of the crank lines there.
+fn dead_positions(
+    b: &mut Board,
+    fr: &Frame,
+    fb: &FourBar,
+    ls: f64,
+) -> Result<(f64, f64), ConstructionError> {
+    let mut ends = Vec::with_capacity(2);
+    for (reach, name, caption) in [
+        (
+            fb.coupler + fb.crank,
+            "B₁",
+            "crank and coupler stretched: the arc L + R about O cuts the rocker’s circle",
+        ),
+        (
+            fb.coupler - fb.crank,
+            "B₂",
+            "crank and coupler folded: the arc L − R about O cuts the rocker’s circle",
+        ),
+    ] {
+        let note = n(caption, Some("Totlage"));
+        let arc = b.circle(
+            &fr.o,
+            reach / ls,
+            false,
+            Label::NONE,
+            Role::Construction,
+            note.clone(),
+        )?;
+        let branch = fb.branch(fr.o.g, fr.a.g);
+        let end =
+            b.cut_circle_circle(&arc, &fr.rocker, branch, Label::plain(name), note.clone())?;
+        b.segment(&fr.a, &end, Label::NONE, Role::Result, note);
+        ends.push(end);
+    }
+    let (swing, theta) = fb.dead_positions();
+    let sw = b.measure_angle(
+        &fr.a,
+        &ends[0],
+        &ends[1],
+        Label::quiet("Ψ", 0),
+        n(
+            "the rocker’s swing between its dead positions",
+            Some("Schwingwinkel"),
+        ),
+    );
+    b.check(
+        &sw,
+        "rocker swing",
+        "°",
+        "from the triangles O A B₁,₂: cos ∠OAB = (d² + ρ² − (L ± R)²)/(2dρ)",
+        180.0,
+        || swing,
+    );
+    let th = b.measure_angle(&fr.o, &ends[0], &ends[1], Label::quiet("ϑ", 0), n("the angle ϑ between the crank lines of the dead positions: the crank takes 180° ± ϑ between them", None));
+    b.check(
+        &th,
+        "crank angle ϑ between the dead positions",
+        "°",
+        "cos ∠AOB = (d² + (L ± R)² − ρ²)/(2d(L ± R))",
+        180.0,
+        || theta,
+    );
+    Ok((sw.g, th.g))
+}
+
+/// One crank angle: the pin, B by the two circles (a touching pair typed as a change point),
+/// the coupler and the rocker drawn, the rocker's angle and the transmission angle checked.
+fn position(
+    b: &mut Board,
+    fr: &Frame,
+    (fb, ls): (&FourBar, f64),
+    (i, theta, rq): (u32, f64, FourBarRequest),
+) -> Result<FourBarRow, ConstructionError> {
+    let pin = b.point_on_circle(
+        &fr.crank,
+        theta,
+        Label::indexed("P", i),
+        Role::Result,
+        n("the crank pin at θ", Some("Kurbelzapfen")),
+    );
+    let arc = b.circle(
+        &pin,
+        fb.coupler / ls,
+        false,
+        Label::NONE,
+        Role::Construction,
+        n("the coupler’s length about the pin", Some("Koppel")),
+    )?;
+    let branch = fb.branch(pin.g, fr.a.g);
+    let joint = b.cut_circle_circle(
+        &arc,
+        &fr.rocker,
+        branch,
+        Label::indexed("B", i),
+        n("B where the coupler’s circle cuts the rocker’s", None),
+    )?;
+    let change_point = b.last_cut_touched();
+    b.segment(
+        &pin,
+        &joint,
+        Label::NONE,
+        Role::Result,
+        n("the coupler", Some("Koppel")),
+    );
+    b.segment(
+        &fr.a,
+        &joint,
+        Label::NONE,
+        Role::Result,
+        n("the rocker", Some("Schwinge")),
+    );
+    let (_, psi, mu) = fb.exact(theta);
+    let angle = b.measure_angle(
+        &fr.a,
+        &fr.o,
+        &joint,
+        Label::quiet("ψ", 0),
+        n("the rocker’s angle ∠OAB", None),
+    );
+    b.check(
+        &angle,
+        "rocker angle ∠OAB",
+        "°",
+        "loop closure: B from the triangle P B A",
+        180.0,
+        || psi,
+    );
+    let mut row = FourBarRow {
+        theta,
+        rocker_angle: angle.g,
+        transmission: None,
+        flagged: false,
+        change_point,
+    };
+    if rq.transmission {
+        let t = transmission(b, fr, fb, (&pin, &joint), mu);
+        row.transmission = Some(t);
+        row.flagged = t.min(180.0 - t) < fb.min_transmission;
+    }
+    Ok(row)
+}
+
+/// The transmission angle μ = ∠PBA between coupler and rocker, checked; its note says when it
+/// falls below the limit.
+fn transmission(
+    b: &mut Board,
+    fr: &Frame,
+    fb: &FourBar,
+    (pin, joint): (&H<Point>, &H<Point>),
+    mu: f64,
+) -> f64 {
+    let caption = if mu.min(180.0 - mu) < fb.min_transmission {
+        "the transmission angle μ at B: below the limit"
+    } else {
+        "the transmission angle μ at B"
+    };
+    let t = b.measure_angle(
+        joint,
+        pin,
+        &fr.a,
+        Label::quiet("μ", 0),
+        n(caption, Some("Übertragungswinkel")),
+    );
+    b.check(
+        &t,
+        "transmission angle μ",
+        "°",
+        "cos μ = (L² + ρ² − PA²)/(2Lρ)",
+        180.0,
+        || mu,
+    );
+    t.g
+}
+
+/// The positions whose transmission angle falls below the limit, written on the sheet.
+fn flag_table(b: &mut Board, fr: &Frame, fb: &FourBar, flagged: &[FourBarRow]) {
+    let limit = crate::fmt::num(fb.min_transmission, 3);
+    let mut rows = vec![vec![format!("μ below {limit}° at"), "μ".to_string()]];
+    rows.extend(flagged.iter().map(|r| {
+        let mu = r.transmission.unwrap_or_default();
+        vec![
+            format!("θ = {}°", crate::fmt::num(r.theta, 3)),
+            format!("{}°", crate::fmt::num(mu, 2)),
+        ]
+    }));
+    if flagged.is_empty() {
+        rows.push(vec!["none".to_string(), String::new()]);
+    }
+    let at = Point::new(fr.a.g.x + fr.rocker.g.radius + 10.0, -fr.crank.g.radius);
+    b.table(
+        at,
+        rows,
+        &[],
+        n("the positions with too small a transmission angle", None),
+    );
+}
