@@ -269,6 +269,7 @@ fn p_m_over_t_m_is_half_pi_for_any_closed_cycle() {
             crank: side(100.0 + 900.0 * rnd(), curve(2.0, 12.0), curve(0.2, 3.0)),
             mass: 50.0 * rnd(),
             offset_deg: 360.0 * rnd(),
+            pump: None,
         };
         let k = Kinematics {
             r: 100.0 + 300.0 * rnd(),

@@ -34,6 +34,12 @@ const N_BACK: Note = note(
     "LH Gl. 40-42, Abb. 58; KG (296-297)",
     Topic::Forces,
 );
+const N_PUMP: Note = note(
+    "the pump’s force rectangle laid against the steam force reduced by η",
+    Some("Pumpendruck"),
+    "KG Abb. 1053, 1065-1066",
+    Topic::Forces,
+);
 const N_P: Note = note(
     "net piston force P read off",
     Some("Überdruck P"),
@@ -304,12 +310,30 @@ impl Builder<'_> {
             ),
         };
         let k = self.dr.force_scale;
-        let w = self
-            .b
-            .lay_off(&foot, &ord, work / k, Label::NONE, Role::Force, N_WORK)?;
-        let pp = self
-            .b
-            .lay_off(&w, &ord, -back / k, Label::NONE, Role::Construction, N_BACK)?;
+        let pump = cyl.pump;
+        let eta = pump.map_or(1.0, |p| p.efficiency);
+        let w = self.b.lay_off(
+            &foot,
+            &ord,
+            eta * work / k,
+            Label::NONE,
+            Role::Force,
+            N_WORK,
+        )?;
+        let mut pp = self.b.lay_off(
+            &w,
+            &ord,
+            -eta * back / k,
+            Label::NONE,
+            Role::Construction,
+            N_BACK,
+        )?;
+        let load = pump.map_or(0.0, |p| p.force(stroke));
+        if pump.is_some() {
+            pp = self
+                .b
+                .lay_off(&pp, &ord, -load / k, Label::NONE, Role::Force, N_PUMP)?;
+        }
         let p = self
             .b
             .measure(&foot, &pp, &vertical, self.force_scale(), Label::NONE, N_P);
@@ -318,8 +342,8 @@ impl Builder<'_> {
             &p,
             "net piston force P",
             "kg",
-            "LH Gl. 40-42; KG (296-297)",
-            work.abs().max(back.abs()),
+            "LH Gl. 40-42; KG (296-297); with a pump KG Abb. 1065",
+            work.abs().max(back.abs()).max(load),
             || cyl.pressure_force(theta, x),
         );
         Ok((pp, p.g))

@@ -195,14 +195,75 @@ pub struct Cylinder {
     pub mass: f64,
     /// How far this crank leads the first one (degrees).
     pub offset_deg: f64,
+    /// A double-acting pump on the same piston rod (KG Abb. 1053, 1065-1067), with the
+    /// effect `pump`.
+    pub pump: Option<Pump>,
+}
+
+/// A double-acting plunger pump driven directly by the cylinder's piston rod (KG Abb. 1053):
+/// its force is a rectangle over the stroke, P_p1 = F_p(p_s + p_a) − f_s·p_a on the
+/// outstroke and P_p2 = F_p(p_s + p_a) − f_s·p_s on the return, resisting the motion; the
+/// steam side's force is reduced by the efficiency η before the pump's is laid over it
+/// (KG Abb. 1065).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Pump {
+    /// Plunger area F_p (cm²).
+    pub plunger_cm2: f64,
+    /// Area f_s of the rod at the plunger's front end (cm²).
+    pub rod_cm2: f64,
+    /// Suction: the underpressure p_s below the atmosphere (at).
+    pub suction_at: f64,
+    /// Delivery pressure p_a (at, gauge).
+    pub delivery_at: f64,
+    /// Efficiency η by which the steam force is reduced (KG: 0.85-0.92).
+    pub efficiency: f64,
+}
+
+impl Pump {
+    /// The pump's resisting force on the outstroke (P_p1) and on the return (P_p2), kg.
+    ///
+    /// ```
+    /// use graphostatik::dynamics::model::{area_cm2, Pump};
+    /// // KG, Tafel I: d = 28.5 cm, rod 7.5 cm, p_s = 0.45 at, p_a = 5.4 at.
+    /// let p = Pump { plunger_cm2: area_cm2(285.0, 0.0), rod_cm2: area_cm2(75.0, 0.0), suction_at: 0.45, delivery_at: 5.4, efficiency: 0.9 };
+    /// let (p1, p2) = p.forces();
+    /// assert_eq!((p1.round(), p2.round()), (3493.0, 3712.0)); // KG prints 3490 and 3710
+    /// ```
+    pub fn forces(&self) -> (f64, f64) {
+        let both = self.plunger_cm2 * (self.suction_at + self.delivery_at);
+        (
+            both - self.rod_cm2 * self.delivery_at,
+            both - self.rod_cm2 * self.suction_at,
+        )
+    }
+
+    /// The pump's force on the given stroke (kg, resisting).
+    pub fn force(&self, stroke: cf::Stroke) -> f64 {
+        let (p1, p2) = self.forces();
+        match stroke {
+            cf::Stroke::Out => p1,
+            cf::Stroke::Return => p2,
+        }
+    }
 }
 
 impl Cylinder {
     /// The net piston force from the pressures alone (KG 296-297, LH Gl. 40-42) at the full
     /// crank angle θ of this cylinder and the piston position x (fraction of the stroke from
-    /// the inner dead centre), positive when it drives the piston the way it moves.
+    /// the inner dead centre), positive when it drives the piston the way it moves. With a
+    /// pump: η times the steam force, less the pump's rectangle (KG Abb. 1065); at a dead
+    /// centre during compression the drive carries the sum of both.
     pub fn pressure_force(&self, theta_deg: f64, x: f64) -> f64 {
         let (stroke, _) = cf::book_angle(theta_deg);
+        let steam = self.steam_force(stroke, x);
+        match &self.pump {
+            Some(p) => p.efficiency * steam - p.force(stroke),
+            None => steam,
+        }
+    }
+
+    /// The net steam force alone (kg) on the given stroke at x.
+    pub fn steam_force(&self, stroke: cf::Stroke, x: f64) -> f64 {
         let (u_cover, u_crank) = (x, 1.0 - x);
         match stroke {
             cf::Stroke::Out => {

@@ -71,6 +71,26 @@ pub struct CylinderSpec {
     /// The reciprocating masses; used with the effect `inertia`.
     #[serde(default)]
     pub masses: Option<MassSpec>,
+    /// A double-acting pump on the same piston rod (KG Abb. 1053); used with the effect
+    /// `pump`.
+    #[serde(default)]
+    pub pump: Option<PumpSpec>,
+}
+
+/// A double-acting plunger pump driven by the piston rod (KG Abb. 1053, 1065).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct PumpSpec {
+    /// Plunger diameter d (mm).
+    pub plunger_mm: f64,
+    /// Diameter of the rod at the plunger's front end (mm).
+    #[serde(default)]
+    pub rod_mm: f64,
+    /// Suction: the underpressure p_s below the atmosphere (at; at most 1, absolute zero).
+    pub suction_at: f64,
+    /// Delivery pressure p_a (at, gauge).
+    pub delivery_at: f64,
 }
 
 /// The indicator diagrams of a cylinder: digitised per side, or a steam distribution for
@@ -199,6 +219,11 @@ pub struct DynamicsEffects {
     /// Finite rod length (default true).
     #[serde(default)]
     pub finite_rod: Option<bool>,
+    /// The cylinders' pumps (each cylinder's `pump`): their force rectangles laid against
+    /// the steam force, which the efficiency then reduces instead of the turning force
+    /// (KG Abb. 1065).
+    #[serde(default)]
+    pub pump: bool,
 }
 
 /// The flywheel's task.
@@ -278,12 +303,17 @@ impl DynamicsScene {
         let cylinders = self
             .cylinders
             .iter()
-            .map(|c| cylinder(c, eff.inertia, share, 2.0 * r))
+            .map(|c| cylinder(c, (eff.inertia, share), 2.0 * r, pump_eta(&eff)))
             .collect();
         let engine = Engine {
             kinematics,
             cylinders,
-            efficiency: eff.efficiency.unwrap_or(1.0),
+            // With pumps, η reduces the steam force before the pump's is laid over it.
+            efficiency: if eff.pump {
+                1.0
+            } else {
+                eff.efficiency.unwrap_or(1.0)
+            },
             irregularity: self.flywheel.map(|f| f.irregularity),
         };
         let mut request = DynamicsRequest::default();
@@ -341,8 +371,19 @@ fn peak(ind: &Indicator) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// A cylinder in machine units: areas (cm²), absolute pressures, mass (kg·s²/m).
-fn cylinder(c: &CylinderSpec, inertia: bool, share: f64, stroke: f64) -> Cylinder {
+/// The steam side's efficiency with the effect `pump` (None without it).
+fn pump_eta(eff: &DynamicsEffects) -> Option<f64> {
+    eff.pump.then(|| eff.efficiency.unwrap_or(1.0))
+}
+
+/// A cylinder in machine units: areas (cm²), absolute pressures, mass (kg·s²/m), and its
+/// pump with the effect (`eta` the steam side's efficiency).
+fn cylinder(
+    c: &CylinderSpec,
+    (inertia, share): (bool, f64),
+    stroke: f64,
+    eta: Option<f64>,
+) -> Cylinder {
     let (cover, crank) = match &c.indicator {
         IndicatorSpec::Steam(s) => {
             let m = Indicator::Steam(steam(s));
@@ -380,6 +421,15 @@ fn cylinder(c: &CylinderSpec, inertia: bool, share: f64, stroke: f64) -> Cylinde
         },
         mass,
         offset_deg: c.crank_offset_deg,
+        pump: eta.and_then(|efficiency| {
+            c.pump.map(|p| model::Pump {
+                plunger_cm2: area_cm2(p.plunger_mm, 0.0),
+                rod_cm2: area_cm2(p.rod_mm, 0.0),
+                suction_at: p.suction_at,
+                delivery_at: p.delivery_at,
+                efficiency,
+            })
+        }),
     }
 }
 

@@ -32,6 +32,7 @@ impl DynamicsScene {
         for (i, c) in self.cylinders.iter().enumerate() {
             check_cylinder(f, &format!("cylinders[{i}]"), c, 2.0 * r, inertia)?;
         }
+        self.check_pumps(f)?;
         if let Some(fw) = &self.flywheel {
             if !(fw.irregularity.is_finite() && fw.irregularity > 0.0 && fw.irregularity < 1.0) {
                 return Err(f.bad(
@@ -78,6 +79,46 @@ impl DynamicsScene {
             }
             _ => Ok(()),
         }
+    }
+
+    /// The pumps: named by the effect `pump` and given with it (at least one); a plunger
+    /// wider than its rod, a suction underpressure that does not reach below absolute zero
+    /// (at most 1 at), a delivery pressure not below zero gauge.
+    fn check_pumps(&self, f: Fields) -> Result<(), SceneError> {
+        let on = self.effects.is_some_and(|e| e.pump);
+        let given = self.cylinders.iter().position(|c| c.pump.is_some());
+        match (on, given) {
+            (true, None) => return Err(f.bad("effects.pump", "no cylinder has a pump: give a cylinder's `pump`, or leave the effect out".into())),
+            (false, Some(i)) => return Err(f.bad(&format!("cylinders[{i}].pump"), "is used only with the effect `pump`: add \"pump\": true to `effects`, or leave the pump out".into())),
+            _ => {}
+        }
+        for (i, c) in self.cylinders.iter().enumerate() {
+            let Some(p) = c.pump else { continue };
+            let at = format!("cylinders[{i}].pump");
+            f.positive(&format!("{at}.plunger_mm"), p.plunger_mm)?;
+            if !(p.rod_mm.is_finite() && p.rod_mm >= 0.0 && p.rod_mm < p.plunger_mm) {
+                return Err(f.bad(
+                    &format!("{at}.rod_mm"),
+                    format!(
+                        "must lie in [0, plunger) = [0, {}), got {}",
+                        p.plunger_mm, p.rod_mm
+                    ),
+                ));
+            }
+            if !(p.suction_at.is_finite() && (0.0..=1.0).contains(&p.suction_at)) {
+                return Err(f.bad(&format!("{at}.suction_at"), format!("{}: the suction is an underpressure below the atmosphere, between 0 and 1 at (more would be below absolute zero)", p.suction_at)));
+            }
+            if !(p.delivery_at.is_finite() && p.delivery_at >= 0.0) {
+                return Err(f.bad(
+                    &format!("{at}.delivery_at"),
+                    format!(
+                        "{}: give the delivery pressure above the atmosphere, at least 0 at",
+                        p.delivery_at
+                    ),
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// The effects: a share in [0, 1], 0 < η ≤ 1; whether inertia is on.
