@@ -1,5 +1,13 @@
 //! The other mechanisms of KG XIV (issue 11): the scotch yoke (KG Abb. 1069) against its
-//! closed forms and beside the slider-crank of the same stroke.
+//! closed forms and beside the slider-crank of the same stroke; the slotted link, the offset
+//! crank and the four-bars in their modules.
+
+#[path = "mechanisms/four_bar.rs"]
+mod four_bar;
+#[path = "mechanisms/offset_crank.rs"]
+mod offset_crank;
+#[path = "mechanisms/slotted_link.rs"]
+mod slotted_link;
 
 use graphostatik::crank::{closed_form::Stroke, Angles, Drawing};
 use graphostatik::mechanisms::scotch_yoke::*;
@@ -78,15 +86,17 @@ proptest! {
     }
 }
 
-fn scene(patch: &str) -> String {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/scenes/kg_abb1069_scotch_yoke.json"
-    ))
-    .unwrap();
+/// A bundled scene with one text replaced (`"from => to"`), the replaced text required.
+pub(crate) fn patched(file: &str, patch: &str) -> String {
+    let path = format!("{}/scenes/{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(path).unwrap();
     let (from, to) = patch.split_once(" => ").unwrap();
     assert!(text.contains(from), "{from}");
     text.replace(from, to)
+}
+
+fn scene(patch: &str) -> String {
+    patched("kg_abb1069_scotch_yoke.json", patch)
 }
 
 /// Bad input: one line naming the field.

@@ -123,10 +123,7 @@ impl FourBarScene {
                 ));
             }
         }
-        if let AngleSpec::StrokeParts(_) = self.angles {
-            return Err(f.bad("angles.stroke_parts", "the stroke divided by rod arcs is the slider-crank's construction: give divisions or degrees".into()));
-        }
-        self.angles.check(f)?;
+        self.angles.check_divisions_or_degrees(f)?;
         if let Some(s) = self.drawing.and_then(|d| d.length_scale) {
             f.positive("drawing.length_scale", s)?;
         }
@@ -138,13 +135,7 @@ impl FourBarScene {
         let linkage = self.linkage();
         let nice = super::defaults::nice_at_least;
         let reach = linkage.frame + linkage.crank.max(linkage.rocker);
-        let thetas = match self.angles.angles() {
-            crate::crank::Angles::Degrees(v) => v,
-            crate::crank::Angles::Divisions(n) => {
-                (0..n).map(|k| 360.0 * k as f64 / n as f64).collect()
-            }
-            crate::crank::Angles::StrokeParts(_) => Vec::new(),
-        };
+        let thetas = self.angles.degrees();
         FourBarProblem {
             title: self.title.clone(),
             source: self.source.clone().unwrap_or_default(),

@@ -95,10 +95,7 @@ impl OffsetScene {
                 crate::fmt::num(l - r, 6), crate::fmt::num(self.offset_mm, 6))));
         }
         self.speed.check(f)?;
-        if let AngleSpec::StrokeParts(_) = self.angles {
-            return Err(f.bad("angles.stroke_parts", "the stroke divided by rod arcs is the straight slider-crank's construction: give divisions or degrees".into()));
-        }
-        self.angles.check(f)?;
+        self.angles.check_divisions_or_degrees(f)?;
         let wants = self.outputs.contains(&OffsetOutput::Forces);
         match (wants, self.piston_force_kg) {
             (true, None) => {
@@ -156,13 +153,7 @@ impl OffsetScene {
             .unwrap_or(1.0)
             .abs()
             .max(f64::MIN_POSITIVE);
-        let thetas = match self.angles.angles() {
-            crate::crank::Angles::Degrees(v) => v,
-            crate::crank::Angles::Divisions(n) => {
-                (0..n).map(|k| 360.0 * k as f64 / n as f64).collect()
-            }
-            crate::crank::Angles::StrokeParts(_) => Vec::new(),
-        };
+        let thetas = self.angles.degrees();
         OffsetProblem {
             title: self.title.clone(),
             source: self.source.clone().unwrap_or_default(),

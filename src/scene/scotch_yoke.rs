@@ -103,10 +103,7 @@ impl YokeScene {
             (self.crank.crank_radius_mm, self.crank.stroke_mm),
         )?;
         self.speed.check(f)?;
-        if let AngleSpec::StrokeParts(_) = self.angles {
-            return Err(f.bad("angles.stroke_parts", "the stroke divided by rod arcs is the slider-crank's construction: give divisions or degrees".into()));
-        }
-        self.angles.check(f)?;
+        self.angles.check_divisions_or_degrees(f)?;
         self.check_rod(f, r)?;
         if let Some(d) = &self.drawing {
             for (name, v) in [

@@ -363,6 +363,30 @@ impl AngleSpec {
         })
     }
 
+    /// [`AngleSpec::check`] for a mechanism other than the slider-crank, which has no rod
+    /// arcs to divide the stroke by: `stroke_parts` is refused.
+    pub(super) fn check_divisions_or_degrees(&self, f: Fields) -> Result<usize, SceneError> {
+        if let AngleSpec::StrokeParts(_) = self {
+            return Err(f.bad(
+                "angles.stroke_parts",
+                "the stroke divided by rod arcs is the straight slider-crank's construction: \
+                 give divisions or degrees"
+                    .into(),
+            ));
+        }
+        self.check(f)
+    }
+
+    /// The angles in degrees: n divisions of the circle from 0°, or the degrees given (none
+    /// for stroke parts, which [`AngleSpec::check_divisions_or_degrees`] refuses).
+    pub(super) fn degrees(&self) -> Vec<f64> {
+        match self {
+            AngleSpec::Divisions(n) => (0..*n).map(|k| 360.0 * k as f64 / *n as f64).collect(),
+            AngleSpec::Degrees(v) => v.clone(),
+            AngleSpec::StrokeParts(_) => Vec::new(),
+        }
+    }
+
     /// The angles in machine terms.
     pub(super) fn angles(&self) -> Angles {
         match self {

@@ -98,10 +98,7 @@ impl LinkScene {
                 crate::fmt::num(reach, 6), crate::fmt::num(l.lever_mm, 6))));
         }
         self.speed.check(f)?;
-        if let AngleSpec::StrokeParts(_) = self.angles {
-            return Err(f.bad("angles.stroke_parts", "the stroke divided by rod arcs is the slider-crank's construction: give divisions or degrees".into()));
-        }
-        self.angles.check(f)?;
+        self.angles.check_divisions_or_degrees(f)?;
         if let Some(d) = &self.drawing {
             for (name, v) in [
                 ("drawing.length_scale", d.length_scale),
@@ -134,13 +131,7 @@ impl LinkScene {
             velocity_scale_m_s_per_mm: None,
         });
         let nice = super::defaults::nice_at_least;
-        let phis = match self.angles.angles() {
-            crate::crank::Angles::Divisions(n) => {
-                (0..n).map(|k| 360.0 * k as f64 / n as f64).collect()
-            }
-            crate::crank::Angles::Degrees(v) => v,
-            crate::crank::Angles::StrokeParts(_) => Vec::new(),
-        };
+        let phis = self.angles.degrees();
         LinkProblem {
             title: self.title.clone(),
             source: self.source.clone().unwrap_or_default(),

@@ -157,14 +157,7 @@ proptest! {
 }
 
 fn scene(patch: &str) -> String {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/scenes/kg_abb1046_offset_crank.json"
-    ))
-    .unwrap();
-    let (from, to) = patch.split_once(" => ").unwrap();
-    assert!(text.contains(from), "{from}");
-    text.replace(from, to)
+    super::patched("kg_abb1046_offset_crank.json", patch)
 }
 
 /// Bad input: one line naming the field (an offset larger than the rod allows, a rod shorter

@@ -120,14 +120,7 @@ proptest! {
 }
 
 fn scene(patch: &str) -> String {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/scenes/kg_abb1071_slotted_link.json"
-    ))
-    .unwrap();
-    let (from, to) = patch.split_once(" => ").unwrap();
-    assert!(text.contains(from), "{from}");
-    text.replace(from, to)
+    super::patched("kg_abb1071_slotted_link.json", patch)
 }
 
 /// Bad input: one line naming the field (e ≤ r, a lever too short for the slot, non-positive

@@ -206,14 +206,7 @@ proptest! {
 }
 
 fn scene(patch: &str) -> String {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/scenes/kg_abb1043_crank_rocker.json"
-    ))
-    .unwrap();
-    let (from, to) = patch.split_once(" => ").unwrap();
-    assert!(text.contains(from), "{from}");
-    text.replace(from, to)
+    super::patched("kg_abb1043_crank_rocker.json", patch)
 }
 
 /// Bad input in a scene: one line naming the field.
