@@ -28,6 +28,7 @@
 //! assert!((p_m / t_m - std::f64::consts::PI / 2.0).abs() < 1e-9);
 //! ```
 
+pub mod combustion;
 mod construction;
 pub mod model;
 pub mod rules;

@@ -21,6 +21,7 @@
 mod accuracy;
 mod beam;
 mod centroid;
+mod combustion;
 mod crank_dynamics;
 mod defaults;
 mod drafting;
@@ -45,6 +46,9 @@ pub use beam::{
     MAX_LOADS,
 };
 pub use centroid::{CentroidDrawingSpec, CentroidProblem, CentroidScene};
+pub use combustion::{
+    CombustionProblem, CombustionScene, GasCylindersSpec, GasDrawingSpec, GasEffects, GasSpec,
+};
 pub use crank_dynamics::{
     CylinderSpec, DynamicsDrawingSpec, DynamicsEffects, DynamicsOutput, DynamicsProblem,
     DynamicsScene, FlywheelSpec, IndicatorSpec, MassSpec, PointsSpec, SidePoints, SteamSpec,

@@ -61,6 +61,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<super::slotted_link::LinkScene>(),
     Entry::of::<super::offset_crank::OffsetScene>(),
     Entry::of::<super::four_bar::FourBarScene>(),
+    Entry::of::<super::combustion::CombustionScene>(),
 ];
 
 /// The registered procedure of this name.
