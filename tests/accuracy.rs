@@ -387,3 +387,19 @@ fn the_yoke_sweep_converges_as_the_square_of_the_divisions() {
     let order = (err("36") / err("3600")).log10() / 2.0;
     assert!((order - 2.0).abs() < 0.05, "order {order}");
 }
+
+/// The combustion engine's sweep over the shaft divisions: the mean of the drawn turning
+/// force approaches the exact integral (the jump at firing makes it uneven: 51 % off at 8
+/// ordinates, under 1e-5 at 3,600).
+#[test]
+fn the_combustion_engines_mean_converges_with_the_ordinates() {
+    let s = sweeps_of("kg_abb1058_diesel_four_stroke.json");
+    let sweep = s
+        .iter()
+        .find(|s| s.knob == "shaft divisions over the cycle")
+        .unwrap();
+    let rel: Vec<f64> = sweep.points.iter().map(|p| sweep.relative(p)).collect();
+    assert!(rel[0] > 0.1, "{rel:?}");
+    assert!(*rel.last().unwrap() < 1e-5, "{rel:?}");
+    assert!(rel[rel.len() - 1] < rel[3] && rel[3] < rel[0], "{rel:?}");
+}

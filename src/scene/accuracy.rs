@@ -104,6 +104,9 @@ pub fn sweeps(
     if let Some(y) = p.get::<super::scotch_yoke::YokeScene>() {
         plan.extend(yoke_divisions(y));
     }
+    if let Some(g) = p.get::<super::combustion::CombustionScene>() {
+        plan.extend(gas_divisions(g));
+    }
     plan.push(Box::new(move || precision(p).map(|s| vec![s])));
     let total = plan.len();
     let mut out: Vec<Sweep> = Vec::new();
@@ -125,6 +128,34 @@ pub fn sweeps(
 type Setting<'a> = Box<dyn Fn() -> Result<Vec<Sweep>, ConstructionError> + 'a>;
 
 const CRANK_DIVISIONS: [usize; 10] = [4, 8, 12, 24, 36, 72, 180, 360, 1200, 3600];
+
+/// A combustion engine's shaft angles over the cycle swept, the mean of the drawn turning
+/// force against the exact integral: the gas force jumps at the firing dead centre and at
+/// the cut-off's corner, so the mean converges as n⁻¹ until the ordinates resolve the peak.
+fn gas_divisions(g: &super::combustion::CombustionProblem) -> Vec<Setting<'_>> {
+    [8, 12, 24, 48, 96, 180, 360, 720, 1440, 3600]
+        .into_iter()
+        .map(|n| -> Setting<'_> {
+            Box::new(move || {
+                let mut q = g.clone();
+                q.divisions = n;
+                let (r, secs) = timed(|| {
+                    <super::combustion::CombustionScene as super::Procedure>::construct(&q, true)
+                });
+                let res = r?.1;
+                Ok(vec![one(
+                    "shaft divisions over the cycle",
+                    "mean turning force T_m (of the ordinates)",
+                    "kg",
+                    Some(res.t_m_exact),
+                    n.to_string(),
+                    res.t_m,
+                    secs,
+                )])
+            })
+        })
+        .collect()
+}
 
 /// A scotch yoke's crank angles swept, against its mean speed 2v/π (velocity asked for):
 /// |c′| = v·|sin φ| has kinks at the dead centres, so the mean of the divisions converges as
