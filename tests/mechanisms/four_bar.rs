@@ -240,3 +240,61 @@ fn a_four_bar_scene_names_what_is_wrong() {
         AnyScene::from_json(&scene("\"divisions\": 12 => \"divisions\": 12"), "f.json").unwrap();
     assert_eq!(ok.procedure(), "four_bar");
 }
+
+/// The crank-rocker at its dead positions, seen from the rocker: the pin is where the
+/// coupler's circle about B meets the crank circle, and at B₁ and B₂ (crank and coupler in
+/// one line) the two circles touch: a typed tangency with one double point and no branch,
+/// not an error and not NaN.
+#[test]
+fn at_the_dead_positions_the_circles_touch() {
+    use graphostatik::kernel::{Branch, Point};
+    use graphostatik::protocol::{Label, Role};
+    let fb = rocker(Assembly::Left);
+    for reach in [fb.coupler + fb.crank, fb.coupler - fb.crank] {
+        let note = graphostatik::protocol::note(
+            "test",
+            None,
+            "test",
+            graphostatik::protocol::Topic::Custom("test"),
+        );
+        let mut b = Board::recording();
+        let o = b.point(Point::origin(), Label::NONE, Role::Given, note.clone());
+        let a = b.point(
+            Point::new(fb.frame, 0.0),
+            Label::NONE,
+            Role::Given,
+            note.clone(),
+        );
+        let crank = b
+            .circle(&o, fb.crank, true, Label::NONE, Role::Given, note.clone())
+            .unwrap();
+        let rock = b
+            .circle(&a, fb.rocker, true, Label::NONE, Role::Given, note.clone())
+            .unwrap();
+        let arc = b
+            .circle(&o, reach, false, Label::NONE, Role::Given, note.clone())
+            .unwrap();
+        let dead = b
+            .cut_circle_circle(&arc, &rock, Branch::Second, Label::NONE, note.clone())
+            .unwrap();
+        assert!(!b.last_cut_touched());
+        let coupler = b
+            .circle(
+                &dead,
+                fb.coupler,
+                false,
+                Label::NONE,
+                Role::Given,
+                note.clone(),
+            )
+            .unwrap();
+        let pin = b
+            .cut_circle_circle(&coupler, &crank, Branch::Second, Label::NONE, note)
+            .unwrap();
+        assert!(b.last_cut_touched(), "reach {reach}");
+        assert!(pin.g.x.is_finite() && ((pin.g - o.g).norm() - fb.crank).abs() < 1e-9);
+        let step = b.steps().last().unwrap();
+        assert_eq!(step.outcome.as_deref(), Some("tangent: one double point"));
+        assert!(step.branch.is_none());
+    }
+}
