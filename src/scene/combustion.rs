@@ -322,18 +322,13 @@ impl super::Procedure for CombustionScene {
         let across = p.engine.cycle_deg * d.mm_per_deg;
         let length =
             4.0 * (p.engine.kinematics.r / p.engine.kinematics.lambda.max(1e-300)) / d.length_scale;
-        [
-            (force, "drawing.force_scale_kg_per_mm"),
-            (across, "drawing.mm_per_deg"),
-        ]
-        .into_iter()
-        .fold((length, "drawing.length_scale"), |best, x| {
-            if x.0 > best.0 || x.0.is_nan() {
-                x
-            } else {
-                best
-            }
-        })
+        super::fields::largest(
+            length,
+            [
+                (force, "drawing.force_scale_kg_per_mm"),
+                (across, "drawing.mm_per_deg"),
+            ],
+        )
     }
     fn smallest_part(p: &CombustionProblem) -> Option<(f64, &'static str)> {
         let d = &p.drawing;

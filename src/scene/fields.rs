@@ -78,3 +78,20 @@ pub(super) fn larger(by_length: f64, by_force: f64) -> (f64, &'static str) {
         (by_length, "drawing.length_scale")
     }
 }
+
+/// The largest of a figure's extents (mm), each with the scale field that drives it, starting
+/// from the extent by its lengths; a NaN extent wins, so that its field is named.
+pub(super) fn largest(
+    by_length: f64,
+    others: impl IntoIterator<Item = (f64, &'static str)>,
+) -> (f64, &'static str) {
+    others
+        .into_iter()
+        .fold((by_length, "drawing.length_scale"), |best, x| {
+            if x.0 > best.0 || x.0.is_nan() {
+                x
+            } else {
+                best
+            }
+        })
+}

@@ -197,20 +197,12 @@ impl super::Procedure for OffsetScene {
             4.0 * k.piston_force.unwrap_or(0.0).abs() / s.force,
         );
         let speed = (p.request.velocity, 4.0 * k.crank_pin_speed / s.velocity);
-        [
+        let parts = [
             (force, "drawing.force_scale_kg_per_mm"),
             (speed, "drawing.velocity_scale_m_s_per_mm"),
-        ]
-        .into_iter()
-        .filter(|((on, _), _)| *on)
-        .map(|((_, mm), field)| (mm, field))
-        .fold((length, "drawing.length_scale"), |best, x| {
-            if x.0 > best.0 || x.0.is_nan() {
-                x
-            } else {
-                best
-            }
-        })
+        ];
+        let drawn = parts.into_iter().filter(|((on, _), _)| *on);
+        super::fields::largest(length, drawn.map(|((_, mm), field)| (mm, field)))
     }
     fn smallest_part(p: &OffsetProblem) -> Option<(f64, &'static str)> {
         let (k, s, rq) = (&p.crank, &p.scales, &p.request);

@@ -94,8 +94,8 @@ pub fn construct(
             row.turning += t;
         }
     }
-    let t_m = turning_diagram(b, e, dr, &rows, depth)?;
     let t_m_exact = super::mean_turning_force(&e.kinematics, &e.cylinders, e.cycle_deg);
+    let t_m = turning_diagram(b, e, dr, (&rows, t_m_exact), depth)?;
     Ok(GasResults {
         rows,
         t_m,
@@ -309,7 +309,7 @@ fn turning_diagram(
     b: &mut Board,
     e: &GasEngine,
     dr: &GasDrawing,
-    rows: &[GasRow],
+    (rows, exact): (&[GasRow], f64),
     depth: f64,
 ) -> Result<f64, ConstructionError> {
     let k = &e.kinematics;
@@ -347,14 +347,13 @@ fn turning_diagram(
             Label::NONE,
             n("the turning force read off", None),
         );
-        let exact = turning_force(k, &e.cylinders, r.shaft);
         b.check(
             &t,
             "turning force T",
             "kg",
             "Σ P·sin(φ ± ψ)/cos ψ over the cylinders",
             top,
-            || exact,
+            || turning_force(k, &e.cylinders, r.shaft),
         );
         pts.push(tip);
         ids.push(t.id);
@@ -368,7 +367,7 @@ fn turning_diagram(
         n("the turning force over the cycle", Some("Drehkraftlinie")),
     );
     let mean = mean_of_ordinates(b, e, rows, (&ids, top));
-    mean_table(b, e, (mean, &ids), y - top / dr.force_scale - 15.0);
+    mean_table(b, e, (mean, exact, &ids), y - top / dr.force_scale - 15.0);
     Ok(mean)
 }
 
@@ -392,28 +391,35 @@ fn mean_of_ordinates(
             Some("mittlere Drehkraft"),
         ),
     );
-    let rule = rows
-        .iter()
-        .map(|r| turning_force(k, &e.cylinders, r.shaft))
-        .sum::<f64>()
-        / count;
     b.check(
         &tm,
         "mean turning force T_m (ordinates)",
         "kg",
         "the mean of the exact ordinates",
         top,
-        || rule,
+        || {
+            let exact: f64 = rows
+                .iter()
+                .map(|r| turning_force(k, &e.cylinders, r.shaft))
+                .sum();
+            exact / count
+        },
     );
     mean
 }
 
-/// The table of the mean turning force: from the ordinates, exactly, and from the indicated
-/// work, written on the sheet at height `y`.
-fn mean_table(b: &mut Board, e: &GasEngine, (mean, ids): (f64, &[crate::protocol::ObjId]), y: f64) {
-    let k = &e.kinematics;
-    let exact = super::mean_turning_force(k, &e.cylinders, e.cycle_deg);
-    let work = super::mean_from_work(k, &e.cylinders, e.cycle_deg);
+/// The table of the mean turning force: from the ordinates, exactly (`exact`, integrated
+/// once by the caller), and from the indicated work, written on the sheet at height `y`.
+fn mean_table(
+    b: &mut Board,
+    e: &GasEngine,
+    (mean, exact, ids): (f64, f64, &[crate::protocol::ObjId]),
+    y: f64,
+) {
+    if !b.is_recording() {
+        return;
+    }
+    let work = super::mean_from_work(&e.kinematics, &e.cylinders, e.cycle_deg);
     let table = vec![
         vec!["T_m".to_string(), "kg".to_string()],
         vec!["from the ordinates".into(), crate::fmt::num(mean, 1)],
