@@ -400,6 +400,7 @@ fn render_all(files: &[PathBuf], jobs: Option<u16>) -> Vec<Result<String, Fail>>
 /// step replayed in double-double beside f64, exit status 1 if the bound fails anywhere.
 fn check_cmd(scene: &Path, json: bool, reference: bool) -> Result<ExitCode, Fail> {
     use graphostatik::protocol::{with_setup, Setup};
+    let start = std::time::Instant::now();
     let p = load(scene)?;
     let setup = Setup {
         reference,
@@ -412,6 +413,15 @@ fn check_cmd(scene: &Path, json: bool, reference: bool) -> Result<ExitCode, Fail
         (true, false) => render::reference_table_text(&board),
         (true, true) => render::reference_table_json(&board) + "\n",
     };
+    if verbosity() >= 2 {
+        eprintln!(
+            "{}: {} steps, {} checks, {:.3} ms (read, construction, checks, table)",
+            scene.display(),
+            board.steps().len(),
+            board.checks().count(),
+            start.elapsed().as_secs_f64() * 1e3
+        );
+    }
     say(&text)?;
     let failed = if reference {
         render::reference_rows(&board).iter().any(|r| !r.within)

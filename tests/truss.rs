@@ -1459,3 +1459,31 @@ fn the_csv_table_reads_back_as_the_same_numbers() {
         assert_eq!(force, case.members[2].force);
     }
 }
+
+#[test]
+fn a_long_girder_checks_its_reactions_at_the_scale_of_its_forces() {
+    // 5,000 Pratt panels under 1.3 t loads: reactions of 3.3e6 kg but chord forces of 4e9 kg.
+    // The sparse solve is exact to ε times its largest force, so its horizontal pin reaction
+    // is some 5e-6 kg, not 0: judged at the reactions' scale (1.6e-6 kg) this check failed;
+    // the solve's checks are judged at the larger of the case's scale and the solve's own.
+    let n = 5000;
+    let t = parallel_chord(Web::Pratt, n, 2.0, 2.0);
+    let loads: Vec<_> = (1..n)
+        .map(|i| down(i, 1000.0 + (i % 7) as f64 * 100.0))
+        .collect();
+    let mut b = Board::new(1000.0, true);
+    construct_truss(&mut b, &t, &case(loads), &D).unwrap();
+    let failed: Vec<_> = b
+        .checks()
+        .filter(|c| !c.passed)
+        .map(|c| c.quantity.to_string())
+        .collect();
+    assert!(failed.is_empty(), "{failed:?}");
+    let solve_scale = b
+        .checks()
+        .filter(|c| c.quantity.as_ref() == "pin reaction, horizontal")
+        .map(|c| c.tolerance)
+        .next()
+        .expect("the pin's horizontal reaction is checked against the solve");
+    assert!(solve_scale > 1e-3, "tolerance {solve_scale:e} kg");
+}

@@ -254,7 +254,8 @@ impl Reader<'_> {
         }
         if let Some(sol) = self.inp.sol {
             let what = "roller reaction along its line";
-            b.check(&v, what, "kg", BY_SOLVE, reference, || sol.reactions[col]);
+            let scale = reference.max(sol.scale());
+            b.check(&v, what, "kg", BY_SOLVE, scale, || sol.reactions[col]);
         }
     }
 
@@ -280,12 +281,12 @@ impl Reader<'_> {
             b.check(&ay, what, "kg", BY_MOMENTS, reference, || m[si].y);
         }
         if let Some(sol) = self.inp.sol {
+            // The solve's rounding is relative to its largest force, not to the reactions.
+            let scale = reference.max(sol.scale());
             let what = "pin reaction, horizontal";
-            b.check(&ax, what, "kg", BY_SOLVE, reference, || sol.reactions[col]);
+            b.check(&ax, what, "kg", BY_SOLVE, scale, || sol.reactions[col]);
             let what = "pin reaction, vertical";
-            b.check(&ay, what, "kg", BY_SOLVE, reference, || {
-                sol.reactions[col + 1]
-            });
+            b.check(&ay, what, "kg", BY_SOLVE, scale, || sol.reactions[col + 1]);
         }
         Ok(())
     }

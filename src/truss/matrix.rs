@@ -255,6 +255,18 @@ pub struct Solution {
     pub reactions: Vec<f64>,
 }
 
+impl Solution {
+    /// The largest force of the solution (kg), member or reaction: the scale its rounding
+    /// error is relative to (a sparse LU's backward error is a multiple of ε times the largest
+    /// unknown), so the scale a value checked against the solve is judged at.
+    pub fn scale(&self) -> f64 {
+        self.members
+            .iter()
+            .chain(&self.reactions)
+            .fold(0.0, |a: f64, f| a.max(f.abs()))
+    }
+}
+
 /// Solves A f = −p by a sparse LU decomposition (faer): the independent solve every Cremona
 /// plan is checked against, at every size. `None` if A is not square, is singular, or gives
 /// a force that is not finite.

@@ -153,7 +153,8 @@ pub(crate) fn check_reference(maxload: f64, ext: &External) -> f64 {
     maxload.max(ext_max(ext))
 }
 
-/// Checks a member force read off a plan against the sparse solve, if it was made.
+/// Checks a member force read off a plan against the sparse solve, if it was made, at the
+/// larger of the case's scale and the solve's own (its largest force).
 pub(crate) fn check_member(
     b: &mut Board,
     value: &H<f64>,
@@ -167,7 +168,7 @@ pub(crate) fn check_member(
             "member force (tension +)",
             "kg",
             "joint equilibrium, sparse LU (faer)",
-            reference,
+            reference.max(sol.scale()),
             || sol.members[m],
         );
     }

@@ -1,0 +1,157 @@
+#!/usr/bin/env python3
+"""The truss peer: the same Pratt girders through `graphostatik check` and through numpy/scipy.
+
+For every size the script writes a truss scene (a Pratt girder of n panels, 2n joints, a load
+at every inner bottom joint, a pin at the left and a roller at the right), then measures in
+one run, median of several:
+
+- numpy: the 2k x 2k joint equations of the parsed scene assembled as a scipy.sparse matrix
+  and solved by scipy.sparse.linalg.spsolve (SuperLU), in process: the import and the JSON
+  parse are not counted, the assembly and the solve are;
+- graphostatik in process: the time `graphostatik check --verbose` reports for the scene
+  (read, validation, determinacy, the recorded Cremona plan, the sparse solve, every check);
+- graphostatik end to end: the whole command, process start and exit included.
+
+Run from the repository root after `cargo build --release`:
+
+    python3 benches/peers/truss_peer.py [--sizes 10,100,1000,10000,100000] [--reps 5]
+
+Needs numpy and scipy (`pip install numpy scipy`). Prints a Markdown table.
+"""
+import argparse
+import json
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+import scipy.sparse
+import scipy.sparse.linalg
+
+EXE = os.path.join("target", "release", "graphostatik")
+
+
+def pratt(n, panel=2.0, height=2.0):
+    """A Pratt girder of n panels as a scene (the layout of truss::generate::parallel_chord)."""
+    joints = [{"name": f"B{i}", "at_m": [i * panel, 0.0]} for i in range(n + 1)]
+    joints += [{"name": f"T{i}", "at_m": [i * panel, height]} for i in range(1, n)]
+    members = []
+
+    def add(a, b):
+        members.append({"name": str(len(members) + 1), "joints": [a, b]})
+
+    for i in range(n):
+        add(f"B{i}", f"B{i + 1}")
+    add("B0", "T1")
+    add(f"B{n}", f"T{n - 1}")
+    for i in range(1, n):
+        add(f"B{i}", f"T{i}")
+        if i + 1 < n:
+            add(f"T{i}", f"T{i + 1}")
+    for j in range(1, n - 1):
+        if 2 * j + 1 < n:
+            add(f"T{j}", f"B{j + 1}")
+        else:
+            add(f"B{j}", f"T{j + 1}")
+    loads = [{"joint": f"B{i}", "kg": 1000.0 + (i % 7) * 100.0} for i in range(1, n)]
+    return {
+        "procedure": "truss",
+        "title": f"Pratt girder, {n} panels",
+        "joints": joints,
+        "members": members,
+        "supports": [
+            {"joint": "B0", "kind": "pinned"},
+            {"joint": f"B{n}", "kind": "roller", "direction_deg": 90},
+        ],
+        "load_cases": [{"name": "P", "loads": loads}],
+    }
+
+
+def numpy_solve(scene):
+    """Assembles and solves the joint equations; returns the member forces."""
+    index = {j["name"]: i for i, j in enumerate(scene["joints"])}
+    xy = np.array([j["at_m"] for j in scene["joints"]], dtype=float)
+    ends = np.array([[index[a], index[b]] for a, b in (m["joints"] for m in scene["members"])])
+    k, s = len(xy), len(ends)
+    d = xy[ends[:, 1]] - xy[ends[:, 0]]
+    d /= np.hypot(d[:, 0], d[:, 1])[:, None]
+    m = np.arange(s)
+    rows = np.concatenate([2 * ends[:, 0], 2 * ends[:, 0] + 1, 2 * ends[:, 1], 2 * ends[:, 1] + 1])
+    cols = np.concatenate([m, m, m, m])
+    vals = np.concatenate([d[:, 0], d[:, 1], -d[:, 0], -d[:, 1]])
+    a, b = index[scene["supports"][0]["joint"]], index[scene["supports"][1]["joint"]]
+    rows = np.concatenate([rows, [2 * a, 2 * a + 1, 2 * b + 1]])
+    cols = np.concatenate([cols, [s, s + 1, s + 2]])
+    vals = np.concatenate([vals, [1.0, 1.0, 1.0]])
+    mat = scipy.sparse.csc_matrix((vals, (rows, cols)), shape=(2 * k, s + 3))
+    p = np.zeros(2 * k)
+    for case in scene["load_cases"]:
+        for load in case["loads"]:
+            p[2 * index[load["joint"]] + 1] -= load["kg"]
+    f = scipy.sparse.linalg.spsolve(mat, -p)
+    return f[:s]
+
+
+def median_ms(f, reps):
+    times = []
+    for _ in range(reps):
+        t = time.perf_counter()
+        f()
+        times.append((time.perf_counter() - t) * 1e3)
+    return statistics.median(times)
+
+
+def check(path):
+    out = subprocess.run([EXE, "check", path, "--verbose"], capture_output=True, text=True)
+    if out.returncode != 0:
+        sys.exit(f"graphostatik check {path} failed ({out.returncode}): {out.stderr.strip()[:300]}")
+    return out
+
+
+def in_process_ms(stderr):
+    m = re.search(r"([0-9.]+) ms", stderr)
+    if not m:
+        sys.exit(f"no time in the verbose line: {stderr.strip()[:300]}")
+    return float(m.group(1))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--sizes", default="10,100,1000,10000,100000", help="joints, comma-separated")
+    ap.add_argument("--reps", type=int, default=5)
+    args = ap.parse_args()
+    print("| joints | members | numpy + scipy spsolve, in process | graphostatik check, in process | ratio | graphostatik check, end to end | ratio | members checked |")
+    print("|---:|---:|---:|---:|---:|---:|---:|---:|")
+    with tempfile.TemporaryDirectory() as tmp:
+        for joints in (int(x) for x in args.sizes.split(",")):
+            n = max(joints // 2, 2)
+            scene = pratt(n)
+            path = os.path.join(tmp, f"pratt_{n}.json")
+            with open(path, "w") as f:
+                json.dump(scene, f)
+            f_np = numpy_solve(scene)
+            t_np = median_ms(lambda: numpy_solve(scene), args.reps)
+            runs = []
+            for _ in range(args.reps):
+                t = time.perf_counter()
+                out = check(path)
+                runs.append(((time.perf_counter() - t) * 1e3, in_process_ms(out.stderr)))
+            t_e2e = statistics.median(r[0] for r in runs)
+            t_in = statistics.median(r[1] for r in runs)
+            checked = len(re.findall(r"member force", out.stdout))
+            k = len(scene["joints"])
+            s = len(scene["members"])
+            assert np.all(np.isfinite(f_np))
+            print(
+                f"| {k:,} | {s:,} | {t_np:.2f} ms | {t_in:.2f} ms | {t_np / t_in:.1f}x "
+                f"| {t_e2e:.2f} ms | {t_np / t_e2e:.1f}x | {checked:,} |",
+                flush=True,
+            )
+
+
+if __name__ == "__main__":
+    main()
