@@ -131,6 +131,10 @@ enum Command {
         /// Output folder (created if missing).
         #[arg(long)]
         out: PathBuf,
+        /// Page by single steps (`step`, the default) or by the steps made in one situation,
+        /// one joint's polygon or one crank angle (`context`).
+        #[arg(long, value_enum, default_value_t = GroupArg::Step)]
+        group: GroupArg,
     },
     /// Print the construction protocol (every step, object and check) as JSON.
     Protocol {
@@ -242,7 +246,7 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
             json,
             reference,
         } => check_cmd(&scene, json, reference),
-        Command::Steps { scene, out } => steps_cmd(&scene, &out),
+        Command::Steps { scene, out, group } => steps_cmd(&scene, &out, group),
         Command::Accuracy { scene, svg, json } => accuracy_cmd(&scene, svg.as_deref(), json),
         Command::Drafting {
             scene,
@@ -491,30 +495,38 @@ fn drafting_cmd(
     Ok(ExitCode::SUCCESS)
 }
 
-/// `steps`: one cumulative SVG per step and the page that walks through them.
-fn steps_cmd(scene: &Path, out: &Path) -> Result<ExitCode, Fail> {
+/// How `steps` pages the construction.
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+enum GroupArg {
+    /// One construction step per page.
+    Step,
+    /// The steps made in one situation (a joint, a crank angle) share a page.
+    Context,
+}
+
+/// `steps`: the self-contained page that walks through the construction one step at a time.
+fn steps_cmd(scene: &Path, out: &Path, group: GroupArg) -> Result<ExitCode, Fail> {
     let p = load(scene)?;
     let board = construct(scene, &p)?;
-    let (n_pages, drawn) = render::walkthrough_cost(&board);
-    if drawn > render::MAX_WALKTHROUGH_OBJECTS {
-        return Err(Fail(format!(
-            "{}: the walk-through would draw {drawn} objects on {n_pages} pages, more than the \
-             {} it may (some 350 MB): render the figure instead, or draw fewer load cases",
-            scene.display(),
-            render::MAX_WALKTHROUGH_OBJECTS
-        )));
-    }
-    let pages = render::walkthrough(&p.figure_meta(), &board);
+    let opts = render::WalkOptions {
+        grouping: match group {
+            GroupArg::Step => render::Grouping::Step,
+            GroupArg::Context => render::Grouping::Context,
+        },
+        ..Default::default()
+    };
+    let html = render::walkthrough_html(&p.figure_meta(), &board, &opts);
     ensure_dir(out)?;
     let mut batch = Batch::default();
-    for page in &pages {
-        batch.add(out.join(&page.name), page.contents.clone());
-    }
+    batch.add(out.join("index.html"), html);
     commit(batch)?;
-    // The folder's pages are this walk-through's: stale pages of an earlier, longer one go.
-    let keep: std::collections::BTreeSet<&str> = pages.iter().map(|p| p.name.as_str()).collect();
-    remove_stale_pages(out, &keep)?;
-    chatter(&format!("{} pages in {}\n", pages.len(), out.display()))?;
+    // The page needs no other file: the step pages an earlier version wrote go.
+    remove_stale_pages(out, &Default::default())?;
+    chatter(&format!(
+        "{} steps in {}\n",
+        board.steps().len(),
+        out.join("index.html").display()
+    ))?;
     Ok(ExitCode::SUCCESS)
 }
 

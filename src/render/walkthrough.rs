@@ -1,5 +1,12 @@
-//! Walk-through pages: one cumulative SVG per step and an offline `index.html` that pages
-//! through them with their captions.
+//! The walk-through: one self-contained `index.html` that shows a construction one step at a
+//! time, as GeoGebra's construction protocol does, with the step's caption, German term,
+//! book reference and analytic checks beside the figure.
+//!
+//! The figure is inlined once, each step its own layer (`<g data-step="N">`); the page shows
+//! the layers up to the current step and draws the current one in the highlight colour. It
+//! works offline from the file system: no script, style or font from outside. Keys: → or
+//! space next, ← back, Home and End, `z` zooms the view to the step's new objects, `p`
+//! prints one step per panel (a handout).
 
 use super::figure::figure;
 use crate::protocol::FigureMeta;
@@ -8,10 +15,33 @@ use crate::protocol::{Board, Step};
 /// A file of the walk-through: its name and contents.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Page {
-    /// File name (`step-001.svg`, `index.html`).
+    /// File name (`index.html`).
     pub name: String,
     /// Contents.
     pub contents: String,
+}
+
+/// How the steps are paged.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Grouping {
+    /// One construction step per page (the default).
+    #[default]
+    Step,
+    /// Consecutive steps made in the same situation (one joint's polygon, one crank angle)
+    /// share a page: for long constructions, where the author asks for it.
+    Context,
+}
+
+/// What a walk-through page carries besides the construction.
+#[derive(Debug, Clone, Default)]
+pub struct WalkOptions {
+    /// How the steps are paged.
+    pub grouping: Grouping,
+    /// Extra HTML put after the page's own script (the live preview's reload and sliders);
+    /// the caller escapes what it puts there.
+    pub extra: String,
+    /// An error line shown above the figure (the live preview's last failed edit).
+    pub error: Option<String>,
 }
 
 pub(super) fn html_escape(s: &str) -> String {
@@ -20,188 +50,296 @@ pub(super) fn html_escape(s: &str) -> String {
         .replace('<', "&lt;")
         .replace('>', "&gt;")
         .replace('"', "&quot;")
+        .replace('\'', "&#39;")
 }
 
-/// Most pages a walk-through writes. Each page is a whole figure, so a construction of
-/// thousands of steps (a crane bridge with ten load positions) would write gigabytes; above
-/// this, consecutive steps that share a context (one joint polygon, one crank angle) share
-/// a page, and if that is still too many, neighbouring groups are merged evenly.
-pub const MAX_PAGES: usize = 150;
-
 /// The steps of each page, in order.
-fn page_groups(board: &Board) -> Vec<Vec<&Step>> {
+fn page_groups(board: &Board, grouping: Grouping) -> Vec<Vec<&Step>> {
     let steps = board.steps();
-    if steps.len() <= MAX_PAGES {
+    if grouping == Grouping::Step {
         return steps.iter().map(|s| vec![s]).collect();
     }
     let mut groups: Vec<Vec<&Step>> = Vec::new();
     for s in steps {
         match groups.last_mut() {
-            Some(g) if g[0].context == s.context => g.push(s),
+            Some(g) if g[0].context.is_some() && g[0].context == s.context => g.push(s),
             _ => groups.push(vec![s]),
         }
-    }
-    if groups.len() > MAX_PAGES {
-        let per = groups.len().div_ceil(MAX_PAGES);
-        groups = groups
-            .chunks(per)
-            .map(|c| c.iter().flatten().copied().collect())
-            .collect();
     }
     groups
 }
 
-/// What a walk-through of `board` costs before it is written: its pages, and the objects
-/// they draw in all (each page draws every object up to its step).
-pub fn walkthrough_cost(board: &Board) -> (usize, usize) {
-    let groups = page_groups(board);
-    let mut drawn = 0usize;
-    let mut upto = 0usize;
-    let objects = board.objects();
-    for g in &groups {
-        let last = g[g.len() - 1].id;
-        while upto < objects.len() && objects[upto].step <= last {
-            upto += 1;
-        }
-        drawn = drawn.saturating_add(upto);
-    }
-    (groups.len(), drawn)
+/// The walk-through of `board`: `index.html`, one step per page.
+///
+/// ```
+/// use graphostatik::scene::AnyScene;
+/// let p = AnyScene::from_json(r#"{ "procedure": "force_system", "title": "Two forces",
+///     "forces": [ { "at_m": [0, 0], "kg": 100, "angle_deg": 90 },
+///                 { "at_m": [1, 0], "kg": 50, "angle_deg": 90 } ] }"#, "two.json")
+///     .unwrap()
+///     .problem();
+/// let board = p.construct(true).unwrap();
+/// let pages = graphostatik::render::walkthrough(&p.figure_meta(), &board);
+/// assert_eq!(pages.len(), 1);
+/// assert!(pages[0].contents.contains("data-step=\"1\""));
+/// ```
+pub fn walkthrough(meta: &FigureMeta, board: &Board) -> Vec<Page> {
+    vec![Page {
+        name: "index.html".into(),
+        contents: walkthrough_html(meta, board, &WalkOptions::default()),
+    }]
 }
 
-/// Most objects all pages of one walk-through may draw together (about 350 bytes each, so
-/// some 350 MB): beyond, `steps` refuses before it writes anything.
-pub const MAX_WALKTHROUGH_OBJECTS: usize = 1_000_000;
-
-/// The pages of a walk-through: `step-NNN.svg` showing steps 1..NNN with NNN highlighted,
-/// and `index.html`, which works offline (no script from outside, images by relative path),
-/// with buttons and the arrow keys to step back and forth. Beyond [`MAX_PAGES`] steps a page
-/// shows a group of steps (named by its last one) and lists them all.
-pub fn walkthrough(meta: &FigureMeta, board: &Board) -> Vec<Page> {
-    let mut pages = Vec::new();
+/// The walk-through page of `board` with its options.
+pub fn walkthrough_html(meta: &FigureMeta, board: &Board, opts: &WalkOptions) -> String {
+    let svg = figure(meta, board, None);
     let mut items = String::new();
-    for group in page_groups(board) {
-        let last = group[group.len() - 1];
-        let name = format!("step-{}.svg", last.id);
-        pages.push(Page {
-            name: name.clone(),
-            contents: figure(meta, board, Some(last.id)),
-        });
-        let lines: Vec<String> = group.iter().map(|s| step_line(s)).collect();
-        items.push_str(&format!(
-            "<li data-src=\"{name}\">{}</li>\n",
-            lines.join("<br>")
+    for group in page_groups(board, opts.grouping) {
+        items.push_str(&group_item(&group));
+    }
+    let error = opts
+        .error
+        .as_ref()
+        .map(|e| format!("<p id=\"wt-error\" role=\"alert\">{}</p>\n", html_escape(e)))
+        .unwrap_or_default();
+    format!(
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
+         <title>{title}: step by step</title>\n<style>\n{css}</style>\n</head>\n<body>\n\
+         <header><h1>{title}</h1><p class=\"wt-source\">{source}</p></header>\n{error}\
+         <main>\n<section id=\"wt-figure\" aria-label=\"construction\">\n{svg}</section>\n\
+         <aside id=\"wt-side\">\n{nav}<div id=\"wt-now\" aria-live=\"polite\"></div>\n\
+         <ol id=\"wt-steps\">\n{items}</ol>\n</aside>\n</main>\n\
+         <div id=\"wt-print\"></div>\n<script>\n{script}</script>\n{extra}</body>\n</html>\n",
+        title = html_escape(&meta.title),
+        source = html_escape(&meta.source),
+        css = PAGE_CSS,
+        nav = NAV,
+        script = SCRIPT,
+        extra = opts.extra,
+    )
+}
+
+/// The buttons (the keys do the same).
+const NAV: &str =
+    "<nav id=\"wt-nav\"><button id=\"wt-first\" title=\"first step (Home)\">|&lt;</button> \
+<button id=\"wt-prev\" title=\"back (←)\">&lt; back</button> <span id=\"wt-count\"></span> \
+<button id=\"wt-next\" title=\"next (→, space)\">next &gt;</button> \
+<button id=\"wt-last\" title=\"last step (End)\">&gt;|</button> \
+<button id=\"wt-zoom\" title=\"zoom to the step (z)\" aria-pressed=\"false\">zoom</button> \
+<button id=\"wt-printbtn\" title=\"one step per panel (p)\">print</button></nav>\n";
+
+/// One page of the list: the steps it shows, a line each, and their details.
+fn group_item(group: &[&Step]) -> String {
+    let first = group[0].id;
+    let last = group[group.len() - 1].id;
+    let mut lines = String::new();
+    for s in group {
+        lines.push_str(&step_detail(s));
+    }
+    format!("<li data-first=\"{first}\" data-last=\"{last}\">{lines}</li>\n")
+}
+
+/// One step: number, caption and context (the line in the list), then the German term, the
+/// book, the cut's angle, a degenerate outcome and the checks (shown for the current step).
+fn step_detail(step: &Step) -> String {
+    let mut d = String::new();
+    if let Some(de) = &step.term_de {
+        d.push_str(&format!(
+            "<p class=\"wt-de\" lang=\"de\">{}</p>",
+            html_escape(de)
         ));
     }
-    let index = format!(
-        r#"<!DOCTYPE html>
-<html lang="en">
-<head>
-<meta charset="utf-8">
-<title>{title}: step by step</title>
-<style>
-body {{ font-family: Georgia, 'Times New Roman', serif; margin: 0; display: flex; height: 100vh; }}
-#fig {{ flex: 3; display: flex; flex-direction: column; align-items: center; padding: 1em; }}
-#fig img {{ max-width: 100%; max-height: 80vh; border: 1px solid #ccc; background: #fff; }}
-#nav {{ margin: 0.5em; }}
-#caption {{ font-size: 1.1em; margin: 0.5em; text-align: center; }}
-ol {{ flex: 2; overflow-y: auto; margin: 0; padding: 1em 1em 1em 3em; border-left: 1px solid #ccc; font-size: 0.9em; }}
-li {{ cursor: pointer; padding: 0.15em 0; }}
-li.on {{ background: #f3e2df; }}
-.de, .book {{ color: #555; }} .cond.glancing(), .fail {{ color: #b0362a; font-weight: bold; }}
-.ok {{ color: #2a6b2a; }} .outcome {{ color: #7a4d00; }}
-</style>
-</head>
-<body>
-<div id="fig">
-<h1 style="font-size:1.3em">{title}</h1>
-<div id="nav"><button id="first">|&lt;</button> <button id="prev">&lt; back</button>
-<span id="count"></span> <button id="next">next &gt;</button> <button id="last">&gt;|</button></div>
-<img id="img" alt="construction step">
-<div id="caption"></div>
-</div>
-<ol id="steps">
-{items}</ol>
-<script>
-var items = Array.prototype.slice.call(document.querySelectorAll('#steps li'));
-var k = 0;
-function show(i) {{
-  if (items.length === 0) return;
-  k = Math.max(0, Math.min(items.length - 1, i));
-  items.forEach(function (li, j) {{ li.className = j === k ? 'on' : ''; }});
-  document.getElementById('img').src = items[k].getAttribute('data-src');
-  document.getElementById('caption').innerHTML = items[k].innerHTML;
-  document.getElementById('count').textContent = (k + 1) + ' / ' + items.length;
-  items[k].scrollIntoView({{block: 'nearest'}});
-}}
-items.forEach(function (li, j) {{ li.onclick = function () {{ show(j); }}; }});
-document.getElementById('first').onclick = function () {{ show(0); }};
-document.getElementById('prev').onclick = function () {{ show(k - 1); }};
-document.getElementById('next').onclick = function () {{ show(k + 1); }};
-document.getElementById('last').onclick = function () {{ show(items.length - 1); }};
-document.onkeydown = function (e) {{
-  if (e.key === 'ArrowRight') show(k + 1);
-  if (e.key === 'ArrowLeft') show(k - 1);
-}};
-show(0);
-</script>
-</body>
-</html>
-"#,
-        title = html_escape(&meta.title),
-        items = items
-    );
-    pages.push(Page {
-        name: "index.html".into(),
-        contents: index,
-    });
-    pages
-}
-
-/// One step's line in the index: number, caption, context, German term, book, cut angle,
-/// outcome and checks.
-fn step_line(step: &Step) -> String {
-    let mut detail = String::new();
-    if let Some(de) = &step.term_de {
-        detail.push_str(&format!(" <span class=\"de\">({})</span>", html_escape(de)));
-    }
     if !step.book.is_empty() {
-        detail.push_str(&format!(
-            " <span class=\"book\">{}</span>",
+        d.push_str(&format!(
+            "<p class=\"wt-book\">{}</p>",
             html_escape(&step.book)
         ));
     }
     if let Some(c) = &step.conditioning {
-        detail.push_str(&format!(
-            " <span class=\"cond{}\">cut at {}°</span>",
-            if c.glancing() { " glancing" } else { "" },
-            crate::fmt::num(c.angle_deg(), 1)
+        d.push_str(&format!(
+            "<p class=\"wt-cond{}\">cut at {}°{}</p>",
+            if c.glancing() { " wt-glancing" } else { "" },
+            crate::fmt::num(c.angle_deg(), 1),
+            if c.glancing() { " (glancing)" } else { "" }
         ));
     }
     if let Some(o) = &step.outcome {
-        detail.push_str(&format!(
-            " <span class=\"outcome\">{}</span>",
-            html_escape(o)
-        ));
+        d.push_str(&format!("<p class=\"wt-outcome\">{}</p>", html_escape(o)));
     }
-    for c in &step.checks {
-        detail.push_str(&format!(
-            " <span class=\"check {}\">{} = {} {} (closed form {}, error {})</span>",
-            if c.passed { "ok" } else { "fail" },
-            html_escape(&c.quantity),
-            crate::fmt::num(c.constructed, 6),
-            html_escape(&c.unit),
-            crate::fmt::num(c.closed_form, 6),
-            crate::fmt::sci(c.error)
-        ));
+    if !step.checks.is_empty() {
+        d.push_str(&checks_table(step));
     }
     format!(
-        "<b>{}</b> {}{}{}",
+        "<div class=\"wt-step\"><b>{}</b> {}{}<div class=\"wt-detail\">{}</div></div>",
         step.id,
         html_escape(&step.caption),
         step.context
             .as_ref()
             .map(|c| format!(" <i>{}</i>", html_escape(c)))
             .unwrap_or_default(),
-        detail
+        d
     )
 }
+
+/// The step's checks: constructed value against the closed form.
+fn checks_table(step: &Step) -> String {
+    let mut t = String::from(
+        "<table class=\"wt-checks\"><tr><th>check</th><th>constructed</th><th>closed form</th>\
+         <th>error</th><th>bound</th><th>tolerance</th><th></th></tr>",
+    );
+    for c in &step.checks {
+        t.push_str(&format!(
+            "<tr class=\"{}\"><td>{} [{}]<br><small>{}</small></td><td>{}</td><td>{}</td>\
+             <td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+            if c.passed { "wt-ok" } else { "wt-fail" },
+            html_escape(&c.quantity),
+            html_escape(&c.unit),
+            html_escape(&c.formula),
+            crate::fmt::num(c.constructed, 6),
+            crate::fmt::num(c.closed_form, 6),
+            crate::fmt::sci(c.error),
+            crate::fmt::sci(c.bound),
+            crate::fmt::sci(c.tolerance),
+            if c.passed { "ok" } else { "FAIL" }
+        ));
+    }
+    t.push_str("</table>");
+    t
+}
+
+/// The page's style: figure left, protocol right; print: one step per panel.
+const PAGE_CSS: &str = r#"body { font-family: Georgia, 'DejaVu Serif', serif; margin: 0; color: #222; }
+header { padding: 0.4em 1em; border-bottom: 1px solid #ccc; }
+header h1 { font-size: 1.25em; margin: 0; }
+.wt-source { margin: 0.2em 0 0; color: #555; }
+#wt-error { margin: 0; padding: 0.5em 1em; background: #fbe3df; color: #8a1d12; font-family: monospace; white-space: pre-wrap; }
+main { display: flex; height: calc(100vh - 4em); }
+#wt-figure { flex: 3; overflow: auto; padding: 0.5em; }
+#wt-figure svg { width: 100%; height: auto; max-height: 100%; background: #fff; }
+#wt-side { flex: 2; display: flex; flex-direction: column; border-left: 1px solid #ccc; min-width: 18em; }
+#wt-nav { padding: 0.5em; border-bottom: 1px solid #ddd; }
+#wt-nav button { font: inherit; padding: 0.2em 0.6em; }
+#wt-nav button[aria-pressed="true"] { background: #f3e2df; }
+#wt-count { display: inline-block; min-width: 6em; text-align: center; }
+#wt-now { padding: 0.5em 1em; border-bottom: 1px solid #ddd; max-height: 45%; overflow: auto; }
+#wt-steps { flex: 1; overflow-y: auto; margin: 0; padding: 0.5em 1em; font-size: 0.9em; list-style: none; }
+#wt-steps li { cursor: pointer; padding: 0.1em 0; }
+#wt-steps li.wt-on { background: #f3e2df; }
+#wt-steps .wt-detail { display: none; }
+.wt-detail p { margin: 0.2em 0; }
+.wt-de, .wt-book { color: #555; }
+.wt-glancing, .wt-fail td { color: #b0362a; font-weight: bold; }
+.wt-ok td:last-child { color: #2a6b2a; }
+.wt-outcome { color: #7a4d00; }
+.wt-checks { border-collapse: collapse; font-size: 0.85em; margin-top: 0.4em; }
+.wt-checks td, .wt-checks th { border-top: 1px solid #ddd; padding: 0.15em 0.4em; text-align: right; vertical-align: top; }
+.wt-checks td { white-space: nowrap; }
+.wt-checks td:first-child, .wt-checks th:first-child { text-align: left; white-space: normal; }
+#wt-print { display: none; }
+@media print {
+  header, main { display: none; }
+  #wt-print { display: block; }
+  .wt-panel { page-break-inside: avoid; break-inside: avoid; margin-bottom: 1em; }
+  .wt-panel svg { width: 100%; height: auto; max-height: 60vh; }
+  .wt-panel .wt-detail { display: block; }
+}
+"#;
+
+/// The page's behaviour: layers up to the current step shown, the current one highlighted,
+/// zoom to its bounding box, keys and buttons, and the print panels.
+const SCRIPT: &str = r#"(function () {
+'use strict';
+var svg = document.querySelector('#wt-figure svg');
+var layers = Array.prototype.slice.call(svg.querySelectorAll('g[data-step]'));
+var items = Array.prototype.slice.call(document.querySelectorAll('#wt-steps li'));
+var full = svg.getAttribute('viewBox');
+var k = 0, zoom = false;
+function range(li) { return [Number(li.getAttribute('data-first')), Number(li.getAttribute('data-last'))]; }
+function setLayers(root, r) {
+  Array.prototype.forEach.call(root.querySelectorAll('g[data-step]'), function (g) {
+    var s = Number(g.getAttribute('data-step'));
+    g.style.display = s <= r[1] ? '' : 'none';
+    g.classList.toggle('current', s >= r[0] && s <= r[1]);
+  });
+}
+function boxOf(lo, hi) {
+  var box = null;
+  layers.forEach(function (g) {
+    var s = Number(g.getAttribute('data-step'));
+    if (s < lo || s > hi || !g.firstChild) return;
+    var b = g.getBBox();
+    if (b.width === 0 && b.height === 0) return;
+    box = box ? { x: Math.min(box.x, b.x), y: Math.min(box.y, b.y),
+      x2: Math.max(box.x2, b.x + b.width), y2: Math.max(box.y2, b.y + b.height) }
+      : { x: b.x, y: b.y, x2: b.x + b.width, y2: b.y + b.height };
+  });
+  return box;
+}
+function zoomTo(r) {
+  // A step that only measures draws nothing: zoom to the last step before it that drew.
+  var box = boxOf(r[0], r[1]);
+  for (var lo = r[0] - 1; !box && lo >= 1; lo--) box = boxOf(lo, lo);
+  if (!box) { svg.setAttribute('viewBox', full); return; }
+  var w = Math.max(box.x2 - box.x, 20), h = Math.max(box.y2 - box.y, 20);
+  var cx = (box.x + box.x2) / 2, cy = (box.y + box.y2) / 2;
+  svg.setAttribute('viewBox', [cx - 0.65 * w, cy - 0.65 * h, 1.3 * w, 1.3 * h].join(' '));
+}
+function show(i) {
+  if (items.length === 0) { document.getElementById('wt-count').textContent = 'no steps'; return; }
+  k = Math.max(0, Math.min(items.length - 1, i));
+  var r = range(items[k]);
+  setLayers(svg, r);
+  items.forEach(function (li, j) { li.classList.toggle('wt-on', j === k); });
+  document.getElementById('wt-now').innerHTML = items[k].innerHTML;
+  document.getElementById('wt-count').textContent = 'step ' + (k + 1) + ' / ' + items.length;
+  if (zoom) zoomTo(r); else svg.setAttribute('viewBox', full);
+  items[k].scrollIntoView({ block: 'nearest' });
+  if (window.history && window.history.replaceState) window.history.replaceState(null, '', '#' + (k + 1));
+}
+function toggleZoom() {
+  zoom = !zoom;
+  document.getElementById('wt-zoom').setAttribute('aria-pressed', String(zoom));
+  show(k);
+}
+function buildPrint() {
+  var out = document.getElementById('wt-print');
+  out.innerHTML = '';
+  items.forEach(function (li) {
+    var panel = document.createElement('section');
+    panel.className = 'wt-panel';
+    var copy = svg.cloneNode(true);
+    copy.setAttribute('viewBox', full);
+    Array.prototype.forEach.call(copy.querySelectorAll('[id]'), function (e) {
+      if (e.tagName.toLowerCase() === 'g') e.removeAttribute('id');
+    });
+    setLayers(copy, range(li));
+    panel.appendChild(copy);
+    var text = document.createElement('div');
+    text.innerHTML = li.innerHTML;
+    panel.appendChild(text);
+    out.appendChild(panel);
+  });
+}
+items.forEach(function (li, j) { li.addEventListener('click', function () { show(j); }); });
+document.getElementById('wt-first').addEventListener('click', function () { show(0); });
+document.getElementById('wt-prev').addEventListener('click', function () { show(k - 1); });
+document.getElementById('wt-next').addEventListener('click', function () { show(k + 1); });
+document.getElementById('wt-last').addEventListener('click', function () { show(items.length - 1); });
+document.getElementById('wt-zoom').addEventListener('click', toggleZoom);
+document.getElementById('wt-printbtn').addEventListener('click', function () { buildPrint(); window.print(); });
+window.addEventListener('beforeprint', buildPrint);
+document.addEventListener('keydown', function (e) {
+  if (e.target && (e.target.tagName === 'INPUT' || e.target.tagName === 'TEXTAREA')) return;
+  if (e.key === 'ArrowRight' || e.key === ' ' || e.key === 'PageDown') { show(k + 1); e.preventDefault(); }
+  else if (e.key === 'ArrowLeft' || e.key === 'PageUp') { show(k - 1); e.preventDefault(); }
+  else if (e.key === 'Home') show(0);
+  else if (e.key === 'End') show(items.length - 1);
+  else if (e.key === 'z') toggleZoom();
+  else if (e.key === 'p') { buildPrint(); window.print(); }
+});
+var start = Number((window.location.hash || '#1').slice(1));
+show(isFinite(start) && start > 0 ? start - 1 : 0);
+window.graphostatikWalk = { show: show, step: function () { return k; }, pages: items.length };
+})();
+"#;

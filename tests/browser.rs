@@ -1,0 +1,158 @@
+//! The walk-through and the live preview in a real browser: Debian's chromium, headless,
+//! driven through chromedriver (WebDriver over loopback).
+//!
+//! Where chromium or chromedriver is missing the tests say they are skipped, unless
+//! `GRAPHOSTATIK_BROWSER=required` (as `.ci/run` sets after installing both), when they fail.
+//! With `GRAPHOSTATIK_SCREENSHOTS=DIR` the screenshots are written to `DIR` (the README's
+//! come from `GRAPHOSTATIK_SCREENSHOTS=figures/screenshots cargo test --test browser`).
+
+#[path = "browser/webdriver.rs"]
+mod webdriver;
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use webdriver::{Browser, Session};
+
+fn bin() -> PathBuf {
+    PathBuf::from(env!("CARGO_BIN_EXE_graphostatik"))
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("gs-browser-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn browser_or_skip(test: &str) -> Option<Browser> {
+    match Browser::find() {
+        Some(b) => Some(b),
+        None if webdriver::required() => {
+            panic!("{test}: chromium and chromedriver are required but not installed")
+        }
+        None => {
+            eprintln!("{test}: skipped (no /usr/bin/chromium and /usr/bin/chromedriver)");
+            None
+        }
+    }
+}
+
+/// Writes a screenshot where `GRAPHOSTATIK_SCREENSHOTS` says, or into `fallback`.
+pub fn keep_screenshot(png: &[u8], name: &str, fallback: &Path) -> PathBuf {
+    assert!(png.starts_with(b"\x89PNG\r\n\x1a\n"), "a PNG");
+    assert!(
+        png.len() > 10_000,
+        "a screenshot with content: {} bytes",
+        png.len()
+    );
+    let dir = std::env::var_os("GRAPHOSTATIK_SCREENSHOTS")
+        .map(|d| Path::new(env!("CARGO_MANIFEST_DIR")).join(d))
+        .unwrap_or_else(|| fallback.to_path_buf());
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, png).unwrap();
+    path
+}
+
+/// How many step layers the page shows, and which are drawn as the current step.
+fn shown(s: &Session) -> (u64, Vec<u64>) {
+    let v = s.script(
+        "var g = document.querySelectorAll('#wt-figure g[data-step]'); var n = 0, cur = [];\
+         for (var i = 0; i < g.length; i++) {\
+           if (getComputedStyle(g[i]).display !== 'none') n++;\
+           if (g[i].classList.contains('current')) cur.push(Number(g[i].getAttribute('data-step')));\
+         } return [n, cur];",
+    );
+    let cur = v[1]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_u64().unwrap())
+        .collect();
+    (v[0].as_u64().unwrap(), cur)
+}
+
+#[test]
+fn a_student_pages_through_a_walkthrough_with_the_keyboard() {
+    let Some(browser) = browser_or_skip("walk-through") else {
+        return;
+    };
+    let dir = tmp("walk");
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lh_abb22_funicular.json");
+    let o = Command::new(bin())
+        .arg("steps")
+        .arg(&scene)
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let p = graphostatik::scene::AnyScene::load(&scene)
+        .unwrap()
+        .problem();
+    let board = p.construct(true).unwrap();
+    let steps = board.steps();
+    let s = Session::start(&browser, &dir.join("profile"));
+    s.goto(&format!("file://{}", dir.join("index.html").display()));
+    let n = steps.len();
+    for (i, step) in steps.iter().enumerate() {
+        assert_eq!(s.text("#wt-count"), format!("step {} / {n}", i + 1));
+        let now = s.text("#wt-now");
+        assert!(now.contains(&step.id.to_string()), "{now}");
+        assert!(
+            now.contains(step.caption.as_ref()),
+            "step {}: {now}",
+            step.id
+        );
+        if !step.book.is_empty() {
+            assert!(now.contains(step.book.as_ref()), "{now}");
+        }
+        for c in &step.checks {
+            assert!(
+                now.contains(c.quantity.as_ref()) && now.contains("ok"),
+                "{now}"
+            );
+        }
+        let (visible, current) = shown(&s);
+        assert_eq!(visible as usize, i + 1, "layers shown at step {}", step.id);
+        assert_eq!(current, vec![u64::from(step.id.0)]);
+        s.keys("\u{E014}"); // →
+    }
+    // Past the end it stays on the last step; ← goes back, Home to the first.
+    assert_eq!(s.text("#wt-count"), format!("step {n} / {n}"));
+    s.keys("\u{E012}"); // ←
+    assert_eq!(s.text("#wt-count"), format!("step {} / {n}", n - 1));
+    s.keys("\u{E011}"); // Home
+    assert_eq!(s.text("#wt-count"), format!("step 1 / {n}"));
+    // A step with a check shows it beside the figure; z zooms the view to that step.
+    let checked = steps.iter().position(|st| !st.checks.is_empty()).unwrap();
+    s.script(&format!(
+        "window.graphostatikWalk.show({checked}); return 0;"
+    ));
+    let full = s.script("return document.querySelector('#wt-figure svg').getAttribute('viewBox');");
+    s.keys("z");
+    let zoomed =
+        s.script("return document.querySelector('#wt-figure svg').getAttribute('viewBox');");
+    assert_ne!(full, zoomed, "z zooms to the step");
+    assert!(s.text("#wt-now").contains("closed form"));
+    let png = s.screenshot();
+    keep_screenshot(&png, "walkthrough.png", &dir);
+    s.keys("z");
+    let back = s.script("return document.querySelector('#wt-figure svg').getAttribute('viewBox');");
+    assert_eq!(full, back, "z again shows the whole sheet");
+    // The print view: one panel per step.
+    let panels = s.script(
+        "window.dispatchEvent(new Event('beforeprint'));\
+         return document.querySelectorAll('#wt-print .wt-panel').length;",
+    );
+    assert_eq!(panels.as_u64(), Some(n as u64));
+    let errors = s.console_errors();
+    assert!(errors.is_empty(), "console errors: {errors:?}");
+    drop(s);
+    std::fs::remove_dir_all(&dir).ok();
+}
