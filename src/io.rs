@@ -61,12 +61,17 @@ impl std::error::Error for BatchError {}
 /// ```
 #[derive(Debug, Default)]
 pub struct Batch {
-    files: Vec<(PathBuf, String)>,
+    files: Vec<(PathBuf, Vec<u8>)>,
 }
 
 impl Batch {
     /// Adds a file to write.
     pub fn add(&mut self, path: impl Into<PathBuf>, contents: String) {
+        self.files.push((path.into(), contents.into_bytes()));
+    }
+
+    /// Adds a file of bytes to write (a PNG, a PDF).
+    pub fn add_bytes(&mut self, path: impl Into<PathBuf>, contents: Vec<u8>) {
         self.files.push((path.into(), contents));
     }
 
@@ -145,7 +150,7 @@ fn temporary_name(target: &str) -> String {
 
 /// Writes `contents` to a fresh temporary beside `path`, created exclusively and without
 /// following a link; returns its path.
-fn write_temporary(path: &Path, contents: &str) -> std::io::Result<PathBuf> {
+fn write_temporary(path: &Path, contents: &[u8]) -> std::io::Result<PathBuf> {
     let dir = path
         .parent()
         .filter(|p| !p.as_os_str().is_empty())
@@ -170,7 +175,7 @@ fn write_temporary(path: &Path, contents: &str) -> std::io::Result<PathBuf> {
             Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
             Err(e) => return Err(e),
         };
-        let written = f.write_all(contents.as_bytes()).and_then(|_| f.sync_all());
+        let written = f.write_all(contents).and_then(|_| f.sync_all());
         if let Err(e) = written {
             let _ = std::fs::remove_file(&tmp);
             return Err(e);

@@ -69,6 +69,14 @@ enum Command {
         /// Scenes rendered at once (default: every core). The output is the same for any value.
         #[arg(long, value_parser = clap::value_parser!(u16).range(1..))]
         jobs: Option<u16>,
+        /// What to write per scene, one or several (`--format svg,png,pdf,tikz`): SVG with one
+        /// Inkscape layer per step, PNG and PDF set in the shipped DejaVu Serif, TikZ with one
+        /// scope per step.
+        #[arg(long, value_enum, value_delimiter = ',', default_value = "svg")]
+        format: Vec<Format>,
+        /// Resolution of a PNG, pixels per inch of the sheet.
+        #[arg(long, default_value_t = render::export::DEFAULT_DPI)]
+        dpi: f32,
     },
     /// Print the table of every analytic check; exit status 1 if any fails.
     Check {
@@ -240,7 +248,13 @@ fn commit(batch: Batch) -> Result<(), Fail> {
 
 fn run(cli: Cli) -> Result<ExitCode, Fail> {
     match cli.command {
-        Command::Render { scenes, out, jobs } => render_cmd(&scenes, &out, jobs),
+        Command::Render {
+            scenes,
+            out,
+            jobs,
+            format,
+            dpi,
+        } => render_cmd(&scenes, &out, jobs, &Exports::new(format, dpi)?),
         Command::Check {
             scene,
             json,
@@ -314,20 +328,87 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
     }
 }
 
+/// A file format `render` writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, clap::ValueEnum)]
+enum Format {
+    /// SVG, one Inkscape layer per construction step.
+    Svg,
+    /// PNG at `--dpi`, text in the shipped DejaVu Serif.
+    Png,
+    /// PDF, one page the size of the sheet, text embedded.
+    Pdf,
+    /// A TikZ picture for LaTeX, one scope per step.
+    Tikz,
+}
+
+impl Format {
+    fn extension(self) -> &'static str {
+        match self {
+            Format::Svg => "svg",
+            Format::Png => "png",
+            Format::Pdf => "pdf",
+            Format::Tikz => "tikz",
+        }
+    }
+}
+
+/// The formats asked for, each once, in a fixed order, and the PNG resolution.
+struct Exports {
+    formats: Vec<Format>,
+    dpi: f32,
+}
+
+impl Exports {
+    fn new(mut formats: Vec<Format>, dpi: f32) -> Result<Exports, Fail> {
+        formats.sort();
+        formats.dedup();
+        let (lo, hi) = render::export::DPI_RANGE;
+        if formats.contains(&Format::Png) && !(lo..=hi).contains(&dpi) {
+            return Err(Fail(format!("--dpi: {dpi}: give between {lo} and {hi}")));
+        }
+        Ok(Exports { formats, dpi })
+    }
+
+    /// The files of one constructed scene, by extension.
+    fn files(
+        &self,
+        f: &Path,
+        p: &AnyProblem,
+        board: &graphostatik::protocol::Board,
+    ) -> Result<Vec<(&'static str, Vec<u8>)>, Fail> {
+        let meta = p.figure_meta();
+        let svg = render::figure(&meta, board, None);
+        let failed = |e: render::export::ExportError| Fail(format!("{}: {e}", f.display()));
+        let mut out = Vec::new();
+        for &fmt in &self.formats {
+            let bytes = match fmt {
+                Format::Svg => svg.clone().into_bytes(),
+                Format::Png => render::export::png(&svg, self.dpi).map_err(failed)?,
+                Format::Pdf => render::export::pdf(&svg).map_err(failed)?,
+                Format::Tikz => render::export::tikz(&meta, board)
+                    .map_err(failed)?
+                    .into_bytes(),
+            };
+            out.push((fmt.extension(), bytes));
+        }
+        Ok(out)
+    }
+}
+
 /// `render`: every scene loaded and constructed before the first file is written.
-fn render_cmd(scenes: &[PathBuf], out: &Path, jobs: Option<u16>) -> Result<ExitCode, Fail> {
+fn render_cmd(
+    scenes: &[PathBuf],
+    out: &Path,
+    jobs: Option<u16>,
+    exports: &Exports,
+) -> Result<ExitCode, Fail> {
     let files = scene_files(scenes)?;
-    let targets: Vec<PathBuf> = files
-        .iter()
-        .map(|f| {
-            let stem = f.file_stem().map(|s| s.to_string_lossy().into_owned());
-            out.join(format!("{}.svg", stem.unwrap_or_default()))
-        })
-        .collect();
-    let mut seen: std::collections::BTreeMap<&Path, &Path> = Default::default();
-    for (f, target) in files.iter().zip(&targets) {
+    let mut seen: std::collections::BTreeMap<PathBuf, &Path> = Default::default();
+    for f in &files {
+        let stem = f.file_stem().map(|s| s.to_string_lossy().into_owned());
+        let target = out.join(format!("{}.svg", stem.unwrap_or_default()));
         // Two scenes that would write one figure: refused before anything is written.
-        if let Some(first) = seen.insert(target, f) {
+        if let Some(first) = seen.insert(target.clone(), f) {
             return Err(Fail(format!(
                 "{}: would write {} as {} does too: rename one of them",
                 f.display(),
@@ -337,8 +418,14 @@ fn render_cmd(scenes: &[PathBuf], out: &Path, jobs: Option<u16>) -> Result<ExitC
         }
     }
     let mut batch = Batch::default();
-    for (target, svg) in targets.into_iter().zip(render_all(&files, jobs)) {
-        batch.add(target, svg?);
+    for (f, written) in files.iter().zip(render_all(&files, jobs, exports)) {
+        let stem = f.file_stem().map(|s| s.to_string_lossy().into_owned());
+        for (ext, bytes) in written? {
+            batch.add_bytes(
+                out.join(format!("{}.{ext}", stem.as_deref().unwrap_or_default())),
+                bytes,
+            );
+        }
     }
     ensure_dir(out)?;
     let paths: Vec<PathBuf> = batch.paths().map(Path::to_path_buf).collect();
@@ -349,16 +436,24 @@ fn render_cmd(scenes: &[PathBuf], out: &Path, jobs: Option<u16>) -> Result<ExitC
     Ok(ExitCode::SUCCESS)
 }
 
-/// Renders each scene to its SVG on every core the machine offers. The scenes are handed out one
-/// at a time (a large truss does not hold up the small ones behind it) and the results come back in
-/// the order of `files`, so the output and the first error reported are those of a serial run.
-fn render_all(files: &[PathBuf], jobs: Option<u16>) -> Vec<Result<String, Fail>> {
+/// The files of one scene: its format and bytes, in the order of the formats.
+type Written = Vec<(&'static str, Vec<u8>)>;
+
+/// Renders each scene in every format asked for on every core the machine offers. The scenes are
+/// handed out one at a time (a large truss does not hold up the small ones behind it) and the
+/// results come back in the order of `files`, so the output and the first error reported are
+/// those of a serial run.
+fn render_all(
+    files: &[PathBuf],
+    jobs: Option<u16>,
+    exports: &Exports,
+) -> Vec<Result<Written, Fail>> {
     let done = std::sync::atomic::AtomicUsize::new(0);
-    let one = |f: &PathBuf| -> Result<String, Fail> {
+    let one = |f: &PathBuf| -> Result<Written, Fail> {
         let start = std::time::Instant::now();
         let p = load(f)?;
         let board = construct(f, &p)?;
-        let svg = render::figure(&p.figure_meta(), &board, None);
+        let written = exports.files(f, &p, &board)?;
         if verbosity() >= 2 {
             eprintln!(
                 "{}: {} steps, {} checks, {:.1} ms",
@@ -370,14 +465,14 @@ fn render_all(files: &[PathBuf], jobs: Option<u16>) -> Vec<Result<String, Fail>>
         }
         let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
         progress(k, files.len(), "scenes");
-        Ok(svg)
+        Ok(written)
     };
     let workers = jobs.map(usize::from).unwrap_or_else(cores).min(files.len());
     if workers <= 1 {
         return files.iter().map(one).collect();
     }
     let next = std::sync::atomic::AtomicUsize::new(0);
-    let slots: Vec<std::sync::Mutex<Option<Result<String, Fail>>>> =
+    let slots: Vec<std::sync::Mutex<Option<Result<Written, Fail>>>> =
         files.iter().map(|_| Default::default()).collect();
     std::thread::scope(|s| {
         for _ in 0..workers {

@@ -3,6 +3,8 @@
 //! and computes no mechanics: the scales and title it writes come in a [`FigureMeta`].
 
 mod drafting;
+#[cfg(feature = "export")]
+pub mod export;
 mod figure;
 pub mod forces;
 mod plot;

@@ -1,0 +1,345 @@
+//! Exports of a figure besides SVG: PNG (resvg), PDF (svg2pdf) and TikZ for LaTeX authors.
+//!
+//! All three read the figure's own SVG through one usvg tree. Text is set in the DejaVu Serif
+//! shipped in `assets/fonts` (regular and italic), never a system font, so a scene gives the
+//! same pixels and the same PDF on every machine. The TikZ picture has one `scope` per
+//! construction step, its caption as a comment, lengths in millimetres of the sheet.
+
+use crate::protocol::{Board, FigureMeta};
+use resvg::usvg;
+use std::fmt::Write as _;
+use std::sync::Arc;
+use usvg::tiny_skia_path::PathSegment;
+
+/// The serif the figures are set in, shipped with the project (Bitstream Vera licence,
+/// `assets/fonts/LICENSE-DejaVu.txt`).
+const SERIF: &[u8] = include_bytes!("../../assets/fonts/DejaVuSerif.ttf");
+/// Its italic, for labels.
+const SERIF_ITALIC: &[u8] = include_bytes!("../../assets/fonts/DejaVuSerif-Italic.ttf");
+
+/// Pixels per inch of a PNG unless asked otherwise.
+pub const DEFAULT_DPI: f32 = 150.0;
+/// Lowest and highest resolution `png` accepts (a 10 m sheet at 1,200 dpi is already some
+/// 470,000 pixels across).
+pub const DPI_RANGE: (f32, f32) = (10.0, 1200.0);
+/// Most pixels a PNG may have (about 400 MB of RGBA): beyond, the resolution must come down.
+pub const MAX_PIXELS: u64 = 100_000_000;
+
+/// Why an export failed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ExportError {
+    /// The figure's SVG could not be read back (a bug: the renderer writes it).
+    #[error("the figure could not be read for export: {0}")]
+    Svg(String),
+    /// The raster would be too large or the resolution is out of range.
+    #[error("{0}")]
+    Size(String),
+    /// The PDF writer failed.
+    #[error("PDF: {0}")]
+    Pdf(String),
+}
+
+/// The usvg tree of an SVG with the shipped fonts and no other.
+fn tree(svg: &str) -> Result<usvg::Tree, ExportError> {
+    let mut db = usvg::fontdb::Database::new();
+    db.load_font_data(SERIF.to_vec());
+    db.load_font_data(SERIF_ITALIC.to_vec());
+    db.set_serif_family("DejaVu Serif");
+    db.set_sans_serif_family("DejaVu Serif");
+    let opt = usvg::Options {
+        font_family: "DejaVu Serif".into(),
+        fontdb: Arc::new(db),
+        ..Default::default()
+    };
+    usvg::Tree::from_str(svg, &opt).map_err(|e| ExportError::Svg(e.to_string()))
+}
+
+/// A figure as PNG at `dpi` pixels per inch of the sheet, on white.
+///
+/// ```
+/// use graphostatik::scene::AnyScene;
+/// let p = AnyScene::from_json(r#"{ "procedure": "force_system", "title": "Two forces",
+///     "forces": [ { "at_m": [0, 0], "kg": 100, "angle_deg": 90 },
+///                 { "at_m": [1, 0], "kg": 50, "angle_deg": 90 } ] }"#, "two.json")
+///     .unwrap()
+///     .problem();
+/// let board = p.construct(true).unwrap();
+/// let svg = graphostatik::render::figure(&p.figure_meta(), &board, None);
+/// let png = graphostatik::render::export::png(&svg, 50.0).unwrap();
+/// assert!(png.starts_with(b"\x89PNG"));
+/// ```
+pub fn png(svg: &str, dpi: f32) -> Result<Vec<u8>, ExportError> {
+    if !(DPI_RANGE.0..=DPI_RANGE.1).contains(&dpi) {
+        return Err(ExportError::Size(format!(
+            "{dpi} dpi: give between {} and {}",
+            DPI_RANGE.0, DPI_RANGE.1
+        )));
+    }
+    let t = tree(svg)?;
+    // usvg sizes the sheet in CSS pixels (96 per inch).
+    let k = dpi / 96.0;
+    let (w, h) = (
+        (t.size().width() * k).ceil() as u32,
+        (t.size().height() * k).ceil() as u32,
+    );
+    if u64::from(w) * u64::from(h) > MAX_PIXELS {
+        return Err(ExportError::Size(format!(
+            "{w} × {h} pixels at {dpi} dpi, more than {MAX_PIXELS}: lower --dpi"
+        )));
+    }
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(w.max(1), h.max(1))
+        .ok_or_else(|| ExportError::Size(format!("{w} × {h} pixels")))?;
+    pixmap.fill(resvg::tiny_skia::Color::WHITE);
+    resvg::render(
+        &t,
+        resvg::tiny_skia::Transform::from_scale(k, k),
+        &mut pixmap.as_mut(),
+    );
+    pixmap
+        .encode_png()
+        .map_err(|e| ExportError::Svg(e.to_string()))
+}
+
+/// A figure as PDF, one page the size of the sheet, vector throughout; its text is drawn as
+/// the outlines of the shipped font (so the bytes are the same on every run; the text is not
+/// selectable).
+pub fn pdf(svg: &str) -> Result<Vec<u8>, ExportError> {
+    let t = tree(svg)?;
+    // Text as outlines of the shipped font: svg2pdf writes embedded fonts as objects in the
+    // order of a hash map, so the same figure would give different bytes from run to run.
+    let options = svg2pdf::ConversionOptions {
+        embed_text: false,
+        ..Default::default()
+    };
+    svg2pdf::to_pdf(&t, options, svg2pdf::PageOptions::default())
+        .map_err(|e| ExportError::Pdf(e.to_string()))
+}
+
+/// Millimetres of the sheet per usvg pixel (usvg works at 96 pixels per inch).
+const MM_PER_PX: f32 = 25.4 / 96.0;
+/// TeX points per millimetre.
+const PT_PER_MM: f32 = 72.27 / 25.4;
+
+/// A construction as a TikZ picture for LaTeX: one `scope` per step (and one for the sheet),
+/// each headed by the step's caption as a comment, in step order. Lengths are millimetres of
+/// the sheet (`x=1mm, y=-1mm`: SVG's y runs down). Labels keep their text (Unicode: compile
+/// with LuaLaTeX or XeLaTeX, or pdfLaTeX with `inputenc` where the text is Latin).
+pub fn tikz(meta: &FigureMeta, board: &Board) -> Result<String, ExportError> {
+    let svg = super::figure(meta, board, None);
+    let t = tree(&svg)?;
+    let mut out = String::new();
+    let _ = writeln!(out, "% {}", comment(&meta.title));
+    if !meta.source.is_empty() {
+        let _ = writeln!(out, "% {}", comment(&meta.source));
+    }
+    out.push_str(
+        "% Made by graphostatik: one scope per construction step. Needs \\usepackage{tikz}.\n\
+         \\begin{tikzpicture}[x=1mm, y=-1mm, line cap=round, line join=round]\n",
+    );
+    layers(t.root(), board, &mut out);
+    out.push_str("\\end{tikzpicture}\n");
+    Ok(out)
+}
+
+/// The sheet's and the steps' layers as scopes, wherever usvg nests them (it wraps the sheet
+/// in a group for the viewBox); anything outside a layer is drawn as it comes.
+fn layers(g: &usvg::Group, board: &Board, out: &mut String) {
+    for node in g.children() {
+        let usvg::Node::Group(g) = node else {
+            emit(node, out);
+            continue;
+        };
+        let step = g
+            .id()
+            .strip_prefix("step-")
+            .and_then(|n| n.parse::<usize>().ok());
+        let title = match step {
+            Some(n) => board.steps().get(n.wrapping_sub(1)).map(|s| s.title()),
+            None if g.id() == "sheet" => Some("000 sheet: title and scales".into()),
+            None => None,
+        };
+        match title {
+            Some(title) => {
+                let _ = writeln!(out, "\\begin{{scope}} % {}", comment(&title));
+                for c in g.children() {
+                    emit(c, out);
+                }
+                out.push_str("\\end{scope}\n");
+            }
+            None => layers(g, board, out),
+        }
+    }
+}
+
+/// One node of the tree as TikZ commands (groups recursively).
+fn emit(node: &usvg::Node, out: &mut String) {
+    match node {
+        usvg::Node::Group(g) => {
+            for c in g.children() {
+                emit(c, out);
+            }
+        }
+        usvg::Node::Path(p) if p.is_visible() => path(p, out),
+        usvg::Node::Text(t) => text(t, out),
+        _ => {}
+    }
+}
+
+/// A number of millimetres, rounded to 0.001 mm (and no `-0`).
+fn mm(x: f32) -> String {
+    let s = format!("{:.3}", x);
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" || s.is_empty() {
+        "0".into()
+    } else {
+        s.into()
+    }
+}
+
+fn colour(p: &usvg::Paint) -> Option<String> {
+    match p {
+        usvg::Paint::Color(c) if (c.red, c.green, c.blue) == (0, 0, 0) => None,
+        usvg::Paint::Color(c) => Some(format!(
+            "{{rgb,255:red,{};green,{};blue,{}}}",
+            c.red, c.green, c.blue
+        )),
+        _ => None,
+    }
+}
+
+/// A path: `\draw` with its pen (width, dashes, colour), `\fill` where it is filled only.
+fn path(p: &usvg::Path, out: &mut String) {
+    let tr = p.abs_transform();
+    let pt = |q: usvg::tiny_skia_path::Point| {
+        let mut q = q;
+        tr.map_point(&mut q);
+        format!("({},{})", mm(q.x * MM_PER_PX), mm(q.y * MM_PER_PX))
+    };
+    let mut d = String::new();
+    for seg in p.data().segments() {
+        match seg {
+            PathSegment::MoveTo(a) => {
+                let _ = write!(d, " {}", pt(a));
+            }
+            PathSegment::LineTo(a) => {
+                let _ = write!(d, " -- {}", pt(a));
+            }
+            PathSegment::QuadTo(a, b) => {
+                let _ = write!(d, " .. controls {} .. {}", pt(a), pt(b));
+            }
+            PathSegment::CubicTo(a, b, c) => {
+                let _ = write!(d, " .. controls {} and {} .. {}", pt(a), pt(b), pt(c));
+            }
+            PathSegment::Close => d.push_str(" -- cycle"),
+        }
+    }
+    let mut opts: Vec<String> = Vec::new();
+    let scale = tr.sx.abs().max(tr.sy.abs()) * MM_PER_PX;
+    if let Some(s) = p.stroke() {
+        opts.push(format!("line width={}mm", mm(s.width().get() * scale)));
+        if let Some(c) = colour(s.paint()) {
+            opts.push(format!("draw={c}"));
+        }
+        if let Some(dash) = s.dasharray() {
+            let parts: Vec<String> = dash
+                .chunks(2)
+                .map(|c| {
+                    let off = c.get(1).copied().unwrap_or(c[0]);
+                    format!("on {}mm off {}mm", mm(c[0] * scale), mm(off * scale))
+                })
+                .collect();
+            opts.push(format!("dash pattern={}", parts.join(" ")));
+        }
+    }
+    if let Some(f) = p.fill() {
+        opts.push(format!(
+            "fill={}",
+            colour(f.paint()).unwrap_or("black".into())
+        ));
+    }
+    let cmd = if p.stroke().is_some() {
+        "\\draw"
+    } else {
+        "\\path"
+    };
+    let _ = writeln!(out, "  {cmd}[{}]{d};", opts.join(", "));
+}
+
+/// A text: one node per chunk, anchored at its baseline as in the SVG; italic and smaller
+/// shifted spans (subscripts) kept.
+fn text(t: &usvg::Text, out: &mut String) {
+    let tr = t.abs_transform();
+    let scale = tr.sx.abs().max(tr.sy.abs()) * MM_PER_PX;
+    for chunk in t.chunks() {
+        let (Some(x), Some(y)) = (chunk.x(), chunk.y()) else {
+            continue;
+        };
+        let mut q = usvg::tiny_skia_path::Point::from_xy(x, y);
+        tr.map_point(&mut q);
+        let anchor = match chunk.anchor() {
+            usvg::TextAnchor::Start => "base west",
+            usvg::TextAnchor::Middle => "base",
+            usvg::TextAnchor::End => "base east",
+        };
+        let mut body = String::new();
+        let mut size_pt = 10.0f32;
+        let first_size = chunk.spans().first().map_or(0.0, |s| s.font_size().get());
+        for (i, span) in chunk.spans().iter().enumerate() {
+            let s = chunk
+                .text()
+                .get(span.start()..span.end())
+                .unwrap_or_default();
+            let mut piece = latex_escape(s);
+            if span.font().style() != usvg::FontStyle::Normal {
+                piece = format!("\\textit{{{piece}}}");
+            }
+            let shifted = span
+                .baseline_shift()
+                .iter()
+                .any(|b| !matches!(b, usvg::BaselineShift::Baseline));
+            // A label's index is a smaller span (F₁ is "F" and a smaller "1").
+            if shifted || span.font_size().get() < 0.9 * first_size {
+                piece = format!("\\textsubscript{{{piece}}}");
+            }
+            if i == 0 {
+                size_pt = span.font_size().get() * scale * PT_PER_MM;
+            }
+            body.push_str(&piece);
+        }
+        let _ = writeln!(
+            out,
+            "  \\node[anchor={anchor}, inner sep=0pt, font=\\fontsize{{{}}}{{{}}}\\selectfont] at ({},{}) {{{body}}};",
+            mm(size_pt),
+            mm(size_pt * 1.2),
+            mm(q.x * MM_PER_PX),
+            mm(q.y * MM_PER_PX),
+        );
+    }
+}
+
+/// Text for a TeX comment: one line, no control characters.
+fn comment(s: &str) -> String {
+    crate::fmt::sheet_text(s)
+        .chars()
+        .map(|c| if c.is_control() { ' ' } else { c })
+        .collect()
+}
+
+/// Text set literally by TeX: its ten special characters escaped, control characters dropped.
+pub fn latex_escape(s: &str) -> String {
+    let mut o = String::with_capacity(s.len());
+    for c in crate::fmt::sheet_text(s).chars() {
+        match c {
+            '\\' => o.push_str("\\textbackslash{}"),
+            '{' | '}' | '#' | '$' | '%' | '&' | '_' => {
+                o.push('\\');
+                o.push(c);
+            }
+            '^' => o.push_str("\\textasciicircum{}"),
+            '~' => o.push_str("\\textasciitilde{}"),
+            c if c.is_control() => o.push(' '),
+            c => o.push(c),
+        }
+    }
+    o
+}
