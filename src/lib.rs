@@ -61,5 +61,7 @@ pub mod prelude;
 pub mod protocol;
 pub mod render;
 pub mod scene;
+#[cfg(feature = "cli")]
+pub mod serve;
 pub mod statics;
 pub mod truss;

@@ -144,6 +144,20 @@ enum Command {
         #[arg(long, value_enum, default_value_t = GroupArg::Step)]
         group: GroupArg,
     },
+    /// Live preview for authors: each scene's walk-through on http://127.0.0.1:PORT/, reloaded
+    /// when its file changes; a bad edit shows its error over the last good figure; the
+    /// scene's `preview.sliders` move numbers and replay the construction.
+    Serve {
+        /// A scene file, or a folder whose *.json files are served.
+        path: PathBuf,
+        /// Port (0: any free one; the address is printed).
+        #[arg(long, default_value_t = 8000)]
+        port: u16,
+        /// Address to listen on. Other than loopback, anyone who can reach this machine can
+        /// read the scenes served.
+        #[arg(long, default_value = "127.0.0.1")]
+        bind: std::net::IpAddr,
+    },
     /// Print the construction protocol (every step, object and check) as JSON.
     Protocol {
         /// The scene file.
@@ -261,6 +275,7 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
             reference,
         } => check_cmd(&scene, json, reference),
         Command::Steps { scene, out, group } => steps_cmd(&scene, &out, group),
+        Command::Serve { path, port, bind } => serve_cmd(&path, port, bind),
         Command::Accuracy { scene, svg, json } => accuracy_cmd(&scene, svg.as_deref(), json),
         Command::Drafting {
             scene,
@@ -587,6 +602,31 @@ fn drafting_cmd(
             }
         })?;
     say_report(json, &report, render::drafting_table_text)?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `serve`: the live preview, until the process is stopped.
+fn serve_cmd(path: &Path, port: u16, bind: std::net::IpAddr) -> Result<ExitCode, Fail> {
+    if !path.exists() {
+        return Err(Fail(format!("{}: no such scene or folder", path.display())));
+    }
+    let listener = std::net::TcpListener::bind((bind, port))
+        .map_err(|e| Fail(format!("--port {port}: cannot listen on {bind}: {e}")))?;
+    let addr = listener
+        .local_addr()
+        .map_err(|e| Fail(format!("--port {port}: {e}")))?;
+    let site = graphostatik::serve::Site::new(path, bind.is_loopback(), addr.port())
+        .map_err(|e| Fail(format!("{}: {e}", path.display())))?;
+    if !bind.is_loopback() {
+        eprintln!(
+            "warning: listening on {bind}: anyone who reaches this machine can read the scenes"
+        );
+    }
+    say(&format!(
+        "serving {} on http://{addr}/ (Ctrl-C stops)\n",
+        path.display()
+    ))?;
+    graphostatik::serve::run(listener, site);
     Ok(ExitCode::SUCCESS)
 }
 

@@ -156,3 +156,142 @@ fn a_student_pages_through_a_walkthrough_with_the_keyboard() {
     drop(s);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Polls `js` in the page until it returns `want` (the page may be reloading meanwhile).
+fn wait_for(s: &Session, js: &str, want: &serde_json::Value, what: &str) {
+    let t = std::time::Instant::now();
+    loop {
+        let (status, body) = webdriver::http_session(s, "/execute/sync", js);
+        if status == 200 {
+            let v: serde_json::Value = serde_json::from_str(&body).unwrap_or_default();
+            if &v["value"] == want {
+                return;
+            }
+        }
+        assert!(
+            t.elapsed() < std::time::Duration::from_secs(20),
+            "{what}: waited 20 s, last {body}"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(100));
+    }
+}
+
+/// `graphostatik serve` stopped when the test ends.
+struct Server(std::process::Child);
+
+impl Drop for Server {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+#[test]
+fn an_author_edits_a_scene_and_moves_a_slider_in_the_live_preview() {
+    use serde_json::json;
+    use std::io::BufRead;
+    let Some(browser) = browser_or_skip("serve") else {
+        return;
+    };
+    let dir = tmp("serve");
+    let scene = dir.join("funicular.json");
+    let good = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lh_abb22_funicular.json"),
+    )
+    .unwrap();
+    std::fs::write(&scene, &good).unwrap();
+    let mut child = Command::new(bin())
+        .args(["serve", "--port", "0"])
+        .arg(&dir)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut first = String::new();
+    std::io::BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut first)
+        .unwrap();
+    let server = Server(child);
+    let base = first
+        .split_whitespace()
+        .find(|w| w.starts_with("http://127.0.0.1:"))
+        .unwrap_or_else(|| panic!("no address in {first:?}"))
+        .trim_end_matches('/')
+        .to_string();
+    let s = Session::start(&browser, &dir.join("profile"));
+    s.goto(&format!("{base}/scene/funicular"));
+    assert!(s.text("#wt-count").starts_with("step 1 / "));
+    assert!(s.text("#wt-sliders").contains("direction of F2"));
+    // A slider replays the construction at its new value.
+    s.script(
+        "var i = document.querySelector('#wt-sliders input[name=s1]'); i.value = '800';\
+         i.dispatchEvent(new Event('change', { bubbles: true })); return 0;",
+    );
+    wait_for(
+        &s,
+        "return window.location.search.indexOf('s1=800') >= 0 && !!document.getElementById('wt-count');",
+        &json!(true),
+        "the page replayed at the slider's value",
+    );
+    assert_eq!(
+        s.script("return document.querySelector('#wt-sliders input[name=s1]').value;"),
+        json!("800")
+    );
+    // The step shown is kept in the address, so a replay stays on it.
+    s.keys("\u{E010}"); // End
+    let last = s.text("#wt-count");
+    s.script(
+        "var i = document.querySelector('#wt-sliders input[name=s0]'); i.value = '250';\
+         i.dispatchEvent(new Event('change', { bubbles: true })); return 0;",
+    );
+    wait_for(
+        &s,
+        "return window.location.search.indexOf('s0=250') >= 0 && !!document.getElementById('wt-count');",
+        &json!(true),
+        "the second slider",
+    );
+    assert_eq!(s.text("#wt-count"), last);
+    let png = s.screenshot();
+    keep_screenshot(&png, "serve.png", &dir);
+    // An edit reloads the page.
+    std::fs::write(
+        &scene,
+        good.replace("Funicular polygon:", "Seileck, edited:"),
+    )
+    .unwrap();
+    wait_for(
+        &s,
+        "return document.querySelector('h1').textContent.indexOf('Seileck, edited:') === 0;",
+        &json!(true),
+        "the edited title",
+    );
+    // A bad edit shows its line and column over the last good figure.
+    std::fs::write(&scene, good.replace("\"kg\": 600", "\"kg\": 600,,")).unwrap();
+    wait_for(
+        &s,
+        "var e = document.getElementById('wt-error'); return !!e && /funicular.json:\\d+:\\d+/.test(e.textContent)\
+         && document.querySelectorAll('#wt-figure g[data-step]').length > 10;",
+        &json!(true),
+        "the error line over the last good figure",
+    );
+    // A bad field is named.
+    std::fs::write(&scene, good.replace("\"kg\": 600", "\"kg\": \"600\"")).unwrap();
+    wait_for(
+        &s,
+        "var e = document.getElementById('wt-error'); return !!e && e.textContent.indexOf('forces[1]') >= 0;",
+        &json!(true),
+        "the field named",
+    );
+    std::fs::write(&scene, &good).unwrap();
+    wait_for(
+        &s,
+        "return !document.getElementById('wt-error') && !!document.getElementById('wt-count');",
+        &json!(true),
+        "the error gone once the scene is mended",
+    );
+    let errors = s.console_errors();
+    assert!(errors.is_empty(), "console errors: {errors:?}");
+    drop(s);
+    drop(server);
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -20,4 +20,4 @@ pub use table::{
     check_rows, check_table_json, check_table_text, reference_rows, reference_table_json,
     reference_table_text, CheckRow, ReferenceTableRow,
 };
-pub use walkthrough::{walkthrough, walkthrough_html, Grouping, Page, WalkOptions};
+pub use walkthrough::{html_text, walkthrough, walkthrough_html, Grouping, Page, WalkOptions};

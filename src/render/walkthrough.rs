@@ -37,11 +37,20 @@ pub enum Grouping {
 pub struct WalkOptions {
     /// How the steps are paged.
     pub grouping: Grouping,
-    /// Extra HTML put after the page's own script (the live preview's reload and sliders);
-    /// the caller escapes what it puts there.
+    /// Extra HTML put after the page's own script (the live preview's reload script); the
+    /// caller escapes what it puts there.
     pub extra: String,
+    /// HTML put at the top of the side panel (the live preview's sliders); the caller escapes
+    /// what it puts there.
+    pub controls: String,
     /// An error line shown above the figure (the live preview's last failed edit).
     pub error: Option<String>,
+}
+
+/// Text shown literally in HTML: markup escaped (`<`, `>`, `&`, both quotes), characters XML
+/// forbids (NUL, most control characters) replaced by U+FFFD.
+pub fn html_text(s: &str) -> String {
+    html_escape(s)
 }
 
 pub(super) fn html_escape(s: &str) -> String {
@@ -108,13 +117,14 @@ pub fn walkthrough_html(meta: &FigureMeta, board: &Board, opts: &WalkOptions) ->
          <title>{title}: step by step</title>\n<style>\n{css}</style>\n</head>\n<body>\n\
          <header><h1>{title}</h1><p class=\"wt-source\">{source}</p></header>\n{error}\
          <main>\n<section id=\"wt-figure\" aria-label=\"construction\">\n{svg}</section>\n\
-         <aside id=\"wt-side\">\n{nav}<div id=\"wt-now\" aria-live=\"polite\"></div>\n\
+         <aside id=\"wt-side\">\n{controls}{nav}<div id=\"wt-now\" aria-live=\"polite\"></div>\n\
          <ol id=\"wt-steps\">\n{items}</ol>\n</aside>\n</main>\n\
          <div id=\"wt-print\"></div>\n<script>\n{script}</script>\n{extra}</body>\n</html>\n",
         title = html_escape(&meta.title),
         source = html_escape(&meta.source),
         css = PAGE_CSS,
         nav = NAV,
+        controls = opts.controls,
         script = SCRIPT,
         extra = opts.extra,
     )
@@ -219,6 +229,8 @@ main { display: flex; height: calc(100vh - 4em); }
 #wt-figure svg { width: 100%; height: auto; max-height: 100%; background: #fff; }
 #wt-side { flex: 2; display: flex; flex-direction: column; border-left: 1px solid #ccc; min-width: 18em; }
 #wt-nav { padding: 0.5em; border-bottom: 1px solid #ddd; }
+#wt-sliders { padding: 0.5em; border-bottom: 1px solid #ddd; background: #f7f5ef; }
+#wt-sliders input { vertical-align: middle; width: 14em; }
 #wt-nav button { font: inherit; padding: 0.2em 0.6em; }
 #wt-nav button[aria-pressed="true"] { background: #f3e2df; }
 #wt-count { display: inline-block; min-width: 6em; text-align: center; }
@@ -235,7 +247,7 @@ main { display: flex; height: calc(100vh - 4em); }
 .wt-checks { border-collapse: collapse; font-size: 0.85em; margin-top: 0.4em; }
 .wt-checks td, .wt-checks th { border-top: 1px solid #ddd; padding: 0.15em 0.4em; text-align: right; vertical-align: top; }
 .wt-checks td { white-space: nowrap; }
-.wt-checks td:first-child, .wt-checks th:first-child { text-align: left; white-space: normal; }
+.wt-checks td:first-child, .wt-checks th:first-child { text-align: left; white-space: normal; min-width: 12em; }
 #wt-print { display: none; }
 @media print {
   header, main { display: none; }

@@ -32,6 +32,10 @@ macro_rules! scene_struct {
             /// Free notes on where the numbers come from (not drawn).
             #[serde(default)]
             pub notes: Option<String>,
+            /// What the live preview (`graphostatik serve`) lets an author move: sliders over
+            /// numeric fields of this scene. Not read by the construction.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub preview: Option<$crate::scene::Preview>,
             $($(#[$fm])* pub $field: $ty,)*
         }
 
@@ -53,3 +57,95 @@ macro_rules! scene_struct {
 }
 
 pub(crate) use scene_struct;
+
+/// What the live preview offers to move (`"preview": { "sliders": [ … ] }` in any scene).
+///
+/// ```json
+/// "preview": { "sliders": [
+///   { "field": "forces[1].angle_deg", "min": 200, "max": 340, "step": 1, "label": "direction of F2" }
+/// ] }
+/// ```
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct Preview {
+    /// One slider per numeric field to move; the construction replays at each position.
+    #[serde(default)]
+    pub sliders: Vec<Slider>,
+}
+
+/// A slider of the live preview over one number of the scene.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct Slider {
+    /// The number it moves, written as in error messages: `drawing.pole_kg[0]`,
+    /// `forces[1].angle_deg`, `mechanism.crank_radius_mm`.
+    pub field: String,
+    /// Lowest value.
+    pub min: f64,
+    /// Highest value.
+    pub max: f64,
+    /// Step between values (default: a hundredth of the range).
+    #[serde(default)]
+    pub step: Option<f64>,
+    /// What the slider is called on the page (default: the field).
+    #[serde(default)]
+    pub label: Option<String>,
+}
+
+impl Slider {
+    /// The field as a JSON pointer (`forces[1].angle_deg` → `/forces/1/angle_deg`); `None`
+    /// if it is not a path of names and indices.
+    pub fn pointer(&self) -> Option<String> {
+        let mut out = String::new();
+        for part in self.field.split('.') {
+            let (name, mut rest) = match part.find('[') {
+                Some(i) => (&part[..i], &part[i..]),
+                None => (part, ""),
+            };
+            if name.is_empty() && out.is_empty() {
+                return None;
+            }
+            if !name.is_empty() {
+                out.push('/');
+                out.push_str(&name.replace('~', "~0").replace('/', "~1"));
+            }
+            while let Some(r) = rest.strip_prefix('[') {
+                let (index, tail) = r.split_once(']')?;
+                index.parse::<usize>().ok()?;
+                out.push('/');
+                out.push_str(index);
+                rest = tail;
+            }
+            if !rest.is_empty() {
+                return None;
+            }
+        }
+        (!out.is_empty()).then_some(out)
+    }
+
+    /// The step, given or a hundredth of the range.
+    pub fn step(&self) -> f64 {
+        self.step.unwrap_or((self.max - self.min) / 100.0)
+    }
+
+    /// Why the slider cannot be used, if it cannot: a range that is not finite and
+    /// increasing, a step that is not positive, a field that is not a path.
+    pub fn problem(&self) -> Option<String> {
+        if !(self.min.is_finite() && self.max.is_finite() && self.min < self.max) {
+            return Some(format!("min {} must lie below max {}", self.min, self.max));
+        }
+        let step = self.step();
+        if !(step.is_finite() && step > 0.0) {
+            return Some(format!("step {step} must be positive"));
+        }
+        if self.pointer().is_none() {
+            return Some(format!(
+                "`{}` is not a field path such as forces[1].angle_deg",
+                crate::fmt::clip(&self.field, 80)
+            ));
+        }
+        None
+    }
+}

@@ -62,6 +62,7 @@ pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,
 };
 pub use four_bar::{FourBarDrawingSpec, FourBarOutput, FourBarProblem, FourBarScene, LinksSpec};
+pub use header::{Preview, Slider};
 pub use offset_crank::{OffsetDrawingSpec, OffsetOutput, OffsetProblem, OffsetScene};
 pub use procedure::{parse_scene, scene_field, Procedure, SceneHeader, SchemaType};
 #[cfg(feature = "schema")]

@@ -240,6 +240,18 @@ impl Session {
     }
 }
 
+/// Runs a script in the session without failing on an error (the page may be reloading):
+/// the status and the body.
+pub fn http_session(s: &Session, path: &str, js: &str) -> (u16, String) {
+    let url = format!("/session/{}{path}", s.id);
+    http(
+        s.port,
+        "POST",
+        &url,
+        Some(&json!({ "script": js, "args": [] })),
+    )
+}
+
 impl Drop for Session {
     fn drop(&mut self) {
         let _ = http(self.port, "DELETE", &format!("/session/{}", self.id), None);

@@ -1,0 +1,447 @@
+//! The live preview of `graphostatik serve SCENE|DIR`: a small HTTP server on loopback that
+//! shows each scene's walk-through, reloads it when the scene file changes, keeps the last
+//! good figure under the error line of an invalid edit, and moves the numbers the scene
+//! declares in `preview.sliders`, replaying the construction at each position.
+//!
+//! It reads only the scene it was given, or the `*.json` files of the folder it was given,
+//! looked up by name (a request never names a path), and answers only GET. Bound to
+//! 127.0.0.1 unless told otherwise; a request whose `Host` is not this machine's loopback name
+//! is refused while bound there (DNS rebinding).
+
+use crate::protocol::{Board, FigureMeta};
+use crate::render::{walkthrough_html, WalkOptions};
+use crate::scene::{AnyScene, Preview};
+use std::collections::HashMap;
+use std::io::{BufRead, BufReader, Write};
+use std::net::{TcpListener, TcpStream};
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
+
+/// How often the page asks whether its scene changed (ms).
+pub const POLL_MS: u32 = 500;
+/// Longest request head read (bytes).
+const MAX_HEAD: usize = 16 * 1024;
+
+/// What the server serves: one scene file, or the `*.json` of one folder.
+#[derive(Debug, Clone)]
+pub struct Site {
+    root: PathBuf,
+    single: bool,
+    /// Whether the listener is on loopback (then only loopback host names are answered).
+    loopback: bool,
+    port: u16,
+    last_good: Arc<Mutex<HashMap<String, Good>>>,
+}
+
+/// The last construction of a scene that succeeded: shown under the error of a bad edit.
+#[derive(Debug, Clone)]
+struct Good {
+    meta: FigureMeta,
+    board: Board,
+    controls: String,
+}
+
+/// An HTTP answer.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Answer {
+    /// Status code.
+    pub status: u16,
+    /// Content type.
+    pub content_type: &'static str,
+    /// Body.
+    pub body: String,
+}
+
+impl Answer {
+    fn html(body: String) -> Answer {
+        Answer {
+            status: 200,
+            content_type: "text/html; charset=utf-8",
+            body,
+        }
+    }
+    fn text(status: u16, body: impl Into<String>) -> Answer {
+        Answer {
+            status,
+            content_type: "text/plain; charset=utf-8",
+            body: body.into(),
+        }
+    }
+}
+
+impl Site {
+    /// A site for `path` (a scene file or a folder of scenes) behind a listener on `port`.
+    pub fn new(path: &Path, loopback: bool, port: u16) -> std::io::Result<Site> {
+        let meta = std::fs::metadata(path)?;
+        Ok(Site {
+            root: path.to_path_buf(),
+            single: meta.is_file(),
+            loopback,
+            port,
+            last_good: Default::default(),
+        })
+    }
+
+    /// The scenes by name (file stem), read from the folder now, so that a new file shows.
+    fn scenes(&self) -> Vec<(String, PathBuf)> {
+        let files: Vec<PathBuf> = if self.single {
+            vec![self.root.clone()]
+        } else {
+            let mut v: Vec<PathBuf> = std::fs::read_dir(&self.root)
+                .map(|d| {
+                    d.flatten()
+                        .map(|e| e.path())
+                        .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "json"))
+                        .collect()
+                })
+                .unwrap_or_default();
+            v.sort();
+            v
+        };
+        files
+            .into_iter()
+            .filter_map(|p| Some((p.file_stem()?.to_str()?.to_string(), p)))
+            .collect()
+    }
+
+    fn scene(&self, name: &str) -> Option<PathBuf> {
+        self.scenes()
+            .into_iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, p)| p)
+    }
+
+    /// The answer to `GET target` with this `Host` header.
+    pub fn answer(&self, target: &str, host: Option<&str>) -> Answer {
+        if self.loopback && !host.is_some_and(|h| self.is_loopback_host(h)) {
+            return Answer::text(421, "this preview answers only on its loopback address");
+        }
+        let (path, query) = target.split_once('?').unwrap_or((target, ""));
+        if path == "/" {
+            return self.index();
+        }
+        if path == "/favicon.ico" {
+            // No icon, and no 404 in the browser's console for it.
+            return Answer::text(204, "");
+        }
+        if let Some(name) = path.strip_prefix("/scene/") {
+            let name = percent_decode(name);
+            return match self.scene(&name) {
+                Some(file) => self.page(&name, &file, query),
+                None => Answer::text(404, "no such scene"),
+            };
+        }
+        if let Some(name) = path.strip_prefix("/version/") {
+            let name = percent_decode(name);
+            return match self.scene(&name) {
+                Some(file) => Answer::text(200, version(&file)),
+                None => Answer::text(404, "no such scene"),
+            };
+        }
+        Answer::text(404, "not found")
+    }
+
+    fn is_loopback_host(&self, host: &str) -> bool {
+        let port = format!(":{}", self.port);
+        ["127.0.0.1", "localhost", "[::1]"]
+            .iter()
+            .any(|h| host == *h || host.strip_suffix(port.as_str()) == Some(*h))
+    }
+
+    fn index(&self) -> Answer {
+        let scenes = self.scenes();
+        if self.single {
+            if let Some((name, file)) = scenes.first() {
+                return self.page(name, file, "");
+            }
+        }
+        let mut items = String::new();
+        for (name, _) in &scenes {
+            let n = crate::render::html_text(name);
+            let href = percent_encode(name);
+            items.push_str(&format!("<li><a href=\"/scene/{href}\">{n}</a></li>\n"));
+        }
+        Answer::html(format!(
+            "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>graphostatik \
+             preview</title></head>\n<body style=\"font-family: Georgia, serif\"><h1>Scenes in {}</h1>\n\
+             <ul>\n{items}</ul>\n</body></html>\n",
+            crate::render::html_text(&self.root.display().to_string())
+        ))
+    }
+
+    /// A scene's walk-through with the reload script and its sliders; on a bad edit, the
+    /// error line over the last good construction.
+    fn page(&self, name: &str, file: &Path, query: &str) -> Answer {
+        let token = version(file);
+        let built = build(file, query);
+        let mut good = self.last_good.lock().unwrap_or_else(|e| e.into_inner());
+        let (shown, error) = match built {
+            Ok(g) => {
+                good.insert(name.to_string(), g.clone());
+                (Some(g), None)
+            }
+            Err(e) => (good.get(name).cloned(), Some(e)),
+        };
+        drop(good);
+        let extra = reload_script(name, &token);
+        match shown {
+            Some(g) => Answer::html(walkthrough_html(
+                &g.meta,
+                &g.board,
+                &WalkOptions {
+                    controls: g.controls,
+                    extra,
+                    error,
+                    ..Default::default()
+                },
+            )),
+            None => Answer::html(format!(
+                "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{t}</title>\
+                 </head>\n<body><p id=\"wt-error\" role=\"alert\" style=\"font-family: monospace; \
+                 color: #8a1d12\">{e}</p>\n{extra}</body></html>\n",
+                t = crate::render::html_text(name),
+                e = crate::render::html_text(error.as_deref().unwrap_or_default()),
+            )),
+        }
+    }
+}
+
+/// Reads, patches with the slider values of `query` (`s0=…&s1=…`), parses and constructs a
+/// scene; the error as one line naming the file and the field.
+fn build(file: &Path, query: &str) -> Result<Good, String> {
+    let origin = file.display().to_string();
+    let text = std::fs::read_to_string(file).map_err(|e| format!("{origin}: {e}"))?;
+    let mut value: serde_json::Value = serde_json::from_str(&text)
+        .map_err(|e| format!("{origin}:{}:{}: {e}", e.line(), e.column()))?;
+    let preview: Option<Preview> = match value.get("preview") {
+        Some(p) => {
+            Some(serde_json::from_value(p.clone()).map_err(|e| format!("{origin}: preview: {e}"))?)
+        }
+        None => None,
+    };
+    let sliders = preview.map(|p| p.sliders).unwrap_or_default();
+    let asked = slider_values(query);
+    let mut current = Vec::with_capacity(sliders.len());
+    for (i, s) in sliders.iter().enumerate() {
+        let field = format!("{origin}: preview.sliders[{i}]");
+        if let Some(why) = s.problem() {
+            return Err(format!("{field}: {why}"));
+        }
+        let ptr = s.pointer().unwrap_or_default();
+        let Some(slot) = value.pointer_mut(&ptr) else {
+            return Err(format!("{field}.field: the scene has no `{}`", s.field));
+        };
+        let Some(v) = slot.as_f64() else {
+            return Err(format!("{field}.field: `{}` is not a number", s.field));
+        };
+        let v = asked.get(&i).copied().map_or(v, |a| a.clamp(s.min, s.max));
+        *slot = serde_json::json!(v);
+        current.push(v);
+    }
+    let patched = serde_json::to_string(&value).map_err(|e| format!("{origin}: {e}"))?;
+    let p = AnyScene::from_json(&patched, &origin)
+        .map_err(|e| e.to_string())?
+        .problem();
+    let board = p.construct(true).map_err(|e| match p.error_field(&e) {
+        Some(f) => format!("{origin}: {f}: {e}"),
+        None => format!("{origin}: {e}"),
+    })?;
+    Ok(Good {
+        meta: p.figure_meta(),
+        board,
+        controls: slider_form(&sliders, &current),
+    })
+}
+
+/// `s0=1.5&s1=-2` → {0: 1.5, 1: -2}; anything else is ignored.
+fn slider_values(query: &str) -> HashMap<usize, f64> {
+    query
+        .split('&')
+        .filter_map(|kv| {
+            let (k, v) = kv.split_once('=')?;
+            let i = k.strip_prefix('s')?.parse().ok()?;
+            let v: f64 = percent_decode(v).parse().ok()?;
+            v.is_finite().then_some((i, v))
+        })
+        .collect()
+}
+
+/// The sliders as a form: moving one replays the construction at the new value.
+fn slider_form(sliders: &[crate::scene::Slider], current: &[f64]) -> String {
+    if sliders.is_empty() {
+        return String::new();
+    }
+    let mut f = String::from("<form id=\"wt-sliders\">");
+    for (i, (s, v)) in sliders.iter().zip(current).enumerate() {
+        let label = crate::render::html_text(s.label.as_deref().unwrap_or(&s.field));
+        f.push_str(&format!(
+            "<label>{label} <input type=\"range\" name=\"s{i}\" min=\"{}\" max=\"{}\" step=\"{}\" \
+             value=\"{v}\"> <output>{v}</output></label><br>",
+            s.min,
+            s.max,
+            s.step()
+        ));
+    }
+    f.push_str("</form>\n");
+    f
+}
+
+/// The page's live part: it asks for the scene's version and reloads when it changes (the
+/// step shown is kept in the address); a slider's new value replays the construction.
+fn reload_script(name: &str, token: &str) -> String {
+    let name = serde_json::to_string(&percent_encode(name)).unwrap_or_default();
+    let token = serde_json::to_string(token).unwrap_or_default();
+    format!(
+        "<script>\n(function () {{\n'use strict';\nvar name = {name}, token = {token};\n\
+         setInterval(function () {{\n  fetch('/version/' + name, {{ cache: 'no-store' }})\n\
+         .then(function (r) {{ return r.ok ? r.text() : token; }})\n\
+         .then(function (t) {{ if (t !== token) window.location.reload(); }})\n\
+         .catch(function () {{}});\n}}, {POLL_MS});\n\
+         var form = document.getElementById('wt-sliders');\nif (form) {{\n\
+         form.addEventListener('input', function (e) {{\n\
+         var o = e.target.parentNode.querySelector('output'); if (o) o.textContent = e.target.value; }});\n\
+         form.addEventListener('change', function () {{\n\
+         var q = new URLSearchParams(new FormData(form)).toString();\n\
+         window.location.search = q; }});\n}}\n}})();\n</script>\n"
+    )
+}
+
+/// A token that changes when the file does (length and modification time).
+fn version(file: &Path) -> String {
+    match std::fs::metadata(file) {
+        Ok(m) => {
+            let t = m
+                .modified()
+                .ok()
+                .and_then(|t| t.duration_since(std::time::UNIX_EPOCH).ok())
+                .map_or(0, |d| d.as_nanos());
+            format!("{:x}-{t:x}", m.len())
+        }
+        Err(_) => "missing".into(),
+    }
+}
+
+fn percent_decode(s: &str) -> String {
+    let b = s.as_bytes();
+    let mut out = Vec::with_capacity(b.len());
+    let mut i = 0;
+    while i < b.len() {
+        let hex = |c: u8| (c as char).to_digit(16);
+        match b[i] {
+            b'%' if i + 2 < b.len() => match (hex(b[i + 1]), hex(b[i + 2])) {
+                (Some(h), Some(l)) => {
+                    out.push((h * 16 + l) as u8);
+                    i += 3;
+                    continue;
+                }
+                _ => out.push(b'%'),
+            },
+            b'+' => out.push(b' '),
+            c => out.push(c),
+        }
+        i += 1;
+    }
+    String::from_utf8_lossy(&out).into_owned()
+}
+
+fn percent_encode(s: &str) -> String {
+    s.bytes()
+        .map(|c| match c {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'_' | b'.' | b'~' => {
+                (c as char).to_string()
+            }
+            _ => format!("%{c:02X}"),
+        })
+        .collect()
+}
+
+/// Serves `site` on `listener` until the process ends: one thread per connection, one
+/// request each.
+pub fn run(listener: TcpListener, site: Site) {
+    for stream in listener.incoming().flatten() {
+        let site = site.clone();
+        std::thread::spawn(move || {
+            let _ = handle(stream, &site);
+        });
+    }
+}
+
+fn handle(mut stream: TcpStream, site: &Site) -> std::io::Result<()> {
+    stream.set_read_timeout(Some(Duration::from_secs(10)))?;
+    let mut reader = BufReader::new(stream.try_clone()?);
+    let mut head = Vec::new();
+    let mut line = String::new();
+    while head.len() < MAX_HEAD {
+        line.clear();
+        if reader.read_line(&mut line)? == 0 || line == "\r\n" || line == "\n" {
+            break;
+        }
+        head.push(line.trim_end().to_string());
+    }
+    let mut parts = head.first().map(|l| l.split(' ')).into_iter().flatten();
+    let (method, target) = (parts.next().unwrap_or(""), parts.next().unwrap_or(""));
+    let host = head.iter().skip(1).find_map(|h| {
+        let (k, v) = h.split_once(':')?;
+        k.eq_ignore_ascii_case("host").then(|| v.trim().to_string())
+    });
+    let answer = match method {
+        "GET" | "HEAD" => site.answer(target, host.as_deref()),
+        _ => Answer::text(405, "only GET"),
+    };
+    let reason = match answer.status {
+        200 => "OK",
+        204 => "No Content",
+        404 => "Not Found",
+        405 => "Method Not Allowed",
+        _ => "Misdirected Request",
+    };
+    let body = if method == "HEAD" { "" } else { &answer.body };
+    write!(
+        stream,
+        "HTTP/1.1 {} {reason}\r\nContent-Type: {}\r\nContent-Length: {}\r\nCache-Control: no-store\r\n\
+         X-Content-Type-Options: nosniff\r\nConnection: close\r\n\r\n{body}",
+        answer.status,
+        answer.content_type,
+        answer.body.len()
+    )?;
+    stream.flush()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slider_fields_become_json_pointers() {
+        let s = |f: &str| crate::scene::Slider {
+            field: f.into(),
+            min: 0.0,
+            max: 1.0,
+            step: None,
+            label: None,
+        };
+        assert_eq!(
+            s("forces[1].angle_deg").pointer().unwrap(),
+            "/forces/1/angle_deg"
+        );
+        assert_eq!(
+            s("drawing.pole_kg[0]").pointer().unwrap(),
+            "/drawing/pole_kg/0"
+        );
+        assert_eq!(s("a[0][2]").pointer().unwrap(), "/a/0/2");
+        for bad in ["", "[0]", "a[x]", "a[0", "a]b", ".a"] {
+            assert!(s(bad).pointer().is_none(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn queries_and_names_decode() {
+        assert_eq!(percent_decode("a%20b%2Fc+d"), "a b/c d");
+        assert_eq!(percent_decode("100%"), "100%");
+        assert_eq!(percent_encode("a b/ü"), "a%20b%2F%C3%BC");
+        let v = slider_values("s0=1.5&s1=-2e%2B3&x=1&s2=nan&s3=inf");
+        assert_eq!(v.len(), 2);
+        assert_eq!(v[&1], -2000.0);
+    }
+}
