@@ -104,12 +104,16 @@ impl Slider {
                 Some(i) => (&part[..i], &part[i..]),
                 None => (part, ""),
             };
-            if name.is_empty() && out.is_empty() {
+            if (name.is_empty() && out.is_empty())
+                || !name
+                    .bytes()
+                    .all(|c| c.is_ascii_alphanumeric() || c == b'_' || c == b'$')
+            {
                 return None;
             }
             if !name.is_empty() {
                 out.push('/');
-                out.push_str(&name.replace('~', "~0").replace('/', "~1"));
+                out.push_str(name);
             }
             while let Some(r) = rest.strip_prefix('[') {
                 let (index, tail) = r.split_once(']')?;
