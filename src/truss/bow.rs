@@ -264,7 +264,7 @@ impl<'a> Found<'a> {
         Found {
             ctx,
             space_of_half,
-            reference: check_reference(ctx.maxload, ctx.ext),
+            reference: member_check_reference(ctx),
             forces: vec![None; n],
             ids: vec![crate::protocol::ObjId::NONE; n],
             plan_mm: vec![0.0; n],

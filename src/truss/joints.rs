@@ -11,7 +11,7 @@
 
 use super::labels::member_label;
 use super::layout::{grow, EMPTY};
-use super::plan::{check_member, check_reference, plan_result, CaseResult, PlanContext};
+use super::plan::{check_member, member_check_reference, plan_result, CaseResult, PlanContext};
 use crate::kernel::tolerance::JOINT_CUT_SIN_EPS;
 use crate::kernel::{Point, Vector};
 use crate::protocol::{note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};
@@ -153,7 +153,7 @@ impl<'a> Polygons<'a> {
             ctx,
             members_at,
             ext_at,
-            reference: check_reference(ctx.maxload, ctx.ext),
+            reference: member_check_reference(ctx),
             force: vec![None; t.members.len()],
             ids: vec![crate::protocol::ObjId::NONE; t.members.len()],
             plan_mm: vec![0.0; t.members.len()],

@@ -153,8 +153,15 @@ pub(crate) fn check_reference(maxload: f64, ext: &External) -> f64 {
     maxload.max(ext_max(ext))
 }
 
-/// Checks a member force read off a plan against the sparse solve, if it was made, at the
-/// larger of the case's scale and the solve's own (its largest force).
+/// The scale a member force checked against the sparse solve is judged at: the larger of the
+/// case's scale and the solve's own (its largest force). Computed once per case.
+pub(crate) fn member_check_reference(ctx: &PlanContext) -> f64 {
+    let case = check_reference(ctx.maxload, ctx.ext);
+    ctx.sol.map_or(case, |s| case.max(s.scale()))
+}
+
+/// Checks a member force read off a plan against the sparse solve, if it was made, at
+/// `reference` ([`member_check_reference`]).
 pub(crate) fn check_member(
     b: &mut Board,
     value: &H<f64>,
@@ -168,7 +175,7 @@ pub(crate) fn check_member(
             "member force (tension +)",
             "kg",
             "joint equilibrium, sparse LU (faer)",
-            reference.max(sol.scale()),
+            reference,
             || sol.members[m],
         );
     }
