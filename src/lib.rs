@@ -41,11 +41,13 @@
 //!    and funicular polygons, beams, centroids, shafts (LH I A, C); [`truss`], determinacy,
 //!    reactions, Cremona plans, Ritter sections, counter-diagonals, envelopes (LH I B);
 //!    [`dynamics`], an engine's net pressure, turning force and flywheel (LH II, KG XIV B.4);
-//!    [`mechanisms`], the other mechanisms of KG XIV (the scotch yoke);
+//!    [`mechanisms`], the other mechanisms of KG XIV (scotch yoke, slotted link, offset
+//!    crank, four-bar);
 //! 4. [`scene`]: the JSON scene format, the [`scene::Procedure`] trait and its registry;
-//! 5. [`render`]: textbook-style SVG, one layer per step, walk-through pages, the check
-//!    table and the tables of member forces;
-//! 6. the `graphostatik` command line (feature `cli`, on by default).
+//! 5. [`render`]: textbook-style SVG, one layer per step, the walk-through page, the check
+//!    table, the tables of member forces, and PNG, PDF and TikZ exports (feature `export`);
+//! 6. `serve`, the live preview, and the `graphostatik` command line (feature `cli`, on by
+//!    default).
 //!
 //! [`prelude`] gathers what a construction in Rust needs; [`fmt`] and [`io`] are helpers
 //! (fixed number formatting, atomic writes).

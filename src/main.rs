@@ -320,27 +320,33 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
         }
         Command::Forces { scene, format } => forces_cmd(&scene, format),
         Command::Procedures => procedures_cmd(),
-        Command::Completions { shell } => {
-            use clap::CommandFactory;
-            let mut out = Vec::new();
-            clap_complete::generate(shell, &mut Cli::command(), "graphostatik", &mut out);
-            say(&String::from_utf8_lossy(&out))?;
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Man => {
-            use clap::CommandFactory;
-            let mut out = Vec::new();
-            clap_mangen::Man::new(Cli::command())
-                .render(&mut out)
-                .map_err(|e| Fail(format!("the manual page: {e}")))?;
-            say(&String::from_utf8_lossy(&out))?;
-            Ok(ExitCode::SUCCESS)
-        }
+        Command::Completions { shell } => completions_cmd(shell),
+        Command::Man => man_cmd(),
         Command::Schema => {
             say(&(graphostatik::scene::schema_json() + "\n"))?;
             Ok(ExitCode::SUCCESS)
         }
     }
+}
+
+/// `completions SHELL`: the completion script, from the command line's own definition.
+fn completions_cmd(shell: clap_complete::Shell) -> Result<ExitCode, Fail> {
+    use clap::CommandFactory;
+    let mut out = Vec::new();
+    clap_complete::generate(shell, &mut Cli::command(), "graphostatik", &mut out);
+    say(&String::from_utf8_lossy(&out))?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `man`: the manual page (roff), from the same definition.
+fn man_cmd() -> Result<ExitCode, Fail> {
+    use clap::CommandFactory;
+    let mut out = Vec::new();
+    clap_mangen::Man::new(Cli::command())
+        .render(&mut out)
+        .map_err(|e| Fail(format!("the manual page: {e}")))?;
+    say(&String::from_utf8_lossy(&out))?;
+    Ok(ExitCode::SUCCESS)
 }
 
 /// A file format `render` writes.

@@ -714,7 +714,9 @@ impl Builder<'_> {
         if request.velocity_instant_centre {
             self.c_instant_centre(i)?;
         }
-        if request.velocity_parallel || request.velocity_instant_centre {
+        // The velocity curve's ordinate is only drawn: a board that does not record has no
+        // figure to draw it in, and no result depends on it.
+        if (request.velocity_parallel || request.velocity_instant_centre) && self.b.is_recording() {
             self.c_point(i)?;
         }
         if request.rod_force || request.guide_force {

@@ -90,7 +90,7 @@ fn page_groups(board: &Board, grouping: Grouping) -> Vec<Vec<&Step>> {
 /// let board = p.construct(true).unwrap();
 /// let pages = graphostatik::render::walkthrough(&p.figure_meta(), &board);
 /// assert_eq!(pages.len(), 1);
-/// assert!(pages[0].contents.contains("data-step=\"1\""));
+/// assert!(pages[0].contents.contains("data-step=\"001\""));
 /// ```
 pub fn walkthrough(meta: &FigureMeta, board: &Board) -> Vec<Page> {
     vec![Page {
