@@ -37,7 +37,7 @@ impl Stroke {
 /// assert_eq!(book_angle(210.0), (Stroke::Return, 30.0));
 /// ```
 pub fn book_angle(theta_deg: f64) -> (Stroke, f64) {
-    let t = theta_deg.rem_euclid(360.0);
+    let t = crate::kernel::angle::wrap_360(theta_deg);
     if t < 180.0 {
         (Stroke::Out, t)
     } else {

@@ -766,8 +766,19 @@ impl Builder<'_> {
         cf::book_angle(self.thetas[i]).0.sign() * self.d.piston_force.at(i)
     }
 
+    /// The frame (centre, piston line, vertical, crank circle, dead centre), built once; the
+    /// fast path is inlined, as every step of every angle asks for it.
+    #[inline(always)]
     fn frame(&mut self) -> Result<&Frame, ConstructionError> {
         if self.frame.is_none() {
+            self.build_frame()?;
+        }
+        Ok(self.frame.as_ref().expect("built above"))
+    }
+
+    #[inline(never)]
+    fn build_frame(&mut self) -> Result<(), ConstructionError> {
+        {
             let b = &mut *self.b;
             let o = b.point(self.origin, Label::plain("O"), Role::Given, N_CENTRE);
             let piston_line = b.line_dir(
@@ -833,7 +844,7 @@ impl Builder<'_> {
                 x0,
             });
         }
-        Ok(self.frame.as_ref().expect("set above"))
+        Ok(())
     }
 
     fn pin(&mut self, i: usize) -> Result<H<Point>, ConstructionError> {

@@ -217,6 +217,7 @@ impl Board {
     }
 
     /// A point as the draftsman marks it (as it is, without a hand).
+    #[inline]
     fn mark(&mut self, p: Point) -> Point {
         match self.jitter.as_mut() {
             Some(j) => j.mark(p),
@@ -225,6 +226,7 @@ impl Board {
     }
 
     /// A line as the draftsman rules it: its origin marked, its direction turned.
+    #[inline]
     fn rule(&mut self, l: Line) -> Line {
         match self.jitter.as_mut() {
             Some(j) => Line {
@@ -236,6 +238,7 @@ impl Board {
     }
 
     /// A length (mm) as the draftsman sets or reads it on the scale rule.
+    #[inline]
     fn read(&mut self, mm: f64) -> f64 {
         match self.jitter.as_mut() {
             Some(j) => j.read(mm),
@@ -257,6 +260,7 @@ impl Board {
             .unwrap_or_default()
     }
 
+    #[inline]
     fn set_tr(&mut self, id: ObjId, t: impl FnOnce(&Board) -> Track) {
         if self.recording && id != ObjId::NONE {
             let t = t(self);
@@ -271,6 +275,7 @@ impl Board {
             .unwrap_or_default()
     }
 
+    #[inline]
     fn set_shadow(&mut self, id: ObjId, f: impl FnOnce(&Board) -> Shadow) {
         if self.shadows.is_some() && id != ObjId::NONE {
             let v = f(self);
@@ -399,9 +404,18 @@ impl Board {
         StepId(self.next_step + 1)
     }
 
+    /// Counts a step and, on a recording board, files it. Inlined, so that a board that does
+    /// not record pays only the count for it (the construction's hot path).
+    #[inline]
     fn begin(&mut self, kind: StepKind, note: &Note, inputs: &[ObjId]) {
         self.next_step += 1;
         if self.recording {
+            self.file_step(kind, note, inputs);
+        }
+    }
+
+    fn file_step(&mut self, kind: StepKind, note: &Note, inputs: &[ObjId]) {
+        {
             self.steps.push(Step {
                 id: StepId(self.next_step),
                 kind,
@@ -420,10 +434,15 @@ impl Board {
         }
     }
 
+    #[inline]
     fn add(&mut self, label: Label, role: Role, geom: impl FnOnce() -> Geom) -> ObjId {
         if !self.recording {
             return ObjId::NONE;
         }
+        self.file_object(label, role, geom())
+    }
+
+    fn file_object(&mut self, label: Label, role: Role, geom: Geom) -> ObjId {
         let id = ObjId(self.objects.len() as u32 + 1);
         let step = StepId(self.next_step);
         self.tracks.push(Track::default());
@@ -435,7 +454,7 @@ impl Board {
             step,
             label,
             role,
-            geom: geom(),
+            geom,
         });
         if let Some(s) = self.steps.last_mut() {
             s.outputs.push(id);
@@ -443,6 +462,7 @@ impl Board {
         id
     }
 
+    #[inline]
     fn last_step(&mut self) -> Option<&mut Step> {
         if self.recording {
             self.steps.last_mut()
@@ -453,10 +473,15 @@ impl Board {
 
     /// Grows the drawn extent of a line, or adds a compass mark on a circle, so that the
     /// figure shows the line up to the point constructed on it.
+    #[inline]
     fn touch(&mut self, on: ObjId, p: &Point) {
         if !self.recording || on == ObjId::NONE {
             return;
         }
+        self.touch_recorded(on, p);
+    }
+
+    fn touch_recorded(&mut self, on: ObjId, p: &Point) {
         let idx = on.0 as usize - 1;
         if let Some(obj) = self.objects.get_mut(idx) {
             match &mut obj.geom {
@@ -608,6 +633,7 @@ impl Board {
     }
 
     /// The bound and reference of a line slid along `line` to `p` (turned 90°: `turned`).
+    #[inline]
     fn slid(&mut self, id: ObjId, line: &H<Line>, p: &H<Point>, turned: bool) {
         self.set_tr(id, |b| b.model.slid(&b.tr(line.id), &b.tr(p.id)));
         self.set_shadow(id, |b| {
