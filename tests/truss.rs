@@ -1487,3 +1487,109 @@ fn a_long_girder_checks_its_reactions_at_the_scale_of_its_forces() {
         .expect("the pin's horizontal reaction is checked against the solve");
     assert!(solve_scale > 1e-3, "tolerance {solve_scale:e} kg");
 }
+
+/// The pebble game's generic verdict equals the SVD's rank on trusses with members taken out
+/// and put in at random (joints at generic positions: the girder's joints jittered), so that
+/// above the SVD's limit the game can stand in for it.
+#[test]
+fn the_pebble_game_agrees_with_the_rank_on_random_trusses() {
+    use graphostatik::truss::pebble::generic;
+    let mut seed = 12345u64;
+    let mut next = |n: usize| {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((seed >> 33) as usize) % n
+    };
+    for trial in 0..60 {
+        let web = [Web::Warren, Web::Pratt, Web::Howe][trial % 3];
+        let mut t = parallel_chord(web, 3 + trial % 5, 1.0, 0.8);
+        for (i, j) in t.joints.iter_mut().enumerate() {
+            j.at.x += 0.013 * ((i * 37 % 11) as f64 - 5.0) / 5.0;
+            j.at.y += 0.011 * ((i * 53 % 13) as f64 - 6.0) / 6.0;
+        }
+        for _ in 0..next(3) {
+            let m = next(t.members.len());
+            t.members.remove(m);
+        }
+        for _ in 0..next(3) {
+            let (a, b) = (next(t.joints.len()), next(t.joints.len()));
+            if a != b
+                && !t
+                    .members
+                    .iter()
+                    .any(|m| m.ends == [a, b] || m.ends == [b, a])
+            {
+                t.members.push(Member {
+                    name: format!("x{a}-{b}"),
+                    ends: [a, b],
+                });
+            }
+        }
+        let g = generic(&t);
+        let k = t.joints.len();
+        let unknowns = t.members.len() + t.reaction_unknowns();
+        // Square systems that are regular skip the SVD: the rank is 2k then.
+        let rank = analyse(&t).rank.unwrap();
+        assert_eq!(g.freedoms, 2 * k - rank, "trial {trial}: freedoms");
+        assert_eq!(g.redundant, unknowns - rank, "trial {trial}: redundant");
+        assert_eq!(g.loose_joint.is_some(), g.freedoms > 0, "trial {trial}");
+    }
+}
+
+/// Above the SVD's limit a truss that is not determinate is refused before its plan, naming
+/// the joint that can move (it used to be found only by the plan stalling, or not at all
+/// for a system with too many members).
+#[test]
+fn a_large_truss_that_is_not_determinate_is_named_without_the_svd() {
+    let n = 1000; // Pratt: 2,000 joints, above DENSE_MAX_JOINTS
+    let base = parallel_chord(Web::Pratt, n, 1.0, 1.0);
+    assert!(base.joints.len() > graphostatik::truss::matrix::DENSE_MAX_JOINTS);
+    assert_eq!(analyse(&base).determinacy, Determinacy::Determinate);
+    // A diagonal of an inner panel out: the square system is short of one member.
+    let mut t = base.clone();
+    let d = t.members.len() - 1;
+    let [a, b] = t.members[d].ends;
+    t.members.remove(d);
+    let Determinacy::Mechanism { joint, freedoms } = analyse(&t).determinacy else {
+        panic!("a mechanism")
+    };
+    assert_eq!(freedoms, 1);
+    let near = |j: usize| (t.joints[j].at.x - t.joints[a].at.x).abs() <= 2.0;
+    assert!(
+        near(joint),
+        "joint {} far from the panel of {a}-{b}",
+        t.joints[joint].name
+    );
+    // The same member moved into another panel as a second diagonal: square, the count
+    // right, and still a mechanism (one panel braced twice, one not at all).
+    let mut t2 = t.clone();
+    // B2-T3 crosses the diagonal T2-B3 of the braced second panel (T(i) is joint n + i).
+    let (p, q) = (2, n + 3);
+    t2.members.push(Member {
+        name: "extra".into(),
+        ends: [p, q],
+    });
+    assert_eq!(
+        t2.members.len() + t2.reaction_unknowns(),
+        2 * t2.joints.len()
+    );
+    assert!(matches!(
+        analyse(&t2).determinacy,
+        Determinacy::Mechanism { freedoms: 1, .. }
+    ));
+    // One member too many: over-determinate by one, not determinate.
+    let mut t3 = base.clone();
+    t3.members.push(Member {
+        name: "extra".into(),
+        ends: [p, q],
+    });
+    assert_eq!(
+        analyse(&t3).determinacy,
+        Determinacy::OverDeterminate { redundant: 1 }
+    );
+    // And the construction refuses the mechanism before drawing, naming the joint.
+    let mut b = Board::new(1000.0, true);
+    let e = construct_truss(&mut b, &t, &case(vec![down(1, 100.0)]), &D).unwrap_err();
+    assert!(e.to_string().contains(&t.joints[joint].name), "{e}");
+}

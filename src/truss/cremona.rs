@@ -40,7 +40,7 @@ pub use super::plan::{CaseResult, ReactionForce, TrussDrawing, ZERO_FORCE_REL};
 
 /// Constructs the truss drawing and, per load case, the reactions and the Cremona plan,
 /// each checked member by member against the sparse solve of the joint equations at every
-/// size; the rank test (a dense SVD) is made up to [`matrix::DENSE_MAX_JOINTS`] joints.
+/// size; the rank test is made at every size (see [`matrix::analyse`]).
 ///
 /// # Errors
 /// A truss that is not determinate, not a plane drawing, or whose plan stalls (three unknown
@@ -125,9 +125,10 @@ fn construct(
     row_top: &mut f64,
     slack: &[[usize; 2]],
 ) -> Result<Vec<CaseResult>, ConstructionError> {
-    // The rank test is dense (an SVD), so it is made up to DENSE_MAX_JOINTS; above, and for
-    // the plan alone, a truss that is not determinate is found by the plan stalling.
-    if checked && t.joints.len() <= matrix::DENSE_MAX_JOINTS {
+    // The rank test at every size: sparse for the usual square system, the SVD for the rest
+    // up to DENSE_MAX_JOINTS, the pebble game above. The plan alone is not tested: a truss
+    // that is not determinate is found by the plan stalling.
+    if checked {
         determinate(t)?;
     }
     let g = plane_drawing(t)?;

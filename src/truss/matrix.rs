@@ -16,7 +16,10 @@
 //! A singular value counts as zero below [`RANK_REL`] × the largest. A square system that
 //! is clearly regular is settled by a sparse LU and inverse iteration at any size, in time
 //! and memory of the order of the truss; every other system goes to the dense SVD, which
-//! costs O(k³) time and O(k²) memory and is made up to [`DENSE_MAX_JOINTS`] joints.
+//! costs O(k³) time and O(k²) memory and is made up to [`DENSE_MAX_JOINTS`] joints. Above,
+//! the pebble game ([`super::pebble`]) decides generic rigidity without linear algebra, and
+//! a square system the sparse test doubts is a mechanism named by its inverse-iteration
+//! motion.
 
 use super::{LoadCase, SupportKind, Truss};
 use crate::kernel::tolerance::REL_TIE_EPS_MOTION;
@@ -117,12 +120,16 @@ pub fn analyse(t: &Truss) -> Analysis {
     }
     // The usual case, a square system that is clearly regular, is settled by the sparse LU
     // at any size; anything doubtful goes to the SVD, which names the joint that can move.
-    if s + r == 2 * k && clearly_regular(t) {
+    let sparse = (s + r == 2 * k).then(|| sparse_test(t));
+    if sparse == Some(Sparse::Regular) {
         out.rank = Some(2 * k);
         out.determinacy = Determinacy::Determinate;
         return out;
     }
     if k > DENSE_MAX_JOINTS {
+        // Too large for the SVD: the pebble game decides generic rigidity, and a square system
+        // that the sparse test doubts is a mechanism named by its inverse-iteration motion.
+        out.determinacy = without_svd(t, sparse);
         return out;
     }
     let a = equilibrium_matrix(t);
@@ -165,13 +172,25 @@ const SPARSE_RANK_MARGIN: f64 = 1e3;
 /// Inverse iteration steps of the sparse test.
 const SPARSE_RANK_STEPS: usize = 8;
 
+/// What the sparse test finds of a square equilibrium matrix.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Sparse {
+    /// Regular beyond doubt.
+    Regular,
+    /// Singular or doubtful; the joint that moves most in the motion inverse iteration found
+    /// (none if the LU itself failed).
+    Doubtful(Option<usize>),
+}
+
 /// Whether the square equilibrium matrix is regular beyond doubt: a sparse LU, σ_max bounded
 /// from above by √(‖A‖₁‖A‖∞), and σ_min estimated by inverse iteration on AAᵀ (each step a
 /// pair of sparse solves). The estimate 1/‖A⁻¹u‖ never lies below σ_min and falls to it within
 /// a few steps where σ_min is far below the next singular value, which is where a truss is a
 /// mechanism; so a matrix is called regular only if the estimate stays
-/// [`SPARSE_RANK_MARGIN`] above [`RANK_REL`] × σ_max at every step. O(fill) time and memory.
-fn clearly_regular(t: &Truss) -> bool {
+/// [`SPARSE_RANK_MARGIN`] above [`RANK_REL`] × σ_max at every step. Where it does not, u is
+/// (nearly) the motion Aᵀu ≈ 0 no member resists, and the joint it moves most is named.
+/// O(fill) time and memory.
+fn sparse_test(t: &Truss) -> Sparse {
     let n = 2 * t.joints.len();
     let triplets = equilibrium_triplets(t);
     let (mut col1, mut row1) = (vec![0.0f64; n], vec![0.0f64; n]);
@@ -183,25 +202,75 @@ fn clearly_regular(t: &Truss) -> bool {
     let norm_inf = row1.iter().cloned().fold(0.0, f64::max);
     let smax = (norm1 * norm_inf).sqrt();
     let Some(lu) = sparse_lu(t, &triplets) else {
-        return false;
+        return Sparse::Doubtful(None);
     };
     use faer::prelude::Solve;
     // A start with every component non-zero and no symmetry of the girder's numbering.
     let mut u = faer::Col::<f64>::from_fn(n, |i| 1.0 + ((i * 7919) % 613) as f64 / 613.0);
+    let mut regular = true;
     for _ in 0..SPARSE_RANK_STEPS {
         let un = u.norm_l2();
         if !(un.is_finite() && un > 0.0) {
-            return false;
+            return Sparse::Doubtful(None);
         }
         u /= un;
         let w = lu.solve(&u);
         let wn = w.norm_l2();
-        if !wn.is_finite() || 1.0 / wn <= SPARSE_RANK_MARGIN * RANK_REL * smax {
-            return false;
+        if !wn.is_finite() {
+            return Sparse::Doubtful(None);
         }
+        regular &= 1.0 / wn > SPARSE_RANK_MARGIN * RANK_REL * smax;
         u = lu.solve_transpose(&w);
     }
-    true
+    if regular {
+        return Sparse::Regular;
+    }
+    let motion: Vec<f64> = u.iter().copied().collect();
+    Sparse::Doubtful(most_moved(&motion, t.joints.len()))
+}
+
+/// The joint with the largest displacement in a motion (x and y interleaved); ties go to the
+/// first joint. `None` if the motion is not finite or zero.
+fn most_moved(motion: &[f64], k: usize) -> Option<usize> {
+    let mut best = (None, 0.0);
+    for j in 0..k {
+        let m = motion[2 * j].hypot(motion[2 * j + 1]);
+        if !m.is_finite() {
+            return None;
+        }
+        if m > best.1 * (1.0 + REL_TIE_EPS_MOTION) {
+            best = (Some(j), m);
+        }
+    }
+    best.0
+}
+
+/// The verdict without the SVD: generic rigidity by the pebble game; a square system the
+/// sparse test doubts is a mechanism even where the game finds it generically rigid (joints
+/// in line, parallel bars), named by its motion.
+fn without_svd(t: &Truss, sparse: Option<Sparse>) -> Determinacy {
+    let (k, s, r) = (t.joints.len(), t.members.len(), t.reaction_unknowns());
+    let g = super::pebble::generic(t);
+    if g.freedoms > 0 {
+        let joint = match sparse {
+            Some(Sparse::Doubtful(Some(j))) => j,
+            _ => g.loose_joint.unwrap_or(0),
+        };
+        return Determinacy::Mechanism {
+            joint,
+            freedoms: g.freedoms,
+        };
+    }
+    match sparse {
+        Some(Sparse::Doubtful(j)) => Determinacy::Mechanism {
+            joint: j.unwrap_or(0),
+            freedoms: 1,
+        },
+        _ if s + r > 2 * k => Determinacy::OverDeterminate {
+            redundant: s + r - 2 * k,
+        },
+        _ => Determinacy::Determinate,
+    }
 }
 
 /// Determinacy by the count alone (LH Gl. 2: s + r against 2k); a mechanism by count names
@@ -235,15 +304,8 @@ fn moving_joint(u: &DMatrix<f64>, sv: &nalgebra::DVector<f64>, k: usize) -> usiz
                 }
             },
         );
-    let col = u.column(imin);
-    let mut best = (0, -1.0);
-    for j in 0..k {
-        let m = col[2 * j].hypot(col[2 * j + 1]);
-        if m > best.1 * (1.0 + REL_TIE_EPS_MOTION) {
-            best = (j, m);
-        }
-    }
-    best.0
+    let col: Vec<f64> = u.column(imin).iter().copied().collect();
+    most_moved(&col, k).unwrap_or(0)
 }
 
 /// Member forces and reaction components of a determinate truss under one load case.

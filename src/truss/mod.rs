@@ -36,6 +36,7 @@ mod labels;
 mod layout;
 pub mod matrix;
 mod notes;
+pub mod pebble;
 mod plan;
 pub mod reactions;
 pub mod redundant;
