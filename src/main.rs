@@ -383,9 +383,8 @@ impl Exports {
     fn new(mut formats: Vec<Format>, dpi: f32) -> Result<Exports, Fail> {
         formats.sort();
         formats.dedup();
-        let (lo, hi) = render::export::DPI_RANGE;
-        if formats.contains(&Format::Png) && !(lo..=hi).contains(&dpi) {
-            return Err(Fail(format!("--dpi: {dpi}: give between {lo} and {hi}")));
+        if formats.contains(&Format::Png) {
+            render::export::check_dpi(dpi).map_err(|e| Fail(format!("--dpi: {e}")))?;
         }
         Ok(Exports { formats, dpi })
     }

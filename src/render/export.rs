@@ -25,6 +25,18 @@ pub const DPI_RANGE: (f32, f32) = (10.0, 1200.0);
 /// Most pixels a PNG may have (about 400 MB of RGBA): beyond, the resolution must come down.
 pub const MAX_PIXELS: u64 = 100_000_000;
 
+/// A PNG resolution within [`DPI_RANGE`], or why not.
+pub fn check_dpi(dpi: f32) -> Result<(), ExportError> {
+    if (DPI_RANGE.0..=DPI_RANGE.1).contains(&dpi) {
+        Ok(())
+    } else {
+        Err(ExportError::Size(format!(
+            "{dpi} dpi: give between {} and {}",
+            DPI_RANGE.0, DPI_RANGE.1
+        )))
+    }
+}
+
 /// Why an export failed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ExportError {
@@ -69,12 +81,7 @@ fn tree(svg: &str) -> Result<usvg::Tree, ExportError> {
 /// assert!(png.starts_with(b"\x89PNG"));
 /// ```
 pub fn png(svg: &str, dpi: f32) -> Result<Vec<u8>, ExportError> {
-    if !(DPI_RANGE.0..=DPI_RANGE.1).contains(&dpi) {
-        return Err(ExportError::Size(format!(
-            "{dpi} dpi: give between {} and {}",
-            DPI_RANGE.0, DPI_RANGE.1
-        )));
-    }
+    check_dpi(dpi)?;
     let t = tree(svg)?;
     // usvg sizes the sheet in CSS pixels (96 per inch).
     let k = dpi / 96.0;
@@ -185,15 +192,9 @@ fn emit(node: &usvg::Node, out: &mut String) {
     }
 }
 
-/// A number of millimetres, rounded to 0.001 mm (and no `-0`).
+/// A number of millimetres, rounded to 0.001 mm as the SVG is (and no `-0`).
 fn mm(x: f32) -> String {
-    let s = format!("{:.3}", x);
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" || s.is_empty() {
-        "0".into()
-    } else {
-        s.into()
-    }
+    crate::fmt::num(f64::from(x), 3)
 }
 
 fn colour(p: &usvg::Paint) -> Option<String> {

@@ -118,7 +118,7 @@ pub fn accuracy_plot_svg(title: &str, sweeps: &[Sweep]) -> String {
     let _ = write!(
         o,
         r#"<text x="{LEFT}" y="18" font-size="12">{}</text>"#,
-        super::walkthrough::html_escape(&crate::fmt::clip(title, 80))
+        super::walkthrough::html_text(&crate::fmt::clip(title, 80))
     );
     axes(&mut o, &f);
     for (k, s) in sweeps.iter().enumerate() {
@@ -190,7 +190,7 @@ fn curve(o: &mut String, f: &Frame, s: &Sweep, colour: &str, k: usize) {
             r#"<circle cx="{x:.1}" cy="{y:.1}" r="2.6" fill="{colour}"/><text x="{:.1}" y="{:.1}" font-size="8" fill="{colour}">{}</text>"#,
             x + 4.0,
             y - 4.0,
-            super::walkthrough::html_escape(label)
+            super::walkthrough::html_text(label)
         );
     }
     let ly = TOP + 14.0 + 30.0 * k as f64;
@@ -200,9 +200,9 @@ fn curve(o: &mut String, f: &Frame, s: &Sweep, colour: &str, k: usize) {
         r#"<path d="M{lx} {ly}h18" stroke="{colour}" stroke-width="1.4"/><text x="{:.1}" y="{:.1}">{}</text><text x="{:.1}" y="{:.1}" font-size="9" fill="{colour}">{}</text>"#,
         lx + 24.0,
         ly + 4.0,
-        super::walkthrough::html_escape(&crate::fmt::clip(&s.knob, 34)),
+        super::walkthrough::html_text(&crate::fmt::clip(&s.knob, 34)),
         lx + 24.0,
         ly + 16.0,
-        super::walkthrough::html_escape(&crate::fmt::clip(&s.quantity, 40))
+        super::walkthrough::html_text(&crate::fmt::clip(&s.quantity, 40))
     );
 }

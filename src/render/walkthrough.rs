@@ -50,10 +50,6 @@ pub struct WalkOptions {
 /// Text shown literally in HTML: markup escaped (`<`, `>`, `&`, both quotes), characters XML
 /// forbids (NUL, most control characters) replaced by U+FFFD.
 pub fn html_text(s: &str) -> String {
-    html_escape(s)
-}
-
-pub(super) fn html_escape(s: &str) -> String {
     crate::fmt::sheet_text(s)
         .replace('&', "&amp;")
         .replace('<', "&lt;")
@@ -109,7 +105,7 @@ pub fn walkthrough_html(meta: &FigureMeta, board: &Board, opts: &WalkOptions) ->
     let error = opts
         .error
         .as_ref()
-        .map(|e| format!("<p id=\"wt-error\" role=\"alert\">{}</p>\n", html_escape(e)))
+        .map(|e| format!("<p id=\"wt-error\" role=\"alert\">{}</p>\n", html_text(e)))
         .unwrap_or_default();
     format!(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
@@ -120,8 +116,8 @@ pub fn walkthrough_html(meta: &FigureMeta, board: &Board, opts: &WalkOptions) ->
          <aside id=\"wt-side\">\n{controls}{nav}<div id=\"wt-now\" aria-live=\"polite\"></div>\n\
          <ol id=\"wt-steps\">\n{items}</ol>\n</aside>\n</main>\n\
          <div id=\"wt-print\"></div>\n<script>\n{script}</script>\n{extra}</body>\n</html>\n",
-        title = html_escape(&meta.title),
-        source = html_escape(&meta.source),
+        title = html_text(&meta.title),
+        source = html_text(&meta.source),
         css = PAGE_CSS,
         nav = NAV,
         controls = opts.controls,
@@ -157,13 +153,13 @@ fn step_detail(step: &Step) -> String {
     if let Some(de) = &step.term_de {
         d.push_str(&format!(
             "<p class=\"wt-de\" lang=\"de\">{}</p>",
-            html_escape(de)
+            html_text(de)
         ));
     }
     if !step.book.is_empty() {
         d.push_str(&format!(
             "<p class=\"wt-book\">{}</p>",
-            html_escape(&step.book)
+            html_text(&step.book)
         ));
     }
     if let Some(c) = &step.conditioning {
@@ -175,7 +171,7 @@ fn step_detail(step: &Step) -> String {
         ));
     }
     if let Some(o) = &step.outcome {
-        d.push_str(&format!("<p class=\"wt-outcome\">{}</p>", html_escape(o)));
+        d.push_str(&format!("<p class=\"wt-outcome\">{}</p>", html_text(o)));
     }
     if !step.checks.is_empty() {
         d.push_str(&checks_table(step));
@@ -183,10 +179,10 @@ fn step_detail(step: &Step) -> String {
     format!(
         "<div class=\"wt-step\"><b>{}</b> {}{}<div class=\"wt-detail\">{}</div></div>",
         step.id,
-        html_escape(&step.caption),
+        html_text(&step.caption),
         step.context
             .as_ref()
-            .map(|c| format!(" <i>{}</i>", html_escape(c)))
+            .map(|c| format!(" <i>{}</i>", html_text(c)))
             .unwrap_or_default(),
         d
     )
@@ -203,9 +199,9 @@ fn checks_table(step: &Step) -> String {
             "<tr class=\"{}\"><td>{} [{}]<br><small>{}</small></td><td>{}</td><td>{}</td>\
              <td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
             if c.passed { "wt-ok" } else { "wt-fail" },
-            html_escape(&c.quantity),
-            html_escape(&c.unit),
-            html_escape(&c.formula),
+            html_text(&c.quantity),
+            html_text(&c.unit),
+            html_text(&c.formula),
             crate::fmt::num(c.constructed, 6),
             crate::fmt::num(c.closed_form, 6),
             crate::fmt::sci(c.error),
