@@ -520,12 +520,14 @@ fn render_all(
 fn check_cmd(scene: &Path, json: bool, reference: bool) -> Result<ExitCode, Fail> {
     use graphostatik::protocol::{with_setup, Setup};
     let start = std::time::Instant::now();
-    let p = load(scene)?;
+    // The table needs the checks, not the drawing (a reference replay needs both). The
+    // scene is read under the same setup: what it may ask for follows what is kept.
     let setup = Setup {
         reference,
+        checks_only: !reference,
         ..Setup::default()
     };
-    let board = with_setup(setup, || construct(scene, &p))?;
+    let board = with_setup(setup, || construct(scene, &load(scene)?))?;
     let text = match (reference, json) {
         (false, false) => render::check_table_text(&board),
         (false, true) => render::check_table_json(&board) + "\n",
@@ -536,7 +538,7 @@ fn check_cmd(scene: &Path, json: bool, reference: bool) -> Result<ExitCode, Fail
         eprintln!(
             "{}: {} steps, {} checks, {:.3} ms (read, construction, checks, table)",
             scene.display(),
-            board.steps().len(),
+            board.step_count(),
             board.checks().count(),
             start.elapsed().as_secs_f64() * 1e3
         );
@@ -696,6 +698,16 @@ fn remove_stale_pages(dir: &Path, keep: &std::collections::BTreeSet<&str>) -> Re
 
 /// `forces`: the member forces of a truss scene, per case, combination and envelope.
 fn forces_cmd(scene: &Path, format: TableFormat) -> Result<ExitCode, Fail> {
+    use graphostatik::protocol::{with_setup, Setup};
+    // The table of forces needs the checks, not the drawing.
+    let setup = Setup {
+        checks_only: true,
+        ..Setup::default()
+    };
+    with_setup(setup, || forces_table(scene, format))
+}
+
+fn forces_table(scene: &Path, format: TableFormat) -> Result<ExitCode, Fail> {
     let p = load(scene)?;
     let Some(t) = p.get::<TrussScene>() else {
         return Err(Fail(format!(

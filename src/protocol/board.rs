@@ -105,8 +105,47 @@ pub struct Board {
     /// A draftsman's hand, where the setup asks for one.
     #[serde(skip)]
     jitter: Option<Jitter>,
+    /// What a board that keeps the checks and not the drawing files instead of steps and
+    /// objects ([`Setup::checks_only`](super::Setup::checks_only)).
+    #[serde(skip)]
+    ledger: Option<Box<Ledger>>,
     objects: Vec<Object>,
     steps: Vec<Step>,
+}
+
+/// The checks of a board that does not keep its drawing: steps and objects are counted, the
+/// checks kept with the step and the situation they belong to, and each object's error
+/// bound tracked, in some 50 bytes per object instead of a protocol of some 1 KB per step.
+#[derive(Debug, Clone, Default)]
+struct Ledger {
+    /// The step that made each object and, for a number, its value (NaN for the rest), in
+    /// object order: what the bounds of numbers reckoned from numbers need.
+    made: Vec<(StepId, f64)>,
+    /// The checks with the step they are attached to, in the order filed.
+    checks: Vec<(StepId, Check)>,
+    /// The situation from each step on where it changed, in step order.
+    contexts: Vec<(StepId, Option<std::sync::Arc<str>>)>,
+}
+
+impl Ledger {
+    /// The situation the step was made in.
+    fn context(&self, step: StepId) -> Option<&str> {
+        let i = self.contexts.partition_point(|(s, _)| *s <= step);
+        i.checked_sub(1).and_then(|i| self.contexts[i].1.as_deref())
+    }
+}
+
+/// A check with the step it is attached to and the situation that step was made in: a row
+/// of the check table, from a board that keeps its drawing or from one that keeps only its
+/// checks ([`Board::check_entries`]).
+#[derive(Debug, Clone, Copy)]
+pub struct CheckEntry<'a> {
+    /// The step that made the checked value.
+    pub step: StepId,
+    /// The situation of that step ("θ = 30°").
+    pub context: Option<&'a str>,
+    /// The check.
+    pub check: &'a Check,
 }
 
 impl Board {
@@ -150,6 +189,7 @@ impl Board {
             tracks: Vec::new(),
             shadows: None,
             jitter: None,
+            ledger: None,
             objects: Vec::new(),
             steps: Vec::new(),
         }
@@ -167,8 +207,9 @@ impl Board {
             last_touched: false,
             model: setup.model.unwrap_or(ErrorModel::ROUNDING),
             tracks: Vec::new(),
-            shadows: (recording && setup.reference).then(Vec::new),
+            shadows: (recording && setup.reference && !setup.checks_only).then(Vec::new),
             jitter: setup.hand.map(Jitter::new),
+            ledger: (recording && setup.checks_only).then(Box::default),
             objects: Vec::new(),
             steps: Vec::new(),
         }
@@ -334,9 +375,24 @@ impl Board {
         self.tolerance = Tolerance::for_figure((e[2] - e[0]).max(e[3] - e[1]));
     }
 
-    /// Whether steps are recorded.
+    /// Whether checks are made and bounds tracked (steps are kept too where
+    /// [`Board::is_drawing`]).
     pub fn is_recording(&self) -> bool {
         self.recording
+    }
+
+    /// Whether steps and objects are kept for a drawing: a recording board that was not
+    /// made to keep only its checks ([`Setup::checks_only`](super::Setup::checks_only)).
+    /// Work that only the drawing needs (a table of readings written on the sheet, a curve
+    /// through points already checked) is skipped where this is false.
+    #[inline]
+    pub fn is_drawing(&self) -> bool {
+        self.recording && self.ledger.is_none()
+    }
+
+    /// How many steps were made (recorded or only counted).
+    pub fn step_count(&self) -> usize {
+        self.next_step as usize
     }
 
     /// Every analytic check on the board, in step order.
@@ -355,7 +411,42 @@ impl Board {
     /// # Ok::<(), ConstructionError>(())
     /// ```
     pub fn checks(&self) -> impl Iterator<Item = &Check> {
-        self.steps.iter().flat_map(|s| s.checks.iter())
+        let kept = self
+            .ledger
+            .iter()
+            .flat_map(|l| l.checks.iter().map(|(_, c)| c));
+        self.steps.iter().flat_map(|s| s.checks.iter()).chain(kept)
+    }
+
+    /// Every check with its step and situation, in step order (checks of one step in the
+    /// order filed): the rows of the check table, whether the board kept its drawing or only
+    /// its checks.
+    pub fn check_entries(&self) -> Vec<CheckEntry<'_>> {
+        let Some(l) = self.ledger.as_deref() else {
+            return self
+                .steps
+                .iter()
+                .flat_map(|s| {
+                    s.checks.iter().map(|check| CheckEntry {
+                        step: s.id,
+                        context: s.context.as_deref(),
+                        check,
+                    })
+                })
+                .collect();
+        };
+        let mut out: Vec<CheckEntry<'_>> = l
+            .checks
+            .iter()
+            .map(|(step, check)| CheckEntry {
+                step: *step,
+                context: l.context(*step),
+                check,
+            })
+            .collect();
+        // Stable: the checks of one step stay in the order they were filed.
+        out.sort_by_key(|e| e.step);
+        out
     }
 
     /// Whether every check on the board passed (true for a board without checks).
@@ -382,14 +473,22 @@ impl Board {
     /// Sets the situation in which the following steps are made ("φ = 30°"); recorded only.
     pub fn set_context(&mut self, f: impl FnOnce() -> String) {
         if self.recording {
-            self.context = Some(f().into());
+            let c: std::sync::Arc<str> = f().into();
+            if let Some(l) = self.ledger.as_mut() {
+                l.contexts
+                    .push((StepId(self.next_step + 1), Some(c.clone())));
+            }
+            self.context = Some(c);
         }
     }
 
     /// Reserves room for `steps` more steps and `objects` more objects, so that a long
     /// construction does not spend its time moving a growing protocol around in memory.
     pub fn reserve(&mut self, steps: usize, objects: usize) {
-        if self.recording {
+        if let Some(l) = self.ledger.as_mut() {
+            l.made.reserve(objects);
+            self.tracks.reserve(objects);
+        } else if self.recording {
             self.steps.reserve(steps);
             self.objects.reserve(objects);
         }
@@ -397,6 +496,9 @@ impl Board {
 
     /// Clears the context.
     pub fn clear_context(&mut self) {
+        if let Some(l) = self.ledger.as_mut() {
+            l.contexts.push((StepId(self.next_step + 1), None));
+        }
         self.context = None;
     }
 
@@ -415,7 +517,7 @@ impl Board {
     }
 
     fn file_step(&mut self, kind: StepKind, note: &Note, inputs: &[ObjId]) {
-        {
+        if self.ledger.is_none() {
             self.steps.push(Step {
                 id: StepId(self.next_step),
                 kind,
@@ -439,11 +541,41 @@ impl Board {
         if !self.recording {
             return ObjId::NONE;
         }
+        if self.ledger.is_some() {
+            return self.count_object(geom());
+        }
         self.file_object(label, role, geom())
     }
 
+    /// An object of a board that keeps only its checks: an id, its bound, its step and,
+    /// for a number, its value.
+    fn count_object(&mut self, geom: Geom) -> ObjId {
+        let id = ObjId(self.tracks.len() as u32 + 1);
+        self.tracks.push(Track::default());
+        let value = match geom {
+            Geom::Scalar { value, .. } => value,
+            _ => f64::NAN,
+        };
+        if let Some(l) = self.ledger.as_mut() {
+            l.made.push((StepId(self.next_step), value));
+        }
+        id
+    }
+
+    /// The value of a number on the board (kept or only counted), `None` for other objects.
+    fn number(&self, id: ObjId) -> Option<f64> {
+        let i = (id.0 as usize).wrapping_sub(1);
+        match self.ledger.as_deref() {
+            Some(l) => l.made.get(i).map(|m| m.1).filter(|v| !v.is_nan()),
+            None => match self.objects.get(i).map(|o| &o.geom) {
+                Some(Geom::Scalar { value, .. }) => Some(*value),
+                _ => None,
+            },
+        }
+    }
+
     fn file_object(&mut self, label: Label, role: Role, geom: Geom) -> ObjId {
-        let id = ObjId(self.objects.len() as u32 + 1);
+        let id = ObjId(self.tracks.len() as u32 + 1);
         let step = StepId(self.next_step);
         self.tracks.push(Track::default());
         if let Some(s) = self.shadows.as_mut() {
@@ -1177,10 +1309,7 @@ impl Board {
                 .map(|i| {
                     let mut t = b.tr(*i);
                     t.err *= weight.abs();
-                    match b.object(*i).map(|o| &o.geom) {
-                        Some(Geom::Scalar { value, .. }) => (t, *value * weight),
-                        _ => (t, 0.0),
-                    }
+                    (t, b.number(*i).map_or(0.0, |v| v * weight))
                 })
                 .collect();
             b.model.reckoned(t.iter(), value)
@@ -1366,6 +1495,12 @@ impl Board {
 
     /// Files a check with the step that made the object `id`.
     fn push_check(&mut self, id: ObjId, check: Check) {
+        if let Some(l) = self.ledger.as_mut() {
+            if let Some(&(step, _)) = l.made.get((id.0 as usize).wrapping_sub(1)) {
+                l.checks.push((step, check));
+            }
+            return;
+        }
         let step = self.object(id).map(|o| o.step);
         if let Some(s) = step.and_then(|step| self.steps.get_mut(step.0 as usize - 1)) {
             s.checks.push(check);

@@ -12,11 +12,11 @@ mod setup;
 mod step;
 
 pub use accuracy::{ErrorModel, WorstCut};
-pub use board::{Board, Cut, Scale, H};
+pub use board::{Board, CheckEntry, Cut, Scale, H};
 pub use error::{ConstructionError, CutOutcome};
 pub use figure::{nice_at_least, FigureMeta, ScaleBar};
 pub use reference::ReferenceRow;
-pub use setup::{with_setup, Hand, Setup};
+pub use setup::{checks_only, with_setup, Hand, Setup};
 pub use step::{
     note, Check, Geom, Ids, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Text, Topic,
     TABLE_BLOCK_ROWS,

@@ -28,6 +28,12 @@ pub struct Setup {
     /// Draw with a draftsman's hand: every point, line, circle and reading perturbed at
     /// random by the hand's errors (the Monte Carlo replay of a drawing).
     pub hand: Option<Hand>,
+    /// Keep the checks and not the drawing (recording boards): steps and objects are
+    /// counted, every check is made and kept with its step and situation, and every bound
+    /// is tracked, but captions, geometry and inputs are not filed. What `check` and
+    /// `forces` use: the check table comes out the same, in memory of the order of the
+    /// scene rather than of its protocol. No reference replay is made on such a board.
+    pub checks_only: bool,
 }
 
 /// A draftsman's hand: the errors of [`ErrorModel::drafting`] drawn at random (normally
@@ -60,6 +66,13 @@ pub fn with_setup<R>(setup: Setup, f: impl FnOnce() -> R) -> R {
 /// The setup in force on this thread.
 pub(crate) fn current() -> Setup {
     SETUP.with(|s| s.get())
+}
+
+/// Whether the boards made now on this thread keep only their checks
+/// ([`Setup::checks_only`]): a scene read for its checks may be larger than one read for
+/// its figure, which must fit a sheet and a protocol of some 1 KB per step.
+pub fn checks_only() -> bool {
+    current().checks_only
 }
 
 /// The hand's random state on a board: SplitMix64, normal deviates by Box–Muller.

@@ -41,15 +41,14 @@ pub struct CheckRow {
 
 /// The rows of the check table, in step order.
 pub fn check_rows(board: &Board) -> Vec<CheckRow> {
-    let mut rows = Vec::new();
-    for step in board.steps() {
-        if step.checks.is_empty() {
-            continue;
-        }
-        for c in &step.checks {
-            rows.push(CheckRow {
-                step: step.id.to_string(),
-                context: step.context.as_deref().unwrap_or("").to_string(),
+    board
+        .check_entries()
+        .into_iter()
+        .map(|e| {
+            let c = e.check;
+            CheckRow {
+                step: e.step.to_string(),
+                context: e.context.unwrap_or("").to_string(),
                 quantity: c.quantity.to_string(),
                 unit: c.unit.to_string(),
                 constructed: c.constructed,
@@ -62,10 +61,9 @@ pub fn check_rows(board: &Board) -> Vec<CheckRow> {
                 meeting_angle_deg: c.worst_cut.map(|w| w.conditioning.angle_deg()),
                 cut_step: c.worst_cut.map(|w| w.step.to_string()),
                 glancing: c.glancing(),
-            });
-        }
-    }
-    rows
+            }
+        })
+        .collect()
 }
 
 /// The check table as aligned text (fixed number formatting: deterministic).
@@ -238,34 +236,37 @@ pub fn reference_table_json(board: &Board) -> String {
 /// Cells as aligned text with a rule under the header; `right` columns right-aligned.
 pub(super) fn aligned(cells: &[Vec<String>], right: std::ops::RangeInclusive<usize>) -> String {
     let ncol = cells[0].len();
-    let widths: Vec<usize> = (0..ncol)
-        .map(|c| {
-            cells
-                .iter()
-                .map(|r| r[c].chars().count())
-                .max()
-                .unwrap_or(0)
-        })
-        .collect();
-    let mut out = String::new();
+    let mut widths = vec![0; ncol];
+    let mut bytes = 0;
+    for r in cells {
+        for (w, s) in widths.iter_mut().zip(r) {
+            *w = (*w).max(s.chars().count());
+            bytes += s.len() + 2;
+        }
+    }
+    let total: usize = widths.iter().sum::<usize>() + 2 * (ncol - 1);
+    // Written in place: a table of 20,000 checks is some 3 MB of text.
+    let mut out = String::with_capacity(bytes + cells.len() * total / 2 + 2 * total);
     for (i, r) in cells.iter().enumerate() {
-        let line: Vec<String> = r
-            .iter()
-            .enumerate()
-            .map(|(c, s)| {
-                let pad = " ".repeat(widths[c] - s.chars().count());
-                if right.contains(&c) {
-                    format!("{pad}{s}")
-                } else {
-                    format!("{s}{pad}")
-                }
-            })
-            .collect();
-        out.push_str(line.join("  ").trim_end());
+        let start = out.len();
+        for (c, s) in r.iter().enumerate() {
+            if c > 0 {
+                out.push_str("  ");
+            }
+            let pad = widths[c] - s.chars().count();
+            if right.contains(&c) {
+                out.extend(std::iter::repeat_n(' ', pad));
+                out.push_str(s);
+            } else {
+                out.push_str(s);
+                out.extend(std::iter::repeat_n(' ', pad));
+            }
+        }
+        let kept = out[start..].trim_end().len();
+        out.truncate(start + kept);
         out.push('\n');
         if i == 0 {
-            let total: usize = widths.iter().sum::<usize>() + 2 * (ncol - 1);
-            out.push_str(&"-".repeat(total));
+            out.extend(std::iter::repeat_n('-', total));
             out.push('\n');
         }
     }

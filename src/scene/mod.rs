@@ -33,6 +33,7 @@ mod header;
 mod offset_crank;
 mod procedure;
 mod registry;
+mod scan;
 mod scotch_yoke;
 mod shaft;
 mod slider_crank;

@@ -157,46 +157,6 @@ impl Clone for AnyScene {
     }
 }
 
-/// The first string in `v` longer than its field allows: its path, its length and the limit
-/// (a scene's free `notes` may run to [`MAX_NOTES_CHARS`], every other text to
-/// [`MAX_TEXT_CHARS`]): a name of a megabyte would be written into every layer it labels.
-fn too_long(v: &serde_json::Value, path: &mut String) -> Option<(String, usize, usize)> {
-    match v {
-        serde_json::Value::String(s) => {
-            let max = if path == "notes" {
-                MAX_NOTES_CHARS
-            } else {
-                MAX_TEXT_CHARS
-            };
-            let n = s.chars().count();
-            (n > max).then(|| (path.clone(), n, max))
-        }
-        serde_json::Value::Array(items) => items.iter().enumerate().find_map(|(i, x)| {
-            let len = path.len();
-            path.push_str(&format!("[{i}]"));
-            let found = too_long(x, path);
-            path.truncate(len);
-            found
-        }),
-        serde_json::Value::Object(map) => map.iter().find_map(|(k, x)| {
-            let len = path.len();
-            if !path.is_empty() {
-                path.push('.');
-            }
-            path.push_str(&crate::fmt::clip(k, 40));
-            let found = too_long(x, path);
-            path.truncate(len);
-            found
-        }),
-        _ => None,
-    }
-}
-
-/// Longest text a scene field may hold (a title, a name, a reference), in characters.
-pub const MAX_TEXT_CHARS: usize = 400;
-/// Longest free `notes` of a scene, in characters (they are not drawn).
-pub const MAX_NOTES_CHARS: usize = 20_000;
-
 impl AnyScene {
     /// Parses and validates a scene of any procedure, by its `procedure` field (absent:
     /// `slider_crank`). Malformed JSON is reported at its line and column, an unknown
@@ -221,30 +181,27 @@ impl AnyScene {
     /// The `procedure` field alone; a syntax error anywhere in the file is reported here, at
     /// its own line and column, before any procedure's fields are looked at.
     fn procedure_of(text: &str, origin: &str) -> Result<Option<String>, SceneError> {
-        let de = &mut serde_json::Deserializer::from_str(text);
-        let value: serde_json::Value = serde::Deserialize::deserialize(&mut *de)
-            .and_then(|p| de.end().map(|_| p))
-            .map_err(|e| syntax_error(e, origin))?;
+        let found = super::scan::scan(text).map_err(|e| syntax_error(e, origin))?;
         let invalid = |field: String, message: String| SceneError::Invalid {
             origin: origin.to_string(),
             field,
             message,
         };
-        let Some(object) = value.as_object() else {
+        if !found.object {
             return Err(invalid(
                 String::new(),
                 "a scene is a JSON object ({ \"title\": …, … })".into(),
             ));
-        };
-        if let Some((field, chars, max)) = too_long(&value, &mut String::new()) {
+        }
+        if let Some((field, chars, max)) = found.too_long {
             return Err(invalid(
                 field,
                 format!("a text of {chars} characters: at most {max} are allowed"),
             ));
         }
-        match object.get("procedure") {
+        match found.procedure {
             None => Ok(None),
-            Some(serde_json::Value::String(s)) => Ok(Some(s.clone())),
+            Some(serde_json::Value::String(s)) => Ok(Some(s)),
             Some(other) => Err(invalid(
                 "procedure".into(),
                 format!(
@@ -397,7 +354,7 @@ mod tests {
 
     #[test]
     fn a_megabyte_name_is_refused_naming_its_field() {
-        let long = "x".repeat(MAX_TEXT_CHARS + 1);
+        let long = "x".repeat(crate::scene::scan::MAX_TEXT_CHARS + 1);
         let text = format!(
             r#"{{"procedure": "truss", "title": "t", "load_cases": [{{"name": "{long}"}}]}}"#
         );

@@ -13,8 +13,23 @@ use crate::truss::{Joint, JointLoad, LoadCase, Member, Support, Truss};
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
 
-/// Most joints a scene may have (the Cremona plan is linear; this bounds the sheet).
+/// Most joints a scene drawn as a figure may have (the Cremona plan is linear; this bounds
+/// the sheet).
 pub const MAX_JOINTS: usize = 20_000;
+
+/// Most joints a scene may have where only its checks are kept (`check`, `forces`:
+/// [`checks_only`](crate::protocol::checks_only)): the plan, the solve and the checks are
+/// linear in time and memory, some 1 KB per joint.
+pub const MAX_JOINTS_CHECKED: usize = 200_000;
+
+/// The limits that hold for a scene read now: for its checks alone, or for its figure.
+fn limits() -> (usize, usize) {
+    if crate::protocol::checks_only() {
+        (MAX_JOINTS_CHECKED, MAX_CHECKED_STEPS)
+    } else {
+        (MAX_JOINTS, MAX_RECORDED_STEPS)
+    }
+}
 
 super::header::scene_struct! {
     /// A truss scene: `"procedure": "truss"`.
@@ -314,10 +329,11 @@ impl TrussScene {
                 "a truss needs at least two joints".into(),
             ));
         }
-        if self.joints.len() > MAX_JOINTS {
+        let (max_joints, _) = limits();
+        if self.joints.len() > max_joints {
             return Err(bad(
                 "joints".into(),
-                format!("more than {MAX_JOINTS} joints"),
+                format!("more than {max_joints} joints"),
             ));
         }
         let mut index: HashMap<&str, usize> = HashMap::new();
@@ -630,7 +646,8 @@ impl TrussScene {
         };
         let per_case = systems * (STEPS_PER_PART * (truss.joints.len() + truss.members.len()) + 20);
         let steps = cases.saturating_mul(per_case);
-        if steps <= MAX_RECORDED_STEPS {
+        let (_, max_steps) = limits();
+        if steps <= max_steps {
             return Ok(());
         }
         let field = if positions > self.load_cases.len() {
@@ -643,8 +660,13 @@ impl TrussScene {
             field.into(),
             format!(
                 "{cases} load cases of about {per_case} construction steps each: about {steps} \
-                 steps, more than the {MAX_RECORDED_STEPS} a figure holds; draw fewer cases or \
-                 moving-load positions, or split the truss"
+                 steps, more than the {max_steps} {} holds; draw fewer cases or moving-load \
+                 positions, or split the truss",
+                if max_steps == MAX_RECORDED_STEPS {
+                    "a figure"
+                } else {
+                    "a check"
+                }
             ),
         ))
     }
@@ -1154,6 +1176,10 @@ const STEPS_PER_PART: usize = 4;
 
 /// Most construction steps a truss scene may record (about 70 MB of figure).
 pub const MAX_RECORDED_STEPS: usize = 200_000;
+
+/// Most construction steps of a truss scene whose checks alone are kept (some 150 bytes a
+/// step: 300 MB at most).
+pub const MAX_CHECKED_STEPS: usize = 2_000_000;
 
 /// A value that parses but makes no truss, at its field.
 fn invalid(origin: &str, field: String, message: String) -> SceneError {

@@ -104,6 +104,15 @@ pub fn equilibrium_matrix(t: &Truss) -> DMatrix<f64> {
 /// assert!(matches!(analyse(&t).determinacy, Determinacy::Mechanism { joint: 2, .. }));
 /// ```
 pub fn analyse(t: &Truss) -> Analysis {
+    if let Some(a) = memo(t, |m| m.analysis.clone()) {
+        return a;
+    }
+    let a = analyse_afresh(t);
+    memo(t, |m| m.analysis = Some(a.clone()));
+    a
+}
+
+fn analyse_afresh(t: &Truss) -> Analysis {
     let k = t.joints.len();
     let s = t.members.len();
     let r = t.reaction_unknowns();
@@ -201,7 +210,7 @@ fn sparse_test(t: &Truss) -> Sparse {
     let norm1 = col1.iter().cloned().fold(0.0, f64::max);
     let norm_inf = row1.iter().cloned().fold(0.0, f64::max);
     let smax = (norm1 * norm_inf).sqrt();
-    let Some(lu) = sparse_lu(t, &triplets) else {
+    let Some(lu) = factorised(t, &triplets) else {
         return Sparse::Doubtful(None);
     };
     use faer::prelude::Solve;
@@ -347,7 +356,7 @@ pub fn solve_all(t: &Truss, cases: &[LoadCase]) -> Vec<Option<Solution>> {
     if s + t.reaction_unknowns() != n || n == 0 {
         return none();
     }
-    let Some(lu) = sparse_lu(t, &equilibrium_triplets(t)) else {
+    let Some(lu) = factorised(t, &equilibrium_triplets(t)) else {
         return none();
     };
     cases
@@ -358,7 +367,7 @@ pub fn solve_all(t: &Truss, cases: &[LoadCase]) -> Vec<Option<Solution>> {
                 p[2 * l.joint] -= l.force.x;
                 p[2 * l.joint + 1] -= l.force.y;
             }
-            let f = faer::prelude::Solve::solve(&lu, &p);
+            let f = faer::prelude::Solve::solve(&*lu, &p);
             let f: Vec<f64> = f.iter().copied().collect();
             if f.iter().any(|x| !x.is_finite()) {
                 return None;
@@ -369,6 +378,75 @@ pub fn solve_all(t: &Truss, cases: &[LoadCase]) -> Vec<Option<Solution>> {
             })
         })
         .collect()
+}
+
+type Lu = faer::sparse::linalg::solvers::Lu<usize, f64>;
+
+/// What is known of the last truss asked about on this thread: the scene's validation, the
+/// rank test of the construction and the solve its checks are made with all ask about the
+/// same matrix, which is factorised and tested once. The truss is recognised by its
+/// geometry bit for bit (joint coordinates, member ends, supports), never by a hash.
+#[derive(Default)]
+struct Memo {
+    key: Vec<u64>,
+    /// The sparse LU of the square system: not yet made, or made (`None` if it failed).
+    lu: Option<Option<std::rc::Rc<Lu>>>,
+    analysis: Option<Analysis>,
+}
+
+thread_local! {
+    static MEMO: std::cell::RefCell<Memo> = std::cell::RefCell::new(Memo::default());
+}
+
+/// The geometry a truss's equilibrium matrix is made of, bit for bit.
+fn memo_key(t: &Truss) -> Vec<u64> {
+    let mut key =
+        Vec::with_capacity(3 + 2 * t.joints.len() + t.members.len() + 3 * t.supports.len());
+    key.extend([t.joints.len(), t.members.len(), t.supports.len()].map(|n| n as u64));
+    key.extend(
+        t.joints
+            .iter()
+            .flat_map(|j| [j.at.x.to_bits(), j.at.y.to_bits()]),
+    );
+    key.extend(
+        t.members
+            .iter()
+            .map(|m| (m.ends[0] as u64) << 32 | m.ends[1] as u64),
+    );
+    for sup in &t.supports {
+        key.extend(match sup.kind {
+            SupportKind::Pinned => [sup.joint as u64, 0, 0],
+            SupportKind::Roller { dir } => {
+                [sup.joint as u64 | 1 << 63, dir.x.to_bits(), dir.y.to_bits()]
+            }
+        });
+    }
+    key
+}
+
+/// `f` on what is known of `t`, forgetting the last truss if `t` is another.
+fn memo<R>(t: &Truss, f: impl FnOnce(&mut Memo) -> R) -> R {
+    let key = memo_key(t);
+    MEMO.with(|m| {
+        let mut m = m.borrow_mut();
+        if m.key != key {
+            *m = Memo {
+                key,
+                ..Memo::default()
+            };
+        }
+        f(&mut m)
+    })
+}
+
+/// The sparse LU of the square equilibrium matrix, made once per truss ([`Memo`]).
+fn factorised(t: &Truss, triplets: &[Triplet]) -> Option<std::rc::Rc<Lu>> {
+    if let Some(lu) = memo(t, |m| m.lu.clone()) {
+        return lu;
+    }
+    let lu = sparse_lu(t, triplets).map(std::rc::Rc::new);
+    memo(t, |m| m.lu = Some(lu.clone()));
+    lu
 }
 
 /// The sparse LU of the square equilibrium matrix given by its `triplets`; `None` if an

@@ -1,0 +1,230 @@
+//! A first pass over a scene's text that builds nothing: whether it is well-formed JSON (a
+//! syntax error is reported at its line and column before any procedure looks at it), its
+//! `procedure` field, and the first text longer than its field allows. It streams through
+//! the document as serde visits it, so a truss of 100,000 joints is scanned in the time
+//! its bytes take to read, not in the time of a tree of maps built and dropped.
+
+use serde::de::{DeserializeSeed, MapAccess, SeqAccess, Visitor};
+use std::fmt::Write as _;
+
+/// Longest text a scene field may hold (a title, a name, a reference), in characters: a
+/// name of a megabyte would be written into every layer it labels.
+pub(super) const MAX_TEXT_CHARS: usize = 400;
+/// Longest free `notes` of a scene, in characters (they are not drawn).
+pub(super) const MAX_NOTES_CHARS: usize = 20_000;
+
+/// What the scan finds besides well-formedness.
+#[derive(Debug, Default)]
+pub(super) struct Scanned {
+    /// The top level is an object.
+    pub object: bool,
+    /// The `procedure` field, if the scene has one (any JSON value).
+    pub procedure: Option<serde_json::Value>,
+    /// The first text (in document order) longer than its field allows: its path, its
+    /// length in characters and the limit.
+    pub too_long: Option<(String, usize, usize)>,
+}
+
+/// Scans `text`; a syntax error anywhere (trailing data included) is returned as is.
+pub(super) fn scan(text: &str) -> Result<Scanned, serde_json::Error> {
+    let mut found = Scanned::default();
+    let de = &mut serde_json::Deserializer::from_str(text);
+    Top(&mut found).deserialize(&mut *de)?;
+    de.end()?;
+    Ok(found)
+}
+
+/// The top level: an object whose `procedure` is kept; anything else is noted as not one.
+struct Top<'a>(&'a mut Scanned);
+
+impl<'de> DeserializeSeed<'de> for Top<'_> {
+    type Value = ();
+    fn deserialize<D: serde::Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
+        d.deserialize_any(self)
+    }
+}
+
+impl<'de> Visitor<'de> for Top<'_> {
+    type Value = ();
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("a scene")
+    }
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<(), A::Error> {
+        self.0.object = true;
+        let mut path = String::new();
+        while let Some(key) = map.next_key::<std::borrow::Cow<'de, str>>()? {
+            if key == "procedure" {
+                let v: serde_json::Value = map.next_value()?;
+                if let serde_json::Value::String(s) = &v {
+                    check_len(s, "procedure", &mut self.0.too_long);
+                }
+                self.0.procedure = Some(v);
+                continue;
+            }
+            path.clear();
+            push_key(&mut path, &key);
+            map.next_value_seed(Walk {
+                path: &mut path,
+                found: &mut self.0.too_long,
+            })?;
+        }
+        Ok(())
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
+        while seq.next_element::<serde::de::IgnoredAny>()?.is_some() {}
+        Ok(())
+    }
+    fn visit_str<E>(self, _: &str) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_f64<E>(self, _: f64) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_i64<E>(self, _: i64) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_u64<E>(self, _: u64) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_bool<E>(self, _: bool) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_unit<E>(self) -> Result<(), E> {
+        Ok(())
+    }
+}
+
+/// A field's name as the error path writes it (long names clipped).
+fn push_key(path: &mut String, key: &str) {
+    if !path.is_empty() {
+        path.push('.');
+    }
+    if key.len() <= 40 {
+        path.push_str(key);
+    } else {
+        path.push_str(&crate::fmt::clip(key, 40));
+    }
+}
+
+/// Notes the text at `path` if it is longer than its field allows (the scene's free
+/// `notes` may run to [`MAX_NOTES_CHARS`](MAX_NOTES_CHARS), every other text to
+/// [`MAX_TEXT_CHARS`](MAX_TEXT_CHARS)), unless an earlier one was found.
+fn check_len(s: &str, path: &str, found: &mut Option<(String, usize, usize)>) {
+    let max = if path == "notes" {
+        MAX_NOTES_CHARS
+    } else {
+        MAX_TEXT_CHARS
+    };
+    // A character is at least one byte: most texts are settled without counting.
+    if found.is_some() || s.len() <= max {
+        return;
+    }
+    let n = s.chars().count();
+    if n > max {
+        *found = Some((path.to_string(), n, max));
+    }
+}
+
+/// Any value below the top level, its path kept for the error.
+struct Walk<'a> {
+    path: &'a mut String,
+    found: &'a mut Option<(String, usize, usize)>,
+}
+
+impl<'de> DeserializeSeed<'de> for Walk<'_> {
+    type Value = ();
+    fn deserialize<D: serde::Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
+        d.deserialize_any(self)
+    }
+}
+
+impl<'de> Visitor<'de> for Walk<'_> {
+    type Value = ();
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("a JSON value")
+    }
+    fn visit_str<E>(self, s: &str) -> Result<(), E> {
+        check_len(s, self.path, self.found);
+        Ok(())
+    }
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<(), A::Error> {
+        while let Some(key) = map.next_key::<std::borrow::Cow<'de, str>>()? {
+            let len = self.path.len();
+            push_key(self.path, &key);
+            map.next_value_seed(Walk {
+                path: &mut *self.path,
+                found: &mut *self.found,
+            })?;
+            self.path.truncate(len);
+        }
+        Ok(())
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
+        let mut i = 0usize;
+        loop {
+            let len = self.path.len();
+            let _ = write!(self.path, "[{i}]");
+            let more = seq.next_element_seed(Walk {
+                path: &mut *self.path,
+                found: &mut *self.found,
+            })?;
+            self.path.truncate(len);
+            if more.is_none() {
+                return Ok(());
+            }
+            i += 1;
+        }
+    }
+    fn visit_f64<E>(self, _: f64) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_i64<E>(self, _: i64) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_u64<E>(self, _: u64) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_bool<E>(self, _: bool) -> Result<(), E> {
+        Ok(())
+    }
+    fn visit_unit<E>(self) -> Result<(), E> {
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finds_the_procedure_and_the_first_text_too_long_with_its_path() {
+        let long = "x".repeat(401);
+        let text = format!(
+            r#"{{"procedure": "truss", "joints": [{{"name": "A"}}, {{"name": "{long}"}}],
+               "notes": "{long}", "title": "{long}"}}"#
+        );
+        let s = scan(&text).unwrap();
+        assert!(s.object);
+        assert_eq!(s.procedure, Some(serde_json::json!("truss")));
+        assert_eq!(s.too_long, Some(("joints[1].name".into(), 401, 400)));
+        // Notes may be longer; a character is counted as one however many bytes it takes.
+        let s = scan(&format!(
+            r#"{{"notes": "{long}", "title": "{}"}}"#,
+            "é".repeat(400)
+        ))
+        .unwrap();
+        assert_eq!(s.too_long, None);
+    }
+
+    #[test]
+    fn reports_syntax_errors_and_what_is_not_an_object() {
+        assert!(scan(r#"{"a": [1, 2,]}"#).is_err());
+        assert!(scan(r#"{"a": 1} x"#).is_err());
+        assert!(!scan("[1, 2]").unwrap().object);
+        assert!(scan(&"[".repeat(200)).is_err());
+        assert_eq!(
+            scan(r#"{"procedure": 3}"#).unwrap().procedure,
+            Some(serde_json::json!(3))
+        );
+    }
+}
