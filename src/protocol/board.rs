@@ -685,7 +685,7 @@ impl Board {
             line,
             extent: [0.0, 0.0],
         });
-        self.set_tr(id, |b| b.model.line_at(&b.tr(p.id)));
+        self.set_tr(id, |b| b.model.line_at(&b.tr(p.id), &dir));
         self.set_shadow(id, |b| Shadow::Line {
             o: b.sp(p),
             d: DP::of_vec(&dir).unit(),
@@ -767,7 +767,11 @@ impl Board {
     /// The bound and reference of a line slid along `line` to `p` (turned 90°: `turned`).
     #[inline]
     fn slid(&mut self, id: ObjId, line: &H<Line>, p: &H<Point>, turned: bool) {
-        self.set_tr(id, |b| b.model.slid(&b.tr(line.id), &b.tr(p.id)));
+        self.set_tr(id, |b| {
+            let d = line.g.dir;
+            let dir = if turned { Vector::new(-d.y, d.x) } else { d };
+            b.model.slid(&b.tr(line.id), &b.tr(p.id), &dir)
+        });
         self.set_shadow(id, |b| {
             let d = b.sl(line).1;
             Shadow::Line {
@@ -1072,10 +1076,10 @@ impl Board {
         let step = StepId(self.next_step);
         self.set_tr(id, |bd| {
             let (ta, tb) = (bd.tr(a.id), bd.tr(b.id));
-            let delta = ta.across(&a.g, p) + tb.across(&b.g, p);
+            let across = ((ta.across(&a.g, p), a.g.dir), (tb.across(&b.g, p), b.g.dir));
             let extent = p.coords.norm() + a.g.origin.coords.norm() + b.g.origin.coords.norm();
             let worst = super::accuracy::worse(ta.worst, tb.worst);
-            bd.model.cut(step, cond, (delta, extent, 0.0), worst)
+            bd.model.cut_lines(step, cond, across, extent, worst)
         });
         self.set_shadow(id, |bd| {
             let ((ao, ad), (bo, bdir)) = (bd.sl(a), bd.sl(b));
