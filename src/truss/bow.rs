@@ -287,8 +287,8 @@ impl<'a> Found<'a> {
             }
             let (l, r) = (self.space_of_half[2 * m], self.space_of_half[2 * m + 1]);
             if let (Some(pl), Some(pr)) = (pt[l], pt[r]) {
-                b.segment(&pl, &pr, member_label(t, m), Role::Result, N_FORCE);
-                let v = b.measure(&pl, &pr, &mline[m], kg, member_label(t, m), N_FORCE);
+                b.segment(&pl, &pr, member_label(b, t, m), Role::Result, N_FORCE);
+                let v = b.measure(&pl, &pr, &mline[m], kg, member_label(b, t, m), N_FORCE);
                 check_member(b, &v, m, sol, self.reference);
                 self.forces[m] = Some(v.g);
                 self.ids[m] = v.id;

@@ -303,7 +303,7 @@ fn draw_truss(
     let mut mline = Vec::with_capacity(t.members.len());
     for (m, mem) in t.members.iter().enumerate() {
         let [i, j] = mem.ends;
-        mline.push(b.line_through(&jp[i], &jp[j], member_label(t, m), Role::Given, N_MEMBER)?);
+        mline.push(b.line_through(&jp[i], &jp[j], member_label(b, t, m), Role::Given, N_MEMBER)?);
     }
     for &[i, j] in slack {
         b.segment(&jp[i], &jp[j], Label::NONE, Role::Auxiliary, N_SLACK);
@@ -359,16 +359,8 @@ fn draw_loads(
     loads
 }
 
-/// The evaluation of the plan written beside it (LH B.4, "Auswertung"): member, length in
-/// the plan, force, tension or compression, then the reactions by magnitude. Returns the
-/// plan's box grown by the table.
-fn write_table(
-    b: &mut Board,
-    result: &CaseResult,
-    zero_kg: f64,
-    at_plan: Point,
-    plan_box: [f64; 4],
-) -> [f64; 4] {
+/// The rows of the evaluation: a head, the members, the reactions.
+fn table_rows(result: &CaseResult, zero_kg: f64) -> Vec<Vec<String>> {
     let mut rows = vec![vec![
         "Stab".to_string(),
         "Strecke mm".to_string(),
@@ -404,7 +396,26 @@ fn write_table(
             "Auflager".to_string(),
         ]);
     }
-    let n = rows.len() - 1;
+    rows
+}
+
+/// The evaluation of the plan written beside it (LH B.4, "Auswertung"): member, length in
+/// the plan, force, tension or compression, then the reactions by magnitude. Returns the
+/// plan's box grown by the table.
+fn write_table(
+    b: &mut Board,
+    result: &CaseResult,
+    zero_kg: f64,
+    at_plan: Point,
+    plan_box: [f64; 4],
+) -> [f64; 4] {
+    let n = result.members.len() + result.reactions.len();
+    // The rows are written only where the drawing is kept; the table takes its room anyway.
+    let rows = if b.is_drawing() {
+        table_rows(result, zero_kg)
+    } else {
+        Vec::new()
+    };
     let corner = at_plan + Vector::new(plan_box[2] + 12.0, plan_box[3]);
     b.table(corner, rows, &[], N_TABLE);
     let mut plan_box = plan_box;

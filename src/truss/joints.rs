@@ -285,9 +285,9 @@ impl<'a> Polygons<'a> {
     fn read(&self, b: &mut Board, v: usize, from: &H<Point>, to: &H<Point>, m: usize) -> H<f64> {
         let t = self.ctx.t;
         let kg = Scale::kg(self.ctx.dr.force_scale);
-        b.segment(from, to, member_label(t, m), Role::Result, N_FORCE);
+        b.segment(from, to, member_label(b, t, m), Role::Result, N_FORCE);
         let on_v = t.members[m].ends[0] == v;
         let (p, q) = if on_v { (from, to) } else { (to, from) };
-        b.measure(p, q, &self.ctx.mline[m], kg, member_label(t, m), N_FORCE)
+        b.measure(p, q, &self.ctx.mline[m], kg, member_label(b, t, m), N_FORCE)
     }
 }

@@ -2,7 +2,7 @@
 //! and supports, and the letters of Bow's spaces.
 
 use super::Truss;
-use crate::protocol::Label;
+use crate::protocol::{Board, Label};
 
 /// Letters of the spaces in Bow's notation; further spaces are r₂₇, r₂₈, ….
 const SPACE_NAMES: [&str; 26] = [
@@ -19,8 +19,12 @@ pub(super) fn space_label(i: usize) -> Label {
 }
 
 /// A member's label: `S` with its number where the scene numbers its members as the books do
-/// (`"7"` is S₇), else the scene's own name (`"U1"` is U₁, see [`Label::from_name`]).
-pub(crate) fn member_label(t: &Truss, m: usize) -> Label {
+/// (`"7"` is S₇), else the scene's own name (`"U1"` is U₁, see [`Label::from_name`]); none
+/// on a board that does not keep its drawing (nothing would write it).
+pub(crate) fn member_label(b: &Board, t: &Truss, m: usize) -> Label {
+    if !b.is_drawing() {
+        return Label::NONE;
+    }
     let name = &t.members[m].name;
     match name.parse::<u32>() {
         Ok(n) => Label::indexed("S", n),
