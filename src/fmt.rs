@@ -10,42 +10,66 @@
 /// assert_eq!(num(12.6, 0), "13");
 /// ```
 pub fn num(x: f64, decimals: usize) -> String {
+    let mut s = String::new();
+    num_into(&mut s, x, decimals);
+    s
+}
+
+/// [`num`] written at the end of `out` (no allocation of its own: for tables of many rows).
+///
+/// ```
+/// let mut s = String::from("M = ");
+/// graphostatik::fmt::num_into(&mut s, -2.50, 3);
+/// assert_eq!(s, "M = -2.5");
+/// ```
+pub fn num_into(out: &mut String, x: f64, decimals: usize) {
+    use std::fmt::Write;
     if !x.is_finite() {
-        return if x.is_nan() {
-            "NaN".into()
+        out.push_str(if x.is_nan() {
+            "NaN"
         } else if x > 0.0 {
-            "inf".into()
+            "inf"
         } else {
-            "-inf".into()
-        };
+            "-inf"
+        });
+        return;
     }
     // A whole number (most angles, many scales) prints as itself: the same text as the
     // trimmed decimals below, without the exact float formatting (its slow path was 3 % of a
     // recorded crank construction, for "θ = 10°").
     if x.fract() == 0.0 && x.abs() < 1e15 {
-        return (x as i64).to_string();
+        let _ = write!(out, "{}", x as i64);
+        return;
     }
-    let mut s = format!("{:.*}", decimals, x);
-    if s.contains('.') {
-        while s.ends_with('0') {
-            s.pop();
-        }
-        if s.ends_with('.') {
-            s.pop();
-        }
+    let start = out.len();
+    let _ = write!(out, "{:.*}", decimals, x);
+    if out[start..].contains('.') {
+        let kept = out[start..]
+            .trim_end_matches('0')
+            .trim_end_matches('.')
+            .len();
+        out.truncate(start + kept);
     }
-    if s == "-0" {
-        s = "0".into();
+    if &out[start..] == "-0" {
+        out.truncate(start);
+        out.push('0');
     }
-    s
 }
 
 /// Formats in scientific notation with 2 significant decimals (`1.23e-10`), for errors.
 pub fn sci(x: f64) -> String {
+    let mut s = String::new();
+    sci_into(&mut s, x);
+    s
+}
+
+/// [`sci`] written at the end of `out`.
+pub fn sci_into(out: &mut String, x: f64) {
+    use std::fmt::Write;
     if x == 0.0 {
-        "0".into()
+        out.push('0');
     } else {
-        format!("{:.2e}", x)
+        let _ = write!(out, "{:.2e}", x);
     }
 }
 

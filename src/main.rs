@@ -547,7 +547,7 @@ fn check_cmd(scene: &Path, json: bool, reference: bool) -> Result<ExitCode, Fail
     let failed = if reference {
         render::reference_rows(&board).iter().any(|r| !r.within)
     } else {
-        render::check_rows(&board).iter().any(|r| !r.passed)
+        !board.all_passed()
     };
     Ok(if failed {
         ExitCode::from(1)

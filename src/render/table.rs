@@ -1,6 +1,6 @@
 //! The check table: every analytic check of a construction, as text or JSON.
 
-use crate::fmt::{num, sci};
+use crate::fmt::{num, num_into, sci, sci_into};
 use crate::protocol::Board;
 use serde::Serialize;
 
@@ -66,10 +66,11 @@ pub fn check_rows(board: &Board) -> Vec<CheckRow> {
         .collect()
 }
 
-/// The check table as aligned text (fixed number formatting: deterministic).
+/// The check table as aligned text (fixed number formatting: deterministic). Written from
+/// the board's checks straight into one buffer of cells (a check of 100,000 joints has
+/// 200,000 rows).
 pub fn check_table_text(board: &Board) -> String {
-    let rows = check_rows(board);
-    let head = [
+    let mut cells = Cells::new(&[
         "step",
         "context",
         "quantity",
@@ -80,40 +81,132 @@ pub fn check_table_text(board: &Board) -> String {
         "tolerance",
         "worst cut",
         "ok",
-    ];
-    let mut cells: Vec<Vec<String>> = vec![head.iter().map(|s| s.to_string()).collect()];
-    for r in &rows {
-        cells.push(vec![
-            r.step.clone(),
-            r.context.clone(),
-            format!("{} [{}]", r.quantity, r.unit),
-            num(r.constructed, 6),
-            num(r.closed_form, 6),
-            sci(r.error),
-            sci(r.bound),
-            sci(r.tolerance),
-            match (r.meeting_angle_deg, &r.cut_step) {
-                (Some(a), Some(at)) => format!(
-                    "{}° at {at}{}",
-                    num(a, 1),
-                    if r.glancing { " glancing" } else { "" }
-                ),
-                _ => "-".into(),
-            },
-            if r.passed { "ok" } else { "FAIL" }.into(),
-        ]);
+    ]);
+    let (mut rows, mut failed, mut glancing) = (0, 0, 0);
+    for e in board.check_entries() {
+        let c = e.check;
+        rows += 1;
+        failed += usize::from(!c.passed);
+        glancing += usize::from(c.glancing());
+        cells.cell(|s| push_display(s, &e.step));
+        cells.cell(|s| s.push_str(e.context.unwrap_or("")));
+        cells.cell(|s| {
+            s.push_str(&c.quantity);
+            s.push_str(" [");
+            s.push_str(&c.unit);
+            s.push(']');
+        });
+        cells.cell(|s| num_into(s, c.constructed, 6));
+        cells.cell(|s| num_into(s, c.closed_form, 6));
+        cells.cell(|s| sci_into(s, c.error));
+        cells.cell(|s| sci_into(s, c.bound));
+        cells.cell(|s| sci_into(s, c.tolerance));
+        cells.cell(|s| match c.worst_cut {
+            Some(w) => {
+                num_into(s, w.conditioning.angle_deg(), 1);
+                s.push_str("° at ");
+                push_display(s, &w.step);
+                if c.glancing() {
+                    s.push_str(" glancing");
+                }
+            }
+            None => s.push('-'),
+        });
+        cells.cell(|s| s.push_str(if c.passed { "ok" } else { "FAIL" }));
     }
-    let mut out = aligned(&cells, 3..=7);
-    let failed = rows.iter().filter(|r| !r.passed).count();
-    let glancing = rows.iter().filter(|r| r.glancing).count();
-    out.push_str(&format!(
-        "{} checks, {} passed, {} failed, {} depending on a glancing cut\n",
-        rows.len(),
-        rows.len() - failed,
-        failed,
-        glancing
-    ));
+    let mut out = cells.aligned(3..=7);
+    push_display(
+        &mut out,
+        &format_args!(
+            "{} checks, {} passed, {} failed, {} depending on a glancing cut\n",
+            rows,
+            rows - failed,
+            failed,
+            glancing
+        ),
+    );
     out
+}
+
+fn push_display(s: &mut String, x: &dyn std::fmt::Display) {
+    use std::fmt::Write;
+    let _ = write!(s, "{x}");
+}
+
+/// The cells of a text table in one buffer, row after row: what [`Cells::aligned`] lines up.
+pub(super) struct Cells {
+    text: String,
+    /// Each cell's end in `text` and its width in characters.
+    cells: Vec<(usize, usize)>,
+    columns: usize,
+}
+
+impl Cells {
+    /// A table with this head row.
+    pub(super) fn new(head: &[&str]) -> Cells {
+        let mut c = Cells {
+            text: String::new(),
+            cells: Vec::new(),
+            columns: head.len(),
+        };
+        for h in head {
+            c.cell(|s| s.push_str(h));
+        }
+        c
+    }
+
+    /// The next cell, written by `f` (rows wrap after as many cells as the head has).
+    pub(super) fn cell(&mut self, f: impl FnOnce(&mut String)) {
+        let start = self.text.len();
+        f(&mut self.text);
+        let t = &self.text[start..];
+        let width = if t.is_ascii() {
+            t.len()
+        } else {
+            t.chars().count()
+        };
+        self.cells.push((self.text.len(), width));
+    }
+
+    /// The rows lined up in columns two spaces apart (the columns in `right` flush right),
+    /// the head underlined, trailing blanks dropped.
+    pub(super) fn aligned(&self, right: std::ops::RangeInclusive<usize>) -> String {
+        let n = self.columns;
+        let mut widths = vec![0; n];
+        for (i, &(_, w)) in self.cells.iter().enumerate() {
+            widths[i % n] = widths[i % n].max(w);
+        }
+        let total: usize = widths.iter().sum::<usize>() + 2 * (n - 1);
+        let rows = self.cells.len() / n;
+        let mut out = String::with_capacity((rows + 2) * (total + 1));
+        let mut start = 0;
+        for (r, row) in self.cells.chunks(n).enumerate() {
+            let line = out.len();
+            for (c, &(end, w)) in row.iter().enumerate() {
+                if c > 0 {
+                    out.push_str("  ");
+                }
+                let cell = &self.text[start..end];
+                start = end;
+                let pad = widths[c] - w;
+                if right.contains(&c) {
+                    out.extend(std::iter::repeat_n(' ', pad));
+                    out.push_str(cell);
+                } else {
+                    out.push_str(cell);
+                    out.extend(std::iter::repeat_n(' ', pad));
+                }
+            }
+            let kept = out[line..].trim_end().len();
+            out.truncate(line + kept);
+            out.push('\n');
+            if r == 0 {
+                out.extend(std::iter::repeat_n('-', total));
+                out.push('\n');
+            }
+        }
+        out
+    }
 }
 
 /// The check table as pretty JSON.
@@ -235,40 +328,12 @@ pub fn reference_table_json(board: &Board) -> String {
 
 /// Cells as aligned text with a rule under the header; `right` columns right-aligned.
 pub(super) fn aligned(cells: &[Vec<String>], right: std::ops::RangeInclusive<usize>) -> String {
-    let ncol = cells[0].len();
-    let mut widths = vec![0; ncol];
-    let mut bytes = 0;
-    for r in cells {
-        for (w, s) in widths.iter_mut().zip(r) {
-            *w = (*w).max(s.chars().count());
-            bytes += s.len() + 2;
+    let head: Vec<&str> = cells[0].iter().map(String::as_str).collect();
+    let mut t = Cells::new(&head);
+    for row in &cells[1..] {
+        for x in row {
+            t.cell(|s| s.push_str(x));
         }
     }
-    let total: usize = widths.iter().sum::<usize>() + 2 * (ncol - 1);
-    // Written in place: a table of 20,000 checks is some 3 MB of text.
-    let mut out = String::with_capacity(bytes + cells.len() * total / 2 + 2 * total);
-    for (i, r) in cells.iter().enumerate() {
-        let start = out.len();
-        for (c, s) in r.iter().enumerate() {
-            if c > 0 {
-                out.push_str("  ");
-            }
-            let pad = widths[c] - s.chars().count();
-            if right.contains(&c) {
-                out.extend(std::iter::repeat_n(' ', pad));
-                out.push_str(s);
-            } else {
-                out.push_str(s);
-                out.extend(std::iter::repeat_n(' ', pad));
-            }
-        }
-        let kept = out[start..].trim_end().len();
-        out.truncate(start + kept);
-        out.push('\n');
-        if i == 0 {
-            out.extend(std::iter::repeat_n('-', total));
-            out.push('\n');
-        }
-    }
-    out
+    t.aligned(right)
 }
