@@ -98,7 +98,7 @@ pub struct Board {
     model: ErrorModel,
     /// Each object's propagated error bound (recording only), in object order.
     #[serde(skip)]
-    tracks: Vec<Track>,
+    tracks: super::tracks::Tracks,
     /// Each object's double-double reference value, where a reference replay was asked for.
     #[serde(skip)]
     shadows: Option<Vec<Shadow>>,
@@ -118,11 +118,11 @@ pub struct Board {
 /// bound tracked, in some 50 bytes per object instead of a protocol of some 1 KB per step.
 #[derive(Debug, Clone, Default)]
 struct Ledger {
-    /// The step that made each object and, for a number, its value (NaN for the rest), in
-    /// object order: what the bounds of numbers reckoned from numbers need.
-    made: Vec<(StepId, f64)>,
+    /// The value of each number, by its id (in id order): what the bounds of numbers
+    /// reckoned from numbers need. The step that made each object is in its track.
+    numbers: Vec<(ObjId, f64)>,
     /// The checks with the step they are attached to, in the order filed.
-    checks: Vec<(StepId, Check)>,
+    checks: super::tracks::Chunked<(StepId, Check)>,
     /// The situation from each step on where it changed, in step order.
     contexts: Vec<(StepId, Option<std::sync::Arc<str>>)>,
 }
@@ -186,7 +186,7 @@ impl Board {
             next_step: 0,
             last_touched: false,
             model: self.model,
-            tracks: Vec::new(),
+            tracks: Default::default(),
             shadows: None,
             jitter: None,
             ledger: None,
@@ -206,7 +206,7 @@ impl Board {
             next_step: 0,
             last_touched: false,
             model: setup.model.unwrap_or(ErrorModel::ROUNDING),
-            tracks: Vec::new(),
+            tracks: Default::default(),
             shadows: (recording && setup.reference && !setup.checks_only).then(Vec::new),
             jitter: setup.hand.map(Jitter::new),
             ledger: (recording && setup.checks_only).then(Box::default),
@@ -297,7 +297,6 @@ impl Board {
     fn tr(&self, id: ObjId) -> Track {
         self.tracks
             .get((id.0 as usize).wrapping_sub(1))
-            .copied()
             .unwrap_or_default()
     }
 
@@ -305,7 +304,7 @@ impl Board {
     fn set_tr(&mut self, id: ObjId, t: impl FnOnce(&Board) -> Track) {
         if self.recording && id != ObjId::NONE {
             let t = t(self);
-            self.tracks[id.0 as usize - 1] = t;
+            self.tracks.set(id.0 as usize - 1, t);
         }
     }
 
@@ -393,6 +392,12 @@ impl Board {
     /// How many steps were made (recorded or only counted).
     pub fn step_count(&self) -> usize {
         self.next_step as usize
+    }
+
+    /// How many objects were made on a recording board (kept, or only counted where the board
+    /// keeps only its checks); 0 on a board that does not record.
+    pub fn object_count(&self) -> usize {
+        self.tracks.len()
     }
 
     /// Every analytic check on the board, in step order.
@@ -484,11 +489,9 @@ impl Board {
 
     /// Reserves room for `steps` more steps and `objects` more objects, so that a long
     /// construction does not spend its time moving a growing protocol around in memory.
+    /// (A board that keeps only its checks grows in chunks and needs no room made.)
     pub fn reserve(&mut self, steps: usize, objects: usize) {
-        if let Some(l) = self.ledger.as_mut() {
-            l.made.reserve(objects);
-            self.tracks.reserve(objects);
-        } else if self.recording {
+        if self.is_drawing() {
             self.steps.reserve(steps);
             self.objects.reserve(objects);
         }
@@ -551,13 +554,9 @@ impl Board {
     /// for a number, its value.
     fn count_object(&mut self, geom: Geom) -> ObjId {
         let id = ObjId(self.tracks.len() as u32 + 1);
-        self.tracks.push(Track::default());
-        let value = match geom {
-            Geom::Scalar { value, .. } => value,
-            _ => f64::NAN,
-        };
-        if let Some(l) = self.ledger.as_mut() {
-            l.made.push((StepId(self.next_step), value));
+        self.tracks.push(StepId(self.next_step));
+        if let (Geom::Scalar { value, .. }, Some(l)) = (geom, self.ledger.as_mut()) {
+            l.numbers.push((id, value));
         }
         id
     }
@@ -566,7 +565,11 @@ impl Board {
     fn number(&self, id: ObjId) -> Option<f64> {
         let i = (id.0 as usize).wrapping_sub(1);
         match self.ledger.as_deref() {
-            Some(l) => l.made.get(i).map(|m| m.1).filter(|v| !v.is_nan()),
+            Some(l) => l
+                .numbers
+                .binary_search_by_key(&id, |n| n.0)
+                .ok()
+                .map(|k| l.numbers[k].1),
             None => match self.objects.get(i).map(|o| &o.geom) {
                 Some(Geom::Scalar { value, .. }) => Some(*value),
                 _ => None,
@@ -577,7 +580,7 @@ impl Board {
     fn file_object(&mut self, label: Label, role: Role, geom: Geom) -> ObjId {
         let id = ObjId(self.tracks.len() as u32 + 1);
         let step = StepId(self.next_step);
-        self.tracks.push(Track::default());
+        self.tracks.push(step);
         if let Some(s) = self.shadows.as_mut() {
             s.push(Shadow::None);
         }
@@ -1500,7 +1503,7 @@ impl Board {
     /// Files a check with the step that made the object `id`.
     fn push_check(&mut self, id: ObjId, check: Check) {
         if let Some(l) = self.ledger.as_mut() {
-            if let Some(&(step, _)) = l.made.get((id.0 as usize).wrapping_sub(1)) {
+            if let Some(step) = self.tracks.step((id.0 as usize).wrapping_sub(1)) {
                 l.checks.push((step, check));
             }
             return;

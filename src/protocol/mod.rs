@@ -10,6 +10,7 @@ mod figure;
 mod reference;
 mod setup;
 mod step;
+mod tracks;
 
 pub use accuracy::{ErrorModel, WorstCut};
 pub use board::{Board, CheckEntry, Cut, Scale, H};

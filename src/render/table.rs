@@ -136,9 +136,19 @@ fn push_display(s: &mut String, x: &dyn std::fmt::Display) {
 /// The cells of a text table in one buffer, row after row: what [`Cells::aligned`] lines up.
 pub(super) struct Cells {
     text: String,
-    /// Each cell's end in `text` and its width in characters.
-    cells: Vec<(usize, usize)>,
-    columns: usize,
+    /// Each cell's end in `text`.
+    ends: Vec<usize>,
+    /// The widest cell of each column so far, in characters.
+    widths: Vec<usize>,
+}
+
+/// A cell's width in characters.
+fn width(s: &str) -> usize {
+    if s.is_ascii() {
+        s.len()
+    } else {
+        s.chars().count()
+    }
 }
 
 impl Cells {
@@ -146,8 +156,8 @@ impl Cells {
     pub(super) fn new(head: &[&str]) -> Cells {
         let mut c = Cells {
             text: String::new(),
-            cells: Vec::new(),
-            columns: head.len(),
+            ends: Vec::new(),
+            widths: vec![0; head.len()],
         };
         for h in head {
             c.cell(|s| s.push_str(h));
@@ -159,36 +169,29 @@ impl Cells {
     pub(super) fn cell(&mut self, f: impl FnOnce(&mut String)) {
         let start = self.text.len();
         f(&mut self.text);
-        let t = &self.text[start..];
-        let width = if t.is_ascii() {
-            t.len()
-        } else {
-            t.chars().count()
-        };
-        self.cells.push((self.text.len(), width));
+        let column = self.ends.len() % self.widths.len();
+        let w = width(&self.text[start..]);
+        self.widths[column] = self.widths[column].max(w);
+        self.ends.push(self.text.len());
     }
 
     /// The rows lined up in columns two spaces apart (the columns in `right` flush right),
     /// the head underlined, trailing blanks dropped.
     pub(super) fn aligned(&self, right: std::ops::RangeInclusive<usize>) -> String {
-        let n = self.columns;
-        let mut widths = vec![0; n];
-        for (i, &(_, w)) in self.cells.iter().enumerate() {
-            widths[i % n] = widths[i % n].max(w);
-        }
-        let total: usize = widths.iter().sum::<usize>() + 2 * (n - 1);
-        let rows = self.cells.len() / n;
+        let n = self.widths.len();
+        let total: usize = self.widths.iter().sum::<usize>() + 2 * (n - 1);
+        let rows = self.ends.len() / n;
         let mut out = String::with_capacity((rows + 2) * (total + 1));
         let mut start = 0;
-        for (r, row) in self.cells.chunks(n).enumerate() {
+        for (r, row) in self.ends.chunks(n).enumerate() {
             let line = out.len();
-            for (c, &(end, w)) in row.iter().enumerate() {
+            for (c, &end) in row.iter().enumerate() {
                 if c > 0 {
                     out.push_str("  ");
                 }
                 let cell = &self.text[start..end];
                 start = end;
-                let pad = widths[c] - w;
+                let pad = self.widths[c] - width(cell);
                 if right.contains(&c) {
                     out.extend(std::iter::repeat_n(' ', pad));
                     out.push_str(cell);
