@@ -247,3 +247,31 @@ mod tests {
         std::fs::remove_dir_all(&d).unwrap();
     }
 }
+
+/// The memory this machine has free for new work (bytes): Linux's `MemAvailable`; `None`
+/// where it cannot be read (another system, no `/proc`).
+pub fn available_memory() -> Option<u64> {
+    let text = std::fs::read_to_string("/proc/meminfo").ok()?;
+    memory_available_in(&text)
+}
+
+/// `MemAvailable` of a `/proc/meminfo` text, in bytes.
+fn memory_available_in(meminfo: &str) -> Option<u64> {
+    let line = meminfo.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    kb.checked_mul(1024)
+}
+
+#[cfg(test)]
+mod memory_tests {
+    #[test]
+    fn reads_what_the_kernel_says_is_available() {
+        let text = "MemTotal:       24684544 kB\nMemFree:        18083000 kB\nMemAvailable:   22959104 kB\n";
+        assert_eq!(super::memory_available_in(text), Some(22_959_104 * 1024));
+        assert_eq!(super::memory_available_in("MemTotal: 1 kB\n"), None);
+        assert_eq!(super::memory_available_in("MemAvailable: lots kB\n"), None);
+        if cfg!(target_os = "linux") {
+            assert!(super::available_memory().is_some_and(|b| b > 0));
+        }
+    }
+}

@@ -647,14 +647,18 @@ impl TrussScene {
         let per_case = systems * (STEPS_PER_PART * (truss.joints.len() + truss.members.len()) + 20);
         let steps = cases.saturating_mul(per_case);
         let (_, max_steps) = limits();
-        if steps <= max_steps {
-            return Ok(());
-        }
         let field = if positions > self.load_cases.len() {
             "moving_loads"
         } else {
             "load_cases"
         };
+        if steps <= max_steps {
+            if crate::protocol::checks_only() {
+                let free = crate::io::available_memory();
+                super::fields::check_fits_memory(origin, field, steps, free)?;
+            }
+            return Ok(());
+        }
         Err(invalid(
             origin,
             field.into(),
