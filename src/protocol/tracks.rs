@@ -11,8 +11,8 @@ use crate::kernel::{Conditioning, Vector};
 const CHUNK: usize = 1 << 14;
 
 /// A growing list kept in chunks of [`CHUNK`] items: it never holds more than one chunk of
-/// spare room and never copies what it holds to grow (a `Vec` of millions of items may hold
-/// twice their size, and three times while it grows).
+/// spare room and never copies more than a chunk to grow (a `Vec` of millions of items may
+/// hold twice their size, and three times while it grows).
 #[derive(Debug, Clone)]
 pub(crate) struct Chunked<T> {
     chunks: Vec<Vec<T>>,
@@ -34,8 +34,14 @@ impl<T> Chunked<T> {
     }
 
     pub fn push(&mut self, x: T) {
+        // The first chunk grows as a Vec does (a small board stays small), up to CHUNK (a
+        // power of two, where doubling stops exactly); the others are made whole.
         if self.len % CHUNK == 0 {
-            self.chunks.push(Vec::with_capacity(CHUNK));
+            self.chunks.push(if self.len == 0 {
+                Vec::new()
+            } else {
+                Vec::with_capacity(CHUNK)
+            });
         }
         if let Some(c) = self.chunks.last_mut() {
             c.push(x);
