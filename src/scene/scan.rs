@@ -51,18 +51,18 @@ impl<'de> Visitor<'de> for Top<'_> {
     }
     fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<(), A::Error> {
         self.0.object = true;
-        let mut path = String::new();
+        let mut path: Vec<Seg<'de>> = Vec::new();
         while let Some(key) = map.next_key::<std::borrow::Cow<'de, str>>()? {
             if key == "procedure" {
                 let v: serde_json::Value = map.next_value()?;
                 if let serde_json::Value::String(s) = &v {
-                    check_len(s, "procedure", &mut self.0.too_long);
+                    check_len(s, &[Seg::Key(key)], &mut self.0.too_long);
                 }
                 self.0.procedure = Some(v);
                 continue;
             }
             path.clear();
-            push_key(&mut path, &key);
+            path.push(Seg::Key(key));
             map.next_value_seed(Walk {
                 path: &mut path,
                 found: &mut self.0.too_long,
@@ -94,51 +94,66 @@ impl<'de> Visitor<'de> for Top<'_> {
     }
 }
 
-/// A field's name as the error path writes it (long names clipped).
-fn push_key(path: &mut String, key: &str) {
-    if !path.is_empty() {
-        path.push('.');
+/// One step of a field's path: a key of an object or an index of an array. The path is
+/// written out only for the text found too long.
+enum Seg<'de> {
+    Key(std::borrow::Cow<'de, str>),
+    Index(usize),
+}
+
+/// The path as error messages write it: `joints[3].name` (long keys clipped).
+fn path_text(path: &[Seg]) -> String {
+    let mut out = String::new();
+    for seg in path {
+        match seg {
+            Seg::Key(k) => {
+                if !out.is_empty() {
+                    out.push('.');
+                }
+                out.push_str(&crate::fmt::clip(k, 40));
+            }
+            Seg::Index(i) => {
+                let _ = write!(out, "[{i}]");
+            }
+        }
     }
-    if key.len() <= 40 {
-        path.push_str(key);
-    } else {
-        path.push_str(&crate::fmt::clip(key, 40));
-    }
+    out
 }
 
 /// Notes the text at `path` if it is longer than its field allows (the scene's free
-/// `notes` may run to [`MAX_NOTES_CHARS`](MAX_NOTES_CHARS), every other text to
-/// [`MAX_TEXT_CHARS`](MAX_TEXT_CHARS)), unless an earlier one was found.
-fn check_len(s: &str, path: &str, found: &mut Option<(String, usize, usize)>) {
-    let max = if path == "notes" {
+/// `notes` may run to [`MAX_NOTES_CHARS`], every other text to [`MAX_TEXT_CHARS`]), unless
+/// an earlier one was found.
+fn check_len(s: &str, path: &[Seg], found: &mut Option<(String, usize, usize)>) {
+    // A character is at least one byte: most texts are settled without counting.
+    if found.is_some() || s.len() <= MAX_TEXT_CHARS {
+        return;
+    }
+    let notes = matches!(path, [Seg::Key(k)] if k == "notes");
+    let max = if notes {
         MAX_NOTES_CHARS
     } else {
         MAX_TEXT_CHARS
     };
-    // A character is at least one byte: most texts are settled without counting.
-    if found.is_some() || s.len() <= max {
-        return;
-    }
     let n = s.chars().count();
     if n > max {
-        *found = Some((path.to_string(), n, max));
+        *found = Some((path_text(path), n, max));
     }
 }
 
 /// Any value below the top level, its path kept for the error.
-struct Walk<'a> {
-    path: &'a mut String,
+struct Walk<'a, 'de> {
+    path: &'a mut Vec<Seg<'de>>,
     found: &'a mut Option<(String, usize, usize)>,
 }
 
-impl<'de> DeserializeSeed<'de> for Walk<'_> {
+impl<'de> DeserializeSeed<'de> for Walk<'_, 'de> {
     type Value = ();
     fn deserialize<D: serde::Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
         d.deserialize_any(self)
     }
 }
 
-impl<'de> Visitor<'de> for Walk<'_> {
+impl<'de> Visitor<'de> for Walk<'_, 'de> {
     type Value = ();
     fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
         f.write_str("a JSON value")
@@ -149,26 +164,24 @@ impl<'de> Visitor<'de> for Walk<'_> {
     }
     fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<(), A::Error> {
         while let Some(key) = map.next_key::<std::borrow::Cow<'de, str>>()? {
-            let len = self.path.len();
-            push_key(self.path, &key);
+            self.path.push(Seg::Key(key));
             map.next_value_seed(Walk {
                 path: &mut *self.path,
                 found: &mut *self.found,
             })?;
-            self.path.truncate(len);
+            self.path.pop();
         }
         Ok(())
     }
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
         let mut i = 0usize;
         loop {
-            let len = self.path.len();
-            let _ = write!(self.path, "[{i}]");
+            self.path.push(Seg::Index(i));
             let more = seq.next_element_seed(Walk {
                 path: &mut *self.path,
                 found: &mut *self.found,
             })?;
-            self.path.truncate(len);
+            self.path.pop();
             if more.is_none() {
                 return Ok(());
             }

@@ -10,8 +10,8 @@ use crate::truss::matrix::{self, Determinacy};
 use crate::truss::redundant::{self, PairMode};
 use crate::truss::roof;
 use crate::truss::{Joint, JointLoad, LoadCase, Member, Support, Truss};
+use foldhash::{HashMap, HashMapExt};
 use serde::{Deserialize, Serialize};
-use std::collections::HashMap;
 
 /// Most joints a scene drawn as a figure may have (the Cremona plan is linear; this bounds
 /// the sheet).
