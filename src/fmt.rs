@@ -38,7 +38,13 @@ pub fn num_into(out: &mut String, x: f64, decimals: usize) {
     // trimmed decimals below, without the exact float formatting (its slow path was 3 % of a
     // recorded crank construction, for "θ = 10°").
     if x.fract() == 0.0 && x.abs() < 1e15 {
-        let _ = write!(out, "{}", x as i64);
+        if x < 0.0 {
+            out.push('-');
+        }
+        push_uint(out, x.abs() as u64);
+        return;
+    }
+    if fixed_fast(out, x, decimals) {
         return;
     }
     let start = out.len();
@@ -68,9 +74,177 @@ pub fn sci_into(out: &mut String, x: f64) {
     use std::fmt::Write;
     if x == 0.0 {
         out.push('0');
-    } else {
+    } else if !sci_fast(out, x) {
         let _ = write!(out, "{:.2e}", x);
     }
+}
+
+/// Powers of ten that f64 holds exactly.
+const POW10: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+];
+
+/// `x` scaled by 10^k (|k| ≤ 22) with one rounding: its error is at most half an ulp.
+fn scaled(x: f64, k: i32) -> Option<f64> {
+    let p = *POW10.get(k.unsigned_abs() as usize)?;
+    Some(if k >= 0 { x * p } else { x / p })
+}
+
+/// The nearest integer to the exact value of which `m` is the rounded scaling, where that
+/// is certain: `m` below 2^40 (its rounding at most 2^-13) and not within 2^-12 of a tie.
+/// Otherwise `None`, and the exact formatter decides.
+fn certain_round(m: f64) -> Option<f64> {
+    let n = m.round();
+    (m.abs() < (1u64 << 40) as f64 && (m - n).abs() < 0.5 - 1.0 / 4096.0).then_some(n)
+}
+
+/// x·y as the rounded product and its exact error (Dekker's product by Veltkamp's split;
+/// exact where neither overflows).
+fn two_prod(x: f64, y: f64) -> (f64, f64) {
+    let split = |a: f64| {
+        let c = 134_217_729.0 * a; // 2^27 + 1
+        let hi = c - (c - a);
+        (hi, a - hi)
+    };
+    let p = x * y;
+    let ((xh, xl), (yh, yl)) = (split(x), split(y));
+    (p, ((xh * yh - p) + xh * yl + xl * yh) + xl * yl)
+}
+
+/// The integer nearest to x·10^decimals where that is certain (the exact product below
+/// 2^53, not within 1e-9 of a tie); `None` otherwise.
+fn fixed_round(x: f64, decimals: usize) -> Option<i64> {
+    let scale = *POW10.get(decimals)?;
+    let (m, err) = two_prod(x, scale);
+    // (NaN fails this too.)
+    if m.abs().partial_cmp(&((1u64 << 53) as f64)) != Some(std::cmp::Ordering::Less) {
+        return None;
+    }
+    let n = m.round();
+    // m − n is exact (|m| ≥ 2^52 is whole; below, n lies within a factor of two of m or
+    // m is under ½); the rest of the distance to n is the product's error.
+    let off = (m - n) + err;
+    (off.abs() < 0.5 - 1e-9).then_some(n as i64)
+}
+
+/// [`num_into`]'s text without the exact float formatting where the rounding is certain:
+/// x·10^decimals rounded to an integer and the point set in it; the same text as the
+/// exact formatting, trimmed (tested on millions of values against it). `false`: nothing
+/// written, the caller formats exactly.
+fn fixed_fast(out: &mut String, x: f64, decimals: usize) -> bool {
+    let Some(n) = fixed_round(x, decimals) else {
+        return false;
+    };
+    if n == 0 {
+        out.push('0');
+        return true;
+    }
+    // The digits right-aligned in a buffer, at least one before the point.
+    let mut buf = [b'0'; 40];
+    let end = buf.len();
+    let mut i = end;
+    let mut m = n.unsigned_abs();
+    while m > 0 {
+        i -= 1;
+        buf[i] = b'0' + (m % 10) as u8;
+        m /= 10;
+    }
+    let first = i.min(end - decimals - 1);
+    let point = end - decimals;
+    // The fraction without its trailing zeros.
+    let mut last = end;
+    while last > point && buf[last - 1] == b'0' {
+        last -= 1;
+    }
+    if n < 0 {
+        out.push('-');
+    }
+    let text = |r: std::ops::Range<usize>| std::str::from_utf8(&buf[r]).unwrap_or("");
+    out.push_str(text(first..point));
+    if last > point {
+        out.push('.');
+        out.push_str(text(point..last));
+    }
+    true
+}
+
+/// [`sci_into`]'s text (`{:.2e}`) without the exact float formatting where the rounding
+/// to three digits is certain (tested on millions of values against it).
+fn sci_fast(out: &mut String, x: f64) -> bool {
+    let a = x.abs();
+    if !a.is_normal() {
+        return false;
+    }
+    let mut e = a.log10().floor() as i32;
+    // The estimate of the exponent may be one off either way: the scaled value tells.
+    let mut m = match scaled(a, 2 - e) {
+        Some(m) => m,
+        None => return false,
+    };
+    if m < 100.0 {
+        e -= 1;
+    } else if m >= 1000.0 {
+        e += 1;
+    }
+    if !(100.0..1000.0).contains(&m) {
+        match scaled(a, 2 - e) {
+            Some(v) if (100.0..1000.0).contains(&v) => m = v,
+            _ => return false,
+        }
+    }
+    let Some(n) = certain_round(m) else {
+        return false;
+    };
+    let mut n = n as u32;
+    if n == 1000 {
+        n = 100;
+        e += 1;
+    }
+    if x < 0.0 {
+        out.push('-');
+    }
+    let digit = |d: u32| char::from(b'0' + d as u8);
+    out.push(digit(n / 100));
+    out.push('.');
+    out.push(digit(n / 10 % 10));
+    out.push(digit(n % 10));
+    out.push('e');
+    if e < 0 {
+        out.push('-');
+    }
+    push_uint(out, u64::from(e.unsigned_abs()));
+    true
+}
+
+/// The decimal digits of `n`, at least `width` of them (zeros in front), without the
+/// formatting machinery: for tables of many rows.
+///
+/// ```
+/// let mut s = String::from("step ");
+/// graphostatik::fmt::push_uint_padded(&mut s, 7, 3);
+/// assert_eq!(s, "step 007");
+/// ```
+pub fn push_uint_padded(out: &mut String, mut n: u64, width: usize) {
+    let mut buf = [b'0'; 24];
+    let mut i = buf.len();
+    loop {
+        i -= 1;
+        buf[i] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    let i = i.min(buf.len().saturating_sub(width));
+    // Only ASCII digits were written.
+    if let Ok(digits) = std::str::from_utf8(&buf[i..]) {
+        out.push_str(digits);
+    }
+}
+
+fn push_uint(out: &mut String, n: u64) {
+    push_uint_padded(out, n, 1);
 }
 
 /// A number with every digit it has: the shortest decimal that reads back as the same f64
@@ -196,4 +370,120 @@ pub const MAX_ERROR_CHARS: usize = 1000;
 /// ```
 pub fn error_line(msg: &str) -> String {
     clip(msg, MAX_ERROR_CHARS)
+}
+
+#[cfg(test)]
+mod fast_tests {
+    use super::*;
+
+    fn exact_num(x: f64, d: usize) -> String {
+        let mut s = format!("{:.*}", d, x);
+        if s.contains('.') {
+            s = s.trim_end_matches('0').trim_end_matches('.').to_string();
+        }
+        if s == "-0" {
+            s = "0".into();
+        }
+        s
+    }
+
+    fn exact_sci(x: f64) -> String {
+        if x == 0.0 {
+            "0".into()
+        } else {
+            format!("{:.2e}", x)
+        }
+    }
+
+    /// Values of every magnitude, ties of both formats, and values a hair off them.
+    fn samples() -> Vec<f64> {
+        let mut xs = vec![
+            0.0078125,
+            0.5e-6,
+            1.5e-6,
+            2.5e-6,
+            1234.5,
+            0.125,
+            0.0000005,
+            999.5,
+            9.995,
+            9.9949999,
+            1.005,
+            2.675,
+            1e-300,
+            5e-324,
+            1e300,
+            123456.789,
+            1099511627776.5,
+            0.1 + 0.2,
+            -3394.1125496954,
+            4.547473508864641e-13,
+            1.235e-9,
+            9.995e-7,
+            1e22,
+            1e23,
+            7.0e-21,
+        ];
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        // Fewer without optimisation: the exact formatting compared with is slow there.
+        let rounds = if cfg!(debug_assertions) {
+            4_000
+        } else {
+            40_000
+        };
+        for _ in 0..rounds {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            // Any bit pattern, and numbers of table-like size.
+            let bits = f64::from_bits(state);
+            if bits.is_finite() {
+                xs.push(bits);
+            }
+            let mag = 10f64.powi((state % 40) as i32 - 20);
+            xs.push(mag * ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5));
+            // Ties and near-ties of six decimals and of three digits.
+            let k = (state >> 20) % 2_000_000;
+            xs.push((k as f64 + 0.5) / 1e6);
+            xs.push((k as f64 + 0.5) * 10f64.powi((state % 30) as i32 - 15) / 1000.0);
+        }
+        let near: Vec<f64> = xs
+            .iter()
+            .flat_map(|x| {
+                [
+                    f64::from_bits(x.to_bits() + 1),
+                    f64::from_bits(x.to_bits().wrapping_sub(1)),
+                ]
+            })
+            .filter(|x| x.is_finite())
+            .collect();
+        xs.extend(near);
+        let neg: Vec<f64> = xs.iter().map(|x| -x).collect();
+        xs.extend(neg);
+        xs
+    }
+
+    #[test]
+    fn the_fast_paths_write_the_exact_formatting_s_text() {
+        let (mut fast_num, mut fast_sci) = (0, 0);
+        let xs = samples();
+        for &x in &xs {
+            for d in [0, 1, 3, 6] {
+                let mut s = String::new();
+                num_into(&mut s, x, d);
+                assert_eq!(s, exact_num(x, d), "num({x:e}, {d})");
+                fast_num += usize::from(fixed_fast(&mut String::new(), x, d));
+            }
+            let mut s = String::new();
+            sci_into(&mut s, x);
+            assert_eq!(s, exact_sci(x), "sci({x:e})");
+            fast_sci += usize::from(x != 0.0 && sci_fast(&mut String::new(), x));
+        }
+        // The fast paths take most values (every bit pattern included).
+        assert!(
+            fast_num > 2 * xs.len() && fast_sci > xs.len() / 2,
+            "{fast_num} {fast_sci} of {}",
+            xs.len()
+        );
+    }
 }

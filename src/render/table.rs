@@ -1,6 +1,6 @@
 //! The check table: every analytic check of a construction, as text or JSON.
 
-use crate::fmt::{num, num_into, sci, sci_into};
+use crate::fmt::{num, num_into, push_uint_padded, sci, sci_into};
 use crate::protocol::Board;
 use serde::Serialize;
 
@@ -88,7 +88,7 @@ pub fn check_table_text(board: &Board) -> String {
         rows += 1;
         failed += usize::from(!c.passed);
         glancing += usize::from(c.glancing());
-        cells.cell(|s| push_display(s, &e.step));
+        cells.cell(|s| push_uint_padded(s, e.step.0.into(), 3));
         cells.cell(|s| s.push_str(e.context.unwrap_or("")));
         cells.cell(|s| {
             s.push_str(&c.quantity);
@@ -105,7 +105,7 @@ pub fn check_table_text(board: &Board) -> String {
             Some(w) => {
                 num_into(s, w.conditioning.angle_deg(), 1);
                 s.push_str("° at ");
-                push_display(s, &w.step);
+                push_uint_padded(s, w.step.0.into(), 3);
                 if c.glancing() {
                     s.push_str(" glancing");
                 }
@@ -140,6 +140,16 @@ pub(super) struct Cells {
     ends: Vec<usize>,
     /// The widest cell of each column so far, in characters.
     widths: Vec<usize>,
+}
+
+/// `n` blanks.
+fn push_spaces(out: &mut String, mut n: usize) {
+    const BLANKS: &str = "                                                                ";
+    while n > 0 {
+        let k = n.min(BLANKS.len());
+        out.push_str(&BLANKS[..k]);
+        n -= k;
+    }
 }
 
 /// A cell's width in characters.
@@ -193,11 +203,11 @@ impl Cells {
                 start = end;
                 let pad = self.widths[c] - width(cell);
                 if right.contains(&c) {
-                    out.extend(std::iter::repeat_n(' ', pad));
+                    push_spaces(&mut out, pad);
                     out.push_str(cell);
                 } else {
                     out.push_str(cell);
-                    out.extend(std::iter::repeat_n(' ', pad));
+                    push_spaces(&mut out, pad);
                 }
             }
             let kept = out[line..].trim_end().len();
