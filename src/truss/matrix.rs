@@ -424,6 +424,13 @@ fn memo_key(t: &Truss) -> Vec<u64> {
     key
 }
 
+/// Forgets what is known of the last truss on this thread (its LU, its rank test): for a
+/// benchmark that times the whole path of a check again and again on one truss, which would
+/// otherwise find both made by the run before.
+pub fn forget() {
+    MEMO.with(|m| *m.borrow_mut() = Memo::default());
+}
+
 /// `f` on what is known of `t`, forgetting the last truss if `t` is another.
 fn memo<R>(t: &Truss, f: impl FnOnce(&mut Memo) -> R) -> R {
     let key = memo_key(t);
@@ -544,4 +551,48 @@ fn joint_residuals(t: &Truss, case: &LoadCase, members: &[f64], reactions: &[f64
         r[e.row] += x * e.val;
     }
     r
+}
+
+#[cfg(test)]
+mod memo_tests {
+    use super::*;
+    use crate::kernel::Vector;
+    use crate::truss::generate::{parallel_chord, Web};
+    use crate::truss::JointLoad;
+
+    fn case(n: usize) -> LoadCase {
+        LoadCase {
+            name: "P".into(),
+            loads: (1..n)
+                .map(|i| JointLoad {
+                    joint: i,
+                    force: Vector::new(0.0, -1000.0),
+                })
+                .collect(),
+        }
+    }
+
+    #[test]
+    fn what_is_known_of_one_truss_is_never_taken_for_another() {
+        let mut t = parallel_chord(Web::Warren, 6, 2.0, 2.0);
+        let c = case(6);
+        assert_eq!(analyse(&t).determinacy, Determinacy::Determinate);
+        let before = solve(&t, &c).unwrap();
+        // The same truss again: the same answers (from the memo).
+        assert_eq!(solve(&t, &c).unwrap(), before);
+        // A joint moved by one ulp is another truss.
+        let j = t.joints.len() - 1;
+        t.joints[j].at.y = f64::from_bits(t.joints[j].at.y.to_bits() + 1);
+        let moved = solve(&t, &c).unwrap();
+        assert_ne!(moved, before);
+        forget();
+        assert_eq!(solve(&t, &c).unwrap(), moved);
+        // A member taken out: a mechanism, not the determinate truss known before.
+        t.members.remove(2);
+        assert!(matches!(
+            analyse(&t).determinacy,
+            Determinacy::Mechanism { .. }
+        ));
+        assert_eq!(solve(&t, &c), None);
+    }
 }
