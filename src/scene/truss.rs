@@ -20,7 +20,7 @@ pub const MAX_JOINTS: usize = 20_000;
 /// Most joints a scene may have where only its checks are kept (`check`, `forces`:
 /// [`checks_only`](crate::protocol::checks_only)): the plan, the solve and the checks are
 /// linear in time and memory, some 1 KB per joint.
-pub const MAX_JOINTS_CHECKED: usize = 200_000;
+pub const MAX_JOINTS_CHECKED: usize = 100_000;
 
 /// The limits that hold for a scene read now: for its checks alone, or for its figure.
 fn limits() -> (usize, usize) {

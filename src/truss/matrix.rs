@@ -127,6 +127,17 @@ fn analyse_afresh(t: &Truss) -> Analysis {
     if k == 0 {
         return out;
     }
+    // Above the SVD's limit, a truss that is a mechanism whatever its geometry is found by
+    // counting (the pebble game) before any factorisation: the LU of a truss of random
+    // members fills in (a 50,000-joint one took 57 s and 7.7 GB to be called a mechanism).
+    let generic = (k > DENSE_MAX_JOINTS).then(|| super::pebble::generic(t));
+    if let Some(g) = generic.as_ref().filter(|g| g.freedoms > 0) {
+        out.determinacy = Determinacy::Mechanism {
+            joint: g.loose_joint.unwrap_or(0),
+            freedoms: g.freedoms,
+        };
+        return out;
+    }
     // The usual case, a square system that is clearly regular, is settled by the sparse LU
     // at any size; anything doubtful goes to the SVD, which names the joint that can move.
     let sparse = (s + r == 2 * k).then(|| sparse_test(t));
@@ -138,7 +149,7 @@ fn analyse_afresh(t: &Truss) -> Analysis {
     if k > DENSE_MAX_JOINTS {
         // Too large for the SVD: the pebble game decides generic rigidity, and a square system
         // that the sparse test doubts is a mechanism named by its inverse-iteration motion.
-        out.determinacy = without_svd(t, sparse);
+        out.determinacy = without_svd(t, sparse, generic);
         return out;
     }
     let a = equilibrium_matrix(t);
@@ -257,9 +268,13 @@ fn most_moved(motion: &[f64], k: usize) -> Option<usize> {
 /// The verdict without the SVD: generic rigidity by the pebble game; a square system the
 /// sparse test doubts is a mechanism even where the game finds it generically rigid (joints
 /// in line, parallel bars), named by its motion.
-fn without_svd(t: &Truss, sparse: Option<Sparse>) -> Determinacy {
+fn without_svd(
+    t: &Truss,
+    sparse: Option<Sparse>,
+    generic: Option<super::pebble::Generic>,
+) -> Determinacy {
     let (k, s, r) = (t.joints.len(), t.members.len(), t.reaction_unknowns());
-    let g = super::pebble::generic(t);
+    let g = generic.unwrap_or_else(|| super::pebble::generic(t));
     if g.freedoms > 0 {
         let joint = match sparse {
             Some(Sparse::Doubtful(Some(j))) => j,
