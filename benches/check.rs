@@ -15,32 +15,14 @@
 use graphostatik::protocol::{with_setup, Setup};
 use graphostatik::render::check_table_text;
 use graphostatik::scene::AnyScene;
-use std::alloc::{GlobalAlloc, Layout, System};
 use std::hint::black_box;
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
-struct Counting;
-static LIVE: AtomicUsize = AtomicUsize::new(0);
-static PEAK: AtomicUsize = AtomicUsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
-        let p = unsafe { System.alloc(l) };
-        if !p.is_null() {
-            let now = LIVE.fetch_add(l.size(), Ordering::Relaxed) + l.size();
-            PEAK.fetch_max(now, Ordering::Relaxed);
-        }
-        p
-    }
-    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
-        unsafe { System.dealloc(p, l) };
-        LIVE.fetch_sub(l.size(), Ordering::Relaxed);
-    }
-}
+#[path = "support/counting.rs"]
+mod counting;
 
 #[global_allocator]
-static A: Counting = Counting;
+static A: counting::Counting = counting::Counting;
 
 /// A Warren girder of about `joints` joints as scene text.
 fn warren(joints: usize) -> String {
@@ -115,14 +97,13 @@ fn measure(text: &str, checks_only: bool, reps: usize) -> Option<(f64, f64)> {
     let mut times = Vec::new();
     let mut peak = 0;
     for _ in 0..reps {
-        let base = LIVE.load(Ordering::Relaxed);
-        PEAK.store(base, Ordering::Relaxed);
+        let base = counting::start();
         // Every run from the start: the rank test's LU is not taken from the run before.
         graphostatik::truss::matrix::forget();
         let t = Instant::now();
         check(text, checks_only)?;
         times.push(t.elapsed().as_secs_f64() * 1e3);
-        peak = peak.max(PEAK.load(Ordering::Relaxed) - base);
+        peak = peak.max(counting::peak_above(base));
     }
     times.sort_by(f64::total_cmp);
     Some((times[reps / 2], peak as f64 / 1e6))

@@ -19,32 +19,14 @@ use graphostatik::truss::cremona::{construct_plan, construct_truss, TrussDrawing
 use graphostatik::truss::generate::{parallel_chord, Web};
 use graphostatik::truss::matrix;
 use graphostatik::truss::{JointLoad, LoadCase, Truss};
-use std::alloc::{GlobalAlloc, Layout, System};
 use std::hint::black_box;
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
-struct Counting;
-static LIVE: AtomicUsize = AtomicUsize::new(0);
-static PEAK: AtomicUsize = AtomicUsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
-        let p = unsafe { System.alloc(l) };
-        if !p.is_null() {
-            let now = LIVE.fetch_add(l.size(), Ordering::Relaxed) + l.size();
-            PEAK.fetch_max(now, Ordering::Relaxed);
-        }
-        p
-    }
-    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
-        unsafe { System.dealloc(p, l) };
-        LIVE.fetch_sub(l.size(), Ordering::Relaxed);
-    }
-}
+#[path = "support/counting.rs"]
+mod counting;
 
 #[global_allocator]
-static A: Counting = Counting;
+static A: counting::Counting = counting::Counting;
 
 const D: TrussDrawing = TrussDrawing {
     length_scale: 100.0,
@@ -75,12 +57,11 @@ fn measure(reps: usize, f: &dyn Fn()) -> (f64, usize) {
     let mut times = Vec::new();
     let mut peak = 0;
     for _ in 0..reps {
-        let base = LIVE.load(Ordering::Relaxed);
-        PEAK.store(base, Ordering::Relaxed);
+        let base = counting::start();
         let t = Instant::now();
         f();
         times.push(t.elapsed().as_nanos() as f64);
-        peak = peak.max(PEAK.load(Ordering::Relaxed) - base);
+        peak = peak.max(counting::peak_above(base));
     }
     times.sort_by(f64::total_cmp);
     (times[reps / 2], peak)
