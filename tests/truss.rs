@@ -1593,3 +1593,57 @@ fn a_large_truss_that_is_not_determinate_is_named_without_the_svd() {
     let e = construct_truss(&mut b, &t, &case(vec![down(1, 100.0)]), &D).unwrap_err();
     assert!(e.to_string().contains(&t.joints[joint].name), "{e}");
 }
+
+/// Above the SVD's limit the pebble game's searches have a budget: a truss of members joined
+/// at random (where the game is quadratic, and a sparse LU fills in to gigabytes) is refused
+/// as undecided at once, naming `members`; girders of any size stay well within it.
+#[test]
+fn a_large_truss_of_members_joined_at_random_is_refused_at_once() {
+    let k = 4000;
+    let mut state = 0x9E37_79B9_7F4A_7C15u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    };
+    let joints: Vec<Joint> = (0..k)
+        .map(|i| Joint {
+            name: format!("J{i}"),
+            at: Point::new(
+                (next() % 10_000) as f64 / 100.0,
+                (next() % 10_000) as f64 / 100.0,
+            ),
+        })
+        .collect();
+    let mut seen = std::collections::HashSet::new();
+    let mut members = Vec::new();
+    while members.len() < 2 * k - 3 {
+        let (a, b) = ((next() % k as u64) as usize, (next() % k as u64) as usize);
+        if a != b && seen.insert((a.min(b), a.max(b))) {
+            members.push(Member {
+                name: format!("{}", members.len() + 1),
+                ends: [a, b],
+            });
+        }
+    }
+    let t = Truss {
+        joints,
+        members,
+        supports: vec![
+            Support::pinned(0, "A"),
+            Support::roller(1, Vector::new(0.0, 1.0), "B"),
+        ],
+    };
+    assert!(matches!(
+        analyse(&t).determinacy,
+        Determinacy::Undecided { .. }
+    ));
+    let mut b = Board::new(1000.0, true);
+    let e = construct_truss(&mut b, &t, &case(vec![down(5, 100.0)]), &D).unwrap_err();
+    assert!(e.to_string().contains("not joined in panels"), "{e}");
+    for web in [Web::Warren, Web::Pratt, Web::Howe] {
+        let g = parallel_chord(web, 2500, 2.0, 2.0);
+        assert_eq!(analyse(&g).determinacy, Determinacy::Determinate, "{web:?}");
+    }
+}

@@ -44,6 +44,14 @@ pub enum Determinacy {
         /// s + r − 2k: the number of redundant members or reactions.
         redundant: usize,
     },
+    /// Not decided: the truss is larger than the SVD's limit and its members are not joined
+    /// in panels the pebble game can follow in time (members joined at random): its searches
+    /// passed their budget of [`PEBBLE_VISITS_PER_PART`] joints per joint, member and
+    /// reaction.
+    Undecided {
+        /// The budget the searches passed (joints visited).
+        visits: u64,
+    },
     /// Rank below 2k: a joint can move.
     Mechanism {
         /// The joint that moves most in a motion no member resists.
@@ -127,17 +135,10 @@ fn analyse_afresh(t: &Truss) -> Analysis {
     if k == 0 {
         return out;
     }
-    // Above the SVD's limit, a truss that is a mechanism whatever its geometry is found by
-    // counting (the pebble game) before any factorisation: the LU of a truss of random
-    // members fills in (a 50,000-joint one took 57 s and 7.7 GB to be called a mechanism).
-    let generic = (k > DENSE_MAX_JOINTS).then(|| super::pebble::generic(t));
-    if let Some(g) = generic.as_ref().filter(|g| g.freedoms > 0) {
-        out.determinacy = Determinacy::Mechanism {
-            joint: g.loose_joint.unwrap_or(0),
-            freedoms: g.freedoms,
-        };
-        return out;
-    }
+    let generic = match counted_first(t, &mut out) {
+        Some(g) => g,
+        None => return out,
+    };
     // The usual case, a square system that is clearly regular, is settled by the sparse LU
     // at any size; anything doubtful goes to the SVD, which names the joint that can move.
     let sparse = (s + r == 2 * k).then(|| sparse_test(t));
@@ -183,6 +184,36 @@ fn analyse_afresh(t: &Truss) -> Analysis {
     };
     out
 }
+
+/// Above the SVD's limit, a truss that is a mechanism whatever its geometry is found by
+/// counting (the pebble game) before any factorisation: the LU of a truss of random members
+/// fills in (a 50,000-joint one took 57 s and 7.7 GB to be called a mechanism), and the game
+/// itself is held to a budget. `None`: decided, the verdict in `out`; else the game's
+/// finding (none at or below the limit).
+fn counted_first(t: &Truss, out: &mut Analysis) -> Option<Option<super::pebble::Generic>> {
+    if out.joints <= DENSE_MAX_JOINTS {
+        return Some(None);
+    }
+    let budget = PEBBLE_VISITS_PER_PART * (out.joints + out.members + out.reactions + 3) as u64;
+    let Some(g) = super::pebble::generic_within(t, budget) else {
+        out.determinacy = Determinacy::Undecided { visits: budget };
+        return None;
+    };
+    if g.freedoms > 0 {
+        out.determinacy = Determinacy::Mechanism {
+            joint: g.loose_joint.unwrap_or(0),
+            freedoms: g.freedoms,
+        };
+        return None;
+    }
+    Some(Some(g))
+}
+
+/// The pebble game's budget: joints its searches may visit per joint, member and reaction.
+/// Girders of 200 to 100,000 joints (Warren, Pratt, Howe) take at most 6; members joined at
+/// random take hundreds to thousands, and the game's time grows as the square of the truss:
+/// the budget holds a 100,000-joint truss to about a second.
+pub const PEBBLE_VISITS_PER_PART: u64 = 100;
 
 /// How far above [`RANK_REL`] the estimated smallest singular value must lie for the sparse
 /// test to call the matrix regular without the SVD: the estimate comes from a few steps of

@@ -39,6 +39,9 @@ struct Game {
     epoch: u32,
     stack: Vec<usize>,
     parent: Vec<usize>,
+    /// Joints visited by all searches so far, and the most they may visit.
+    visits: u64,
+    budget: u64,
 }
 
 impl Game {
@@ -50,6 +53,8 @@ impl Game {
             epoch: 0,
             stack: Vec::new(),
             parent: vec![usize::MAX; n],
+            visits: 0,
+            budget: u64::MAX,
         }
     }
 
@@ -71,6 +76,7 @@ impl Game {
                     continue;
                 }
                 self.stamp[w] = e;
+                self.visits += 1;
                 self.parent[w] = a;
                 if self.pebbles[w] > 0 {
                     self.pebbles[w] -= 1;
@@ -102,12 +108,12 @@ impl Game {
             return false;
         }
         while self.pebbles[u] < 2 {
-            if !self.fetch(u, &[v]) {
+            if self.visits > self.budget || !self.fetch(u, &[v]) {
                 return false;
             }
         }
         while self.pebbles[v] < 2 {
-            if !self.fetch(v, &[u]) {
+            if self.visits > self.budget || !self.fetch(v, &[u]) {
                 return false;
             }
         }
@@ -132,9 +138,17 @@ impl Game {
 /// assert!(g.loose_joint.is_some());
 /// ```
 pub fn generic(t: &Truss) -> Generic {
+    generic_within(t, u64::MAX).expect("no budget to run out of")
+}
+
+/// [`generic`], its searches visiting at most `budget` joints in all; `None` if they would
+/// visit more (the game is quadratic on a graph of members joined at random, where a
+/// girder's searches stay local: some ten visits per member).
+pub fn generic_within(t: &Truss, budget: u64) -> Option<Generic> {
     let k = t.joints.len();
     let ground = [k, k + 1, k + 2];
     let mut g = Game::new(k + 3);
+    g.budget = budget;
     let mut redundant = 0usize;
     for (a, b) in [(0, 1), (1, 2), (2, 0)] {
         g.bar(ground[a], ground[b]);
@@ -162,10 +176,13 @@ pub fn generic(t: &Truss) -> Generic {
     for (i, &v) in ground.iter().enumerate() {
         while g.pebbles[v] < 2 && g.fetch(v, &ground[..i]) {}
     }
+    if g.visits > g.budget {
+        return None;
+    }
     let loose_joint = (0..k).find(|&j| g.pebbles[j] > 0);
-    Generic {
+    Some(Generic {
         redundant,
         freedoms: free.saturating_sub(3),
         loose_joint: if free > 3 { loose_joint } else { None },
-    }
+    })
 }
