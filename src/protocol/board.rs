@@ -771,8 +771,7 @@ impl Board {
     #[inline]
     fn slid(&mut self, id: ObjId, line: &H<Line>, p: &H<Point>, turned: bool) {
         self.set_tr(id, |b| {
-            let d = line.g.dir;
-            let dir = if turned { Vector::new(-d.y, d.x) } else { d };
+            let dir = if turned { line.g.normal() } else { line.g.dir };
             b.model.slid(&b.tr(line.id), &b.tr(p.id), &dir)
         });
         self.set_shadow(id, |b| {
@@ -1500,17 +1499,19 @@ impl Board {
         });
     }
 
-    /// Files a check with the step that made the object `id`.
+    /// Files a check with the step that made the object `id` (every recording board's
+    /// tracks know it, whether it keeps its steps or only its checks).
     fn push_check(&mut self, id: ObjId, check: Check) {
-        if let Some(l) = self.ledger.as_mut() {
-            if let Some(step) = self.tracks.step((id.0 as usize).wrapping_sub(1)) {
-                l.checks.push((step, check));
-            }
+        let Some(step) = self.tracks.step((id.0 as usize).wrapping_sub(1)) else {
             return;
-        }
-        let step = self.object(id).map(|o| o.step);
-        if let Some(s) = step.and_then(|step| self.steps.get_mut(step.0 as usize - 1)) {
-            s.checks.push(check);
+        };
+        match self.ledger.as_mut() {
+            Some(l) => l.checks.push((step, check)),
+            None => {
+                if let Some(s) = self.steps.get_mut((step.0 as usize).wrapping_sub(1)) {
+                    s.checks.push(check);
+                }
+            }
         }
     }
 

@@ -70,6 +70,7 @@ pub fn check_rows(board: &Board) -> Vec<CheckRow> {
 /// the board's checks straight into one buffer of cells (a check of 100,000 joints has
 /// 200,000 rows).
 pub fn check_table_text(board: &Board) -> String {
+    use std::fmt::Write;
     let mut cells = Cells::new(&[
         "step",
         "context",
@@ -115,22 +116,15 @@ pub fn check_table_text(board: &Board) -> String {
         cells.cell(|s| s.push_str(if c.passed { "ok" } else { "FAIL" }));
     }
     let mut out = cells.aligned(3..=7);
-    push_display(
-        &mut out,
-        &format_args!(
-            "{} checks, {} passed, {} failed, {} depending on a glancing cut\n",
-            rows,
-            rows - failed,
-            failed,
-            glancing
-        ),
+    let _ = writeln!(
+        out,
+        "{} checks, {} passed, {} failed, {} depending on a glancing cut",
+        rows,
+        rows - failed,
+        failed,
+        glancing
     );
     out
-}
-
-fn push_display(s: &mut String, x: &dyn std::fmt::Display) {
-    use std::fmt::Write;
-    let _ = write!(s, "{x}");
 }
 
 /// The cells of a text table in one buffer, row after row: what [`Cells::aligned`] lines up.

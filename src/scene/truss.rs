@@ -790,7 +790,7 @@ impl TrussScene {
                 Determinacy::Mechanism { joint, .. } => {
                     format!("a mechanism: joint `{}` can move", sub.joints[joint].name)
                 }
-                Determinacy::Undecided { .. } => undecided(&sub),
+                Determinacy::Undecided { .. } => matrix::undecided_reason(&sub),
             };
             return Err(bad(
                 "diagonal_pairs".into(),
@@ -825,7 +825,9 @@ impl TrussScene {
                     2 * truss.joints.len() as i64 - 3
                 ),
             )),
-            Determinacy::Undecided { .. } => Err(bad("members".into(), undecided(truss))),
+            Determinacy::Undecided { .. } => {
+                Err(bad("members".into(), matrix::undecided_reason(truss)))
+            }
         }
     }
 
@@ -1186,17 +1188,6 @@ pub const MAX_RECORDED_STEPS: usize = 200_000;
 /// Most construction steps of a truss scene whose checks alone are kept (some 150 bytes a
 /// step: 300 MB at most).
 pub const MAX_CHECKED_STEPS: usize = 2_000_000;
-
-/// Why a truss whose rank test was not decided is refused.
-fn undecided(t: &Truss) -> String {
-    format!(
-        "the rank test of these {} members could not be decided in time: they are not joined \
-         in panels (the pebble game visits at most 6 joints per joint, member and reaction of \
-         a girder; on this truss it passed {}); draw the truss as panels, or split it",
-        t.members.len(),
-        matrix::PEBBLE_VISITS_PER_PART
-    )
-}
 
 /// A value that parses but makes no truss, at its field.
 fn invalid(origin: &str, field: String, message: String) -> SceneError {

@@ -179,13 +179,9 @@ fn determinate(t: &Truss) -> Result<(), ConstructionError> {
                 needed: 2 * t.joints.len() as i64 - 3,
             })
         }
-        matrix::Determinacy::Undecided { visits } => Err(ConstructionError::unsupported(
+        matrix::Determinacy::Undecided { .. } => Err(ConstructionError::unsupported(
             "members",
-            format!(
-                "the rank test of these {} members could not be decided in time (the pebble \
-                 game passed {visits} joints visited): they are not joined in panels",
-                t.members.len()
-            ),
+            matrix::undecided_reason(t),
         )),
     }
 }

@@ -135,10 +135,9 @@ fn analyse_afresh(t: &Truss) -> Analysis {
     if k == 0 {
         return out;
     }
-    let generic = match counted_first(t, &mut out) {
-        Some(g) => g,
-        None => return out,
-    };
+    if decided_by_counting(t, &mut out) {
+        return out;
+    }
     // The usual case, a square system that is clearly regular, is settled by the sparse LU
     // at any size; anything doubtful goes to the SVD, which names the joint that can move.
     let sparse = (s + r == 2 * k).then(|| sparse_test(t));
@@ -150,7 +149,7 @@ fn analyse_afresh(t: &Truss) -> Analysis {
     if k > DENSE_MAX_JOINTS {
         // Too large for the SVD: the pebble game decides generic rigidity, and a square system
         // that the sparse test doubts is a mechanism named by its inverse-iteration motion.
-        out.determinacy = without_svd(t, sparse, generic);
+        out.determinacy = without_svd(t, sparse);
         return out;
     }
     let a = equilibrium_matrix(t);
@@ -188,25 +187,35 @@ fn analyse_afresh(t: &Truss) -> Analysis {
 /// Above the SVD's limit, a truss that is a mechanism whatever its geometry is found by
 /// counting (the pebble game) before any factorisation: the LU of a truss of random members
 /// fills in (a 50,000-joint one took 57 s and 7.7 GB to be called a mechanism), and the game
-/// itself is held to a budget. `None`: decided, the verdict in `out`; else the game's
-/// finding (none at or below the limit).
-fn counted_first(t: &Truss, out: &mut Analysis) -> Option<Option<super::pebble::Generic>> {
+/// itself is held to a budget. True if that decided, the verdict in `out`.
+fn decided_by_counting(t: &Truss, out: &mut Analysis) -> bool {
     if out.joints <= DENSE_MAX_JOINTS {
-        return Some(None);
+        return false;
     }
     let budget = PEBBLE_VISITS_PER_PART * (out.joints + out.members + out.reactions + 3) as u64;
-    let Some(g) = super::pebble::generic_within(t, budget) else {
-        out.determinacy = Determinacy::Undecided { visits: budget };
-        return None;
-    };
-    if g.freedoms > 0 {
-        out.determinacy = Determinacy::Mechanism {
-            joint: g.loose_joint.unwrap_or(0),
-            freedoms: g.freedoms,
-        };
-        return None;
+    match super::pebble::generic_within(t, budget) {
+        None => out.determinacy = Determinacy::Undecided { visits: budget },
+        Some(g) if g.freedoms > 0 => {
+            out.determinacy = Determinacy::Mechanism {
+                joint: g.loose_joint.unwrap_or(0),
+                freedoms: g.freedoms,
+            }
+        }
+        Some(_) => return false,
     }
-    Some(Some(g))
+    true
+}
+
+/// Why a truss whose rank test was not decided is refused: one text for the scene's error
+/// and the construction's.
+pub fn undecided_reason(t: &Truss) -> String {
+    format!(
+        "the rank test of these {} members could not be decided in time: they are not joined \
+         in panels (the pebble game visits at most 6 joints per joint, member and reaction of \
+         a girder; on this truss it passed {}); draw the truss as panels, or split it",
+        t.members.len(),
+        PEBBLE_VISITS_PER_PART
+    )
 }
 
 /// The pebble game's budget: joints its searches may visit per joint, member and reaction.
@@ -296,26 +305,11 @@ fn most_moved(motion: &[f64], k: usize) -> Option<usize> {
     best.0
 }
 
-/// The verdict without the SVD: generic rigidity by the pebble game; a square system the
-/// sparse test doubts is a mechanism even where the game finds it generically rigid (joints
-/// in line, parallel bars), named by its motion.
-fn without_svd(
-    t: &Truss,
-    sparse: Option<Sparse>,
-    generic: Option<super::pebble::Generic>,
-) -> Determinacy {
+/// The verdict without the SVD, once the pebble game found the truss generically rigid
+/// ([`decided_by_counting`]): a square system the sparse test doubts is a mechanism all the
+/// same (joints in line, parallel bars), named by its motion.
+fn without_svd(t: &Truss, sparse: Option<Sparse>) -> Determinacy {
     let (k, s, r) = (t.joints.len(), t.members.len(), t.reaction_unknowns());
-    let g = generic.unwrap_or_else(|| super::pebble::generic(t));
-    if g.freedoms > 0 {
-        let joint = match sparse {
-            Some(Sparse::Doubtful(Some(j))) => j,
-            _ => g.loose_joint.unwrap_or(0),
-        };
-        return Determinacy::Mechanism {
-            joint,
-            freedoms: g.freedoms,
-        };
-    }
     match sparse {
         Some(Sparse::Doubtful(j)) => Determinacy::Mechanism {
             joint: j.unwrap_or(0),
