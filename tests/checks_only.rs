@@ -106,16 +106,103 @@ fn a_truss_too_large_for_a_figure_is_checked_whole() {
             .construct(true)
             .expect("a determinate girder")
     });
-    // Every member checked against the sparse solve, the reactions twice, the balance once.
+    // Every member checked against the sparse solve, the reactions twice, the balance once:
+    // counted, and summed up (a row per kind) rather than kept one by one.
     let members = 4 * 10_500 + 1;
-    assert_eq!(
-        board
-            .checks()
-            .filter(|c| c.quantity.starts_with("member force"))
-            .count(),
-        members
-    );
-    assert!(board.checks().count() > members);
+    let summary = board.check_summary().expect("more checks than are listed");
+    let forces = summary
+        .kinds
+        .iter()
+        .find(|k| k.quantity.starts_with("member force"))
+        .expect("member forces are checked");
+    assert_eq!(forces.count, members as u64);
+    assert!(board.check_count() > members as u64);
+    assert_eq!(summary.total, board.check_count());
     assert!(board.all_passed());
     assert!(board.steps().is_empty());
+    assert_eq!(
+        board.checks().count(),
+        0,
+        "no check kept whole: none failed"
+    );
+}
+
+/// A checks-only board of `n` lengths checked, the lengths listed in `wrong` checked against
+/// a wrong closed form.
+fn lengths_checked(n: usize, wrong: &[usize], every_check: bool) -> Board {
+    use graphostatik::prelude::*;
+    let setup = Setup {
+        checks_only: true,
+        every_check,
+        ..Setup::default()
+    };
+    with_setup(setup, || {
+        let mut b = Board::recording();
+        let note = Note::new("lengths", Topic::Custom("test"));
+        let o = b.point(
+            Point::new(0.0, 0.0),
+            Label::plain("O"),
+            Role::Given,
+            note.clone(),
+        );
+        for i in 1..=n {
+            b.set_context(|| format!("length {i}"));
+            let at = Point::new(3.0 * i as f64, 4.0 * i as f64);
+            let a = b.point(at, Label::NONE, Role::Given, note.clone());
+            let x = b
+                .line_through(&o, &a, Label::NONE, Role::Construction, note.clone())
+                .unwrap();
+            let d = b.measure(&o, &a, &x, Scale::new(1.0, "mm"), Label::NONE, note.clone());
+            let off = if wrong.contains(&i) { 1.0 } else { 0.0 };
+            b.check(&d, "OA", "mm", "Pythagoras", 5.0 * i as f64, || {
+                5.0 * i as f64 + off
+            });
+            if i % 2 == 0 {
+                b.check(&d, "OA again", "mm", "Pythagoras", 5.0 * i as f64, || {
+                    5.0 * i as f64
+                });
+            }
+        }
+        b
+    })
+}
+
+#[test]
+fn a_long_check_is_summed_up_and_its_failures_listed() {
+    use graphostatik::protocol::LISTED_CHECKS;
+    // Exactly at the limit every check is kept and listed.
+    let at = lengths_checked(667, &[], false); // 667 + 333 checks
+    assert_eq!(at.check_count(), LISTED_CHECKS as u64);
+    assert!(at.check_summary().is_none());
+    assert_eq!(at.checks().count(), LISTED_CHECKS);
+    // Past it, a row per kind and the failures.
+    let b = lengths_checked(3_000, &[7, 2_999], false);
+    let s = b.check_summary().expect("past the limit");
+    assert_eq!((s.total, s.failed), (4_500, 2));
+    assert_eq!(s.kinds.len(), 2);
+    assert_eq!((s.kinds[0].count, s.kinds[0].failed), (3_000, 2));
+    // The worst of the kind is the earlier of the two equal failures, in its situation.
+    assert_eq!(b.context_of(s.kinds[0].worst_step), Some("length 7"));
+    assert_eq!(b.checks().count(), 2);
+    assert!(!b.all_passed());
+    let text = check_table_text(&b);
+    assert!(text.starts_with("4500 checks, more than 1000: one row per quantity"));
+    assert!(text.contains("\nfailed checks\n"), "{text}");
+    assert!(text.contains("length 2999"), "{text}");
+    assert!(text.ends_with("4500 checks, 4498 passed, 2 failed, 0 depending on a glancing cut\n"));
+    assert!(text.lines().count() < 20, "{text}");
+    let json: serde_json::Value = serde_json::from_str(&check_table_json(&b)).unwrap();
+    assert_eq!(json["checks"], 4_500);
+    assert_eq!(json["kinds"][1]["quantity"], "OA again");
+    assert_eq!(json["kinds"][1]["checks"], 1_500);
+    assert_eq!(json["failures"].as_array().unwrap().len(), 2);
+    assert_eq!(json["failures"][1]["context"], "length 2999");
+    // Every check asked for: every row, the same count line.
+    let all = lengths_checked(3_000, &[7, 2_999], true);
+    assert!(all.check_summary().is_none());
+    let text_all = check_table_text(&all);
+    assert_eq!(text_all.lines().count(), 4_500 + 3);
+    assert!(
+        text_all.ends_with("4500 checks, 4498 passed, 2 failed, 0 depending on a glancing cut\n")
+    );
 }

@@ -121,13 +121,51 @@ struct Ledger {
     /// The value of each number, by its id (in id order): what the bounds of numbers
     /// reckoned from numbers need. The step that made each object is in its track.
     numbers: Vec<(ObjId, f64)>,
-    /// The checks with the step they are attached to, in the order filed.
+    /// The checks with the step they are attached to, in the order filed, while there are
+    /// at most [`LISTED_CHECKS`](super::summary::LISTED_CHECKS) (or every one was asked for).
     checks: super::tracks::Chunked<(StepId, Check)>,
+    /// Every check counted, per kind, with the worst of each kind and every failure.
+    summary: super::summary::CheckSummary,
+    /// Keep every check however many ([`Setup::every_check`](super::Setup::every_check)).
+    every: bool,
     /// The situation from each step on where it changed, in step order.
     contexts: Vec<(StepId, Option<std::sync::Arc<str>>)>,
 }
 
 impl Ledger {
+    fn new(every: bool) -> Ledger {
+        Ledger {
+            every,
+            ..Ledger::default()
+        }
+    }
+
+    /// Counts a check, and keeps it while the checks are listed one by one.
+    fn file(&mut self, step: StepId, check: Check) {
+        self.summary.add(step, &check);
+        if !self.summarised() {
+            self.checks.push((step, check));
+        } else if self.checks.len() > 0 {
+            self.checks = Default::default();
+        }
+    }
+
+    /// Whether only the summary is kept: more checks than are listed, and not every one asked
+    /// for.
+    fn summarised(&self) -> bool {
+        !self.every && self.summary.total > super::summary::LISTED_CHECKS as u64
+    }
+
+    /// The checks kept whole: every one, or past the list's limit the failures.
+    fn kept(&self) -> impl Iterator<Item = &(StepId, Check)> {
+        let failures = if self.summarised() {
+            &self.summary.failures[..]
+        } else {
+            &[]
+        };
+        self.checks.iter().chain(failures)
+    }
+
     /// The situation the step was made in.
     fn context(&self, step: StepId) -> Option<&str> {
         let i = self.contexts.partition_point(|(s, _)| *s <= step);
@@ -209,7 +247,8 @@ impl Board {
             tracks: Default::default(),
             shadows: (recording && setup.reference && !setup.checks_only).then(Vec::new),
             jitter: setup.hand.map(Jitter::new),
-            ledger: (recording && setup.checks_only).then(Box::default),
+            ledger: (recording && setup.checks_only)
+                .then(|| Box::new(Ledger::new(setup.every_check))),
             objects: Vec::new(),
             steps: Vec::new(),
         }
@@ -400,7 +439,9 @@ impl Board {
         self.tracks.len()
     }
 
-    /// Every analytic check on the board, in step order.
+    /// Every analytic check the board kept, in step order (on a board that keeps only a
+    /// [`CheckSummary`](super::CheckSummary), its failures; [`Board::check_count`] counts
+    /// all).
     ///
     /// ```
     /// use graphostatik::prelude::*;
@@ -416,16 +457,14 @@ impl Board {
     /// # Ok::<(), ConstructionError>(())
     /// ```
     pub fn checks(&self) -> impl Iterator<Item = &Check> {
-        let kept = self
-            .ledger
-            .iter()
-            .flat_map(|l| l.checks.iter().map(|(_, c)| c));
+        let kept = self.ledger.iter().flat_map(|l| l.kept().map(|(_, c)| c));
         self.steps.iter().flat_map(|s| s.checks.iter()).chain(kept)
     }
 
     /// Every check with its step and situation, in step order (checks of one step in the
     /// order filed): the rows of the check table, whether the board kept its drawing or only
-    /// its checks.
+    /// its checks. Where only a [`CheckSummary`](super::CheckSummary) was kept, the failed
+    /// checks.
     pub fn check_entries(&self) -> Vec<CheckEntry<'_>> {
         let Some(l) = self.ledger.as_deref() else {
             return self
@@ -441,8 +480,7 @@ impl Board {
                 .collect();
         };
         let mut out: Vec<CheckEntry<'_>> = l
-            .checks
-            .iter()
+            .kept()
             .map(|(step, check)| CheckEntry {
                 step: *step,
                 context: l.context(*step),
@@ -454,9 +492,43 @@ impl Board {
         out
     }
 
-    /// Whether every check on the board passed (true for a board without checks).
+    /// The summary of the checks, where the board kept only it: a board that keeps only its
+    /// checks and made more than [`LISTED_CHECKS`](super::LISTED_CHECKS) of them, unless
+    /// [`Setup::every_check`](super::Setup::every_check) asked for every one.
+    pub fn check_summary(&self) -> Option<&super::CheckSummary> {
+        self.ledger
+            .as_deref()
+            .filter(|l| l.summarised())
+            .map(|l| &l.summary)
+    }
+
+    /// The situation ("θ = 30°") of a step, on a board that keeps its drawing or only its
+    /// checks.
+    pub fn context_of(&self, step: StepId) -> Option<&str> {
+        match self.ledger.as_deref() {
+            Some(l) => l.context(step),
+            None => self
+                .steps
+                .get((step.0 as usize).wrapping_sub(1))
+                .and_then(|s| s.context.as_deref()),
+        }
+    }
+
+    /// How many checks were made (kept or only counted).
+    pub fn check_count(&self) -> u64 {
+        match self.ledger.as_deref() {
+            Some(l) => l.summary.total,
+            None => self.steps.iter().map(|s| s.checks.len() as u64).sum(),
+        }
+    }
+
+    /// Whether every check on the board passed (true for a board without checks), counted
+    /// or kept.
     pub fn all_passed(&self) -> bool {
-        self.checks().all(|c| c.passed)
+        match self.ledger.as_deref() {
+            Some(l) => l.summary.failed == 0,
+            None => self.checks().all(|c| c.passed),
+        }
     }
 
     /// The recorded steps.
@@ -1506,7 +1578,7 @@ impl Board {
             return;
         };
         match self.ledger.as_mut() {
-            Some(l) => l.checks.push((step, check)),
+            Some(l) => l.file(step, check),
             None => {
                 if let Some(s) = self.steps.get_mut((step.0 as usize).wrapping_sub(1)) {
                     s.checks.push(check);

@@ -10,6 +10,7 @@ mod figure;
 mod reference;
 mod setup;
 mod step;
+mod summary;
 mod tracks;
 
 pub use accuracy::{ErrorModel, WorstCut};
@@ -22,3 +23,4 @@ pub use step::{
     note, Check, Geom, Ids, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Text, Topic,
     TABLE_BLOCK_ROWS,
 };
+pub use summary::{CheckKind, CheckSummary, LISTED_CHECKS, LISTED_FAILURES};

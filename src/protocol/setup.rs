@@ -34,6 +34,10 @@ pub struct Setup {
     /// `forces` use: the check table comes out the same, in memory of the order of the
     /// scene rather than of its protocol. No reference replay is made on such a board.
     pub checks_only: bool,
+    /// On a board that keeps only its checks, keep every check however many (`check
+    /// --all`): otherwise past [`LISTED_CHECKS`](super::LISTED_CHECKS) only their
+    /// [`CheckSummary`](super::CheckSummary) is kept, a row per kind and every failure.
+    pub every_check: bool,
 }
 
 /// A draftsman's hand: the errors of [`ErrorModel::drafting`] drawn at random (normally

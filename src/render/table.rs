@@ -1,7 +1,7 @@
 //! The check table: every analytic check of a construction, as text or JSON.
 
 use crate::fmt::{num, num_into, push_uint_padded, sci, sci_into};
-use crate::protocol::Board;
+use crate::protocol::{Board, Check, CheckSummary, StepId, LISTED_CHECKS};
 use serde::Serialize;
 
 /// One row of the check table.
@@ -39,83 +39,132 @@ pub struct CheckRow {
     pub glancing: bool,
 }
 
-/// The rows of the check table, in step order.
+/// The rows of the check table, in step order (where the board kept only a
+/// [`CheckSummary`], its failed checks).
 pub fn check_rows(board: &Board) -> Vec<CheckRow> {
     board
         .check_entries()
         .into_iter()
-        .map(|e| {
-            let c = e.check;
-            CheckRow {
-                step: e.step.to_string(),
-                context: e.context.unwrap_or("").to_string(),
-                quantity: c.quantity.to_string(),
-                unit: c.unit.to_string(),
-                constructed: c.constructed,
-                closed_form: c.closed_form,
-                formula: c.formula.to_string(),
-                error: c.error,
-                tolerance: c.tolerance,
-                passed: c.passed,
-                bound: c.bound,
-                meeting_angle_deg: c.worst_cut.map(|w| w.conditioning.angle_deg()),
-                cut_step: c.worst_cut.map(|w| w.step.to_string()),
-                glancing: c.glancing(),
-            }
-        })
+        .map(|e| check_row(e.step, e.context, e.check))
         .collect()
 }
 
+/// A check as a row.
+fn check_row(step: StepId, context: Option<&str>, c: &Check) -> CheckRow {
+    CheckRow {
+        step: step.to_string(),
+        context: context.unwrap_or("").to_string(),
+        quantity: c.quantity.to_string(),
+        unit: c.unit.to_string(),
+        constructed: c.constructed,
+        closed_form: c.closed_form,
+        formula: c.formula.to_string(),
+        error: c.error,
+        tolerance: c.tolerance,
+        passed: c.passed,
+        bound: c.bound,
+        meeting_angle_deg: c.worst_cut.map(|w| w.conditioning.angle_deg()),
+        cut_step: c.worst_cut.map(|w| w.step.to_string()),
+        glancing: c.glancing(),
+    }
+}
+
+/// The checks of a board that kept only their summary, as JSON: counts, a row per kind of
+/// check with its worst, and the failed checks kept.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SummaryJson {
+    /// Checks made.
+    pub checks: u64,
+    /// Checks passed.
+    pub passed: u64,
+    /// Checks failed.
+    pub failed: u64,
+    /// Checks depending on a glancing cut.
+    pub glancing: u64,
+    /// A kind per quantity and unit, in the order of their first steps.
+    pub kinds: Vec<KindJson>,
+    /// The failed checks kept whole, in step order.
+    pub failures: Vec<CheckRow>,
+    /// Failed checks counted but not kept.
+    pub failures_not_listed: u64,
+}
+
+/// The checks of one kind, in [`SummaryJson`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct KindJson {
+    /// The quantity.
+    pub quantity: String,
+    /// Its unit.
+    pub unit: String,
+    /// Checks of this kind.
+    pub checks: u64,
+    /// Of them failed.
+    pub failed: u64,
+    /// Of them depending on a glancing cut.
+    pub glancing: u64,
+    /// The worst (the largest error against its tolerance).
+    pub worst: CheckRow,
+}
+
+/// The summary of a board's checks as [`SummaryJson`].
+pub fn summary_json(board: &Board, s: &CheckSummary) -> SummaryJson {
+    SummaryJson {
+        checks: s.total,
+        passed: s.total - s.failed,
+        failed: s.failed,
+        glancing: s.glancing,
+        kinds: s
+            .kinds
+            .iter()
+            .map(|k| KindJson {
+                quantity: k.quantity.to_string(),
+                unit: k.unit.to_string(),
+                checks: k.count,
+                failed: k.failed,
+                glancing: k.glancing,
+                worst: check_row(k.worst_step, board.context_of(k.worst_step), &k.worst),
+            })
+            .collect(),
+        failures: check_rows(board),
+        failures_not_listed: s.failures_not_listed(),
+    }
+}
+
+/// The head of the check table.
+const HEAD: [&str; 10] = [
+    "step",
+    "context",
+    "quantity",
+    "constructed",
+    "closed form",
+    "error",
+    "bound",
+    "tolerance",
+    "worst cut",
+    "ok",
+];
+
 /// The check table as aligned text (fixed number formatting: deterministic). Written from
-/// the board's checks straight into one buffer of cells (a check of 100,000 joints has
-/// 200,000 rows).
+/// the board's checks straight into one buffer of cells. Where the board kept only a
+/// [`CheckSummary`](crate::protocol::CheckSummary) (more than
+/// [`LISTED_CHECKS`](crate::protocol::LISTED_CHECKS) checks), a row per kind of check, its
+/// worst, and every failed check.
 pub fn check_table_text(board: &Board) -> String {
     use std::fmt::Write;
-    let mut cells = Cells::new(&[
-        "step",
-        "context",
-        "quantity",
-        "constructed",
-        "closed form",
-        "error",
-        "bound",
-        "tolerance",
-        "worst cut",
-        "ok",
-    ]);
-    let (mut rows, mut failed, mut glancing) = (0, 0, 0);
-    for e in board.check_entries() {
-        let c = e.check;
-        rows += 1;
-        failed += usize::from(!c.passed);
-        glancing += usize::from(c.glancing());
-        cells.cell(|s| push_uint_padded(s, e.step.0.into(), 3));
-        cells.cell(|s| s.push_str(e.context.unwrap_or("")));
-        cells.cell(|s| {
-            s.push_str(&c.quantity);
-            s.push_str(" [");
-            s.push_str(&c.unit);
-            s.push(']');
-        });
-        cells.cell(|s| num_into(s, c.constructed, 6));
-        cells.cell(|s| num_into(s, c.closed_form, 6));
-        cells.cell(|s| sci_into(s, c.error));
-        cells.cell(|s| sci_into(s, c.bound));
-        cells.cell(|s| sci_into(s, c.tolerance));
-        cells.cell(|s| match c.worst_cut {
-            Some(w) => {
-                num_into(s, w.conditioning.angle_deg(), 1);
-                s.push_str("° at ");
-                push_uint_padded(s, w.step.0.into(), 3);
-                if c.glancing() {
-                    s.push_str(" glancing");
-                }
+    let (mut out, rows, failed, glancing) = match board.check_summary() {
+        Some(s) => (summary_text(board, s), s.total, s.failed, s.glancing),
+        None => {
+            let mut cells = Cells::new(&HEAD);
+            let (mut rows, mut failed, mut glancing) = (0, 0, 0);
+            for e in board.check_entries() {
+                rows += 1;
+                failed += u64::from(!e.check.passed);
+                glancing += u64::from(e.check.glancing());
+                check_cells(&mut cells, e.step, e.context, e.check, None);
             }
-            None => s.push('-'),
-        });
-        cells.cell(|s| s.push_str(if c.passed { "ok" } else { "FAIL" }));
-    }
-    let mut out = cells.aligned(3..=7);
+            (cells.aligned(3..=7), rows, failed, glancing)
+        }
+    };
     let _ = writeln!(
         out,
         "{} checks, {} passed, {} failed, {} depending on a glancing cut",
@@ -124,6 +173,89 @@ pub fn check_table_text(board: &Board) -> String {
         failed,
         glancing
     );
+    out
+}
+
+/// One check's cells (with `count`, the cells of a kind's checks before its value cells).
+fn check_cells(
+    cells: &mut Cells,
+    step: StepId,
+    context: Option<&str>,
+    c: &Check,
+    count: Option<(u64, u64)>,
+) {
+    cells.cell(|s| push_uint_padded(s, step.0.into(), 3));
+    cells.cell(|s| s.push_str(context.unwrap_or("")));
+    cells.cell(|s| {
+        s.push_str(&c.quantity);
+        s.push_str(" [");
+        s.push_str(&c.unit);
+        s.push(']');
+    });
+    if let Some((n, failed)) = count {
+        cells.cell(|s| push_uint_padded(s, n, 1));
+        cells.cell(|s| push_uint_padded(s, failed, 1));
+    }
+    cells.cell(|s| num_into(s, c.constructed, 6));
+    cells.cell(|s| num_into(s, c.closed_form, 6));
+    cells.cell(|s| sci_into(s, c.error));
+    cells.cell(|s| sci_into(s, c.bound));
+    cells.cell(|s| sci_into(s, c.tolerance));
+    cells.cell(|s| match c.worst_cut {
+        Some(w) => {
+            num_into(s, w.conditioning.angle_deg(), 1);
+            s.push_str("° at ");
+            push_uint_padded(s, w.step.0.into(), 3);
+            if c.glancing() {
+                s.push_str(" glancing");
+            }
+        }
+        None => s.push('-'),
+    });
+    let ok = count.map_or(c.passed, |(_, failed)| failed == 0);
+    cells.cell(|s| s.push_str(if ok { "ok" } else { "FAIL" }));
+}
+
+/// The summed-up table: what was summed up and why, a row per kind of check (its count,
+/// its failures and its worst check), then every failed check kept.
+fn summary_text(board: &Board, s: &CheckSummary) -> String {
+    use std::fmt::Write;
+    let mut out = format!(
+        "{} checks, more than {}: one row per quantity with its worst check (the largest error \
+         against its tolerance), then every failed check; `check --all` lists every check\n\n",
+        s.total, LISTED_CHECKS
+    );
+    let mut head: Vec<&str> = HEAD[..3].to_vec();
+    head.extend(["checks", "failed"]);
+    head.extend(&HEAD[3..]);
+    let mut cells = Cells::new(&head);
+    for k in &s.kinds {
+        let context = board.context_of(k.worst_step);
+        check_cells(
+            &mut cells,
+            k.worst_step,
+            context,
+            &k.worst,
+            Some((k.count, k.failed)),
+        );
+    }
+    out += &cells.aligned(3..=9);
+    if s.failed > 0 {
+        let _ = writeln!(out, "\nfailed checks");
+        let mut cells = Cells::new(&HEAD);
+        for e in board.check_entries() {
+            check_cells(&mut cells, e.step, e.context, e.check, None);
+        }
+        out += &cells.aligned(3..=7);
+        if s.failures_not_listed() > 0 {
+            let _ = writeln!(
+                out,
+                "and {} more failed checks, not listed (`check --all` lists them)",
+                s.failures_not_listed()
+            );
+        }
+    }
+    out.push('\n');
     out
 }
 
@@ -216,9 +348,14 @@ impl Cells {
     }
 }
 
-/// The check table as pretty JSON.
+/// The check table as pretty JSON: an array of every row, or where the board kept only a
+/// [`CheckSummary`], a [`SummaryJson`] object.
 pub fn check_table_json(board: &Board) -> String {
-    serde_json::to_string_pretty(&check_rows(board)).expect("rows are plain data")
+    match board.check_summary() {
+        Some(s) => serde_json::to_string_pretty(&summary_json(board, s)),
+        None => serde_json::to_string_pretty(&check_rows(board)),
+    }
+    .expect("rows are plain data")
 }
 
 /// One row of the reference table: a step replayed in double-double.
