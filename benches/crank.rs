@@ -1,7 +1,9 @@
 //! What accuracy and bookkeeping cost: the crank diagram (piston path, piston velocity by the
 //! parallel of KG Abb. 1049, tangential force by LH Abb. 65) at 36 and 3,600 crank angles,
 //! (a) as the bare closed form, (b) as the kernel construction on a board that does not
-//! record, (c) on a recording board with every analytic check.
+//! record, (c) on a recording board with every analytic check (the board a figure is drawn
+//! from), (d) with every check and bound on the board `check` uses, which keeps the checks
+//! and not the drawing.
 //!
 //! `cargo bench --bench crank` runs criterion, then prints a Markdown table of ns per angle
 //! (median of repeated runs) and the ratios to (a), the targets being (b) ≤ 3x, (c) ≤ 20x.
@@ -9,7 +11,7 @@
 use criterion::{criterion_group, BenchmarkId, Criterion, Throughput};
 use graphostatik::crank::closed_form as cf;
 use graphostatik::crank::*;
-use graphostatik::protocol::Board;
+use graphostatik::protocol::{with_setup, Board, Setup};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -63,6 +65,19 @@ fn constructed(n: usize, recording: bool) -> usize {
     r.rows.len() + b.steps().len()
 }
 
+/// (d): what `check` makes, every check and bound without the drawing.
+fn checked(n: usize) -> usize {
+    let setup = Setup {
+        checks_only: true,
+        ..Setup::default()
+    };
+    with_setup(setup, || {
+        let mut b = Board::new(300.0, true);
+        let r = construct(&mut b, &drive(), &DRAWING, &Angles::Divisions(n), &REQUEST).unwrap();
+        r.rows.len() + b.step_count() + usize::from(b.all_passed())
+    })
+}
+
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("crank_diagram");
     for n in [36usize, 3600] {
@@ -75,6 +90,9 @@ fn bench(c: &mut Criterion) {
         });
         g.bench_with_input(BenchmarkId::new("c_recorded_checked", n), &n, |b, &n| {
             b.iter(|| constructed(black_box(n), true))
+        });
+        g.bench_with_input(BenchmarkId::new("d_checks_only", n), &n, |b, &n| {
+            b.iter(|| checked(black_box(n)))
         });
     }
     g.finish();
@@ -101,8 +119,8 @@ fn main() {
     benches();
     Criterion::default().configure_from_args().final_summary();
     println!();
-    println!("| angles | (a) closed form | (b) construction | (c) recorded + checked | (b)/(a) | (c)/(a) |");
-    println!("|---:|---:|---:|---:|---:|---:|");
+    println!("| angles | (a) closed form | (b) construction | (c) recorded + checked | (d) checks only | (b)/(a) | (c)/(a) | (d)/(a) |");
+    println!("|---:|---:|---:|---:|---:|---:|---:|---:|");
     for n in [36usize, 3600] {
         let a = ns_per_angle(n, &|n| {
             black_box(closed_form(n));
@@ -113,10 +131,14 @@ fn main() {
         let c = ns_per_angle(n, &|n| {
             black_box(constructed(n, true));
         });
+        let d = ns_per_angle(n, &|n| {
+            black_box(checked(n));
+        });
         println!(
-            "| {n} | {a:.0} ns | {b:.0} ns | {c:.0} ns | {:.2}x | {:.1}x |",
+            "| {n} | {a:.0} ns | {b:.0} ns | {c:.0} ns | {d:.0} ns | {:.2}x | {:.1}x | {:.1}x |",
             b / a,
-            c / a
+            c / a,
+            d / a
         );
     }
 }

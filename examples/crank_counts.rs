@@ -7,8 +7,9 @@
 //! ```
 //!
 //! The first argument is `closed` (the bare closed form), `built` (the construction on a board
-//! that does not record) or `recorded` (recorded with every check); the second the number of
-//! crank angles.
+//! that does not record), `recorded` (recorded with every check, the board a figure is drawn
+//! from) or `checked` (every check and bound on the board `check` uses, which keeps the checks
+//! and not the drawing); the second the number of crank angles.
 use graphostatik::crank::closed_form as cf;
 use graphostatik::crank::*;
 use graphostatik::protocol::Board;
@@ -36,7 +37,7 @@ fn main() {
                 })
                 .sum::<f64>()
         }
-        "built" | "recorded" => {
+        "built" | "recorded" | "checked" => {
             let dr = Drawing {
                 length_scale: 10.0,
                 force_scale: 200.0,
@@ -49,11 +50,17 @@ fn main() {
                 tangential_force: true,
                 ..Request::default()
             };
-            let mut b = Board::new(300.0, mode == "recorded");
-            construct(&mut b, &d, &dr, &Angles::Divisions(n), &rq).expect("the bench drive");
-            b.steps().len() as f64
+            let setup = graphostatik::protocol::Setup {
+                checks_only: mode == "checked",
+                ..Default::default()
+            };
+            graphostatik::protocol::with_setup(setup, || {
+                let mut b = Board::new(300.0, mode != "built");
+                construct(&mut b, &d, &dr, &Angles::Divisions(n), &rq).expect("the bench drive");
+                b.step_count() as f64
+            })
         }
-        other => panic!("closed, built or recorded, not {other}"),
+        other => panic!("closed, built, recorded or checked, not {other}"),
     };
     println!("{mode} {n}: {out}");
 }

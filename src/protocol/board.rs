@@ -339,12 +339,19 @@ impl Board {
             .unwrap_or_default()
     }
 
-    #[inline]
+    /// Sets an object's bound on a recording board: the guard inlined, the bound reckoned
+    /// apart, so that a board that does not record pays a test for it.
+    #[inline(always)]
     fn set_tr(&mut self, id: ObjId, t: impl FnOnce(&Board) -> Track) {
         if self.recording && id != ObjId::NONE {
-            let t = t(self);
-            self.tracks.set(id.0 as usize - 1, t);
+            self.set_tr_recorded(id, t);
         }
+    }
+
+    #[inline(never)]
+    fn set_tr_recorded(&mut self, id: ObjId, t: impl FnOnce(&Board) -> Track) {
+        let t = t(self);
+        self.tracks.set(id.0 as usize - 1, t);
     }
 
     fn shadow(&self, id: ObjId) -> Shadow {
@@ -357,10 +364,15 @@ impl Board {
     #[inline]
     fn set_shadow(&mut self, id: ObjId, f: impl FnOnce(&Board) -> Shadow) {
         if self.shadows.is_some() && id != ObjId::NONE {
-            let v = f(self);
-            if let Some(s) = self.shadows.as_mut() {
-                s[id.0 as usize - 1] = v;
-            }
+            self.set_shadow_replayed(id, f);
+        }
+    }
+
+    #[inline(never)]
+    fn set_shadow_replayed(&mut self, id: ObjId, f: impl FnOnce(&Board) -> Shadow) {
+        let v = f(self);
+        if let Some(s) = self.shadows.as_mut() {
+            s[id.0 as usize - 1] = v;
         }
     }
 
@@ -548,15 +560,19 @@ impl Board {
     }
 
     /// Sets the situation in which the following steps are made ("φ = 30°"); recorded only.
+    #[inline]
     pub fn set_context(&mut self, f: impl FnOnce() -> String) {
         if self.recording {
-            let c: std::sync::Arc<str> = f().into();
-            if let Some(l) = self.ledger.as_mut() {
-                l.contexts
-                    .push((StepId(self.next_step + 1), Some(c.clone())));
-            }
-            self.context = Some(c);
+            self.set_context_recorded(f().into());
         }
+    }
+
+    fn set_context_recorded(&mut self, c: std::sync::Arc<str>) {
+        if let Some(l) = self.ledger.as_mut() {
+            l.contexts
+                .push((StepId(self.next_step + 1), Some(c.clone())));
+        }
+        self.context = Some(c);
     }
 
     /// Reserves room for `steps` more steps and `objects` more objects, so that a long
@@ -1519,6 +1535,7 @@ impl Board {
     /// construction: a model's difference from the exact value (Tolle's parabola against the
     /// finite rod's exact acceleration is within its truncation bound O(λ³)). The closed form
     /// and the bound are evaluated only on a recording board.
+    #[inline]
     pub fn check_within(
         &mut self,
         value: &H<f64>,
@@ -1528,9 +1545,25 @@ impl Board {
         reference: f64,
         closed_and_bound: impl FnOnce() -> (f64, f64),
     ) {
-        if !self.recording {
-            return;
+        if self.recording {
+            self.check_recorded(
+                value,
+                [quantity.into(), unit.into(), formula.into()],
+                reference,
+                closed_and_bound,
+            );
         }
+    }
+
+    /// [`Board::check_within`] on a recording board.
+    #[inline(never)]
+    fn check_recorded(
+        &mut self,
+        value: &H<f64>,
+        [quantity, unit, formula]: [Text; 3],
+        reference: f64,
+        closed_and_bound: impl FnOnce() -> (f64, f64),
+    ) {
         let (closed, model_bound) = closed_and_bound();
         let tolerance = model_bound.max(CHECK_REL * closed.abs().max(reference.abs()));
         let error = (value.g - closed).abs();
@@ -1540,11 +1573,11 @@ impl Board {
         self.push_check(
             value.id,
             Check {
-                quantity: quantity.into(),
-                unit: unit.into(),
+                quantity,
+                unit,
                 constructed: value.g,
                 closed_form: closed,
-                formula: formula.into(),
+                formula,
                 error,
                 tolerance,
                 reference,
@@ -1557,6 +1590,7 @@ impl Board {
 
     /// Attaches an analytic check to the step that made `value`. The closed form is evaluated
     /// only on a recording board. The tolerance is [`CHECK_REL`] × max(|closed form|, `reference`).
+    #[inline]
     pub fn check(
         &mut self,
         value: &H<f64>,

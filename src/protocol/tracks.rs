@@ -1,6 +1,6 @@
 //! The error bounds of a board's objects, packed: 48 bytes an object (its bound, its turn,
-//! the direction of its error, the step that made it and the step of its worst cut, whose
-//! conditioning is kept once per cut), in chunks, so that a board of millions of objects
+//! the direction of its error, the step that made it and its worst cut, whose step and
+//! conditioning are kept once per cut), in chunks, so that a board of millions of objects
 //! neither doubles its memory when it grows nor copies what it holds.
 
 use super::accuracy::{Track, WorstCut};
@@ -68,7 +68,7 @@ struct Packed {
     turn: f64,
     off: f64,
     axis: [f64; 2],
-    /// The step of the worst cut (0: none).
+    /// The worst cut: its place in [`Tracks::cuts`] plus one (0: none).
     worst: u32,
     /// The step that made the object.
     step: u32,
@@ -78,8 +78,10 @@ struct Packed {
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Tracks {
     packed: Chunked<Packed>,
-    /// The cuts objects name as their worst, in step order.
+    /// The cuts objects name as their worst, in the order first named.
     cuts: Vec<(StepId, Conditioning)>,
+    /// Each cut's place in `cuts`, by its step.
+    places: foldhash::HashMap<StepId, u32>,
 }
 
 impl Tracks {
@@ -102,14 +104,10 @@ impl Tracks {
     /// The track of object `i` (from 0).
     pub fn get(&self, i: usize) -> Option<Track> {
         let p = self.packed(i)?;
-        let worst = (p.worst != 0).then(|| {
-            let step = StepId(p.worst);
-            let k = self.cuts.partition_point(|c| c.0 < step);
-            WorstCut {
-                step,
-                conditioning: self.cuts[k].1,
-            }
-        });
+        let worst = (p.worst as usize)
+            .checked_sub(1)
+            .and_then(|k| self.cuts.get(k))
+            .map(|&(step, conditioning)| WorstCut { step, conditioning });
         Some(Track {
             err: p.err,
             turn: p.turn,
@@ -124,17 +122,24 @@ impl Tracks {
         self.packed(i).map(|p| StepId(p.step))
     }
 
+    /// The place of a cut in `cuts`, where it is first named: the cut just made (the usual
+    /// case) without a lookup. A step's cut keeps the conditioning it was first named with.
+    fn place(&mut self, w: WorstCut) -> u32 {
+        let n = self.cuts.len() as u32;
+        if self.cuts.last().is_some_and(|c| c.0 == w.step) {
+            return n - 1;
+        }
+        *self.places.entry(w.step).or_insert_with(|| {
+            self.cuts.push((w.step, w.conditioning));
+            n
+        })
+    }
+
     /// Sets the track of object `i`.
     pub fn set(&mut self, i: usize, t: Track) {
         let worst = match t.worst {
             None => 0,
-            Some(w) => {
-                let k = self.cuts.partition_point(|c| c.0 < w.step);
-                if self.cuts.get(k).is_none_or(|c| c.0 != w.step) {
-                    self.cuts.insert(k, (w.step, w.conditioning));
-                }
-                w.step.0
-            }
+            Some(w) => self.place(w) + 1,
         };
         if let Some(p) = self.packed.get_mut(i) {
             *p = Packed {
