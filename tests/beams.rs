@@ -246,6 +246,72 @@ fn bad_beam_scenes_are_named() {
     assert!(e.contains("outputs[0]"), "{e}");
 }
 
+/// A scene of `n` uniform loads side by side (1 m each, 1 m apart) on a beam over all of
+/// them, with a point load at `point` (m) and, if `overlap`, the last load reaching back into
+/// the one before.
+fn many_uniform_loads(n: usize, point: Option<f64>, overlap: bool) -> String {
+    let mut loads: Vec<String> = (0..n)
+        .map(|i| {
+            format!(
+                r#"{{"from_m": {}, "to_m": {}, "kg_per_m": 10}}"#,
+                2 * i + 1,
+                2 * i + 2
+            )
+        })
+        .collect();
+    if overlap {
+        loads[n - 1] = format!(
+            r#"{{"from_m": {}, "to_m": {}, "kg_per_m": 10}}"#,
+            2 * n - 4,
+            2 * n
+        );
+    }
+    let points = point.map_or(String::new(), |x| format!(r#"{{"x_m": {x}, "kg": 5}}"#));
+    format!(
+        r#"{{"procedure": "beam", "title": "many", "beam": {{"supports_m": [0, {}]}},
+            "point_loads": [{points}], "uniform_loads": [{}]}}"#,
+        2 * n + 1,
+        loads.join(",")
+    )
+}
+
+#[test]
+fn many_uniform_loads_are_validated_in_n_log_n() {
+    // Every pair compared took minutes at 200,000 loads (and the construction's layout check
+    // and zero moments as long again); sorted, a fraction of a second. A check may have this
+    // many: validation reads the mode.
+    let n = if cfg!(debug_assertions) {
+        20_000
+    } else {
+        200_000
+    };
+    let setup = graphostatik::protocol::Setup {
+        checks_only: true,
+        ..Default::default()
+    };
+    graphostatik::protocol::with_setup(setup, || {
+        AnyScene::from_json(&many_uniform_loads(n, Some(0.5), false), "b.json")
+            .expect("loads side by side");
+        let e = err(&many_uniform_loads(n, None, true));
+        assert!(
+            e.contains(&format!(
+                "uniform_loads[{}]: overlaps uniform load {}",
+                n - 1,
+                n - 2
+            )),
+            "{e}"
+        );
+        let e = err(&many_uniform_loads(n, Some(2.0 * n as f64 - 0.5), false));
+        assert!(
+            e.contains(&format!(
+                "point_loads[0].x_m: the point load lies inside uniform load {}",
+                n - 1
+            )),
+            "{e}"
+        );
+    });
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(128))]
 
@@ -265,6 +331,44 @@ proptest! {
             prop_assert!((fast.moment(x) - cf::moment(&beam, x)).abs() <= 1e-12 * scale);
             for left in [false, true] {
                 prop_assert!((fast.shear(x, left) - cf::shear(&beam, x, left)).abs() <= 1e-12 * scale);
+            }
+        }
+    }
+
+    /// Many uniform loads (more than are added one by one) summed from prefix sums agree with
+    /// the plain method of sections, between, on and inside the loads.
+    #[test]
+    fn summed_uniform_loads_agree_with_the_plain_method(
+        widths in proptest::collection::vec((0.01f64..1.0, 0.0f64..0.5, -200.0f64..900.0), 33..80),
+        loads in proptest::collection::vec((0.0f64..1.0, -500.0f64..3000.0), 0..10),
+        probes in proptest::collection::vec(0.0f64..1.0, 1..30),
+    ) {
+        // Uniform loads one after the other, some touching, some with gaps.
+        let mut at = 0.0;
+        let mut uniform_loads = vec![];
+        for &(w, gap, q) in &widths {
+            at += gap;
+            uniform_loads.push(UniformLoad { from: at, to: at + w, q });
+            at += w;
+        }
+        uniform_loads.reverse();
+        let len = at;
+        let mut beam = simple(&[]);
+        beam.supports = [0.0, len];
+        beam.ends = [0.0, len];
+        beam.point_loads = loads.iter().map(|&(f, p)| PointLoad { x: f * len, p }).collect();
+        beam.uniform_loads = uniform_loads;
+        assert!(beam.uniform_loads.len() > cf::UNIFORM_LOADS_SUMMED);
+        let fast = cf::Sections::new(&beam);
+        let total = loads.iter().map(|l| l.1.abs()).sum::<f64>()
+            + beam.uniform_loads.iter().map(|u| u.resultant().abs()).sum::<f64>();
+        let scale = 1.0 + total * len;
+        let xs = probes.iter().map(|f| f * len)
+            .chain(beam.uniform_loads.iter().flat_map(|u| [u.from, u.to, 0.5 * (u.from + u.to)]));
+        for x in xs {
+            prop_assert!((fast.moment(x) - cf::moment(&beam, x)).abs() <= 1e-12 * scale);
+            for left in [false, true] {
+                prop_assert!((fast.shear(x, left) - cf::shear(&beam, x, left)).abs() <= 1e-12 * (1.0 + total));
             }
         }
     }

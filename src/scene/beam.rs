@@ -206,6 +206,10 @@ impl BeamScene {
             super::fields::check_fits_memory(f.origin, "point_loads", steps, free)?;
         }
         for (i, l) in self.point_loads.iter().enumerate() {
+            // The field's name is written only for a load that is refused.
+            if l.x_m.is_finite() && l.kg.is_finite() && l.x_m >= ends[0] && l.x_m <= ends[1] {
+                continue;
+            }
             f.finite(&format!("point_loads[{i}].x_m"), l.x_m)?;
             f.finite(&format!("point_loads[{i}].kg"), l.kg)?;
             on_beam(f, &format!("point_loads[{i}].x_m"), l.x_m, ends)?;
@@ -214,7 +218,9 @@ impl BeamScene {
     }
 
     /// Uniform loads finite, on the beam, ending after they start, straddling no support,
-    /// holding no point load, overlapping no other.
+    /// holding no point load, overlapping no other: each load alone, then the loads in the
+    /// order of their starts (n log n: a million loads are checked in a fraction of a second,
+    /// where comparing every pair took minutes).
     fn check_uniform_loads(&self, f: Fields, ends: [f64; 2]) -> Result<(), SceneError> {
         let [a, b] = self.beam.supports_m;
         for (i, u) in self.uniform_loads.iter().enumerate() {
@@ -238,23 +244,38 @@ impl BeamScene {
                     return Err(f.bad(&at("to_m"), format!("the load straddles support {s} at {x} m: split it there into two uniform loads (the result is the same)")));
                 }
             }
-            if let Some(k) = self
-                .point_loads
-                .iter()
-                .position(|l| l.x_m > u.from_m && l.x_m < u.to_m)
-            {
-                return Err(f.bad(&format!("point_loads[{k}].x_m"), format!("the point load lies inside uniform load {i}: split the uniform load there (the result is the same)")));
-            }
-            for (j, w) in self.uniform_loads.iter().enumerate().skip(i + 1) {
-                if w.from_m < u.to_m && w.to_m > u.from_m {
-                    return Err(f.bad(
-                        &format!("uniform_loads[{j}]"),
-                        format!("overlaps uniform load {i}: add their intensities instead"),
-                    ));
-                }
-            }
         }
-        Ok(())
+        self.check_point_loads_outside_uniform(f)?;
+        self.check_uniform_overlaps(f)
+    }
+
+    /// No point load strictly inside a uniform load (the first such uniform load named, with
+    /// the first point load inside it by position).
+    fn check_point_loads_outside_uniform(&self, f: Fields) -> Result<(), SceneError> {
+        let xs: Vec<f64> = self.point_loads.iter().map(|l| l.x_m).collect();
+        match crate::statics::beam::point_inside_span(&self.spans(), &xs) {
+            Some((i, k)) => Err(f.bad(&format!("point_loads[{k}].x_m"), format!("the point load lies inside uniform load {i}: split the uniform load there (the result is the same)"))),
+            None => Ok(()),
+        }
+    }
+
+    /// No two uniform loads overlap (touching is allowed).
+    fn check_uniform_overlaps(&self, f: Fields) -> Result<(), SceneError> {
+        match crate::statics::beam::overlapping_spans(&self.spans()) {
+            Some((first, second)) => Err(f.bad(
+                &format!("uniform_loads[{second}]"),
+                format!("overlaps uniform load {first}: add their intensities instead"),
+            )),
+            None => Ok(()),
+        }
+    }
+
+    /// The uniform loads' spans (from, to), m.
+    fn spans(&self) -> Vec<(f64, f64)> {
+        self.uniform_loads
+            .iter()
+            .map(|u| (u.from_m, u.to_m))
+            .collect()
     }
 
     /// Panel points of the stringers: 2 to MAX_LOADS, increasing, on the beam, covering the
@@ -269,8 +290,10 @@ impl BeamScene {
                 ));
             }
             for (i, x) in st.iter().enumerate() {
-                f.finite(&format!("stringers_m[{i}]"), *x)?;
-                on_beam(f, &format!("stringers_m[{i}]"), *x, ends)?;
+                if !(x.is_finite() && *x >= ends[0] && *x <= ends[1]) {
+                    f.finite(&format!("stringers_m[{i}]"), *x)?;
+                    on_beam(f, &format!("stringers_m[{i}]"), *x, ends)?;
+                }
                 if i > 0 && *x <= st[i - 1] {
                     return Err(f.bad(
                         &format!("stringers_m[{i}]"),

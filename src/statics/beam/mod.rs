@@ -180,6 +180,7 @@ fn check_sections(beam: &Beam, extra_sections: &[f64]) -> Result<(), Constructio
             ));
         }
         if beam.uniform_loads.iter().any(|u| x > u.from && x < u.to) {
+            // (A few sections each: the figure's own, or a scene's list of them.)
             return Err(ConstructionError::unsupported("sections", format!(
                 "section x = {x} m lies inside a uniform load: its moments are read off the parabola"
             )));
@@ -190,6 +191,7 @@ fn check_sections(beam: &Beam, extra_sections: &[f64]) -> Result<(), Constructio
 
 /// The layouts the construction handles: A left of B, uniform loads that neither overlap nor
 /// straddle a support nor hold a point load (split them there: the result is the same).
+/// O(n log n) in the loads.
 fn check_layout(beam: &Beam) -> Result<(), ConstructionError> {
     let [a, b] = beam.supports;
     if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
@@ -212,21 +214,65 @@ fn check_layout(beam: &Beam) -> Result<(), ConstructionError> {
                 format!("uniform load {i} straddles a support: split it there"),
             ));
         }
-        if beam.point_loads.iter().any(|l| inside(l.x)) {
-            return Err(ConstructionError::unsupported(
-                format!("uniform_loads[{i}]"),
-                format!("a point load lies inside uniform load {i}: split the uniform load there"),
-            ));
-        }
-        if beam.uniform_loads[i + 1..]
-            .iter()
-            .any(|w| w.from < u.to && w.to > u.from)
-        {
-            return Err(ConstructionError::unsupported(
-                format!("uniform_loads[{i}]"),
-                format!("uniform load {i} overlaps another: add their intensities"),
-            ));
-        }
+    }
+    let spans: Vec<(f64, f64)> = beam.uniform_loads.iter().map(|u| (u.from, u.to)).collect();
+    let xs: Vec<f64> = beam.point_loads.iter().map(|l| l.x).collect();
+    if let Some((i, _)) = point_inside_span(&spans, &xs) {
+        return Err(ConstructionError::unsupported(
+            format!("uniform_loads[{i}]"),
+            format!("a point load lies inside uniform load {i}: split the uniform load there"),
+        ));
+    }
+    if let Some((i, _)) = overlapping_spans(&spans) {
+        return Err(ConstructionError::unsupported(
+            format!("uniform_loads[{i}]"),
+            format!("uniform load {i} overlaps another: add their intensities"),
+        ));
     }
     Ok(())
+}
+
+/// The first span (from, to), by index, with a point strictly inside it, and that point (the
+/// first by position, then by index): O((spans + points) log points).
+///
+/// ```
+/// use graphostatik::statics::beam::point_inside_span;
+/// let spans = [(0.0, 1.0), (2.0, 4.0), (5.0, 6.0)];
+/// assert_eq!(point_inside_span(&spans, &[1.0, 3.5, 2.5]), Some((1, 2)));
+/// assert_eq!(point_inside_span(&spans, &[1.0, 2.0, 6.0]), None);
+/// ```
+pub fn point_inside_span(spans: &[(f64, f64)], points: &[f64]) -> Option<(usize, usize)> {
+    if spans.is_empty() {
+        return None;
+    }
+    let mut by_x: Vec<(f64, usize)> = points.iter().copied().zip(0..).collect();
+    by_x.sort_by(|p, q| p.0.total_cmp(&q.0).then(p.1.cmp(&q.1)));
+    spans.iter().enumerate().find_map(|(i, &(from, to))| {
+        let first = by_x.partition_point(|p| p.0 <= from);
+        by_x.get(first).filter(|p| p.0 < to).map(|p| (i, p.1))
+    })
+}
+
+/// Two spans (from, to) that overlap (touching is allowed), as (earlier index, later index),
+/// found by sweeping them in the order of their starts, each against the one reaching
+/// furthest before it: O(n log n). `None` if no two overlap.
+///
+/// ```
+/// use graphostatik::statics::beam::overlapping_spans;
+/// assert_eq!(overlapping_spans(&[(4.0, 6.0), (0.0, 2.0), (2.0, 4.0)]), None);
+/// assert_eq!(overlapping_spans(&[(4.0, 6.0), (0.0, 2.0), (1.0, 3.0)]), Some((1, 2)));
+/// ```
+pub fn overlapping_spans(spans: &[(f64, f64)]) -> Option<(usize, usize)> {
+    let mut order: Vec<usize> = (0..spans.len()).collect();
+    order.sort_by(|&p, &q| spans[p].0.total_cmp(&spans[q].0).then(p.cmp(&q)));
+    let mut reach: Option<usize> = None;
+    for &j in &order {
+        if let Some(r) = reach.filter(|&r| spans[j].0 < spans[r].1) {
+            return Some((r.min(j), r.max(j)));
+        }
+        if reach.is_none_or(|r| spans[j].1 > spans[r].1) {
+            reach = Some(j);
+        }
+    }
+    None
 }

@@ -205,6 +205,17 @@ impl BeamConstruction<'_, '_> {
     /// line), read off and checked against the interpolated zero of the linear M.
     pub(super) fn zero_moments(&mut self) -> Result<(), ConstructionError> {
         let n = self.forces.len();
+        // The uniform loads by their starts; they do not overlap (the layout was checked), so
+        // their ends come in the same order, and the first that ends after `lo` is the only
+        // one that may reach into a stretch (lo, hi).
+        let mut spans: Vec<(f64, f64)> = (self.beam.uniform_loads.iter())
+            .map(|u| (u.from, u.to))
+            .collect();
+        spans.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let loaded = |lo: f64, hi: f64| {
+            let k = spans.partition_point(|s| s.1 <= lo);
+            spans.get(k).is_some_and(|s| s.0 < hi)
+        };
         for kstr in 0..=n {
             let lo = if kstr == 0 {
                 f64::NEG_INFINITY
@@ -217,13 +228,7 @@ impl BeamConstruction<'_, '_> {
                 self.forces[kstr].x
             };
             let (lo, hi) = (lo.max(self.beam.supports[0]), hi.min(self.beam.supports[1]));
-            if lo >= hi
-                || self
-                    .beam
-                    .uniform_loads
-                    .iter()
-                    .any(|u| u.from < hi && u.to > lo)
-            {
+            if lo >= hi || loaded(lo, hi) {
                 continue;
             }
             self.zero_moment_on(kstr, lo, hi);
