@@ -863,7 +863,10 @@ impl TrussScene {
     }
 
     fn pair_indices(&self) -> Vec<[usize; 2]> {
-        let pos = |n: &str| self.members.iter().position(|m| m.name == n).unwrap_or(0);
+        let index: HashMap<&str, usize> = (self.members.iter().enumerate())
+            .map(|(i, m)| (m.name.as_str(), i))
+            .collect();
+        let pos = |n: &str| index.get(n).copied().unwrap_or(0);
         self.diagonal_pairs
             .iter()
             .map(|[a, b]| [pos(a), pos(b)])
