@@ -81,8 +81,12 @@ impl SteamModel {
     }
 }
 
+/// The pressure at `u` on a curve of digitised points in order along the stroke (x never
+/// decreasing, as the scene requires): the first point at or past `u` found by binary
+/// search (a linear search made a diagram of 100,000 points take hours).
 fn interpolate(pts: &[(f64, f64)], u: f64) -> f64 {
-    match pts.iter().position(|&(x, _)| x >= u) {
+    let first_at_or_past = pts.partition_point(|&(x, _)| x < u);
+    match (first_at_or_past < pts.len()).then_some(first_at_or_past) {
         None => pts.last().map_or(0.0, |p| p.1),
         Some(0) => pts[0].1,
         Some(k) => {

@@ -710,7 +710,7 @@ impl TrussScene {
     fn check_case_names(&self, origin: &str, truss: &Truss) -> Result<(), SceneError> {
         let bad = |field: String, message: String| invalid(origin, field, message);
         self.check_unique_case_names(origin, truss)?;
-        let case_names = self.case_names(truss);
+        let case_names: foldhash::HashSet<String> = self.case_names(truss).into_iter().collect();
         let known = |n: &String| case_names.contains(n);
         for (c, combo) in self.combinations.iter().enumerate() {
             for (i, name) in combo.cases.iter().enumerate() {
