@@ -18,6 +18,6 @@ pub use figure::figure;
 pub use plot::{accuracy_plot_svg, accuracy_table_text};
 pub use table::{
     check_rows, check_table_json, check_table_text, reference_rows, reference_table_json,
-    reference_table_text, CheckRow, ReferenceTableRow,
+    reference_table_text, summary_json, CheckRow, KindJson, ReferenceTableRow, SummaryJson,
 };
 pub use walkthrough::{html_text, walkthrough, walkthrough_html, Grouping, Page, WalkOptions};

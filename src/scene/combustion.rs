@@ -43,7 +43,7 @@ super::header::scene_struct! {
 pub struct GasCylindersSpec {
     /// Bore D (mm).
     pub bore_mm: f64,
-    /// The firing order, cylinders numbered from 1 (e.g. [1, 3, 4, 2]); one cylinder: [1].
+    /// The firing order, cylinders numbered from 1 (e.g. `[1, 3, 4, 2]`); one cylinder: `[1]`.
     /// They fire evenly spaced over the cycle.
     pub firing_order: Vec<usize>,
     /// Weight of each cylinder's reciprocating parts (kg); with the effect `inertia`.

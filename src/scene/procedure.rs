@@ -82,7 +82,7 @@ pub trait Procedure:
 
     /// How large the figure comes out on the sheet at the problem's scales (mm), with the
     /// scale field that drives it: its lengths against the length scale and its forces against
-    /// the force scale, whichever is larger. Checked against [`MAX_SHEET_MM`] when a scene
+    /// the force scale, whichever is larger. Checked against `MAX_SHEET_MM` when a scene
     /// is read, so that an absurd scale is named as such.
     fn sheet_extent(problem: &Self::Problem) -> (f64, &'static str) {
         let _ = problem;
