@@ -533,19 +533,26 @@ fn rays_by_rod_length_arcs_for_the_engine() {
 #[test]
 fn an_indicator_diagram_of_many_points_is_read_by_binary_search() {
     // Every pressure was found by a linear search along the points: 8,000 points took 4 s,
-    // 100,000 hours. Straight lines from 6 to 0.5 at (working) and 2 at (back): p_m is
-    // their mean difference, 3.25 − 2 = 1.25 at, whatever the number of points.
+    // 100,000 some ten minutes. Straight lines from 6 to 0.5 at (working) and 2 at (back):
+    // p_m is their mean difference, 3.25 − 2 = 1.25 at, whatever the number of points.
     let n = if cfg!(debug_assertions) {
         5_000
     } else {
         100_000
     };
-    let line = |p0: f64, p1: f64| -> String {
-        let pts: Vec<String> = (0..n)
+    // (u, p) along the stroke, u from 0 to 1.
+    let pts = |p0: f64, p1: f64| -> Vec<(f64, f64)> {
+        (0..n)
             .map(|i| {
                 let t = i as f64 / (n - 1) as f64;
-                format!("[{}, {}]", 400.0 * t, p0 + (p1 - p0) * t)
+                (t, p0 + (p1 - p0) * t)
             })
+            .collect()
+    };
+    // The same points in the scene, x in mm of the 400 mm stroke.
+    let line = |p0: f64, p1: f64| -> String {
+        let pts: Vec<String> = (pts(p0, p1).iter())
+            .map(|(u, p)| format!("[{}, {p}]", 400.0 * u))
             .collect();
         format!("[{}]", pts.join(","))
     };
@@ -565,14 +572,6 @@ fn an_indicator_diagram_of_many_points_is_read_by_binary_search() {
     let p = scene(&text);
     let (board, _) = p.construct(true).unwrap();
     assert!(board.all_passed());
-    let pts = |p0: f64, p1: f64| -> Vec<(f64, f64)> {
-        (0..n)
-            .map(|i| {
-                let t = i as f64 / (n - 1) as f64;
-                (t, p0 + (p1 - p0) * t)
-            })
-            .collect()
-    };
     let ind = Indicator::Points {
         working: pts(6.0, 0.5),
         back: pts(2.0, 2.0),

@@ -133,10 +133,17 @@ impl CheckSummary {
         k.count += 1;
         k.failed += u64::from(!c.passed);
         k.glancing += u64::from(c.glancing());
-        k.first_step = k.first_step.min(step);
         if worse(c, step, &k.worst, k.worst_step) {
             k.worst_step = step;
             k.worst = c.clone();
+        }
+        // Checks are filed in the order made, not always in step order: a kind whose first
+        // step moves earlier moves up the list.
+        if step < k.first_step {
+            let mut k = self.kinds.remove(i);
+            k.first_step = step;
+            let at = self.kinds.partition_point(|o| o.first_step <= step);
+            self.kinds.insert(at, k);
         }
     }
 
@@ -191,6 +198,14 @@ mod tests {
         t.add(StepId(2), &check("moment", 3e-9, true));
         t.add(StepId(3), &check("moment", 3e-9, true));
         assert_eq!(t.kinds[0].worst_step, StepId(2));
+        // A kind filed late for an earlier step moves ahead of the kinds it now precedes.
+        let mut u = CheckSummary::default();
+        u.add(StepId(5), &check("reaction", 0.0, true));
+        u.add(StepId(8), &check("moment", 0.0, true));
+        u.add(StepId(2), &check("moment", 0.0, true));
+        let names: Vec<&str> = u.kinds.iter().map(|k| &*k.quantity).collect();
+        assert_eq!(names, ["moment", "reaction"]);
+        assert_eq!(u.kinds[0].first_step, StepId(2));
     }
 
     #[test]

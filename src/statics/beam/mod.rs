@@ -172,6 +172,8 @@ impl LocalFrame {
 
 /// Sections must lie on the beam and outside the uniform loads.
 fn check_sections(beam: &Beam, extra_sections: &[f64]) -> Result<(), ConstructionError> {
+    // Each section against every uniform load: the sections are a shaft's few, or a stringer
+    // beam's panel points, whose beam carries point loads only.
     for &x in extra_sections {
         if !(x >= beam.ends[0] && x <= beam.ends[1]) {
             return Err(ConstructionError::unsupported(
@@ -180,7 +182,6 @@ fn check_sections(beam: &Beam, extra_sections: &[f64]) -> Result<(), Constructio
             ));
         }
         if beam.uniform_loads.iter().any(|u| x > u.from && x < u.to) {
-            // (A few sections each: the figure's own, or a scene's list of them.)
             return Err(ConstructionError::unsupported("sections", format!(
                 "section x = {x} m lies inside a uniform load: its moments are read off the parabola"
             )));
