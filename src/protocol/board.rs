@@ -577,8 +577,12 @@ impl Board {
 
     /// Reserves room for `steps` more steps and `objects` more objects, so that a long
     /// construction does not spend its time moving a growing protocol around in memory.
-    /// (A board that keeps only its checks grows in chunks and needs no room made.)
+    /// (A board that keeps only its checks files no steps and objects, only their bounds,
+    /// which grow in chunks: room is made in the first.)
     pub fn reserve(&mut self, steps: usize, objects: usize) {
+        if self.recording {
+            self.tracks.reserve(objects);
+        }
         if self.is_drawing() {
             self.steps.reserve(steps);
             self.objects.reserve(objects);

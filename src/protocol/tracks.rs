@@ -36,7 +36,7 @@ impl<T> Chunked<T> {
     pub fn push(&mut self, x: T) {
         // The first chunk grows as a Vec does (a small board stays small), up to CHUNK (a
         // power of two, where doubling stops exactly); the others are made whole.
-        if self.len % CHUNK == 0 {
+        if self.len == self.chunks.len() * CHUNK {
             self.chunks.push(if self.len == 0 {
                 Vec::new()
             } else {
@@ -47,6 +47,18 @@ impl<T> Chunked<T> {
             c.push(x);
         }
         self.len += 1;
+    }
+
+    /// Makes room for `n` more items in the first chunk, up to a chunk (the others are made
+    /// whole): a construction that knows its size does not copy its first chunk as it grows.
+    pub fn reserve(&mut self, n: usize) {
+        if self.len < CHUNK {
+            if self.chunks.is_empty() {
+                self.chunks.push(Vec::new());
+            }
+            let room = (self.len + n).min(CHUNK) - self.len;
+            self.chunks[0].reserve_exact(room);
+        }
     }
 
     pub fn get(&self, i: usize) -> Option<&T> {
@@ -87,6 +99,11 @@ pub(crate) struct Tracks {
 impl Tracks {
     pub fn len(&self) -> usize {
         self.packed.len()
+    }
+
+    /// Makes room for `n` more objects (see [`Chunked::reserve`]).
+    pub fn reserve(&mut self, n: usize) {
+        self.packed.reserve(n);
     }
 
     /// A new object made by `step`, with no error yet.
@@ -157,6 +174,26 @@ impl Tracks {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn room_made_in_the_first_chunk_keeps_every_chunk_whole() {
+        for (before, room) in [(0, 10), (0, 5 * CHUNK), (3, CHUNK), (CHUNK, 7)] {
+            let mut c = Chunked::default();
+            (0..before).for_each(|i| c.push(i));
+            c.reserve(room);
+            let cap = c.chunks.first().map_or(0, Vec::capacity);
+            assert!(
+                before >= CHUNK || cap >= (before + room).min(CHUNK),
+                "{cap}"
+            );
+            (before..2 * CHUNK + 3).for_each(|i| c.push(i));
+            assert_eq!(c.len(), 2 * CHUNK + 3);
+            assert_eq!(c.chunks.len(), 3);
+            assert!(c.chunks[..2].iter().all(|k| k.len() == CHUNK));
+            assert!(c.iter().copied().eq(0..2 * CHUNK + 3));
+            assert_eq!(c.get(CHUNK + 1), Some(&(CHUNK + 1)));
+        }
+    }
 
     #[test]
     fn tracks_read_back_as_set_across_chunks() {
