@@ -104,7 +104,8 @@ impl CheckSummary {
     pub(crate) fn add(&mut self, step: StepId, c: &Check) {
         self.total += 1;
         self.failed += u64::from(!c.passed);
-        self.glancing += u64::from(c.glancing());
+        let glancing = u64::from(c.glancing());
+        self.glancing += glancing;
         if !c.passed && self.failures.len() < LISTED_FAILURES {
             self.failures.push((step, c.clone()));
         }
@@ -121,7 +122,7 @@ impl CheckSummary {
                     unit: c.unit.clone(),
                     count: 1,
                     failed: u64::from(!c.passed),
-                    glancing: u64::from(c.glancing()),
+                    glancing,
                     first_step: step,
                     worst_step: step,
                     worst: c.clone(),
@@ -132,7 +133,7 @@ impl CheckSummary {
         let k = &mut self.kinds[i];
         k.count += 1;
         k.failed += u64::from(!c.passed);
-        k.glancing += u64::from(c.glancing());
+        k.glancing += glancing;
         if worse(c, step, &k.worst, k.worst_step) {
             k.worst_step = step;
             k.worst = c.clone();

@@ -95,7 +95,12 @@ impl BeamConstruction<'_, '_> {
                     let (corner, vertical) =
                         (self.drawn().2.corners[j], self.drawn().0.verticals[j]);
                     let m = self.moment_at(f.x, &corner, &vertical)?;
-                    self.push_section(f.x, format!("P{}", i + 1), m);
+                    // "P" and the load's number, without the formatting machinery: a
+                    // beam of a million loads names a million sections.
+                    let mut what = String::with_capacity(8);
+                    what.push('P');
+                    crate::fmt::push_uint_padded(&mut what, i as u64 + 1, 1);
+                    self.push_section(f.x, what, m);
                 }
                 Kind::Uniform(i) => self.parabola(j, i)?,
             }
