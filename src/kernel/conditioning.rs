@@ -10,10 +10,10 @@
 //! construction that does not record pays no trigonometry for its conditioning.
 
 use super::tolerance::GLANCING_ANGLE;
+use serde::{Serialize, Serializer};
 
 /// tan 15° = 2 − √3, the tangent of [`GLANCING_ANGLE`].
 const GLANCING_TAN: f64 = 0.267_949_192_431_122_7;
-use serde::{Serialize, Serializer};
 
 /// The conditioning of one intersection: the meeting angle, folded into [0, π/2].
 #[derive(Debug, Clone, Copy, PartialEq)]
