@@ -72,9 +72,10 @@ impl Conditioning {
     /// [`GLANCING_ANGLE`].
     ///
     /// Decided without trigonometry away from the threshold: `sin < tan 15° · cos` there
-    /// gives the same answer as the angle, by a margin a billion times wider than the
-    /// rounding of either; only within it (or for numbers outside the normal range) is
-    /// the `atan2` taken. A check table asks this of every check.
+    /// gives the same answer as the angle. The margin, 1e-9 relative, is some four million
+    /// times the rounding of either side (a few ulps). Only within it, or for a cosine
+    /// outside the normal range, is the `atan2` taken. A check table asks this of every
+    /// check.
     pub fn glancing(&self) -> bool {
         if self.cos > 1e-290 && self.cos < 1e290 {
             let edge = GLANCING_TAN * self.cos;
