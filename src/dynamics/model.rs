@@ -83,13 +83,13 @@ impl SteamModel {
 
 /// The pressure at `u` on a curve of digitised points in order along the stroke (x never
 /// decreasing, as the scene requires): the first point at or past `u` found by binary
-/// search (a linear search made a diagram of 100,000 points take hours).
+/// search (a linear search made a cylinder of 100,000 points per curve take some ten
+/// minutes).
 fn interpolate(pts: &[(f64, f64)], u: f64) -> f64 {
-    let first_at_or_past = pts.partition_point(|&(x, _)| x < u);
-    match (first_at_or_past < pts.len()).then_some(first_at_or_past) {
-        None => pts.last().map_or(0.0, |p| p.1),
-        Some(0) => pts[0].1,
-        Some(k) => {
+    match pts.partition_point(|&(x, _)| x < u) {
+        k if k == pts.len() => pts.last().map_or(0.0, |p| p.1),
+        0 => pts[0].1,
+        k => {
             let ((x0, y0), (x1, y1)) = (pts[k - 1], pts[k]);
             if x1 > x0 {
                 y0 + (y1 - y0) * (u - x0) / (x1 - x0)

@@ -777,7 +777,7 @@ impl TrussScene {
                 }
             }
         }
-        let pairs = self.pair_indices();
+        let pairs = self.pair_indices(names);
         for side in 0..2 {
             let drop: Vec<usize> = pairs.iter().map(|p| p[1 - side]).collect();
             let (sub, _) = redundant::without(truss, &drop);
@@ -862,10 +862,15 @@ impl TrussScene {
         names
     }
 
-    fn pair_indices(&self) -> Vec<[usize; 2]> {
-        let index: HashMap<&str, usize> = (self.members.iter().enumerate())
+    /// Each member's place, by its name (the index `check_members` returns on the way).
+    fn member_index(&self) -> HashMap<&str, usize> {
+        (self.members.iter().enumerate())
             .map(|(i, m)| (m.name.as_str(), i))
-            .collect();
+            .collect()
+    }
+
+    /// The diagonal pairs as member indices, their names looked up in `index`.
+    fn pair_indices(&self, index: &HashMap<&str, usize>) -> Vec<[usize; 2]> {
         let pos = |n: &str| index.get(n).copied().unwrap_or(0);
         self.diagonal_pairs
             .iter()
@@ -967,7 +972,7 @@ impl TrussScene {
             truss,
             cases,
             combinations,
-            pairs: self.pair_indices(),
+            pairs: self.pair_indices(&self.member_index()),
             pair_mode: self.diagonal_mode,
             drawing,
         }

@@ -54,11 +54,9 @@ pub fn without(t: &Truss, drop: &[usize]) -> (Truss, Vec<usize>) {
 /// first of them and how many ("14, 16, 19, 21 slack"; "1, 5, 9, …, 97, … 16000 slack"). A
 /// book's girder (Aufgabe 5's crane bridge, 19 pairs) is named in full.
 fn slack_names(t: &Truss, drop: &[usize]) -> String {
-    let names = drop
-        .iter()
-        .take(SLACK_NAMED)
-        .map(|&m| t.members[m].name.as_str());
-    let names: Vec<&str> = names.collect();
+    let names: Vec<&str> = (drop.iter().take(SLACK_NAMED))
+        .map(|&m| t.members[m].name.as_str())
+        .collect();
     if drop.len() <= SLACK_NAMED {
         format!("{} slack", names.join(", "))
     } else {
