@@ -12,9 +12,9 @@
 //! allocator), less what was live before it (the scene's text). `cargo bench --bench check`
 //! prints the tables in Markdown.
 
-use graphostatik::protocol::{with_setup, Setup};
+use graphostatik::protocol::BoardConfig;
 use graphostatik::render::check_table_text;
-use graphostatik::scene::AnyScene;
+use graphostatik::scene::{AnyScene, ReadContext};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -80,16 +80,18 @@ fn beam(n: usize) -> String {
 /// The whole check in process: parse, validate, construct, table. `None` if the scene is
 /// refused on this board.
 fn check(text: &str, checks_only: bool) -> Option<usize> {
-    let setup = Setup {
-        checks_only,
-        ..Setup::default()
+    let (ctx, config) = if checks_only {
+        (
+            ReadContext::checks("bench.json", graphostatik::io::available_memory()),
+            BoardConfig::CHECKS,
+        )
+    } else {
+        (ReadContext::figure("bench.json"), BoardConfig::DRAWING)
     };
-    with_setup(setup, || {
-        let scene = AnyScene::from_json(text, "bench.json").ok()?;
-        let board = scene.problem().construct(true).ok()?;
-        assert!(board.all_passed());
-        Some(black_box(check_table_text(&board)).len())
-    })
+    let scene = AnyScene::read(text, &ctx).ok()?;
+    let board = scene.problem().construct(config).ok()?;
+    assert!(board.all_passed());
+    Some(black_box(check_table_text(&board)).len())
 }
 
 /// Median wall time (ms) and peak heap (MB) of the whole check, over `reps` runs.

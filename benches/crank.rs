@@ -11,7 +11,8 @@
 use criterion::{criterion_group, BenchmarkId, Criterion, Throughput};
 use graphostatik::crank::closed_form as cf;
 use graphostatik::crank::*;
-use graphostatik::protocol::{with_setup, Board, Setup};
+use graphostatik::protocol::Board;
+use graphostatik::protocol::BoardConfig;
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -60,22 +61,16 @@ fn closed_form(n: usize) -> f64 {
 }
 
 fn constructed(n: usize, recording: bool) -> usize {
-    let mut b = Board::new(300.0, recording);
+    let mut b = Board::new(BoardConfig::recording(recording)).with_figure_size(300.0);
     let r = construct(&mut b, &drive(), &DRAWING, &Angles::Divisions(n), &REQUEST).unwrap();
     r.rows.len() + b.steps().len()
 }
 
 /// (d): what `check` makes, every check and bound without the drawing.
 fn checked(n: usize) -> usize {
-    let setup = Setup {
-        checks_only: true,
-        ..Setup::default()
-    };
-    with_setup(setup, || {
-        let mut b = Board::new(300.0, true);
-        let r = construct(&mut b, &drive(), &DRAWING, &Angles::Divisions(n), &REQUEST).unwrap();
-        r.rows.len() + b.step_count() + usize::from(b.all_passed())
-    })
+    let mut b = Board::new(BoardConfig::CHECKS).with_figure_size(300.0);
+    let r = construct(&mut b, &drive(), &DRAWING, &Angles::Divisions(n), &REQUEST).unwrap();
+    r.rows.len() + b.step_count() + usize::from(b.all_passed())
 }
 
 fn bench(c: &mut Criterion) {

@@ -9,6 +9,8 @@
 //! under 5 ms.
 
 use graphostatik::dynamics::{model, rules};
+use graphostatik::protocol::BoardConfig;
+use graphostatik::scene::Procedure;
 use graphostatik::scene::{AnyScene, DynamicsProblem, DynamicsScene};
 use std::hint::black_box;
 use std::time::Instant;
@@ -18,7 +20,7 @@ fn problem(divisions: usize) -> DynamicsProblem {
     let mut v: serde_json::Value = serde_json::from_str(text).unwrap();
     v["divisions"] = divisions.into();
     let s = AnyScene::from_json(&v.to_string(), "bench").unwrap();
-    s.get::<DynamicsScene>().unwrap().problem()
+    s.problem().get::<DynamicsScene>().unwrap().clone()
 }
 
 /// (a): the model's turning force at the divisions, its trapezoid mean.
@@ -61,14 +63,14 @@ fn main() {
             black_box(sampled(&p));
         });
         let b = median_ms(&|| {
-            black_box(p.construct(false).unwrap());
+            black_box(DynamicsScene::construct(&p, BoardConfig::SILENT).unwrap());
         });
         let c = median_ms(&|| {
-            let (board, _) = p.construct(true).unwrap();
+            let (board, _) = DynamicsScene::construct(&p, BoardConfig::DRAWING).unwrap();
             assert!(board.all_passed());
             black_box(board);
         });
-        let (board, _) = p.construct(true).unwrap();
+        let (board, _) = DynamicsScene::construct(&p, BoardConfig::DRAWING).unwrap();
         println!(
             "| {n} | {a:.3} ms | {b:.3} ms | {c:.3} ms | {} |",
             board.checks().count()
@@ -79,7 +81,7 @@ fn main() {
     println!("|---:|---|---:|---:|---:|");
     for n in [20usize, 360, 3600] {
         let p = problem(n);
-        let (_, res) = p.construct(false).unwrap();
+        let (_, res) = DynamicsScene::construct(&p, BoardConfig::SILENT).unwrap();
         let v = p.engine.kinematics.v;
         for m in &res.mean_heights {
             println!(

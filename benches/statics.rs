@@ -10,6 +10,7 @@
 
 use criterion::{criterion_group, BenchmarkId, Criterion, Throughput};
 use graphostatik::protocol::Board;
+use graphostatik::protocol::BoardConfig;
 use graphostatik::statics::*;
 use std::hint::black_box;
 use std::time::Instant;
@@ -77,7 +78,7 @@ fn parabola(q: f64, l: f64, m: usize) -> (Beam, BeamDrawing) {
 }
 
 fn solve(beam: &Beam, d: &BeamDrawing, recording: bool) -> f64 {
-    let mut b = Board::new(300.0, recording);
+    let mut b = Board::new(BoardConfig::recording(recording)).with_figure_size(300.0);
     construct_beam(&mut b, beam, d, &ALL)
         .unwrap()
         .max_moment
@@ -159,7 +160,7 @@ fn main() {
         let beam = strips(n, q, l);
         let m = solve(&beam, &drawing(), false);
         // The polygon's corners against the exact parabola under them.
-        let mut board = Board::new(300.0, false);
+        let mut board = Board::new(BoardConfig::recording(false)).with_figure_size(300.0);
         let r = construct_beam(&mut board, &beam, &drawing(), &ALL).unwrap();
         let line_err = r
             .sections
@@ -184,7 +185,7 @@ fn main() {
     for m in [2usize, 8, 64] {
         let (beam, d) = parabola(q, l, m);
         let mm = solve(&beam, &d, false);
-        let mut board = Board::new(300.0, false);
+        let mut board = Board::new(BoardConfig::recording(false)).with_figure_size(300.0);
         let r = construct_beam(&mut board, &beam, &d, &ALL).unwrap();
         let line_err = r
             .sections

@@ -15,6 +15,7 @@
 
 use graphostatik::kernel::Vector;
 use graphostatik::protocol::Board;
+use graphostatik::protocol::BoardConfig;
 use graphostatik::truss::cremona::{construct_plan, construct_truss, TrussDrawing};
 use graphostatik::truss::generate::{parallel_chord, Web};
 use graphostatik::truss::matrix;
@@ -80,11 +81,11 @@ fn main() {
         let (t, cases) = girder(joints);
         let k = t.joints.len();
         let (tp, mp) = measure(7, &|| {
-            let mut b = Board::new(1000.0, false);
+            let mut b = Board::new(BoardConfig::recording(false)).with_figure_size(1000.0);
             black_box(construct_plan(&mut b, &t, &cases, &D).unwrap());
         });
         let (tr, mr) = measure(5, &|| {
-            let mut b = Board::new(1000.0, true);
+            let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(1000.0);
             black_box(construct_plan(&mut b, &t, &cases, &D).unwrap());
         });
         let (ts, ms) = measure(5, &|| {
@@ -94,7 +95,7 @@ fn main() {
         let (tc, mc) = measure(3, &|| {
             // The rank test made afresh in every run (not taken from the run before).
             matrix::forget();
-            let mut b = Board::new(1000.0, true);
+            let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(1000.0);
             black_box(construct_truss(&mut b, &t, &cases, &D).unwrap());
             assert!(b.all_passed());
         });

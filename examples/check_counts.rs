@@ -8,7 +8,7 @@
 //! ```
 //!
 //! Prints the table's length and the phases' instruction-free wall times (for orientation).
-use graphostatik::protocol::{with_setup, Setup};
+use graphostatik::protocol::BoardConfig;
 use std::time::Instant;
 
 fn main() {
@@ -16,33 +16,32 @@ fn main() {
         eprintln!("usage: check_counts SCENE.json");
         std::process::exit(2);
     };
-    let setup = Setup {
-        checks_only: true,
-        ..Setup::default()
+    let t0 = Instant::now();
+    let scene = match graphostatik::scene::AnyScene::load_for_checks(
+        std::path::Path::new(&path),
+        graphostatik::io::available_memory(),
+    ) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("{e}");
+            std::process::exit(2);
+        }
     };
-    with_setup(setup, || {
-        let t0 = Instant::now();
-        let scene = match graphostatik::scene::AnyScene::load(std::path::Path::new(&path)) {
-            Ok(s) => s,
-            Err(e) => {
-                eprintln!("{e}");
-                std::process::exit(2);
-            }
-        };
-        let problem = scene.problem();
-        let t1 = Instant::now();
-        let board = problem.construct(true).expect("the scene constructs");
-        let t2 = Instant::now();
-        let table = graphostatik::render::check_table_text(&board);
-        let t3 = Instant::now();
-        let ms = |a: Instant, b: Instant| (b - a).as_secs_f64() * 1e3;
-        println!(
-            "read {:.2} ms, construct {:.2} ms, table {:.2} ms ({} bytes, {} checks)",
-            ms(t0, t1),
-            ms(t1, t2),
-            ms(t2, t3),
-            table.len(),
-            board.checks().count()
-        );
-    });
+    let problem = scene.problem();
+    let t1 = Instant::now();
+    let board = problem
+        .construct(BoardConfig::CHECKS)
+        .expect("the scene constructs");
+    let t2 = Instant::now();
+    let table = graphostatik::render::check_table_text(&board);
+    let t3 = Instant::now();
+    let ms = |a: Instant, b: Instant| (b - a).as_secs_f64() * 1e3;
+    println!(
+        "read {:.2} ms, construct {:.2} ms, table {:.2} ms ({} bytes, {} checks)",
+        ms(t0, t1),
+        ms(t1, t2),
+        ms(t2, t3),
+        table.len(),
+        board.checks().count()
+    );
 }

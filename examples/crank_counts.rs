@@ -13,6 +13,7 @@
 use graphostatik::crank::closed_form as cf;
 use graphostatik::crank::*;
 use graphostatik::protocol::Board;
+use graphostatik::protocol::BoardConfig;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -50,15 +51,14 @@ fn main() {
                 tangential_force: true,
                 ..Request::default()
             };
-            let setup = graphostatik::protocol::Setup {
-                checks_only: mode == "checked",
-                ..Default::default()
+            let config = match mode {
+                "built" => BoardConfig::SILENT,
+                "checked" => BoardConfig::CHECKS,
+                _ => BoardConfig::DRAWING,
             };
-            graphostatik::protocol::with_setup(setup, || {
-                let mut b = Board::new(300.0, mode != "built");
-                construct(&mut b, &d, &dr, &Angles::Divisions(n), &rq).expect("the bench drive");
-                b.step_count() as f64
-            })
+            let mut b = Board::new(config).with_figure_size(300.0);
+            construct(&mut b, &d, &dr, &Angles::Divisions(n), &rq).expect("the bench drive");
+            b.step_count() as f64
         }
         other => panic!("closed, built, recorded or checked, not {other}"),
     };

@@ -1,6 +1,7 @@
 //! Times the recorded crank construction at growing angle counts (a scaling probe).
 use graphostatik::crank::*;
 use graphostatik::protocol::Board;
+use graphostatik::protocol::BoardConfig;
 use std::time::Instant;
 fn main() {
     let d = CrankDrive {
@@ -27,7 +28,7 @@ fn main() {
             let t = Instant::now();
             let reps = 20000 / n + 1;
             for _ in 0..reps {
-                let mut b = Board::new(300.0, rec);
+                let mut b = Board::new(BoardConfig::recording(rec)).with_figure_size(300.0);
                 construct(&mut b, &d, &dr, &Angles::Divisions(n), &rq).unwrap();
                 std::hint::black_box(&b);
             }

@@ -2,8 +2,9 @@
 
 use clap::{Parser, Subcommand};
 use graphostatik::io::Batch;
+use graphostatik::protocol::{Board, BoardConfig, Mode};
 use graphostatik::render;
-use graphostatik::scene::{AnyProblem, AnyScene, TrussScene, REGISTRY};
+use graphostatik::scene::{AnyProblem, AnyScene, Procedure, TrussScene, REGISTRY};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -240,11 +241,23 @@ fn say(text: &str) -> Result<(), Fail> {
 
 fn load(path: &Path) -> Result<AnyProblem, Fail> {
     let scene = AnyScene::load(path).map_err(|e| Fail(e.to_string()))?;
-    Ok(scene.problem())
+    Ok(scene.into_problem())
 }
 
-fn construct(path: &Path, p: &AnyProblem) -> Result<graphostatik::protocol::Board, Fail> {
-    p.construct(true).map_err(|e| match p.error_field(&e) {
+/// A scene read for its checks alone: it may be larger than a figure's, up to half the
+/// memory the machine has free.
+fn load_for_checks(path: &Path) -> Result<AnyProblem, Fail> {
+    let free = graphostatik::io::available_memory();
+    let scene = AnyScene::load_for_checks(path, free).map_err(|e| Fail(e.to_string()))?;
+    Ok(scene.into_problem())
+}
+
+fn construct(path: &Path, p: &AnyProblem) -> Result<Board, Fail> {
+    construct_with(path, p, BoardConfig::DRAWING)
+}
+
+fn construct_with(path: &Path, p: &AnyProblem, config: BoardConfig) -> Result<Board, Fail> {
+    p.construct(config).map_err(|e| match p.error_field(&e) {
         Some(field) => Fail(format!("{}: {field}: {e}", path.display())),
         None => Fail(format!("{}: {e}", path.display())),
     })
@@ -523,17 +536,18 @@ fn render_all(
 /// `check`: the table of every check, exit status 1 if any fails; with `reference`, every
 /// step replayed in double-double beside f64, exit status 1 if the bound fails anywhere.
 fn check_cmd(scene: &Path, json: bool, reference: bool, all: bool) -> Result<ExitCode, Fail> {
-    use graphostatik::protocol::{with_setup, Setup};
     let start = std::time::Instant::now();
     // The table needs the checks, not the drawing (a reference replay needs both). The
-    // scene is read under the same setup: what it may ask for follows what is kept.
-    let setup = Setup {
-        reference,
-        checks_only: !reference,
-        every_check: all,
-        ..Setup::default()
+    // scene is read for the same: what it may ask for follows what is kept.
+    let board = if reference {
+        construct_with(scene, &load(scene)?, BoardConfig::DRAWING.with_reference())?
+    } else {
+        let config = BoardConfig {
+            mode: Mode::Checks { every: all },
+            ..BoardConfig::DRAWING
+        };
+        construct_with(scene, &load_for_checks(scene)?, config)?
     };
-    let board = with_setup(setup, || construct(scene, &load(scene)?))?;
     let text = match (reference, json) {
         (false, false) => render::check_table_text(&board),
         (false, true) => render::check_table_json(&board) + "\n",
@@ -704,25 +718,15 @@ fn remove_stale_pages(dir: &Path, keep: &std::collections::BTreeSet<&str>) -> Re
 
 /// `forces`: the member forces of a truss scene, per case, combination and envelope.
 fn forces_cmd(scene: &Path, format: TableFormat) -> Result<ExitCode, Fail> {
-    use graphostatik::protocol::{with_setup, Setup};
     // The table of forces needs the checks, not the drawing.
-    let setup = Setup {
-        checks_only: true,
-        ..Setup::default()
-    };
-    with_setup(setup, || forces_table(scene, format))
-}
-
-fn forces_table(scene: &Path, format: TableFormat) -> Result<ExitCode, Fail> {
-    let p = load(scene)?;
+    let p = load_for_checks(scene)?;
     let Some(t) = p.get::<TrussScene>() else {
         return Err(Fail(format!(
             "{}: `forces` needs a truss scene (\"procedure\": \"truss\")",
             scene.display()
         )));
     };
-    let (_, results) = t
-        .construct(true)
+    let (_, results) = TrussScene::construct(t, BoardConfig::CHECKS)
         .map_err(|e| Fail(format!("{}: {e}", scene.display())))?;
     use graphostatik::render::forces;
     let text = match format {

@@ -8,7 +8,7 @@
 //! 127.0.0.1 unless told otherwise; a request whose `Host` is not this machine's loopback name
 //! is refused while bound there (DNS rebinding).
 
-use crate::protocol::{Board, FigureMeta};
+use crate::protocol::{Board, BoardConfig, FigureMeta};
 use crate::render::{walkthrough_html, WalkOptions};
 use crate::scene::{AnyScene, Preview};
 use std::collections::HashMap;
@@ -242,11 +242,13 @@ fn build(file: &Path, query: &str) -> Result<Good, String> {
     let patched = serde_json::to_string(&value).map_err(|e| format!("{origin}: {e}"))?;
     let p = AnyScene::from_json(&patched, &origin)
         .map_err(|e| e.to_string())?
-        .problem();
-    let board = p.construct(true).map_err(|e| match p.error_field(&e) {
-        Some(f) => format!("{origin}: {f}: {e}"),
-        None => format!("{origin}: {e}"),
-    })?;
+        .into_problem();
+    let board = p
+        .construct(BoardConfig::DRAWING)
+        .map_err(|e| match p.error_field(&e) {
+            Some(f) => format!("{origin}: {f}: {e}"),
+            None => format!("{origin}: {e}"),
+        })?;
     Ok(Good {
         meta: p.figure_meta(),
         board,

@@ -2,20 +2,16 @@
 //! (item 3), and the hard cases they decide (case 6).
 
 use graphostatik::prelude::*;
-use graphostatik::protocol::{with_setup, Setup};
+use graphostatik::protocol::BoardConfig;
 use graphostatik::scene::{AnyProblem, AnyScene};
 use proptest::prelude::*;
 
 fn problem(text: &str) -> AnyProblem {
-    AnyScene::from_json(text, "t.json").unwrap().problem()
+    AnyScene::from_json(text, "t.json").unwrap().into_problem()
 }
 
 fn reference_board(p: &AnyProblem) -> Board {
-    let setup = Setup {
-        reference: true,
-        ..Setup::default()
-    };
-    with_setup(setup, || p.construct(true)).unwrap()
+    p.construct(BoardConfig::DRAWING.with_reference()).unwrap()
 }
 
 /// Every bundled scene replayed in double-double: at every step f64 stays within the bound
@@ -29,7 +25,7 @@ fn the_propagated_bound_holds_at_every_step_of_every_bundled_scene() {
         if path.extension().is_none_or(|e| e != "json") {
             continue;
         }
-        let p = AnyScene::load(&path).unwrap().problem();
+        let p = AnyScene::load(&path).unwrap().into_problem();
         let b = reference_board(&p);
         let rows = b.reference_report();
         assert!(!rows.is_empty(), "{}", path.display());
@@ -47,7 +43,7 @@ fn the_propagated_bound_holds_at_every_step_of_every_bundled_scene() {
             }
         }
         // The reference board's f64 results are the ordinary board's, bit for bit.
-        let plain = p.construct(true).unwrap();
+        let plain = p.construct(BoardConfig::DRAWING).unwrap();
         assert_eq!(plain.to_json(), b.to_json(), "{}", path.display());
     }
     ratios.sort_by(f64::total_cmp);
@@ -74,7 +70,7 @@ fn abb21(k2: &str) -> String {
 #[test]
 fn case_6_auxiliary_forces_nearly_a_couple_are_flagged_or_refused() {
     for (k2, must_pass) in [("999.999", true), ("999.999999", false)] {
-        let b = problem(&abb21(k2)).construct(true).unwrap();
+        let b = problem(&abb21(k2)).construct(BoardConfig::DRAWING).unwrap();
         let c = b.checks().next().unwrap();
         assert!(c.glancing(), "{k2}: {c:?}");
         let cut = c.worst_cut.unwrap();
@@ -225,7 +221,7 @@ fn sweeps_of(path: &str) -> Vec<graphostatik::scene::Sweep> {
         env!("CARGO_MANIFEST_DIR")
     )))
     .unwrap()
-    .problem();
+    .into_problem();
     let mut calls = 0;
     let s = graphostatik::scene::sweeps(&p, &mut |_, _| calls += 1).unwrap();
     assert!(calls > 0);
@@ -276,7 +272,7 @@ fn drafted(
         env!("CARGO_MANIFEST_DIR")
     )))
     .unwrap()
-    .problem();
+    .into_problem();
     let options = graphostatik::scene::DraftingOptions {
         hand: graphostatik::protocol::ErrorModel::drafting(hand.0, hand.1.to_radians(), hand.2),
         runs,

@@ -1,6 +1,7 @@
 //! Bad input: one clear error naming the field, exit status 2, no panic, no output file.
 
-use graphostatik::scene::{Scene, SceneError};
+use graphostatik::protocol::BoardConfig;
+use graphostatik::scene::{Procedure, SceneError, SliderCrankScene};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -14,7 +15,7 @@ const GOOD: &str = r#"{
 }"#;
 
 fn err(text: &str) -> String {
-    match Scene::from_json(text, "s.json") {
+    match SliderCrankScene::read(text, "s.json") {
         Ok(_) => panic!("accepted: {text}"),
         Err(e) => e.to_string(),
     }
@@ -22,14 +23,14 @@ fn err(text: &str) -> String {
 
 #[test]
 fn the_good_scene_is_accepted() {
-    Scene::from_json(GOOD, "s.json").unwrap();
+    SliderCrankScene::read(GOOD, "s.json").unwrap();
 }
 
 #[test]
 fn malformed_json_gives_line_and_column() {
     let e = err("{\n  \"title\": \"t\",\n  \"mechanism\": { ,\n}");
     assert!(e.starts_with("s.json:3:"), "{e}");
-    match Scene::from_json("{\n \"title\" 1}", "x") {
+    match SliderCrankScene::read("{\n \"title\" 1}", "x") {
         Err(SceneError::Json { line, column, .. }) => assert_eq!((line, column), (2, 10)),
         other => panic!("{other:?}"),
     }
@@ -231,12 +232,12 @@ fn cli_check_exit_status_and_schema() {
     assert!(schema["$defs"]["LinkScene"]["properties"]["link"].is_object());
     assert!(schema["$defs"]["YokeScene"]["properties"]["compare_rod"].is_object());
     let defs = &schema["$defs"];
-    assert!(defs["Scene"]["properties"]["mechanism"].is_object());
+    assert!(defs["SliderCrankScene"]["properties"]["mechanism"].is_object());
     assert!(defs["BeamScene"]["properties"]["beam"].is_object());
     assert!(defs["TrussScene"]["properties"]["load_cases"].is_object());
     assert!(defs["ForceSystemScene"]["properties"]["forces"].is_object());
     assert!(defs["DynamicsScene"]["properties"]["cylinders"].is_object());
-    for s in ["Scene", "BeamScene", "ForceSystemScene"] {
+    for s in ["SliderCrankScene", "BeamScene", "ForceSystemScene"] {
         assert_eq!(
             defs[s]["additionalProperties"],
             serde_json::Value::Bool(false)
@@ -292,8 +293,8 @@ fn a_long_walkthrough_is_grouped_only_when_asked() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/kg_tafel1.json");
     let p = graphostatik::scene::AnyScene::load(&path)
         .unwrap()
-        .problem();
-    let board = p.construct(true).unwrap();
+        .into_problem();
+    let board = p.construct(BoardConfig::DRAWING).unwrap();
     let n = board.steps().len();
     let mut opts = WalkOptions::default();
     let one = walkthrough_html(&p.figure_meta(), &board, &opts);
@@ -346,7 +347,7 @@ fn the_scenes_in_the_readme_are_valid() {
         let json = block.split("```").next().unwrap();
         let scene = graphostatik::scene::AnyScene::from_json(json, "README.md")
             .unwrap_or_else(|e| panic!("{e}\n{json}"));
-        let board = scene.problem().construct(true).unwrap();
+        let board = scene.problem().construct(BoardConfig::DRAWING).unwrap();
         assert!(board
             .steps()
             .iter()
@@ -587,8 +588,8 @@ fn a_long_walkthrough_costs_one_figure_not_a_page_per_step() {
     let page = std::fs::metadata(out.join("index.html")).unwrap().len();
     let p = graphostatik::scene::AnyScene::load(&scene)
         .unwrap()
-        .problem();
-    let board = p.construct(true).unwrap();
+        .into_problem();
+    let board = p.construct(BoardConfig::DRAWING).unwrap();
     let fig = graphostatik::render::figure(&p.figure_meta(), &board, None).len() as u64;
     let steps = board.steps().len() as u64;
     assert!(steps > 2000, "{steps}");
@@ -638,10 +639,8 @@ fn a_rod_a_hair_longer_than_the_crank_is_refused_and_a_little_longer_constructs(
             "{e}"
         );
     }
-    let p = Scene::from_json(&scene("1.0000011"), "s.json")
-        .unwrap()
-        .problem();
-    let (board, _) = p.construct(true).unwrap();
+    let (_, p) = SliderCrankScene::read(&scene("1.0000011"), "s.json").unwrap();
+    let (board, _) = SliderCrankScene::construct(&p, BoardConfig::DRAWING).unwrap();
     assert!(board.all_passed());
 }
 

@@ -1,8 +1,10 @@
 //! Beams by the funicular polygon (LH C.4-6, Aufgabe 6): reactions, moments, shear and the
 //! largest moment against equilibrium and the method of sections, with the hard cases.
 
+use graphostatik::protocol::BoardConfig;
 use graphostatik::protocol::{Board, Topic};
 use graphostatik::scene::AnyScene;
+use graphostatik::scene::Procedure;
 use graphostatik::statics::closed_form as cf;
 use graphostatik::statics::*;
 use proptest::prelude::*;
@@ -23,7 +25,7 @@ const ALL: BeamRequest = BeamRequest {
 };
 
 fn run(beam: &Beam, h: f64) -> (Board, BeamResults) {
-    let mut b = Board::new(500.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
     let r = construct_beam(&mut b, beam, &drawing(h), &ALL).unwrap();
     (b, r)
 }
@@ -147,7 +149,7 @@ fn parabola_points_lie_on_the_exact_moment_curve() {
         }],
     };
     for m in [2usize, 5, 8, 64] {
-        let mut board = Board::new(500.0, true);
+        let mut board = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
         let mut d = drawing(900.0);
         d.parabola_divisions = m;
         let r = construct_beam(&mut board, &beam, &d, &ALL).unwrap();
@@ -169,7 +171,7 @@ fn parabola_points_lie_on_the_exact_moment_curve() {
 
 #[test]
 fn reactions_only_constructs_no_moment_and_no_shear_step() {
-    let mut b = Board::new(500.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
     construct_beam(
         &mut b,
         &simple(&[(2.0, 100.0), (7.0, 200.0)]),
@@ -285,14 +287,14 @@ fn many_uniform_loads_are_validated_in_n_log_n() {
     } else {
         200_000
     };
-    let setup = graphostatik::protocol::Setup {
-        checks_only: true,
-        ..Default::default()
-    };
-    graphostatik::protocol::with_setup(setup, || {
-        AnyScene::from_json(&many_uniform_loads(n, Some(0.5), false), "b.json")
-            .expect("loads side by side");
-        let e = err(&many_uniform_loads(n, None, true));
+    {
+        let ctx = graphostatik::scene::ReadContext::checks("b.json", None);
+        AnyScene::read(&many_uniform_loads(n, Some(0.5), false), &ctx).expect("loads side by side");
+        let check_err = |text: &str| match AnyScene::read(text, &ctx) {
+            Ok(_) => panic!("accepted"),
+            Err(e) => e.to_string(),
+        };
+        let e = check_err(&many_uniform_loads(n, None, true));
         assert!(
             e.contains(&format!(
                 "uniform_loads[{}]: overlaps uniform load {}",
@@ -301,7 +303,7 @@ fn many_uniform_loads_are_validated_in_n_log_n() {
             )),
             "{e}"
         );
-        let e = err(&many_uniform_loads(n, Some(2.0 * n as f64 - 0.5), false));
+        let e = check_err(&many_uniform_loads(n, Some(2.0 * n as f64 - 0.5), false));
         assert!(
             e.contains(&format!(
                 "point_loads[0].x_m: the point load lies inside uniform load {}",
@@ -309,7 +311,7 @@ fn many_uniform_loads_are_validated_in_n_log_n() {
             )),
             "{e}"
         );
-    });
+    }
 }
 
 proptest! {
@@ -403,7 +405,7 @@ proptest! {
             }
         }
         let beam = Beam { supports: [xa, xb], ends, point_loads, uniform_loads };
-        let mut b = Board::new(500.0, true);
+        let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
         let r = construct_beam(&mut b, &beam, &drawing(h), &ALL).unwrap();
         for c in b.steps().iter().flat_map(|s| &s.checks) {
             prop_assert!(c.passed, "{}: {} vs {} ({:e} > {:e})", c.quantity, c.constructed, c.closed_form, c.error, c.tolerance);
@@ -439,7 +441,7 @@ fn a_beam_drawn_elsewhere_on_the_sheet_gives_the_same_results() {
     let (_, here) = run(&beam, 900.0);
     let mut d = drawing(900.0);
     d.origin = graphostatik::kernel::Point::new(37.5, -212.25);
-    let mut b = Board::new(500.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
     let there = construct_beam(&mut b, &beam, &d, &ALL).unwrap();
     all_pass(&b);
     assert!((here.reactions.a - there.reactions.a).abs() < 1e-9);
@@ -466,7 +468,7 @@ fn indirect_loading_of_lh_abb_35() {
     let loads = panel_loads(&beam, &panels).unwrap();
     let p: Vec<f64> = loads.iter().map(|l| l.p).collect();
     assert_eq!(p, [250.0, 500.0, 500.0, 500.0, 500.0, 500.0, 250.0]);
-    let mut b = Board::new(500.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
     let r = construct_beam_indirect(&mut b, &beam, &panels, &drawing(1500.0), &ALL).unwrap();
     all_pass(&b);
     assert!((r.max_moment.unwrap().moment - 2250.0).abs() < 1e-9);
@@ -493,7 +495,7 @@ proptest! {
             point_loads: loads.iter().map(|&(f, p)| PointLoad { x: f * l, p }).collect(),
             uniform_loads: q.map(|(a, b, q)| UniformLoad { from: a * l, to: b * l, q }).into_iter().collect(),
         };
-        let mut b = Board::new(500.0, true);
+        let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
         construct_beam_indirect(&mut b, &beam, &panels, &drawing(800.0), &ALL).unwrap();
         for c in b.steps().iter().flat_map(|s| &s.checks) {
             prop_assert!(c.passed, "{}: {} vs {} ({:e} > {:e})", c.quantity, c.constructed, c.closed_form, c.error, c.tolerance);
@@ -511,7 +513,11 @@ fn lh_abb35_five_stringer_panels_shear_zero_over_the_middle_one() {
         .join("lh_aufgabe6_abb35_stringers.json");
     let any = AnyScene::load(&path).unwrap();
     let scene: &graphostatik::scene::BeamScene = any.get().expect("a beam scene");
-    let (board, r) = scene.problem().construct(true).unwrap();
+    let p = any
+        .problem()
+        .get::<graphostatik::scene::BeamScene>()
+        .unwrap();
+    let (board, r) = graphostatik::scene::BeamScene::construct(p, BoardConfig::DRAWING).unwrap();
     assert!(board.all_passed());
     assert_eq!(scene.stringers_m.as_ref().map(Vec::len), Some(6));
     let at = |x: f64| {

@@ -5,7 +5,8 @@
 use graphostatik::crank::closed_form::{accel_factor, sin_factor, Stroke};
 use graphostatik::crank::*;
 use graphostatik::protocol::Board;
-use graphostatik::scene::Scene;
+use graphostatik::protocol::BoardConfig;
+use graphostatik::scene::{Procedure, SliderCrankScene};
 
 /// Half a unit of the third decimal: the rounding of the printed table.
 const TABLE_ROUNDING: f64 = 0.0005;
@@ -137,7 +138,7 @@ fn kg_table_values_are_what_the_construction_draws() {
             piston_force: PistonForce::Constant(1.0),
         };
         let angles: Vec<f64> = (0..9).map(|i| 10.0 * i as f64).collect();
-        let mut board = Board::new(300.0, true);
+        let mut board = Board::new(BoardConfig::recording(true)).with_figure_size(300.0);
         let res = construct(
             &mut board,
             &d,
@@ -179,7 +180,7 @@ fn constructed_c_max(lambda: f64) -> (f64, f64) {
         piston_force: PistonForce::Constant(0.0),
     };
     let c_at = |theta: f64| -> f64 {
-        let mut b = Board::new(300.0, false);
+        let mut b = Board::new(BoardConfig::recording(false)).with_figure_size(300.0);
         construct(
             &mut b,
             &d,
@@ -273,8 +274,8 @@ fn lh_angle_of_c_max_79_16_and_the_rod_perpendicular_to_the_crank() {
     assert!((r.cos() - 0.2 * (2.0 * r).cos()).abs() < 2e-4);
 }
 
-fn scene(text: &str) -> graphostatik::scene::Problem {
-    Scene::from_json(text, "test").unwrap().problem()
+fn scene(text: &str) -> graphostatik::scene::SliderCrankProblem {
+    SliderCrankScene::read(text, "test").unwrap().1
 }
 
 #[test]
@@ -368,7 +369,7 @@ fn lh_aufgabe_1_printed_forces_do_not_belong_to_one_crank_angle() {
     // The bundled scene constructs that position; S and T agree with the book within the
     // books' drawing error (3.5 %), D is 7.3 % off, and V 85 %.
     let p = scene(include_str!("../scenes/lh_aufgabe1_abb30.json"));
-    let (board, res) = p.construct(true).unwrap();
+    let (board, res) = SliderCrankScene::construct(&p, BoardConfig::DRAWING).unwrap();
     assert!(board.all_passed());
     let r = &res.rows[0];
     let rel = |c: f64, b: f64| (c - b).abs() / b;
@@ -416,7 +417,7 @@ fn lh_b3_accelerations_of_the_locomotive_by_tolles_parabola() {
     // LH B.3 (s = 630 mm, λ = 1/6, v = 7 m/s): v²/r = 155.5, p0 = 181.5, p180 = 129.7,
     // OC = 3.125 mm, CD = 77.7 m/s² = 0.52 cm at 1 cm = 150 m/s² over 2r = 37.5 mm.
     let p = scene(include_str!("../scenes/lh_abb55_acceleration.json"));
-    let (board, res) = p.construct(true).unwrap();
+    let (board, res) = SliderCrankScene::construct(&p, BoardConfig::DRAWING).unwrap();
     assert!(board.all_passed());
     let a = p.drive.v2_over_r();
     // 49/0.315 = 155.556: the book truncates to 155.5 (rounding would print 155.6).
@@ -471,7 +472,7 @@ fn lh_gl34_infinite_rod_acceleration_is_a_straight_line() {
     let p = scene(include_str!(
         "../scenes/lh_abb56_acceleration_infinite_rod.json"
     ));
-    let (board, res) = p.construct(true).unwrap();
+    let (board, res) = SliderCrankScene::construct(&p, BoardConfig::DRAWING).unwrap();
     assert!(board.all_passed());
     let rows = &res.rows;
     let a = rows[0].acceleration.unwrap();
@@ -500,7 +501,7 @@ fn kg_zusammenstellung_112_upper_row_by_tolles_construction() {
             piston_force: PistonForce::Constant(0.0),
         };
         let angles: Vec<f64> = (0..9).map(|i| 10.0 * i as f64).collect();
-        let mut board = Board::new(300.0, true);
+        let mut board = Board::new(BoardConfig::recording(true)).with_figure_size(300.0);
         let drawing = Drawing {
             length_scale: 20.0,
             force_scale: 1.0,

@@ -9,6 +9,7 @@
 #[path = "browser/webdriver.rs"]
 mod webdriver;
 
+use graphostatik::protocol::BoardConfig;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use webdriver::{Browser, Session};
@@ -94,8 +95,8 @@ fn a_student_pages_through_a_walkthrough_with_the_keyboard() {
     );
     let p = graphostatik::scene::AnyScene::load(&scene)
         .unwrap()
-        .problem();
-    let board = p.construct(true).unwrap();
+        .into_problem();
+    let board = p.construct(BoardConfig::DRAWING).unwrap();
     let steps = board.steps();
     let s = Session::start(&browser, &dir.join("profile"));
     s.goto(&format!("file://{}", dir.join("index.html").display()));

@@ -1,13 +1,14 @@
 //! Centroids by two funicular polygons (LH C.3, Abb. 23) against the shoelace formula.
 
 use graphostatik::protocol::Board;
+use graphostatik::protocol::BoardConfig;
 use graphostatik::scene::AnyScene;
 use graphostatik::statics::centroid::*;
 use proptest::prelude::*;
 
 fn run(pts: &[[f64; 2]], fan_from: usize) -> CentroidResults {
     let pts = &points(pts);
-    let mut b = Board::new(300.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(300.0);
     let d = CentroidDrawing {
         length_scale: 25.0,
         area_scale: 0.1,
@@ -67,7 +68,7 @@ fn self_intersecting_polygons_are_refused_with_the_edges_named() {
         e.contains("polygon_m") && e.contains("crosses itself"),
         "{e}"
     );
-    let mut b = Board::new(300.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(300.0);
     let d = CentroidDrawing {
         length_scale: 25.0,
         area_scale: 0.1,
@@ -96,7 +97,7 @@ proptest! {
             .collect();
         let pts = points(&pts);
         prop_assume!(self_intersection(&pts).is_none());
-        let mut b = Board::new(300.0, true);
+        let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(300.0);
         let d = CentroidDrawing { length_scale: 25.0, area_scale: 0.05, fan_from: fan % n };
         construct_centroid(&mut b, &pts, &d).unwrap();
         for c in b.steps().iter().flat_map(|s| &s.checks) {

@@ -1,24 +1,23 @@
-//! A board that keeps the checks and not the drawing (`Setup::checks_only`, what `check`
+//! A board that keeps the checks and not the drawing (`Mode::Checks`, what `check`
 //! and `forces` use) gives the same check table, byte for byte, as the recorded protocol, for
 //! every bundled scene: the same steps numbered alike, the same situations, checks, bounds
 //! and worst cuts. It keeps no step and no object.
 
-use graphostatik::protocol::{with_setup, Board, Setup};
+use graphostatik::protocol::{Board, BoardConfig, Mode};
 use graphostatik::render::{check_table_json, check_table_text};
-use graphostatik::scene::AnyScene;
+use graphostatik::scene::{AnyScene, ReadContext};
 
 fn construct(path: &std::path::Path, checks_only: bool) -> Board {
-    let setup = Setup {
-        checks_only,
-        ..Setup::default()
+    let config = if checks_only {
+        BoardConfig::CHECKS
+    } else {
+        BoardConfig::DRAWING
     };
-    with_setup(setup, || {
-        let scene = AnyScene::load(path).expect("bundled scenes are valid");
-        scene
-            .problem()
-            .construct(true)
-            .expect("bundled scenes construct")
-    })
+    let scene = AnyScene::load(path).expect("bundled scenes are valid");
+    scene
+        .problem()
+        .construct(config)
+        .expect("bundled scenes construct")
 }
 
 #[test]
@@ -95,17 +94,12 @@ fn a_truss_too_large_for_a_figure_is_checked_whole() {
         .unwrap_err()
         .to_string();
     assert!(err.contains("joints: more than 20000 joints"), "{err}");
-    let setup = Setup {
-        checks_only: true,
-        ..Setup::default()
-    };
-    let board = with_setup(setup, || {
-        let scene = AnyScene::from_json(&text, "girder.json").expect("a check may be this large");
-        scene
-            .problem()
-            .construct(true)
-            .expect("a determinate girder")
-    });
+    let ctx = ReadContext::checks("girder.json", None);
+    let scene = AnyScene::read(&text, &ctx).expect("a check may be this large");
+    let board = scene
+        .problem()
+        .construct(BoardConfig::CHECKS)
+        .expect("a determinate girder");
     // Every member checked against the sparse solve, the reactions twice, the balance once:
     // counted, and summed up (a row per kind) rather than kept one by one.
     let members = 4 * 10_500 + 1;
@@ -131,40 +125,36 @@ fn a_truss_too_large_for_a_figure_is_checked_whole() {
 /// a wrong closed form.
 fn lengths_checked(n: usize, wrong: &[usize], every_check: bool) -> Board {
     use graphostatik::prelude::*;
-    let setup = Setup {
-        checks_only: true,
-        every_check,
-        ..Setup::default()
-    };
-    with_setup(setup, || {
-        let mut b = Board::recording();
-        let note = Note::new("lengths", Topic::Custom("test"));
-        let o = b.point(
-            Point::new(0.0, 0.0),
-            Label::plain("O"),
-            Role::Given,
-            note.clone(),
-        );
-        for i in 1..=n {
-            b.set_context(|| format!("length {i}"));
-            let at = Point::new(3.0 * i as f64, 4.0 * i as f64);
-            let a = b.point(at, Label::NONE, Role::Given, note.clone());
-            let x = b
-                .line_through(&o, &a, Label::NONE, Role::Construction, note.clone())
-                .unwrap();
-            let d = b.measure(&o, &a, &x, Scale::new(1.0, "mm"), Label::NONE, note.clone());
-            let off = if wrong.contains(&i) { 1.0 } else { 0.0 };
-            b.check(&d, "OA", "mm", "Pythagoras", 5.0 * i as f64, || {
-                5.0 * i as f64 + off
+    let mut b = Board::new(BoardConfig {
+        mode: Mode::Checks { every: every_check },
+        ..BoardConfig::DRAWING
+    });
+    let note = Note::new("lengths", Topic::Custom("test"));
+    let o = b.point(
+        Point::new(0.0, 0.0),
+        Label::plain("O"),
+        Role::Given,
+        note.clone(),
+    );
+    for i in 1..=n {
+        b.set_context(|| format!("length {i}"));
+        let at = Point::new(3.0 * i as f64, 4.0 * i as f64);
+        let a = b.point(at, Label::NONE, Role::Given, note.clone());
+        let x = b
+            .line_through(&o, &a, Label::NONE, Role::Construction, note.clone())
+            .unwrap();
+        let d = b.measure(&o, &a, &x, Scale::new(1.0, "mm"), Label::NONE, note.clone());
+        let off = if wrong.contains(&i) { 1.0 } else { 0.0 };
+        b.check(&d, "OA", "mm", "Pythagoras", 5.0 * i as f64, || {
+            5.0 * i as f64 + off
+        });
+        if i % 2 == 0 {
+            b.check(&d, "OA again", "mm", "Pythagoras", 5.0 * i as f64, || {
+                5.0 * i as f64
             });
-            if i % 2 == 0 {
-                b.check(&d, "OA again", "mm", "Pythagoras", 5.0 * i as f64, || {
-                    5.0 * i as f64
-                });
-            }
         }
-        b
-    })
+    }
+    b
 }
 
 #[test]

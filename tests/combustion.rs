@@ -171,9 +171,10 @@ fn the_firing_order_spaces_the_cylinders() {
     let text = include_str!("../scenes/kg_abb1056_otto_four_cylinders.json");
     let p = AnyScene::from_json(text, "e.json")
         .unwrap()
+        .problem()
         .get::<CombustionScene>()
         .unwrap()
-        .problem();
+        .clone();
     let e = &p.engine;
     let fires: Vec<f64> = e.cylinders.iter().map(|c| c.fires_at).collect();
     assert_eq!(fires, vec![0.0, 540.0, 180.0, 360.0]);

@@ -3,6 +3,7 @@
 
 use graphostatik::crank::closed_form as cf;
 use graphostatik::crank::*;
+use graphostatik::protocol::BoardConfig;
 use graphostatik::protocol::{Board, StepKind};
 
 fn drive(lambda: f64, p: f64) -> CrankDrive {
@@ -45,7 +46,7 @@ const LAMBDAS: [f64; 7] = [0.0, 1.0 / 6.0, 0.2, 0.25, 1.0 / 2.8, 0.9, 0.99];
 #[test]
 fn every_check_passes_at_many_angles_for_every_rod_ratio() {
     for &lambda in &LAMBDAS {
-        let mut board = Board::new(500.0, true);
+        let mut board = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
         let res = construct(
             &mut board,
             &drive(lambda, 5000.0),
@@ -90,7 +91,7 @@ fn every_check_passes_at_many_angles_for_every_rod_ratio() {
 fn odd_angles_from_a_list_pass_too() {
     let angles: Vec<f64> = (0..360).map(|k| k as f64 * 0.999 + 0.0137).collect();
     for &lambda in &LAMBDAS {
-        let mut board = Board::new(500.0, true);
+        let mut board = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
         construct(
             &mut board,
             &drive(lambda, -3000.0),
@@ -112,7 +113,7 @@ fn odd_angles_from_a_list_pass_too() {
 #[test]
 fn dead_centres_give_exactly_zero_velocity_and_tangential_force() {
     for &lambda in &LAMBDAS {
-        let mut board = Board::new(500.0, true);
+        let mut board = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
         let res = construct(
             &mut board,
             &drive(lambda, 8700.0),
@@ -139,7 +140,7 @@ fn dead_centres_give_exactly_zero_velocity_and_tangential_force() {
 
 #[test]
 fn the_instantaneous_centre_at_90_degrees_is_at_infinity_and_recorded_so() {
-    let mut board = Board::new(500.0, true);
+    let mut board = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
     let res = construct(
         &mut board,
         &drive(0.2, 1000.0),
@@ -167,7 +168,7 @@ fn the_instantaneous_centre_at_90_degrees_is_at_infinity_and_recorded_so() {
 #[test]
 fn a_nearly_locking_rod_is_flagged_glancing_but_stays_exact() {
     // λ = 0.99 at θ = 90°: the rod stands at ψ = 81.9°, the rod arc cuts the piston line at 8.1°.
-    let mut board = Board::new(500.0, true);
+    let mut board = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
     construct(
         &mut board,
         &drive(0.99, 1000.0),
@@ -197,7 +198,7 @@ fn a_nearly_locking_rod_is_flagged_glancing_but_stays_exact() {
 
 #[test]
 fn both_velocity_constructions_and_both_tangential_constructions_agree() {
-    let mut board = Board::new(500.0, true);
+    let mut board = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
     let res = construct(
         &mut board,
         &drive(0.25, 4000.0),
@@ -214,7 +215,7 @@ fn both_velocity_constructions_and_both_tangential_constructions_agree() {
 
 #[test]
 fn infinite_rod_gives_the_harmonic_motion_of_lh_gl_23_and_kg_289() {
-    let mut board = Board::new(500.0, true);
+    let mut board = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
     let res = construct(
         &mut board,
         &drive(0.0, 1000.0),
@@ -237,7 +238,7 @@ fn infinite_rod_gives_the_harmonic_motion_of_lh_gl_23_and_kg_289() {
 fn lh_maxima_of_guide_rod_and_tangential_force() {
     // LH Gl. 45-46, 50: N_max ≈ P·r/l, S_max = P/√(1 − λ²), T_max = P·√(1 + λ²) at α + β = 90°.
     let (p, lambda) = (1000.0, 0.2);
-    let mut board = Board::new(500.0, false);
+    let mut board = Board::new(BoardConfig::recording(false)).with_figure_size(500.0);
     let res = construct(
         &mut board,
         &drive(lambda, p),
@@ -327,7 +328,7 @@ fn rays_by_rod_length_arcs_put_the_piston_at_equal_parts_of_the_stroke() {
     // length (a perpendicular for the infinite rod): 20 rays, the piston at k·s/10 on both
     // strokes; every check passes, also near locking.
     for &lambda in &LAMBDAS {
-        let mut board = Board::new(500.0, true);
+        let mut board = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
         let d = drive(lambda, 5000.0);
         let req = Request {
             piston_path: true,

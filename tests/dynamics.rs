@@ -3,13 +3,15 @@
 
 use graphostatik::dynamics::model::*;
 use graphostatik::dynamics::{rules, DynamicsRequest};
+use graphostatik::protocol::BoardConfig;
 use graphostatik::protocol::Topic;
+use graphostatik::scene::Procedure;
 use graphostatik::scene::{AnyScene, DynamicsProblem, DynamicsScene};
 use std::f64::consts::PI;
 
 fn scene(text: &str) -> DynamicsProblem {
     let s = AnyScene::from_json(text, "test").unwrap();
-    s.get::<DynamicsScene>().unwrap().problem()
+    s.problem().get::<DynamicsScene>().unwrap().clone()
 }
 
 fn locomotive() -> DynamicsProblem {
@@ -211,7 +213,7 @@ fn lh_h_power_from_the_printed_values() {
 #[test]
 fn the_locomotive_scene_constructs_and_every_check_passes() {
     let p = locomotive();
-    let (board, res) = p.construct(true).unwrap();
+    let (board, res) = DynamicsScene::construct(&p, BoardConfig::DRAWING).unwrap();
     let failed: Vec<_> = board.checks().filter(|c| !c.passed).collect();
     assert!(failed.is_empty(), "{failed:#?}");
     // The modelled p_m = 4.59 at gives 613 PS per cylinder (book 608 from 4.56 at).
@@ -292,7 +294,7 @@ fn with(text: &str, edit: impl FnOnce(&mut serde_json::Value)) -> Result<Dynamic
     let mut v: serde_json::Value = serde_json::from_str(text).unwrap();
     edit(&mut v);
     AnyScene::from_json(&v.to_string(), "hard.json")
-        .map(|s| s.get::<DynamicsScene>().unwrap().problem())
+        .map(|s| s.problem().get::<DynamicsScene>().unwrap().clone())
         .map_err(|e| e.to_string())
 }
 
@@ -334,7 +336,8 @@ fn hard_cases_construct_and_pass() {
     ];
     for (name, edit) in cases {
         let p = with(LOCO, edit).unwrap_or_else(|e| panic!("{name}: {e}"));
-        let (board, res) = p.construct(true).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let (board, res) = DynamicsScene::construct(&p, BoardConfig::DRAWING)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
         let failed: Vec<_> = board.checks().filter(|c| !c.passed).collect();
         assert!(failed.is_empty(), "{name}: {failed:#?}");
         assert!(res.turning.iter().all(|t| t.1.is_finite()), "{name}");
@@ -363,7 +366,7 @@ fn a_net_pressure_changing_sign_at_a_division_point_and_negative_turning_areas()
       "divisions": 4,
       "outputs": ["turning_force", "mean_height", "power"]}"#;
     let p = scene(text);
-    let (board, res) = p.construct(true).unwrap();
+    let (board, res) = DynamicsScene::construct(&p, BoardConfig::DRAWING).unwrap();
     assert!(board.all_passed());
     let rows = &res.rays[0];
     // At 90° the piston is at mid-stroke, where the net pressure is exactly 0.
@@ -375,7 +378,7 @@ fn a_net_pressure_changing_sign_at_a_division_point_and_negative_turning_areas()
     );
     // Late in each stroke the back pressure wins: T < 0 somewhere on a fine division.
     let fine = with(text, |v| v["divisions"] = 72.into()).unwrap();
-    let (_, res) = fine.construct(false).unwrap();
+    let (_, res) = DynamicsScene::construct(&fine, BoardConfig::SILENT).unwrap();
     assert!(res.turning.iter().any(|t| t.1 < 0.0));
     let pw = res.power.unwrap();
     assert!((pw.from_t_m - pw.from_pressures[0]).abs() < 1e-8 * pw.from_t_m.abs());
@@ -448,13 +451,13 @@ fn bad_input_names_the_field() {
 #[test]
 fn a_scene_computes_only_what_it_asks_for() {
     let count = |p: &DynamicsProblem, quantity: &str| -> usize {
-        let (b, _) = p.construct(true).unwrap();
+        let (b, _) = DynamicsScene::construct(p, BoardConfig::DRAWING).unwrap();
         b.checks()
             .filter(|c| c.quantity.starts_with(quantity))
             .count()
     };
     let steps = |p: &DynamicsProblem, topic: Topic| -> usize {
-        let (b, _) = p.construct(true).unwrap();
+        let (b, _) = DynamicsScene::construct(p, BoardConfig::DRAWING).unwrap();
         b.steps().iter().filter(|s| s.topic == topic).count()
     };
     let only = |outs: &[&str]| with(LOCO, |v| v["outputs"] = serde_json::json!(outs)).unwrap();
@@ -499,7 +502,7 @@ fn rays_by_rod_length_arcs_for_the_engine() {
         v["stroke_parts"] = 10.into();
     })
     .unwrap();
-    let (board, res) = p.construct(true).unwrap();
+    let (board, res) = DynamicsScene::construct(&p, BoardConfig::DRAWING).unwrap();
     let failed: Vec<_> = board.checks().filter(|c| !c.passed).collect();
     assert!(failed.is_empty(), "{failed:#?}");
     assert_eq!(res.turning.len(), 20);
@@ -570,7 +573,7 @@ fn an_indicator_diagram_of_many_points_is_read_by_binary_search() {
       "outputs": ["turning_force", "mean_height", "power"]}}"#
     );
     let p = scene(&text);
-    let (board, _) = p.construct(true).unwrap();
+    let (board, _) = DynamicsScene::construct(&p, BoardConfig::DRAWING).unwrap();
     assert!(board.all_passed());
     let ind = Indicator::Points {
         working: pts(6.0, 0.5),

@@ -3,6 +3,7 @@
 //! TeX installation can read. Where `lualatex` is installed the TikZ picture is compiled; where
 //! it is not, its syntax is checked here.
 
+use graphostatik::protocol::BoardConfig;
 use graphostatik::render::{self, export};
 use graphostatik::scene::AnyScene;
 use std::path::Path;
@@ -17,8 +18,8 @@ fn board(
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("scenes")
         .join(scene);
-    let p = AnyScene::load(&path).unwrap().problem();
-    (p.figure_meta(), p.construct(true).unwrap())
+    let p = AnyScene::load(&path).unwrap().into_problem();
+    (p.figure_meta(), p.construct(BoardConfig::DRAWING).unwrap())
 }
 
 /// FNV-1a, 64 bits: a hash that is the same on every platform and Rust version.
@@ -139,8 +140,8 @@ fn hostile_text_is_set_literally_in_every_format() {
     );
     let p = AnyScene::from_json(&scene, "hostile.json")
         .unwrap()
-        .problem();
-    let b = p.construct(true).unwrap();
+        .into_problem();
+    let b = p.construct(BoardConfig::DRAWING).unwrap();
     let meta = p.figure_meta();
     let svg = render::figure(&meta, &b, None);
     // usvg reads the SVG back: it is well-formed XML.

@@ -2,6 +2,7 @@
 //! equilibrium, resolution along two lines — against vector sums, moments and 2×2 solves.
 
 use graphostatik::protocol::Board;
+use graphostatik::protocol::BoardConfig;
 use graphostatik::statics::funicular::*;
 use proptest::prelude::*;
 
@@ -14,7 +15,7 @@ const D: SystemDrawing = SystemDrawing {
 };
 
 fn run(forces: &[Force], res: &[Resolution]) -> (Board, SystemResults) {
-    let mut b = Board::new(300.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(300.0);
     let r = construct_system(&mut b, forces, &D, res).unwrap();
     for c in b.steps().iter().flat_map(|s| &s.checks) {
         assert!(
@@ -147,7 +148,7 @@ fn a_pole_on_a_side_of_the_force_polygon_is_a_clear_error() {
     // Corners: (0,0) → (0,−100) → (100,−100) → (100,−50) in kg; the pole at (−100,−100)
     // lies on the line of side 2.
     d.pole = Some(graphostatik::kernel::Vector::new(-100.0, -100.0));
-    let mut b = Board::new(300.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(300.0);
     let e = construct_system(&mut b, &forces, &d, &[])
         .unwrap_err()
         .to_string();
@@ -171,7 +172,7 @@ proptest! {
         prop_assume!(!forces.is_empty());
         let mut d = D;
         d.pole = pole.map(|(x, y)| graphostatik::kernel::Vector::new(x, y));
-        let mut b = Board::new(300.0, true);
+        let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(300.0);
         match construct_system(&mut b, &forces, &d, &[]) {
             Ok(_) => {
                 for c in b.steps().iter().flat_map(|s| &s.checks) {
@@ -186,7 +187,7 @@ proptest! {
 
 #[test]
 fn lh_abb_21_auxiliary_forces_and_their_degenerate_case() {
-    let mut b = Board::new(300.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(300.0);
     // Antiparallel, unequal: the resultant lies outside, a = l·K2/(K1 + K2) with signs.
     let a = parallel_pair_by_auxiliary_forces(
         &mut b,
@@ -201,7 +202,7 @@ fn lh_abb_21_auxiliary_forces_and_their_degenerate_case() {
         assert!(c.passed);
     }
     // Equal and opposite: a couple, the partial resultants are parallel.
-    let mut b = Board::new(300.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(300.0);
     let e = parallel_pair_by_auxiliary_forces(
         &mut b,
         f(0.0, 0.0, 0.0, -300.0),
@@ -217,7 +218,7 @@ fn lh_abb_21_auxiliary_forces_and_their_degenerate_case() {
         .iter()
         .any(|s| s.outcome.as_deref().is_some_and(|o| o.contains("parallel"))));
     // Not parallel: refused.
-    let mut b = Board::new(300.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(300.0);
     assert!(parallel_pair_by_auxiliary_forces(
         &mut b,
         f(0.0, 0.0, 0.0, -300.0),
@@ -237,7 +238,7 @@ proptest! {
         aux in 5.0f64..2000.0, angle in 0.0f64..360.0,
     ) {
         let (s, c) = graphostatik::kernel::angle::sin_cos_deg(angle);
-        let mut b = Board::new(300.0, true);
+        let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(300.0);
         let a = parallel_pair_by_auxiliary_forces(
             &mut b,
             f(0.0, 0.0, -s * k1, c * k1),
@@ -315,8 +316,8 @@ fn a_construction_error_names_the_scene_field_that_caused_it() {
         "drawing": { "pole_kg": [0, -100] } }"#;
     let problem = graphostatik::scene::AnyScene::from_json(text, "p.json")
         .unwrap()
-        .problem();
-    let e = problem.construct(true).unwrap_err();
+        .into_problem();
+    let e = problem.construct(BoardConfig::DRAWING).unwrap_err();
     assert_eq!(
         problem.error_field(&e).as_deref(),
         Some("drawing.pole_kg"),

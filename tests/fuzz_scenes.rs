@@ -7,6 +7,7 @@
 //! The seed is fixed (`FUZZ_SEED` picks another), so a failure repeats; the budget
 //! (`FUZZ_SECONDS`, default 40 s) bounds the run on CI's two cores.
 
+use graphostatik::protocol::BoardConfig;
 use graphostatik::render;
 use graphostatik::scene::AnyScene;
 use serde_json::Value;
@@ -135,12 +136,13 @@ fn run(text: &str) -> Result<(), String> {
     let line = |e: String| graphostatik::fmt::error_line(&e);
     let scene = AnyScene::from_json(text, "fuzz.json").map_err(|e| line(e.to_string()))?;
     let problem = scene.problem();
-    let board = problem
-        .construct(true)
-        .map_err(|e| match problem.error_field(&e) {
-            Some(field) => line(format!("fuzz.json: {field}: {e}")),
-            None => line(format!("fuzz.json: {e}")),
-        })?;
+    let board =
+        problem
+            .construct(BoardConfig::DRAWING)
+            .map_err(|e| match problem.error_field(&e) {
+                Some(field) => line(format!("fuzz.json: {field}: {e}")),
+                None => line(format!("fuzz.json: {e}")),
+            })?;
     let svg = render::figure(&problem.figure_meta(), &board, None);
     let forbidden = |c: char| (c < ' ' && !matches!(c, '\t' | '\n' | '\r')) || c == '\u{fffe}';
     if svg.chars().any(forbidden) {

@@ -2,6 +2,7 @@
 //! outputs depend on. Counted by topic and by kind.
 
 use graphostatik::crank::*;
+use graphostatik::protocol::BoardConfig;
 use graphostatik::protocol::{Board, StepKind, Topic};
 use std::collections::BTreeMap;
 
@@ -13,7 +14,7 @@ fn run(request: Request, finite_rod: bool) -> Board {
         crank_pin_speed: 5.0,
         piston_force: PistonForce::Constant(8700.0),
     };
-    let mut b = Board::new(400.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(400.0);
     construct(
         &mut b,
         &d,
@@ -181,8 +182,8 @@ fn a_board_that_does_not_record_keeps_nothing_and_gives_the_same_values() {
         velocity_scale: 0.2,
         acceleration_scale: 10.0,
     };
-    let mut on = Board::new(400.0, true);
-    let mut off = Board::new(400.0, false);
+    let mut on = Board::new(BoardConfig::recording(true)).with_figure_size(400.0);
+    let mut off = Board::new(BoardConfig::recording(false)).with_figure_size(400.0);
     let a = construct(&mut on, &d, &dr, &Angles::Divisions(24), &full).unwrap();
     let b = construct(&mut off, &d, &dr, &Angles::Divisions(24), &full).unwrap();
     assert_eq!(a, b);

@@ -2,6 +2,7 @@
 //! to about 1e-12 relative: the constructions and the closed forms work in the scene's own
 //! frame, not in absolute sheet coordinates.
 
+use graphostatik::protocol::BoardConfig;
 use graphostatik::scene::AnyScene;
 use serde_json::Value;
 
@@ -48,8 +49,10 @@ fn shift_point(p: &mut Value, dx: f64) {
 
 /// The largest check error of a scene, relative to each check's natural magnitude.
 fn worst_relative(text: &str, name: &str) -> (f64, usize, String) {
-    let p = AnyScene::from_json(text, name).unwrap().problem();
-    let b = p.construct(true).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let p = AnyScene::from_json(text, name).unwrap().into_problem();
+    let b = p
+        .construct(BoardConfig::DRAWING)
+        .unwrap_or_else(|e| panic!("{name}: {e}"));
     let mut worst = (0.0, 0, String::new());
     for c in b.checks() {
         let rel = c.error / c.closed_form.abs().max(c.reference.abs());

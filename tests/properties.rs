@@ -34,7 +34,7 @@ proptest! {
             piston_path: true, velocity_parallel: true, velocity_instant_centre: true,
             rod_force: true, guide_force: true, tangential_force: true, radial_force: true, acceleration: true, max_velocity: true, polar_diagrams: true, piston_path_fixed_arc: true,
         };
-        let mut b = Board::new((r + r / lambda) / ls, true);
+        let mut b = Board::recording().with_figure_size((r + r / lambda) / ls);
         construct(&mut b, &d, &dr, &Angles::Degrees(thetas), &request).unwrap();
         for c in b.steps().iter().flat_map(|s| &s.checks) {
             prop_assert!(c.passed, "{} {} vs {} (err {:e}, tol {:e})",

@@ -3,6 +3,8 @@
 //! by η, the work balance of the mean turning force, and bad pump input.
 
 use graphostatik::dynamics::model::{self, area_cm2, Pump};
+use graphostatik::protocol::BoardConfig;
+use graphostatik::scene::Procedure;
 use graphostatik::scene::{AnyScene, DynamicsProblem, DynamicsScene};
 
 const SCENE: &str = include_str!("../scenes/kg_abb1065_pump_engine.json");
@@ -10,9 +12,10 @@ const SCENE: &str = include_str!("../scenes/kg_abb1065_pump_engine.json");
 fn problem(text: &str) -> DynamicsProblem {
     AnyScene::from_json(text, "pump.json")
         .unwrap()
+        .problem()
         .get::<DynamicsScene>()
         .unwrap()
-        .problem()
+        .clone()
 }
 
 /// KG: P_p1 = 3490 kg and P_p2 = 3710 kg from d = 28.5 cm, rod 7.5 cm, p_s = 0.45 at,
@@ -44,7 +47,7 @@ fn kg_pump_forces() {
 #[test]
 fn the_pump_takes_its_work_from_the_turning_force() {
     let p = problem(SCENE);
-    let (board, _) = p.construct(true).unwrap();
+    let (board, _) = DynamicsScene::construct(&p, BoardConfig::DRAWING).unwrap();
     assert!(board.all_passed());
     let with = p.engine.t_m();
     let e = &p.engine;

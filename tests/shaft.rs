@@ -1,6 +1,8 @@
 //! Shafts (LH C.7-8): moments in two planes and the ideal moment against Gl. 13.
 
 use graphostatik::protocol::Board;
+use graphostatik::protocol::BoardConfig;
+use graphostatik::scene::Procedure;
 use graphostatik::scene::{AnyScene, ShaftScene};
 use graphostatik::statics::shaft::*;
 use graphostatik::statics::{BeamDrawing, PointLoad};
@@ -15,7 +17,7 @@ const D: BeamDrawing = BeamDrawing {
 };
 
 fn run(s: &Shaft) -> Vec<ShaftRow> {
-    let mut b = Board::new(500.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
     let rows = construct_shaft(&mut b, s, &D).unwrap();
     for c in b.steps().iter().flat_map(|s| &s.checks) {
         assert!(
@@ -110,7 +112,7 @@ fn torque_ordinate_by_the_pole_triangle_of_gl_12() {
             radius: Some(r),
         };
         let s = shaft(90.0, alpha0, Some(t));
-        let mut b = Board::new(500.0, true);
+        let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
         let rows = construct_shaft(&mut b, &s, &D).unwrap();
         let checks: Vec<_> = b
             .steps()
@@ -142,9 +144,8 @@ fn bundled_transmission_shaft_scenes() {
             .join("scenes")
             .join(file);
         let any = AnyScene::load(&path).unwrap();
-        let scene: &ShaftScene = any.get().expect("a shaft scene");
-        let p = scene.problem();
-        let (_, rows) = p.construct(true).unwrap();
+        let p = any.problem().get::<ShaftScene>().unwrap().clone();
+        let (_, rows) = ShaftScene::construct(&p, BoardConfig::DRAWING).unwrap();
         let at = rows.iter().find(|r| (r.x - 0.45).abs() < 1e-12).unwrap();
         // P = 500 kg at 0.45 m of 1.2 m: M_b = 500·0.45·0.75/1.2 = 140.625 kg·m; M_d = P·r = 125.
         assert!((at.mb - 140.625).abs() < 1e-9);
@@ -164,9 +165,8 @@ fn aufgabe_7_crankshaft_reproduces_the_printed_ordinates_and_diameters() {
         .join("scenes")
         .join("lh_aufgabe7_crankshaft.json");
     let any = AnyScene::load(&path).unwrap();
-    let scene: &ShaftScene = any.get().expect("a shaft scene");
-    let p = scene.problem();
-    let (board, rows) = p.construct(true).unwrap();
+    let p = any.problem().get::<ShaftScene>().unwrap().clone();
+    let (board, rows) = ShaftScene::construct(&p, BoardConfig::DRAWING).unwrap();
     assert!(board
         .steps()
         .iter()
@@ -244,7 +244,7 @@ proptest! {
             alpha0,
             kb: Some(1000.0),
         };
-        let mut b = Board::new(500.0, true);
+        let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(500.0);
         construct_shaft(&mut b, &s, &D).unwrap();
         for c in b.steps().iter().flat_map(|s| &s.checks) {
             prop_assert!(c.passed, "{}: {} vs {} ({:e} > {:e})", c.quantity, c.constructed, c.closed_form, c.error, c.tolerance);

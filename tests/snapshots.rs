@@ -1,6 +1,7 @@
 //! insta snapshots (in `snapshots/`) of the SVG and the check table of every bundled scene,
 //! and the test that `figures/` is exactly what the renderer produces now.
 
+use graphostatik::protocol::BoardConfig;
 use graphostatik::render;
 use graphostatik::scene::AnyScene;
 use std::path::{Path, PathBuf};
@@ -22,8 +23,8 @@ fn stem(p: &Path) -> String {
 }
 
 fn build(p: &Path) -> (String, String) {
-    let problem = AnyScene::load(p).unwrap().problem();
-    let board = problem.construct(true).unwrap();
+    let problem = AnyScene::load(p).unwrap().into_problem();
+    let board = problem.construct(BoardConfig::DRAWING).unwrap();
     (
         render::figure(&problem.figure_meta(), &board, None),
         render::check_table_text(&board),
@@ -88,8 +89,8 @@ fn figures_folder_is_what_the_renderer_produces_now() {
 #[test]
 fn every_layer_is_a_named_inkscape_layer() {
     for p in scenes() {
-        let problem = AnyScene::load(&p).unwrap().problem();
-        let board = problem.construct(true).unwrap();
+        let problem = AnyScene::load(&p).unwrap().into_problem();
+        let board = problem.construct(BoardConfig::DRAWING).unwrap();
         let svg = render::figure(&problem.figure_meta(), &board, None);
         // Every attribute value after `key="`, collected once (a search per step would be
         // quadratic in the size of a large figure).

@@ -3,6 +3,8 @@
 
 use graphostatik::kernel::{Point, Vector};
 use graphostatik::protocol::Board;
+use graphostatik::protocol::BoardConfig;
+use graphostatik::scene::Procedure;
 use graphostatik::scene::{AnyScene, TrussScene};
 use graphostatik::truss::cremona::{construct_plan, construct_truss, CaseResult, TrussDrawing};
 use graphostatik::truss::generate::{parallel_chord, Web};
@@ -29,7 +31,7 @@ fn all_checks_pass(b: &Board) -> usize {
 }
 
 fn run(t: &Truss, cases: &[LoadCase]) -> (Board, Vec<CaseResult>) {
-    let mut b = Board::new(400.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(400.0);
     let r = construct_truss(&mut b, t, cases, &D).unwrap();
     all_checks_pass(&b);
     (b, r)
@@ -86,8 +88,7 @@ fn load_scene(file: &str) -> graphostatik::scene::TrussProblem {
         .join("scenes")
         .join(file);
     let any = AnyScene::load(&path).unwrap();
-    let scene: &TrussScene = any.get().expect("a truss scene");
-    scene.problem()
+    any.problem().get::<TrussScene>().unwrap().clone()
 }
 
 /// LH Aufgabe 4, table of member forces (kg, tension +). The book reads its plans at an
@@ -97,7 +98,7 @@ fn load_scene(file: &str) -> graphostatik::scene::TrussProblem {
 #[test]
 fn aufgabe_4_against_the_book_table() {
     let p = load_scene("lh_aufgabe4_shed_roof.json");
-    let (b, r) = p.construct(true).unwrap();
+    let (b, r) = TrussScene::construct(&p, BoardConfig::DRAWING).unwrap();
     // Per case: three reaction components, by moments and by the dense solve; 7 members;
     // the balance of the joints.
     assert_eq!(all_checks_pass(&b), 4 * (2 * 3 + 7 + 1));
@@ -197,7 +198,7 @@ fn aufgabe_4_against_the_book_table() {
 #[test]
 fn aufgabe_3_crane_against_the_book_table() {
     let p = load_scene("lh_aufgabe3_slewing_crane.json");
-    let (b, r) = p.construct(true).unwrap();
+    let (b, r) = TrussScene::construct(&p, BoardConfig::DRAWING).unwrap();
     // 7 members and the two reactions (G as a pin: two components), all checked, the
     // reactions both by moments and against the dense solve; and the balance of the joints.
     assert_eq!(all_checks_pass(&b), 7 + 2 * 3 + 1);
@@ -321,7 +322,7 @@ fn two_thousand_joints_checked_member_by_member_by_the_sparse_solve() {
     let t = parallel_chord(Web::Warren, 1000, 1.0, 1.0);
     assert_eq!(t.joints.len(), 2001);
     let loads: Vec<_> = (1..1000).map(|i| down(i, 100.0)).collect();
-    let mut b = Board::new(1000.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(1000.0);
     let r = construct_truss(&mut b, &t, &case(loads), &D).unwrap();
     // No rank test was made (it is a dense SVD), but the sparse solve was: every member
     // force is checked against it, as on a small truss.
@@ -416,7 +417,7 @@ fn mechanisms_and_over_determinate_trusses_are_named() {
         analyse(&x).determinacy,
         Determinacy::OverDeterminate { redundant: 1 }
     );
-    let mut b = Board::new(100.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(100.0);
     let e = construct_truss(&mut b, &x, &case(vec![down(2, 1.0)]), &D).unwrap_err();
     assert!(e.to_string().contains("over-determinate by 1"), "{e}");
     // The right number of members but a roller whose line passes through the pin: the truss
@@ -545,7 +546,7 @@ fn the_plan_alone_gives_the_same_forces() {
     let t = parallel_chord(Web::Howe, 6, 2.0, 1.5);
     let cases = case((1..6).map(|i| down(i, 500.0 + 100.0 * i as f64)).collect());
     let (_, with) = run(&t, &cases);
-    let mut b = Board::new(400.0, false);
+    let mut b = Board::new(BoardConfig::recording(false)).with_figure_size(400.0);
     let alone = construct_plan(&mut b, &t, &cases, &D).unwrap();
     for (a, w) in alone[0].members.iter().zip(&with[0].members) {
         assert_eq!(a.force, w.force);
@@ -568,7 +569,7 @@ proptest! {
             let (s, c) = graphostatik::kernel::angle::sin_cos_deg(deg);
             JointLoad { joint: j % k, force: Vector::new(kg * c, kg * s) }
         }).collect());
-        let mut b = Board::new(400.0, true);
+        let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(400.0);
         let r = construct_truss(&mut b, &t, &cases, &D).unwrap();
         for c in b.steps().iter().flat_map(|s| &s.checks) {
             prop_assert!(c.passed, "{}: {} vs {}", c.quantity, c.constructed, c.closed_form);
@@ -593,12 +594,11 @@ fn a_moving_load_gives_one_case_per_position_and_an_envelope() {
         "load_cases": [ { "name": "dead", "loads": [ { "joint": "B1", "kg": 500 }, { "joint": "B2", "kg": 500 } ] } ],
         "moving_loads": [ { "name": "crane", "path": ["B0", "B1", "B2", "B3"], "loads_kg": [3000, 1000] } ] }"#;
     let any = AnyScene::from_json(scene, "m.json").unwrap();
-    let s: &TrussScene = any.get().expect("a truss scene");
-    let p = s.problem();
+    let p = any.problem().get::<TrussScene>().unwrap().clone();
     // The train of two loads takes three positions on four joints.
     let names: Vec<_> = p.cases.iter().map(|c| c.name.as_str()).collect();
     assert_eq!(names, ["dead", "crane at B0", "crane at B1", "crane at B2"]);
-    let (b, r) = p.construct(true).unwrap();
+    let (b, r) = TrussScene::construct(&p, BoardConfig::DRAWING).unwrap();
     all_checks_pass(&b);
     let env = graphostatik::truss::envelope::envelope(&r, None);
     for (m, e) in env.iter().enumerate() {
@@ -678,8 +678,11 @@ fn thousands_of_counter_diagonals_in_linear_time_with_a_short_case_name() {
     // and 3.6 GB. Now linear; the name lists the first 24 and the count.
     let n = if cfg!(debug_assertions) { 500 } else { 2_000 };
     let any = AnyScene::from_json(&crossed_girder_scene(n, "tension_only"), "d.json").unwrap();
-    let scene: &TrussScene = any.get().expect("a truss scene");
-    let (b, r) = scene.problem().construct(true).unwrap();
+    let (b, r) = TrussScene::construct(
+        any.problem().get::<TrussScene>().unwrap(),
+        BoardConfig::DRAWING,
+    )
+    .unwrap();
     all_checks_pass(&b);
     let c = &r[0];
     assert!(
@@ -704,14 +707,13 @@ fn thousands_of_counter_diagonals_in_linear_time_with_a_short_case_name() {
 
 fn pairs_problem(mode: &str) -> graphostatik::scene::TrussProblem {
     let any = AnyScene::from_json(&double_diagonal_scene(mode), "d.json").unwrap();
-    let scene: &TrussScene = any.get().expect("a truss scene");
-    scene.problem()
+    any.problem().get::<TrussScene>().unwrap().clone()
 }
 
 #[test]
 fn double_diagonals_split_into_two_systems_with_half_loads() {
     let p = pairs_problem("split_half_loads");
-    let (b, r) = p.construct(true).unwrap();
+    let (b, r) = TrussScene::construct(&p, BoardConfig::DRAWING).unwrap();
     // Two sub-trusses per case, each checked against its own dense solve and for the
     // balance of its joints.
     assert_eq!(all_checks_pass(&b), 2 * 2 * (2 * 3 + 13 + 1));
@@ -728,7 +730,7 @@ fn double_diagonals_split_into_two_systems_with_half_loads() {
 #[test]
 fn tension_only_counter_diagonals_switch_until_every_working_diagonal_pulls() {
     let p = pairs_problem("tension_only");
-    let (b, r) = p.construct(true).unwrap();
+    let (b, r) = TrussScene::construct(&p, BoardConfig::DRAWING).unwrap();
     all_checks_pass(&b);
     for c in &r {
         assert!(c.plan_residual < 1e-9 * 3000.0, "{}", c.plan_residual);
@@ -791,8 +793,7 @@ fn aufgabe_4_loads_from_the_roof_formulas() {
         "slopes": [ { "joints": ["I", "II"], "cover_kg_per_m2": 30 },
                     { "joints": ["II", "III", "IV"], "cover_kg_per_m2": 40 } ] });
     let any = AnyScene::from_json(&v.to_string(), "roof.json").unwrap();
-    let s: &TrussScene = any.get().expect("a truss scene");
-    let p = s.problem();
+    let p = any.problem().get::<TrussScene>().unwrap().clone();
     let names: Vec<_> = p.cases.iter().map(|c| c.name.as_str()).collect();
     assert_eq!(names, ["dead load", "wind left", "wind right", "snow"]);
     let total = |c: usize, j: usize| -> Vector {
@@ -818,12 +819,14 @@ fn aufgabe_4_loads_from_the_roof_formulas() {
     for (j, want) in [(1, 250.0), (2, 500.0), (3, 250.0)] {
         assert!(near(-total(3, j).y, want), "snow {j}");
     }
-    let (b, r) = p.construct(true).unwrap();
+    let (b, r) = TrussScene::construct(&p, BoardConfig::DRAWING).unwrap();
     all_checks_pass(&b);
-    let typed = load_scene("lh_aufgabe4_shed_roof.json")
-        .construct(false)
-        .unwrap()
-        .1;
+    let typed = TrussScene::construct(
+        &load_scene("lh_aufgabe4_shed_roof.json"),
+        BoardConfig::SILENT,
+    )
+    .unwrap()
+    .1;
     for (g, t) in r.iter().zip(&typed) {
         for (mg, mt) in g.members.iter().zip(&t.members) {
             assert!(
@@ -929,7 +932,7 @@ fn a_triangular_prism_is_refused_with_the_joints_named() {
         90.0,
     );
     assert_eq!(analyse(&t).determinacy, Determinacy::Determinate);
-    let mut b = Board::new(400.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(400.0);
     let e = construct_truss(&mut b, &t, &case(vec![down(2, 1000.0)]), &D).unwrap_err();
     assert!(
         e.to_string().contains("stalls") && e.to_string().contains("K0"),
@@ -957,7 +960,7 @@ proptest! {
         }
         prop_assume!(analyse(&t).determinacy == Determinacy::Determinate);
         let loads = case((1..n).map(|i| down(i, 1000.0)).collect());
-        let mut b = Board::new(400.0, true);
+        let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(400.0);
         match construct_truss(&mut b, &t, &loads, &D) {
             Ok(r) => {
                 for c in b.steps().iter().flat_map(|s| &s.checks) {
@@ -1122,7 +1125,7 @@ fn tabelle_1_span_members(r: &[CaseResult]) {
 #[test]
 fn aufgabe_5_table_2_reactions_and_diagonals() {
     let p = load_scene("lh_aufgabe5_crane_bridge.json");
-    let (b, r) = p.construct(true).unwrap();
+    let (b, r) = TrussScene::construct(&p, BoardConfig::DRAWING).unwrap();
     all_checks_pass(&b);
     // (case, position, A, B, D) from Tabelle 2.
     let book = [
@@ -1258,7 +1261,7 @@ fn three_rollers_by_culmanns_line() {
             force: Vector::new(0.0, -500.0),
         },
     ];
-    let mut b = Board::new(400.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(400.0);
     let e = construct_truss(&mut b, &t, &case(couple), &D).unwrap_err();
     assert!(e.to_string().contains("couple"), "{e}");
 }
@@ -1410,7 +1413,7 @@ fn a_flat_but_determinate_triangle_is_not_a_mechanism_and_its_cuts_are_flagged()
         "supports": [ { "joint": "I", "kind": "pinned" }, { "joint": "II", "kind": "roller", "direction_deg": 90 } ],
         "load_cases": [ { "name": "P", "loads": [ { "joint": "III", "kg": 1000 } ] } ] }"#;
     let any = AnyScene::from_json(text, "flat.json").unwrap();
-    let board = any.problem().construct(true).unwrap();
+    let board = any.problem().construct(BoardConfig::DRAWING).unwrap();
     let rows = graphostatik::render::check_rows(&board);
     let members: Vec<_> = rows
         .iter()
@@ -1490,7 +1493,7 @@ fn a_large_determinate_truss_gets_its_rank_without_the_svd() {
 #[test]
 fn the_csv_table_reads_back_as_the_same_numbers() {
     let p = load_scene("lh_aufgabe4_shed_roof.json");
-    let (_, r) = p.construct(false).unwrap();
+    let (_, r) = TrussScene::construct(&p, BoardConfig::SILENT).unwrap();
     let csv = graphostatik::render::forces::csv(&r, &p.combinations);
     let row: Vec<&str> = csv.lines().nth(3).unwrap().split(',').collect();
     assert_eq!(row[0], "\"3\"");
@@ -1513,7 +1516,7 @@ fn a_long_girder_checks_its_reactions_at_the_scale_of_its_forces() {
     let loads: Vec<_> = (1..n)
         .map(|i| down(i, 1000.0 + (i % 7) as f64 * 100.0))
         .collect();
-    let mut b = Board::new(1000.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(1000.0);
     construct_truss(&mut b, &t, &case(loads), &D).unwrap();
     let failed: Vec<_> = b
         .checks()
@@ -1631,7 +1634,7 @@ fn a_large_truss_that_is_not_determinate_is_named_without_the_svd() {
         Determinacy::OverDeterminate { redundant: 1 }
     );
     // And the construction refuses the mechanism before drawing, naming the joint.
-    let mut b = Board::new(1000.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(1000.0);
     let e = construct_truss(&mut b, &t, &case(vec![down(1, 100.0)]), &D).unwrap_err();
     assert!(e.to_string().contains(&t.joints[joint].name), "{e}");
 }
@@ -1681,7 +1684,7 @@ fn a_large_truss_of_members_joined_at_random_is_refused_at_once() {
         analyse(&t).determinacy,
         Determinacy::Undecided { .. }
     ));
-    let mut b = Board::new(1000.0, true);
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(1000.0);
     let e = construct_truss(&mut b, &t, &case(vec![down(5, 100.0)]), &D).unwrap_err();
     assert!(e.to_string().contains("not joined in panels"), "{e}");
     for web in [Web::Warren, Web::Pratt, Web::Howe] {

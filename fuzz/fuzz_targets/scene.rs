@@ -3,6 +3,7 @@
 //! checked number finite, its check table and figure written without a panic.
 #![no_main]
 
+use graphostatik::protocol::BoardConfig;
 use graphostatik::scene::AnyScene;
 use libfuzzer_sys::fuzz_target;
 
@@ -21,7 +22,7 @@ fuzz_target!(|data: &[u8]| {
         }
     };
     let problem = scene.problem();
-    let Ok(board) = problem.construct(true) else {
+    let Ok(board) = problem.construct(BoardConfig::DRAWING) else {
         return;
     };
     for c in board.checks() {

@@ -24,7 +24,7 @@
 //! let drawing = Drawing { length_scale: 20.0, force_scale: 50.0, velocity_scale: 0.1,
 //!     acceleration_scale: 1.0 };
 //! let request = Request { piston_path: true, ..Request::default() };
-//! let mut board = Board::new(200.0, true);
+//! let mut board = Board::recording().with_figure_size(200.0);
 //! let res = construct(&mut board, &drive, &drawing, &Angles::Divisions(12), &request).unwrap();
 //! // KG (285): at φ = 90° on the outstroke x = R + L(1 − cos ψ).
 //! let x = res.rows[3].x.unwrap();

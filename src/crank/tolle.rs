@@ -432,7 +432,7 @@ mod tests {
 
     #[test]
     fn the_areas_balance_only_with_tolles_d() {
-        let mut b = Board::new(200.0, true);
+        let mut b = Board::recording().with_figure_size(200.0);
         let (half, lam, a) = (20.0, 0.2, 10.0);
         let ax = axis(&mut b, Point::new(0.0, 0.0), half, Topic::Acceleration).unwrap();
         let c = point_c(&mut b, &ax, half, lam).unwrap();

@@ -1,8 +1,8 @@
 //! The board: every kernel operation, recorded as a step.
 
 use super::accuracy::{ErrorModel, Track, WorstCut};
+use super::config::{BoardConfig, Jitter, Mode};
 use super::reference::{self as refr, ReferenceRow, Shadow, DP};
-use super::setup::Jitter;
 use super::step::*;
 use crate::kernel::construct;
 use crate::kernel::tolerance::CHECK_REL;
@@ -106,7 +106,7 @@ pub struct Board {
     #[serde(skip)]
     jitter: Option<Jitter>,
     /// What a board that keeps the checks and not the drawing files instead of steps and
-    /// objects ([`Setup::checks_only`](super::Setup::checks_only)).
+    /// objects ([`Mode::Checks`]).
     #[serde(skip)]
     ledger: Option<Box<Ledger>>,
     objects: Vec<Object>,
@@ -126,7 +126,7 @@ struct Ledger {
     checks: super::tracks::Chunked<(StepId, Check)>,
     /// Every check counted, per kind, with the worst of each kind and every failure.
     summary: super::summary::CheckSummary,
-    /// Keep every check however many ([`Setup::every_check`](super::Setup::every_check)).
+    /// Keep every check however many ([`Mode::Checks`]'s `every`).
     every: bool,
     /// The situation from each step on where it changed, in step order.
     contexts: Vec<(StepId, Option<std::sync::Arc<str>>)>,
@@ -187,29 +187,49 @@ pub struct CheckEntry<'a> {
 }
 
 impl Board {
-    /// A board that records every step, object and check, its length tolerance taken from
-    /// the construction: relative to the extent of what has been placed on it so far.
+    /// A board set up by `config`: what it keeps, the error model its bounds follow, a
+    /// draftsman's hand, a reference replay. Its length tolerance follows the extent of what
+    /// has been placed on it, unless [`Board::with_figure_size`] fixes it.
+    pub fn new(config: BoardConfig) -> Board {
+        let recording = config.is_recording();
+        Board {
+            tolerance: Tolerance::for_figure(0.0),
+            follows_extent: true,
+            extent: None,
+            recording,
+            context: None,
+            next_step: 0,
+            last_touched: false,
+            model: config.model,
+            tracks: Default::default(),
+            shadows: (config.reference && config.mode == Mode::Drawing).then(Vec::new),
+            jitter: config.hand.map(Jitter::new),
+            ledger: match config.mode {
+                Mode::Checks { every } => Some(Box::new(Ledger::new(every))),
+                _ => None,
+            },
+            objects: Vec::new(),
+            steps: Vec::new(),
+        }
+    }
+
+    /// A board that records every step, object and check ([`BoardConfig::DRAWING`]).
     pub fn recording() -> Board {
-        Board::sized(None, true)
+        Board::new(BoardConfig::DRAWING)
     }
 
     /// A board that only computes (nothing recorded, no checks evaluated): the fast path of
-    /// the same procedure code. Its tolerance follows the construction as on
-    /// [`Board::recording`].
+    /// the same procedure code ([`BoardConfig::SILENT`]).
     pub fn silent() -> Board {
-        Board::sized(None, false)
+        Board::new(BoardConfig::SILENT)
     }
 
-    /// [`Board::recording`] or [`Board::silent`], by the flag: the tolerance follows the
-    /// construction.
-    pub fn for_construction(recording: bool) -> Board {
-        Board::sized(None, recording)
-    }
-
-    /// A board for a figure of a known size (mm on the sheet), which fixes its length
-    /// tolerance up front; `recording` keeps steps and checks.
-    pub fn new(figure_size: f64, recording: bool) -> Board {
-        Board::sized(Some(figure_size), recording)
+    /// This board for a figure of a known size (mm on the sheet), which fixes its length
+    /// tolerance up front instead of following the construction's extent.
+    pub fn with_figure_size(mut self, figure_size: f64) -> Board {
+        self.tolerance = Tolerance::for_figure(figure_size);
+        self.follows_extent = false;
+        self
     }
 
     /// A silent board with this board's tolerance: for a dry run that measures where the
@@ -219,38 +239,8 @@ impl Board {
             tolerance: self.tolerance,
             follows_extent: self.follows_extent,
             extent: self.extent,
-            recording: false,
-            context: None,
-            next_step: 0,
-            last_touched: false,
             model: self.model,
-            tracks: Default::default(),
-            shadows: None,
-            jitter: None,
-            ledger: None,
-            objects: Vec::new(),
-            steps: Vec::new(),
-        }
-    }
-
-    fn sized(figure_size: Option<f64>, recording: bool) -> Board {
-        let setup = super::setup::current();
-        Board {
-            tolerance: Tolerance::for_figure(figure_size.unwrap_or(0.0)),
-            follows_extent: figure_size.is_none(),
-            extent: None,
-            recording,
-            context: None,
-            next_step: 0,
-            last_touched: false,
-            model: setup.model.unwrap_or(ErrorModel::ROUNDING),
-            tracks: Default::default(),
-            shadows: (recording && setup.reference && !setup.checks_only).then(Vec::new),
-            jitter: setup.hand.map(Jitter::new),
-            ledger: (recording && setup.checks_only)
-                .then(|| Box::new(Ledger::new(setup.every_check))),
-            objects: Vec::new(),
-            steps: Vec::new(),
+            ..Board::silent()
         }
     }
 
@@ -432,7 +422,7 @@ impl Board {
     }
 
     /// Whether steps and objects are kept for a drawing: a recording board that was not
-    /// made to keep only its checks ([`Setup::checks_only`](super::Setup::checks_only)).
+    /// made to keep only its checks ([`Mode::Checks`]).
     /// Work that only the drawing needs (a table of readings written on the sheet, a curve
     /// through points already checked) is skipped where this is false.
     #[inline]
@@ -506,7 +496,7 @@ impl Board {
 
     /// The summary of the checks, where the board kept only it: a board that keeps only its
     /// checks and made more than [`LISTED_CHECKS`](super::LISTED_CHECKS) of them, unless
-    /// [`Setup::every_check`](super::Setup::every_check) asked for every one.
+    /// [`Mode::Checks`]'s `every` asked for every one.
     pub fn check_summary(&self) -> Option<&super::CheckSummary> {
         self.ledger
             .as_deref()

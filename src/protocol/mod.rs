@@ -5,20 +5,20 @@
 
 mod accuracy;
 mod board;
+mod config;
 mod error;
 mod figure;
 mod reference;
-mod setup;
 mod step;
 mod summary;
 mod tracks;
 
 pub use accuracy::{ErrorModel, WorstCut};
 pub use board::{Board, CheckEntry, Cut, Scale, H};
+pub use config::{BoardConfig, Hand, Mode};
 pub use error::{ConstructionError, CutOutcome};
 pub use figure::{nice_at_least, FigureMeta, ScaleBar};
 pub use reference::ReferenceRow;
-pub use setup::{checks_only, with_setup, Hand, Setup};
 pub use step::{
     note, Check, Geom, Ids, Label, Note, ObjId, Object, Role, Step, StepId, StepKind, Text, Topic,
     TABLE_BLOCK_ROWS,

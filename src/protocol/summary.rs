@@ -3,29 +3,25 @@
 //!
 //! A 100,000-load beam makes 300,000 checks and a 100,000-joint girder 200,000: a table of
 //! every one is some 45 MB that nobody reads, and keeping them took more memory than the
-//! scene. A board that keeps only its checks ([`Setup::checks_only`](super::Setup)) files
+//! scene. A board that keeps only its checks ([`Mode::Checks`](super::Mode::Checks)) files
 //! each check here as it is made; it keeps the checks themselves only while there are at
 //! most [`LISTED_CHECKS`] (what the check table then lists row by row, as before) or when
-//! every one was asked for ([`Setup::every_check`](super::Setup), `check --all`). Every
+//! every one was asked for (its `every`, `check --all`). Every
 //! check is still made and counted: a failure is never summed away, it is kept whole, the
 //! first [`LISTED_FAILURES`] of them.
 //!
 //! ```
 //! use graphostatik::prelude::*;
-//! use graphostatik::protocol::{with_setup, Setup, LISTED_CHECKS};
-//! let setup = Setup { checks_only: true, ..Setup::default() };
-//! let b = with_setup(setup, || -> Result<Board, ConstructionError> {
-//!     let mut b = Board::recording();
-//!     let n = Note::new("lengths", Topic::Custom("demo"));
-//!     let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, n.clone());
-//!     for i in 1..=LISTED_CHECKS + 1 {
-//!         let a = b.point(Point::new(3.0 * i as f64, 4.0 * i as f64), Label::NONE, Role::Given, n.clone());
-//!         let x = b.line_through(&o, &a, Label::NONE, Role::Construction, n.clone())?;
-//!         let d = b.measure(&o, &a, &x, Scale::new(1.0, "mm"), Label::NONE, n.clone());
-//!         b.check(&d, "OA", "mm", "Pythagoras", 5.0, || 5.0 * i as f64);
-//!     }
-//!     Ok(b)
-//! })?;
+//! use graphostatik::protocol::{BoardConfig, LISTED_CHECKS};
+//! let mut b = Board::new(BoardConfig::CHECKS);
+//! let n = Note::new("lengths", Topic::Custom("demo"));
+//! let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, n.clone());
+//! for i in 1..=LISTED_CHECKS + 1 {
+//!     let a = b.point(Point::new(3.0 * i as f64, 4.0 * i as f64), Label::NONE, Role::Given, n.clone());
+//!     let x = b.line_through(&o, &a, Label::NONE, Role::Construction, n.clone())?;
+//!     let d = b.measure(&o, &a, &x, Scale::new(1.0, "mm"), Label::NONE, n.clone());
+//!     b.check(&d, "OA", "mm", "Pythagoras", 5.0, || 5.0 * i as f64);
+//! }
 //! let s = b.check_summary().expect("more checks than are listed");
 //! assert_eq!((s.total, s.failed, s.kinds.len()), (LISTED_CHECKS as u64 + 1, 0, 1));
 //! assert_eq!(s.kinds[0].count, LISTED_CHECKS as u64 + 1);

@@ -69,13 +69,14 @@ fn tree(svg: &str) -> Result<usvg::Tree, ExportError> {
 /// A figure as PNG at `dpi` pixels per inch of the sheet, on white.
 ///
 /// ```
+/// use graphostatik::protocol::BoardConfig;
 /// use graphostatik::scene::AnyScene;
 /// let p = AnyScene::from_json(r#"{ "procedure": "force_system", "title": "Two forces",
 ///     "forces": [ { "at_m": [0, 0], "kg": 100, "angle_deg": 90 },
 ///                 { "at_m": [1, 0], "kg": 50, "angle_deg": 90 } ] }"#, "two.json")
 ///     .unwrap()
-///     .problem();
-/// let board = p.construct(true).unwrap();
+///     .into_problem();
+/// let board = p.construct(BoardConfig::DRAWING).unwrap();
 /// let svg = graphostatik::render::figure(&p.figure_meta(), &board, None);
 /// let png = graphostatik::render::export::png(&svg, 50.0).unwrap();
 /// assert!(png.starts_with(b"\x89PNG"));

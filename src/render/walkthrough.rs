@@ -77,13 +77,14 @@ fn page_groups(board: &Board, grouping: Grouping) -> Vec<Vec<&Step>> {
 /// The walk-through of `board`: `index.html`, one step per page.
 ///
 /// ```
+/// use graphostatik::protocol::BoardConfig;
 /// use graphostatik::scene::AnyScene;
 /// let p = AnyScene::from_json(r#"{ "procedure": "force_system", "title": "Two forces",
 ///     "forces": [ { "at_m": [0, 0], "kg": 100, "angle_deg": 90 },
 ///                 { "at_m": [1, 0], "kg": 50, "angle_deg": 90 } ] }"#, "two.json")
 ///     .unwrap()
-///     .problem();
-/// let board = p.construct(true).unwrap();
+///     .into_problem();
+/// let board = p.construct(BoardConfig::DRAWING).unwrap();
 /// let pages = graphostatik::render::walkthrough(&p.figure_meta(), &board);
 /// assert_eq!(pages.len(), 1);
 /// assert!(pages[0].contents.contains("data-step=\"001\""));

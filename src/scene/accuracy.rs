@@ -16,7 +16,7 @@ use super::crank_dynamics::DynamicsScene;
 use super::procedure::Procedure;
 use super::registry::AnyProblem;
 use crate::crank::{Angles, PistonForce};
-use crate::protocol::{with_setup, Board, ConstructionError, Setup};
+use crate::protocol::{Board, BoardConfig, ConstructionError};
 use crate::statics::{Beam, PointLoad};
 use serde::Serialize;
 use std::time::Instant;
@@ -92,7 +92,7 @@ pub fn sweeps(
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Vec<Sweep>, ConstructionError> {
     let mut plan: Vec<Setting<'_>> = Vec::new();
-    if let Some(c) = p.get::<super::types::Scene>() {
+    if let Some(c) = p.get::<super::types::SliderCrankScene>() {
         plan.extend(crank_divisions(c));
     }
     if let Some(d) = p.get::<DynamicsScene>() {
@@ -140,7 +140,10 @@ fn gas_divisions(g: &super::combustion::CombustionProblem) -> Vec<Setting<'_>> {
                 let mut q = g.clone();
                 q.divisions = n;
                 let (r, secs) = timed(|| {
-                    <super::combustion::CombustionScene as super::Procedure>::construct(&q, true)
+                    <super::combustion::CombustionScene as super::Procedure>::construct(
+                        &q,
+                        BoardConfig::DRAWING,
+                    )
                 });
                 let res = r?.1;
                 Ok(vec![one(
@@ -172,14 +175,15 @@ fn yoke_divisions(y: &super::scotch_yoke::YokeProblem) -> Vec<Setting<'_>> {
     mean_over_divisions(what, move |n| {
         let mut q = y.clone();
         q.angles = Angles::Divisions(n);
-        let (r, secs) = timed(|| q.construct(true));
+        let (r, secs) =
+            timed(|| super::scotch_yoke::YokeScene::construct(&q, BoardConfig::DRAWING));
         Ok((r?.1.rows.iter().filter_map(|r| r.c).collect(), secs))
     })
 }
 
 /// Crank angles swept, against 2P/π (constant piston force, tangential force asked for) or
 /// 2v/π (the mean piston speed, velocity asked for).
-fn crank_divisions(c: &super::slider_crank::Problem) -> Vec<Setting<'_>> {
+fn crank_divisions(c: &super::slider_crank::SliderCrankProblem) -> Vec<Setting<'_>> {
     let by_t =
         c.request.tangential_force && matches!(c.drive.piston_force, PistonForce::Constant(_));
     let what = if by_t {
@@ -200,7 +204,8 @@ fn crank_divisions(c: &super::slider_crank::Problem) -> Vec<Setting<'_>> {
     mean_over_divisions(what, move |n| {
         let mut q = c.clone();
         q.angles = Angles::Divisions(n);
-        let (r, secs) = timed(|| super::types::Scene::construct(&q, true));
+        let (r, secs) =
+            timed(|| super::types::SliderCrankScene::construct(&q, BoardConfig::DRAWING));
         let rows = r?.1.rows;
         let sample = rows.iter().filter_map(|r| {
             if by_t {
@@ -287,7 +292,7 @@ fn dynamics_divisions(d: &super::crank_dynamics::DynamicsProblem) -> Vec<Setting
             Box::new(move || {
                 let mut q = d.clone();
                 q.rays = Angles::Divisions(n);
-                let (r, secs) = timed(|| DynamicsScene::construct(&q, true));
+                let (r, secs) = timed(|| DynamicsScene::construct(&q, BoardConfig::DRAWING));
                 let res = r?.1;
                 let exact = res.t_m_exact;
                 Ok(res
@@ -366,7 +371,7 @@ fn moment_error(
     knob: &str,
     setting: usize,
 ) -> Result<Sweep, ConstructionError> {
-    let (r, secs) = timed(|| BeamScene::construct(q, true));
+    let (r, secs) = timed(|| BeamScene::construct(q, BoardConfig::DRAWING));
     let res = r?.1;
     let cf = crate::statics::closed_form::Sections::new(&orig.beam);
     let err = res
@@ -393,13 +398,9 @@ fn moment_error(
 /// f64 against the double-double replay: the largest relative error of any step's results
 /// against the replay, and the time of each.
 fn precision(p: &AnyProblem) -> Result<Sweep, ConstructionError> {
-    let (plain, t64) = timed(|| p.construct(true));
+    let (plain, t64) = timed(|| p.construct(BoardConfig::DRAWING));
     plain?;
-    let setup = Setup {
-        reference: true,
-        ..Setup::default()
-    };
-    let (b, tdd) = timed(|| with_setup(setup, || p.construct(true)));
+    let (b, tdd) = timed(|| p.construct(BoardConfig::DRAWING.with_reference()));
     let b: Board = b?;
     let worst = b
         .reference_report()

@@ -3,8 +3,9 @@
 use super::defaults::nice_at_least;
 use super::error::SceneError;
 use super::fields::{optional_positive, Fields};
-use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
-use crate::statics::{self, Beam, BeamDrawing, BeamRequest, BeamResults, PointLoad, UniformLoad};
+use super::procedure::ReadContext;
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
+use crate::statics::{self, Beam, BeamDrawing, BeamRequest, PointLoad, UniformLoad};
 use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
@@ -121,7 +122,7 @@ pub struct BeamProblem {
 pub const MAX_LOADS: usize = 2000;
 
 /// Most loads a beam scene may carry where only its checks are kept (`check`:
-/// [`checks_only`](crate::protocol::checks_only)): time and memory are linear in the loads.
+/// [`ReadContext::checks`]): time and memory are linear in the loads.
 pub const MAX_LOADS_CHECKED: usize = 1_000_000;
 
 /// Construction steps a beam takes per load, all diagrams drawn (measured: 1,800,053 for
@@ -129,8 +130,8 @@ pub const MAX_LOADS_CHECKED: usize = 1_000_000;
 const STEPS_PER_LOAD: usize = 18;
 
 /// The most loads (or panel points) a beam scene read now may have.
-fn max_loads() -> usize {
-    if crate::protocol::checks_only() {
+fn max_loads(ctx: &ReadContext) -> usize {
+    if ctx.checks_only {
         MAX_LOADS_CHECKED
     } else {
         MAX_LOADS
@@ -138,12 +139,13 @@ fn max_loads() -> usize {
 }
 
 impl BeamScene {
-    fn check_values(&self, origin: &str) -> Result<(), SceneError> {
+    fn check_values(&self, ctx: &ReadContext) -> Result<(), SceneError> {
+        let origin = ctx.origin;
         let f = Fields { origin };
         let ends = self.check_supports(f)?;
-        self.check_point_loads(f, ends)?;
+        self.check_point_loads(f, ctx, ends)?;
         self.check_uniform_loads(f, ends)?;
-        self.check_stringers(f, ends)?;
+        self.check_stringers(f, ctx, ends)?;
         if let Some(d) = &self.drawing {
             optional_positive(
                 origin,
@@ -194,16 +196,20 @@ impl BeamScene {
     }
 
     /// At most MAX_LOADS loads; point loads finite and on the beam.
-    fn check_point_loads(&self, f: Fields, ends: [f64; 2]) -> Result<(), SceneError> {
-        let max = max_loads();
+    fn check_point_loads(
+        &self,
+        f: Fields,
+        ctx: &ReadContext,
+        ends: [f64; 2],
+    ) -> Result<(), SceneError> {
+        let max = max_loads(ctx);
         let loads = self.point_loads.len() + self.uniform_loads.len();
         if loads > max {
             return Err(f.bad("point_loads", format!("more than {max} loads")));
         }
-        if crate::protocol::checks_only() {
+        if ctx.checks_only {
             let steps = loads.saturating_mul(STEPS_PER_LOAD) + 60;
-            let free = crate::io::available_memory();
-            super::fields::check_fits_memory(f.origin, "point_loads", steps, free)?;
+            super::fields::check_fits_memory(f.origin, "point_loads", steps, ctx.free_memory)?;
         }
         for (i, l) in self.point_loads.iter().enumerate() {
             // The field's name is written only for a load that is refused.
@@ -280,9 +286,14 @@ impl BeamScene {
 
     /// Panel points of the stringers: 2 to MAX_LOADS, increasing, on the beam, covering the
     /// loads.
-    fn check_stringers(&self, f: Fields, ends: [f64; 2]) -> Result<(), SceneError> {
+    fn check_stringers(
+        &self,
+        f: Fields,
+        ctx: &ReadContext,
+        ends: [f64; 2],
+    ) -> Result<(), SceneError> {
         if let Some(st) = &self.stringers_m {
-            let max = max_loads();
+            let max = max_loads(ctx);
             if st.len() < 2 || st.len() > max {
                 return Err(f.bad(
                     "stringers_m",
@@ -326,7 +337,7 @@ impl BeamScene {
     }
 
     /// Maps the validated scene to the beam problem.
-    pub fn problem(&self) -> BeamProblem {
+    fn to_problem(&self) -> BeamProblem {
         let [a, b] = self.beam.supports_m;
         let beam = Beam {
             supports: [a, b],
@@ -387,44 +398,6 @@ impl BeamScene {
     }
 }
 
-impl BeamProblem {
-    /// Constructs the beam on a fresh board.
-    pub fn construct(&self, recording: bool) -> Result<(Board, BeamResults), ConstructionError> {
-        let span = (self.beam.ends[1] - self.beam.ends[0]) * 1000.0 / self.drawing.length_scale;
-        let mut board = Board::new(span.max(1.0) * 3.0, recording);
-        let r = if self.stringers.is_empty() {
-            statics::construct_beam(&mut board, &self.beam, &self.drawing, &self.request)?
-        } else {
-            statics::construct_beam_indirect(
-                &mut board,
-                &self.beam,
-                &self.stringers,
-                &self.drawing,
-                &self.request,
-            )?
-        };
-        Ok((board, r))
-    }
-
-    /// Title, source and scale bars of the figure.
-    pub fn figure_meta(&self) -> FigureMeta {
-        use crate::fmt::num;
-        let d = &self.drawing;
-        FigureMeta {
-            title: self.title.clone(),
-            source: super::fields::source_line(
-                &self.source,
-                &format!("pole distance H = {} kg", num(d.pole_distance, 6)),
-            ),
-            scales: vec![
-                ScaleBar::length(d.length_scale, "m"),
-                ScaleBar::force(d.force_scale),
-                ScaleBar::moment(d.length_scale / 1000.0 * d.pole_distance),
-            ],
-        }
-    }
-}
-
 impl super::Procedure for BeamScene {
     const NAME: &'static str = "beam";
     const ABOUT: &'static str = "a beam on two supports: reactions by the closing line, moment area, shear, parabola by tangents (LH I C.4-6)";
@@ -459,20 +432,50 @@ impl super::Procedure for BeamScene {
     type Problem = BeamProblem;
     type Results = statics::BeamResults;
 
-    fn validate(&self, origin: &str) -> Result<(), SceneError> {
-        self.check_values(origin)
-    }
-    fn problem(&self) -> BeamProblem {
-        BeamScene::problem(self)
+    fn problem(&self, ctx: &ReadContext) -> Result<BeamProblem, SceneError> {
+        self.check_values(ctx)?;
+        Ok(self.to_problem())
     }
     fn construct(
         problem: &BeamProblem,
-        recording: bool,
+        config: BoardConfig,
     ) -> Result<(Board, statics::BeamResults), ConstructionError> {
-        problem.construct(recording)
+        let span =
+            (problem.beam.ends[1] - problem.beam.ends[0]) * 1000.0 / problem.drawing.length_scale;
+        let mut board = Board::new(config).with_figure_size(span.max(1.0) * 3.0);
+        let r = if problem.stringers.is_empty() {
+            statics::construct_beam(
+                &mut board,
+                &problem.beam,
+                &problem.drawing,
+                &problem.request,
+            )?
+        } else {
+            statics::construct_beam_indirect(
+                &mut board,
+                &problem.beam,
+                &problem.stringers,
+                &problem.drawing,
+                &problem.request,
+            )?
+        };
+        Ok((board, r))
     }
     fn figure_meta(problem: &BeamProblem) -> FigureMeta {
-        problem.figure_meta()
+        use crate::fmt::num;
+        let d = &problem.drawing;
+        FigureMeta {
+            title: problem.title.clone(),
+            source: super::fields::source_line(
+                &problem.source,
+                &format!("pole distance H = {} kg", num(d.pole_distance, 6)),
+            ),
+            scales: vec![
+                ScaleBar::length(d.length_scale, "m"),
+                ScaleBar::force(d.force_scale),
+                ScaleBar::moment(d.length_scale / 1000.0 * d.pole_distance),
+            ],
+        }
     }
 }
 

@@ -4,8 +4,9 @@
 use super::defaults::nice_at_least;
 use super::error::SceneError;
 use super::fields::optional_positive;
+use super::procedure::ReadContext;
 use crate::kernel::Point;
-use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::centroid::{self, CentroidDrawing, CentroidResults};
 use serde::{Deserialize, Serialize};
 
@@ -126,7 +127,7 @@ impl CentroidScene {
     }
 
     /// The problem the scene describes.
-    pub fn problem(&self) -> CentroidProblem {
+    fn to_problem(&self) -> CentroidProblem {
         let (area, _) =
             centroid::polygon_centroid(&self.points()).unwrap_or((1.0, Point::origin()));
         let size = self
@@ -159,31 +160,6 @@ impl CentroidScene {
     }
 }
 
-impl CentroidProblem {
-    /// Constructs the centroid on a fresh board.
-    pub fn construct(
-        &self,
-        recording: bool,
-    ) -> Result<(Board, CentroidResults), ConstructionError> {
-        let mut board = Board::for_construction(recording);
-        let r = centroid::construct_centroid(&mut board, &self.polygon, &self.drawing)?;
-        Ok((board, r))
-    }
-
-    /// Title, source and scale bars.
-    pub fn figure_meta(&self) -> FigureMeta {
-        let d = &self.drawing;
-        FigureMeta {
-            title: self.title.clone(),
-            source: self.source.clone(),
-            scales: vec![
-                ScaleBar::length(d.length_scale, "m"),
-                ScaleBar::area(d.area_scale),
-            ],
-        }
-    }
-}
-
 impl super::Procedure for CentroidScene {
     const NAME: &'static str = "centroid";
     const ABOUT: &'static str = "the centroid of a polygon by two funicular polygons (LH I C.3)";
@@ -211,19 +187,27 @@ impl super::Procedure for CentroidScene {
     type Problem = CentroidProblem;
     type Results = CentroidResults;
 
-    fn validate(&self, origin: &str) -> Result<(), SceneError> {
-        self.check_values(origin)
-    }
-    fn problem(&self) -> CentroidProblem {
-        CentroidScene::problem(self)
+    fn problem(&self, ctx: &ReadContext) -> Result<CentroidProblem, SceneError> {
+        self.check_values(ctx.origin)?;
+        Ok(self.to_problem())
     }
     fn construct(
         problem: &CentroidProblem,
-        recording: bool,
+        config: BoardConfig,
     ) -> Result<(Board, CentroidResults), ConstructionError> {
-        problem.construct(recording)
+        let mut board = Board::new(config);
+        let r = centroid::construct_centroid(&mut board, &problem.polygon, &problem.drawing)?;
+        Ok((board, r))
     }
     fn figure_meta(problem: &CentroidProblem) -> FigureMeta {
-        problem.figure_meta()
+        let d = &problem.drawing;
+        FigureMeta {
+            title: problem.title.clone(),
+            source: problem.source.clone(),
+            scales: vec![
+                ScaleBar::length(d.length_scale, "m"),
+                ScaleBar::area(d.area_scale),
+            ],
+        }
     }
 }

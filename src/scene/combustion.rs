@@ -3,13 +3,14 @@
 
 use super::error::SceneError;
 use super::fields::Fields;
+use super::procedure::ReadContext;
 use super::types::{Mechanism, Speed};
 use crate::dynamics::combustion::{
     self, Combustion, GasCycle, GasCylinder, GasDrawing, GasEngine, GasResults, Strokes,
 };
 use crate::dynamics::model::{area_cm2, Kinematics, G};
 use crate::kernel::tolerance::MAX_DIVISIONS;
-use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
 use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
@@ -251,7 +252,7 @@ impl CombustionScene {
     }
 
     /// The problem, with the scales chosen where none are given.
-    pub fn problem(&self) -> CombustionProblem {
+    fn to_problem(&self) -> CombustionProblem {
         let r = self.mechanism.radius();
         let kinematics = Kinematics {
             r,
@@ -341,17 +342,15 @@ impl super::Procedure for CombustionScene {
             (crank, "drawing.length_scale")
         })
     }
-    fn validate(&self, origin: &str) -> Result<(), SceneError> {
-        self.check_values(origin)
-    }
-    fn problem(&self) -> CombustionProblem {
-        CombustionScene::problem(self)
+    fn problem(&self, ctx: &ReadContext) -> Result<CombustionProblem, SceneError> {
+        self.check_values(ctx.origin)?;
+        Ok(self.to_problem())
     }
     fn construct(
         p: &CombustionProblem,
-        recording: bool,
+        config: BoardConfig,
     ) -> Result<(Board, GasResults), ConstructionError> {
-        let mut board = Board::for_construction(recording);
+        let mut board = Board::new(config);
         let r = combustion::construct(&mut board, &p.engine, &p.drawing, p.divisions)?;
         Ok((board, r))
     }

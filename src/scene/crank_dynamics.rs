@@ -5,10 +5,11 @@
 use super::defaults::nice_at_least;
 use super::error::SceneError;
 use super::fields::{optional_positive, Fields};
+use super::procedure::ReadContext;
 use super::{Mechanism, Speed};
 use crate::dynamics::model::{self, area_cm2, Cylinder, Indicator, Kinematics, Side, SteamModel};
 use crate::dynamics::{self, DynamicsDrawing, DynamicsRequest, DynamicsResults, Engine};
-use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
 use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
@@ -286,7 +287,7 @@ mod validate;
 
 impl DynamicsScene {
     /// The problem the (validated) scene describes.
-    pub fn problem(&self) -> DynamicsProblem {
+    fn to_problem(&self) -> DynamicsProblem {
         let r = self.mechanism.radius();
         let eff = self.effects.unwrap_or_default();
         let finite = eff.finite_rod.unwrap_or(true);
@@ -455,47 +456,6 @@ fn points(s: &SidePoints, gauge: bool, stroke: f64) -> Indicator {
     }
 }
 
-impl DynamicsProblem {
-    /// Constructs the problem on a fresh board.
-    pub fn construct(
-        &self,
-        recording: bool,
-    ) -> Result<(Board, DynamicsResults), ConstructionError> {
-        let mut board = Board::for_construction(recording);
-        let res = dynamics::construct(
-            &mut board,
-            &self.engine,
-            &self.drawing,
-            &self.rays,
-            &self.request,
-        )?;
-        Ok((board, res))
-    }
-
-    /// Title, source and scale bars.
-    pub fn figure_meta(&self) -> FigureMeta {
-        use crate::fmt::num;
-        let k = &self.engine.kinematics;
-        FigureMeta {
-            title: self.title.clone(),
-            source: super::fields::source_line(
-                &self.source,
-                &format!(
-                    "R = {} mm, R/L = {}, v = {} m/s, {} cylinder(s)",
-                    num(k.r, 3),
-                    num(k.lambda, 4),
-                    num(k.v, 4),
-                    self.engine.cylinders.len()
-                ),
-            ),
-            scales: vec![
-                ScaleBar::length(self.drawing.length_scale, "mm"),
-                ScaleBar::force(self.drawing.force_scale),
-            ],
-        }
-    }
-}
-
 impl super::Procedure for DynamicsScene {
     const NAME: &'static str = "crank_dynamics";
     const ABOUT: &'static str = "an engine's dynamics: net pressure, inertia, turning force, mean heights, power, flywheel (LH II A, C-J; KG XIV B.4)";
@@ -539,7 +499,8 @@ impl super::Procedure for DynamicsScene {
     type Problem = DynamicsProblem;
     type Results = DynamicsResults;
 
-    fn validate(&self, origin: &str) -> Result<(), SceneError> {
+    fn problem(&self, ctx: &ReadContext) -> Result<DynamicsProblem, SceneError> {
+        let origin = ctx.origin;
         let f = Fields { origin };
         self.check(f)?;
         if let Some(d) = &self.drawing {
@@ -551,18 +512,41 @@ impl super::Procedure for DynamicsScene {
                 ],
             )?;
         }
-        Ok(())
-    }
-    fn problem(&self) -> DynamicsProblem {
-        DynamicsScene::problem(self)
+        Ok(self.to_problem())
     }
     fn construct(
         problem: &DynamicsProblem,
-        recording: bool,
+        config: BoardConfig,
     ) -> Result<(Board, DynamicsResults), ConstructionError> {
-        problem.construct(recording)
+        let mut board = Board::new(config);
+        let res = dynamics::construct(
+            &mut board,
+            &problem.engine,
+            &problem.drawing,
+            &problem.rays,
+            &problem.request,
+        )?;
+        Ok((board, res))
     }
     fn figure_meta(problem: &DynamicsProblem) -> FigureMeta {
-        problem.figure_meta()
+        use crate::fmt::num;
+        let k = &problem.engine.kinematics;
+        FigureMeta {
+            title: problem.title.clone(),
+            source: super::fields::source_line(
+                &problem.source,
+                &format!(
+                    "R = {} mm, R/L = {}, v = {} m/s, {} cylinder(s)",
+                    num(k.r, 3),
+                    num(k.lambda, 4),
+                    num(k.v, 4),
+                    problem.engine.cylinders.len()
+                ),
+            ),
+            scales: vec![
+                ScaleBar::length(problem.drawing.length_scale, "mm"),
+                ScaleBar::force(problem.drawing.force_scale),
+            ],
+        }
     }
 }

@@ -7,7 +7,7 @@
 //! their disagreements with the closed form a drawing explains, and at what pencil and scale.
 
 use super::registry::AnyProblem;
-use crate::protocol::{with_setup, Board, ConstructionError, ErrorModel, Hand, Setup, WorstCut};
+use crate::protocol::{Board, BoardConfig, ConstructionError, ErrorModel, Hand, WorstCut};
 use serde::Serialize;
 use std::collections::HashMap;
 
@@ -185,13 +185,7 @@ pub fn drafting_with_progress(
         let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
         progress(k, 4 * options.runs);
     };
-    let exact = with_setup(
-        Setup {
-            model: Some(options.hand),
-            ..Setup::default()
-        },
-        || p.construct(true),
-    )?;
+    let exact = p.construct(BoardConfig::DRAWING.with_model(options.hand))?;
     let (mut samples, failed, first_failure) = sample(p, options, &tick);
     // The budget: the same drawings by a hand with one kind of error only.
     let h = options.hand;
@@ -268,11 +262,8 @@ fn draw_all(
                                 model: o.hand,
                                 seed: o.seed.wrapping_add(k as u64),
                             };
-                            let setup = Setup {
-                                hand: Some(hand),
-                                ..Setup::default()
-                            };
-                            let r = with_setup(setup, || p.construct(true))
+                            let r = p
+                                .construct(BoardConfig::DRAWING.with_hand(hand))
                                 .map(|b| readings(&b))
                                 .map_err(|e| e.to_string());
                             tick();

@@ -4,9 +4,10 @@
 use super::defaults::nice_at_least;
 use super::error::SceneError;
 use super::fields::{optional_positive, Fields};
+use super::procedure::ReadContext;
 use crate::kernel::tolerance::PARALLEL_DEG_EPS;
-use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
-use crate::statics::funicular::{self, Force, Resolution, SystemDrawing, SystemResults};
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
+use crate::statics::funicular::{self, Force, Resolution, SystemDrawing};
 use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
@@ -235,7 +236,7 @@ impl ForceSystemScene {
     }
 
     /// The problem the scene describes.
-    pub fn problem(&self) -> ForceSystemProblem {
+    fn to_problem(&self) -> ForceSystemProblem {
         let forces: Vec<Force> = self
             .forces
             .iter()
@@ -280,48 +281,6 @@ impl ForceSystemScene {
     }
 }
 
-impl ForceSystemProblem {
-    /// Constructs the system on a fresh board. The results are `None` for the
-    /// auxiliary-force construction of two parallel forces, whose one constructed value (the
-    /// distance a of the resultant) is in the protocol with its check.
-    pub fn construct(
-        &self,
-        recording: bool,
-    ) -> Result<(Board, Option<SystemResults>), ConstructionError> {
-        let mut board = Board::for_construction(recording);
-        if let Some(aux) = self.auxiliary_force {
-            funicular::parallel_pair_by_auxiliary_forces(
-                &mut board,
-                self.forces[0],
-                self.forces[1],
-                aux,
-                &self.drawing,
-            )?;
-            return Ok((board, None));
-        }
-        let r = funicular::construct_system(
-            &mut board,
-            &self.forces,
-            &self.drawing,
-            &self.resolutions,
-        )?;
-        Ok((board, Some(r)))
-    }
-
-    /// Title, source and scale bars.
-    pub fn figure_meta(&self) -> FigureMeta {
-        let d = &self.drawing;
-        FigureMeta {
-            title: self.title.clone(),
-            source: self.source.clone(),
-            scales: vec![
-                ScaleBar::length(d.length_scale, "m"),
-                ScaleBar::force(d.force_scale),
-            ],
-        }
-    }
-}
-
 impl super::Procedure for ForceSystemScene {
     const NAME: &'static str = "force_system";
     const ABOUT: &'static str = "forces in the plane: force and funicular polygons, resultant, couple, resolution along two lines (LH I A, C.1-2)";
@@ -355,19 +314,42 @@ impl super::Procedure for ForceSystemScene {
     type Problem = ForceSystemProblem;
     type Results = Option<funicular::SystemResults>;
 
-    fn validate(&self, origin: &str) -> Result<(), SceneError> {
-        self.check_values(origin)
-    }
-    fn problem(&self) -> ForceSystemProblem {
-        ForceSystemScene::problem(self)
+    fn problem(&self, ctx: &ReadContext) -> Result<ForceSystemProblem, SceneError> {
+        self.check_values(ctx.origin)?;
+        Ok(self.to_problem())
     }
     fn construct(
         problem: &ForceSystemProblem,
-        recording: bool,
+        config: BoardConfig,
     ) -> Result<(Board, Option<funicular::SystemResults>), ConstructionError> {
-        problem.construct(recording)
+        let mut board = Board::new(config);
+        if let Some(aux) = problem.auxiliary_force {
+            funicular::parallel_pair_by_auxiliary_forces(
+                &mut board,
+                problem.forces[0],
+                problem.forces[1],
+                aux,
+                &problem.drawing,
+            )?;
+            return Ok((board, None));
+        }
+        let r = funicular::construct_system(
+            &mut board,
+            &problem.forces,
+            &problem.drawing,
+            &problem.resolutions,
+        )?;
+        Ok((board, Some(r)))
     }
     fn figure_meta(problem: &ForceSystemProblem) -> FigureMeta {
-        problem.figure_meta()
+        let d = &problem.drawing;
+        FigureMeta {
+            title: problem.title.clone(),
+            source: problem.source.clone(),
+            scales: vec![
+                ScaleBar::length(d.length_scale, "m"),
+                ScaleBar::force(d.force_scale),
+            ],
+        }
     }
 }

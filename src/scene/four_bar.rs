@@ -3,9 +3,10 @@
 
 use super::error::SceneError;
 use super::fields::Fields;
+use super::procedure::ReadContext;
 use super::types::AngleSpec;
 use crate::mechanisms::four_bar::{self, Assembly, FourBar, FourBarRequest, FourBarResults};
-use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
 use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
@@ -97,7 +98,8 @@ impl FourBarScene {
         }
     }
 
-    fn check_values(&self, origin: &str) -> Result<(), SceneError> {
+    /// The linkage, every value checked.
+    fn checked_linkage(&self, origin: &str) -> Result<FourBar, SceneError> {
         let f = Fields { origin };
         for (name, v) in [
             ("links.frame_mm", self.links.frame_mm),
@@ -107,7 +109,8 @@ impl FourBarScene {
         ] {
             f.positive(name, v)?;
         }
-        if let Err(e) = self.linkage().validate() {
+        let linkage = self.linkage();
+        if let Err(e) = linkage.validate() {
             let (input, reason) = e.describe();
             let field = match input {
                 "assembly" => "assembly".to_string(),
@@ -127,12 +130,12 @@ impl FourBarScene {
         if let Some(s) = self.drawing.and_then(|d| d.length_scale) {
             f.positive("drawing.length_scale", s)?;
         }
-        Ok(())
+        Ok(linkage)
     }
 
-    /// The problem, with the length scale chosen where none is given: the frame about 100 mm.
-    pub fn problem(&self) -> FourBarProblem {
-        let linkage = self.linkage();
+    /// The problem of checked values, with the length scale chosen where none is given: the
+    /// frame about 100 mm.
+    fn to_problem(&self, linkage: FourBar) -> FourBarProblem {
         let nice = super::defaults::nice_at_least;
         let reach = linkage.frame + linkage.crank.max(linkage.rocker);
         let thetas = self.angles.degrees();
@@ -179,17 +182,14 @@ impl super::Procedure for FourBarScene {
         let s = k.crank.min(k.rocker).min(k.frame).min(k.coupler);
         Some((s / p.length_scale, "drawing.length_scale"))
     }
-    fn validate(&self, origin: &str) -> Result<(), SceneError> {
-        self.check_values(origin)
-    }
-    fn problem(&self) -> FourBarProblem {
-        FourBarScene::problem(self)
+    fn problem(&self, ctx: &ReadContext) -> Result<FourBarProblem, SceneError> {
+        Ok(self.to_problem(self.checked_linkage(ctx.origin)?))
     }
     fn construct(
         p: &FourBarProblem,
-        recording: bool,
+        config: BoardConfig,
     ) -> Result<(Board, FourBarResults), ConstructionError> {
-        let mut board = Board::for_construction(recording);
+        let mut board = Board::new(config);
         let r = four_bar::construct(&mut board, &p.linkage, p.length_scale, &p.thetas, p.request)?;
         Ok((board, r))
     }

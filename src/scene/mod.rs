@@ -6,14 +6,15 @@
 //! for"). `graphostatik schema` prints the JSON Schema of this format.
 //!
 //! ```
-//! let scene = graphostatik::scene::Scene::from_json(r#"{
+//! use graphostatik::scene::{Procedure, SliderCrankScene};
+//! let (scene, problem) = SliderCrankScene::read(r#"{
 //!   "title": "KG Tafel I",
 //!   "mechanism": { "crank_radius_mm": 400, "rod": { "length_mm": 2000 } },
 //!   "speed": { "rpm": 50 },
 //!   "angles": { "divisions": 12 },
 //!   "outputs": ["piston_path"]
 //! }"#, "inline").unwrap();
-//! let problem = scene.problem();
+//! assert_eq!(scene.title, "KG Tafel I");
 //! assert_eq!(problem.drive.lambda(), 0.2);
 //! assert!(problem.request.piston_path && !problem.request.tangential_force);
 //! ```
@@ -65,13 +66,13 @@ pub use force_system::{
 pub use four_bar::{FourBarDrawingSpec, FourBarOutput, FourBarProblem, FourBarScene, LinksSpec};
 pub use header::{Preview, Slider};
 pub use offset_crank::{OffsetDrawingSpec, OffsetOutput, OffsetProblem, OffsetScene};
-pub use procedure::{parse_scene, scene_field, Procedure, SceneHeader, SchemaType};
+pub use procedure::{parse_scene, scene_field, Procedure, ReadContext, SceneHeader, SchemaType};
 #[cfg(feature = "schema")]
 pub use registry::schema_json;
 pub use registry::{AnyProblem, AnyScene, Entry, REGISTRY};
 pub use scotch_yoke::{YokeCrank, YokeDrawingSpec, YokeOutput, YokeProblem, YokeScene};
 pub use shaft::{ShaftProblem, ShaftScene, TorqueSpec};
-pub use slider_crank::Problem;
+pub use slider_crank::SliderCrankProblem;
 pub use slotted_link::{LinkDrawingSpec, LinkOutput, LinkProblem, LinkScene, LinkSpec};
 pub use truss::{TrussProblem, TrussScene};
 pub use types::*;

@@ -2,11 +2,12 @@
 
 use super::error::SceneError;
 use super::fields::Fields;
+use super::procedure::ReadContext;
 use super::types::{AngleSpec, Rod, Speed};
 use crate::mechanisms::offset_crank::{
     self, OffsetCrank, OffsetRequest, OffsetResults, OffsetScales,
 };
-use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
 use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
@@ -132,7 +133,7 @@ impl OffsetScene {
 
     /// The problem, with the scales chosen where none are given: the crank circle about 60 mm
     /// across, v about 30 mm, P about 40 mm.
-    pub fn problem(&self) -> OffsetProblem {
+    fn to_problem(&self) -> OffsetProblem {
         let r = self.crank_radius_mm;
         let v = self.speed.crank_pin_speed(r);
         let crank = OffsetCrank {
@@ -226,17 +227,15 @@ impl super::Procedure for OffsetScene {
             .flatten()
             .min_by(|a, b| a.0.total_cmp(&b.0))
     }
-    fn validate(&self, origin: &str) -> Result<(), SceneError> {
-        self.check_values(origin)
-    }
-    fn problem(&self) -> OffsetProblem {
-        OffsetScene::problem(self)
+    fn problem(&self, ctx: &ReadContext) -> Result<OffsetProblem, SceneError> {
+        self.check_values(ctx.origin)?;
+        Ok(self.to_problem())
     }
     fn construct(
         p: &OffsetProblem,
-        recording: bool,
+        config: BoardConfig,
     ) -> Result<(Board, OffsetResults), ConstructionError> {
-        let mut board = Board::for_construction(recording);
+        let mut board = Board::new(config);
         let r = offset_crank::construct(&mut board, &p.crank, p.scales, &p.thetas, p.request)?;
         Ok((board, r))
     }

@@ -1,13 +1,13 @@
 //! The [`Procedure`] trait: what a book procedure is to the scene format.
 //!
 //! A procedure is one scene type that implements [`Procedure`]: its header fields come from
-//! the crate-internal `scene_struct!` macro, its checks of the values from
-//! [`Procedure::validate`], and its construction, figure metadata and outputs from the other
-//! items. Adding a procedure is its own module and one line in the registry
+//! the crate-internal `scene_struct!` macro; [`Procedure::problem`] reads the parsed scene into
+//! the problem it describes, refusing a value that does not hold; the construction, figure
+//! metadata and outputs come from the other items. Adding a procedure is its own module and one line in the registry
 //! ([`REGISTRY`](super::REGISTRY)).
 
 use super::error::SceneError;
-use crate::protocol::{Board, ConstructionError, FigureMeta};
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta};
 use std::fmt::Debug;
 
 /// The header every scene starts with (`procedure`, `title`, `source`, `notes`), declared once
@@ -43,14 +43,15 @@ impl<T> SchemaType for T {}
 /// `procedure` field through [`REGISTRY`](super::REGISTRY).
 ///
 /// ```
+/// use graphostatik::protocol::BoardConfig;
 /// use graphostatik::scene::{BeamScene, Procedure};
-/// let scene: BeamScene = graphostatik::scene::parse_scene(r#"{
+/// let (scene, problem) = BeamScene::read(r#"{
 ///   "procedure": "beam", "title": "LH Abb. 24",
 ///   "beam": { "supports_m": [0, 6] },
 ///   "point_loads": [ { "x_m": 2, "kg": 600 } ]
 /// }"#, "inline").unwrap();
-/// let problem = BeamScene::problem(&scene);
-/// let (board, results) = BeamScene::construct(&problem, true).unwrap();
+/// assert_eq!(scene.point_loads.len(), 1);
+/// let (board, results) = BeamScene::construct(&problem, BoardConfig::DRAWING).unwrap();
 /// assert!(board.all_passed());
 /// assert!((results.reactions.a - 400.0).abs() < 1e-9); // A = 600·4/6 (LH C.4)
 /// ```
@@ -68,14 +69,19 @@ pub trait Procedure:
     /// The named results of a construction.
     type Results;
 
-    /// Checks the values after parsing; the error names the field.
-    fn validate(&self, origin: &str) -> Result<(), SceneError>;
-    /// The problem the (validated) scene describes.
-    fn problem(&self) -> Self::Problem;
-    /// Constructs the problem on a fresh board (`recording`: keep steps and checks).
+    /// The problem the parsed scene describes, in machine units with every scale chosen; a
+    /// value that does not hold is refused with an error naming its field. `ctx` says where
+    /// the scene comes from and what it is read for (the limits of a figure, or of a check).
+    fn problem(&self, ctx: &ReadContext) -> Result<Self::Problem, SceneError>;
+    /// Parses a scene of this procedure and reads it into its problem, under the limits of a
+    /// figure ([`parse_scene`]); `origin` (a file name) prefixes every error.
+    fn read(text: &str, origin: &str) -> Result<(Self, Self::Problem), SceneError> {
+        parse_scene::<Self>(text, &ReadContext::figure(origin))
+    }
+    /// Constructs the problem on fresh boards set up by `config`.
     fn construct(
         problem: &Self::Problem,
-        recording: bool,
+        config: BoardConfig,
     ) -> Result<(Board, Self::Results), ConstructionError>;
     /// Title, source and scale bars of the figure.
     fn figure_meta(problem: &Self::Problem) -> FigureMeta;
@@ -135,13 +141,52 @@ pub fn scene_field(input: &str, table: &[(&str, &str)]) -> String {
     out
 }
 
+/// Where a scene comes from and what it is read for: the limits a scene read for its checks
+/// alone (`check`, `forces`: a board in [`Mode::Checks`](crate::protocol::Mode::Checks)) are
+/// wider than those of a figure, which must fit a sheet and a protocol of some 1 KB per step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ReadContext<'a> {
+    /// The file name (or other origin) that errors name.
+    pub origin: &'a str,
+    /// The scene is read for its checks alone, not for a figure.
+    pub checks_only: bool,
+    /// The memory free for the work (bytes), which a scene read for its checks may take at
+    /// most half of; `None`: not known, not limited.
+    pub free_memory: Option<u64>,
+}
+
+impl<'a> ReadContext<'a> {
+    /// A scene read for its figure (or walk-through, protocol, export).
+    pub const fn figure(origin: &'a str) -> ReadContext<'a> {
+        ReadContext {
+            origin,
+            checks_only: false,
+            free_memory: None,
+        }
+    }
+
+    /// A scene read for its checks alone, with the memory the machine has free (the command
+    /// line passes [`available_memory`](crate::io::available_memory)).
+    pub const fn checks(origin: &'a str, free_memory: Option<u64>) -> ReadContext<'a> {
+        ReadContext {
+            origin,
+            checks_only: true,
+            free_memory,
+        }
+    }
+}
+
 /// The largest figure a scene may draw (mm on the sheet): ten metres of paper, some eight A0
 /// sheets side by side. A larger one comes from a scale typed wrong (1 : 1e-12).
 pub const MAX_SHEET_MM: f64 = 10_000.0;
 
 /// Parses a scene of one procedure, keeping field path, line and column, refusing trailing
-/// data after the JSON, then validates it, and checks that its figure fits a sheet.
-pub fn parse_scene<P: Procedure>(text: &str, origin: &str) -> Result<P, SceneError> {
+/// data after the JSON, reads it into its problem, and checks that its figure fits a sheet.
+pub fn parse_scene<P: Procedure>(
+    text: &str,
+    ctx: &ReadContext,
+) -> Result<(P, P::Problem), SceneError> {
+    let origin = ctx.origin;
     // Most scenes parse: read without tracking the path (a third of the time of a large
     // scene), and again with it only to say where one does not.
     let scene: P = match serde_json::from_str(text) {
@@ -154,8 +199,7 @@ pub fn parse_scene<P: Procedure>(text: &str, origin: &str) -> Result<P, SceneErr
             scene
         }
     };
-    scene.validate(origin)?;
-    let problem = scene.problem();
+    let problem = scene.problem(ctx)?;
     let (mm, field) = P::sheet_extent(&problem);
     let fits = mm.partial_cmp(&MAX_SHEET_MM).is_some_and(|o| o.is_le());
     if !fits && !field.is_empty() {
@@ -191,7 +235,7 @@ pub fn parse_scene<P: Procedure>(text: &str, origin: &str) -> Result<P, SceneErr
             ),
         });
     }
-    Ok(scene)
+    Ok((scene, problem))
 }
 
 pub(super) fn json_error(

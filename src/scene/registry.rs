@@ -3,8 +3,8 @@
 //! [`REGISTRY`].
 
 use super::error::SceneError;
-use super::procedure::{parse_scene, syntax_error, Procedure};
-use crate::protocol::{Board, ConstructionError, FigureMeta};
+use super::procedure::{parse_scene, syntax_error, Procedure, ReadContext};
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta};
 use std::any::Any;
 use std::fmt::Debug;
 
@@ -17,7 +17,7 @@ pub struct Entry {
     pub about: &'static str,
     /// The outputs a scene of it can ask for.
     pub outputs: &'static [&'static str],
-    parse: fn(&str, &str) -> Result<AnyScene, SceneError>,
+    parse: fn(&str, &ReadContext) -> Result<AnyScene, SceneError>,
     /// The Rust type of its scene (the schema's definition name).
     #[cfg(feature = "schema")]
     scene_type: fn() -> String,
@@ -32,7 +32,12 @@ impl Entry {
             name: P::NAME,
             about: P::ABOUT,
             outputs: P::OUTPUTS,
-            parse: |text, origin| parse_scene::<P>(text, origin).map(|s| AnyScene(Box::new(s))),
+            parse: |text, ctx| {
+                parse_scene::<P>(text, ctx).map(|(scene, problem)| AnyScene {
+                    scene: Box::new(scene),
+                    problem: AnyProblem(Box::new(ProblemOf::<P>(problem))),
+                })
+            },
             #[cfg(feature = "schema")]
             scene_type: || P::schema_name().into_owned(),
             #[cfg(feature = "schema")]
@@ -50,7 +55,7 @@ impl Debug for Entry {
 /// Every procedure a scene can name, the default (`slider_crank`, for a scene without a
 /// `procedure` field) first. Adding a procedure is one line here.
 pub static REGISTRY: &[Entry] = &[
-    Entry::of::<super::types::Scene>(),
+    Entry::of::<super::types::SliderCrankScene>(),
     Entry::of::<super::beam::BeamScene>(),
     Entry::of::<super::force_system::ForceSystemScene>(),
     Entry::of::<super::centroid::CentroidScene>(),
@@ -80,19 +85,11 @@ fn known_names() -> String {
 
 /// A scene of a procedure, type-erased.
 trait DynScene: Debug + Send + Sync {
-    fn name(&self) -> &'static str;
-    fn problem(&self) -> AnyProblem;
     fn as_any(&self) -> &dyn Any;
     fn clone_box(&self) -> Box<dyn DynScene>;
 }
 
 impl<P: Procedure> DynScene for P {
-    fn name(&self) -> &'static str {
-        P::NAME
-    }
-    fn problem(&self) -> AnyProblem {
-        AnyProblem(Box::new(ProblemOf::<P>(Procedure::problem(self))))
-    }
     fn as_any(&self) -> &dyn Any {
         self
     }
@@ -105,7 +102,7 @@ impl<P: Procedure> DynScene for P {
 trait DynProblem: Debug + Send + Sync {
     fn name(&self) -> &'static str;
     fn error_field(&self, err: &ConstructionError) -> Option<String>;
-    fn construct(&self, recording: bool) -> Result<Board, ConstructionError>;
+    fn construct(&self, config: BoardConfig) -> Result<Board, ConstructionError>;
     fn figure_meta(&self) -> FigureMeta;
     fn as_any(&self) -> &dyn Any;
     fn clone_box(&self) -> Box<dyn DynProblem>;
@@ -126,8 +123,8 @@ impl<P: Procedure> DynProblem for ProblemOf<P> {
     fn error_field(&self, err: &ConstructionError) -> Option<String> {
         P::error_field(&self.0, err)
     }
-    fn construct(&self, recording: bool) -> Result<Board, ConstructionError> {
-        P::construct(&self.0, recording).map(|(b, _)| b)
+    fn construct(&self, config: BoardConfig) -> Result<Board, ConstructionError> {
+        P::construct(&self.0, config).map(|(b, _)| b)
     }
     fn figure_meta(&self) -> FigureMeta {
         P::figure_meta(&self.0)
@@ -140,7 +137,7 @@ impl<P: Procedure> DynProblem for ProblemOf<P> {
     }
 }
 
-/// A validated scene of any registered procedure.
+/// A scene of any registered procedure, read into its problem.
 ///
 /// ```
 /// use graphostatik::scene::{AnyScene, TrussScene};
@@ -149,19 +146,32 @@ impl<P: Procedure> DynProblem for ProblemOf<P> {
 /// assert!(e.to_string().contains("truss"));
 /// ```
 #[derive(Debug)]
-pub struct AnyScene(Box<dyn DynScene>);
+pub struct AnyScene {
+    scene: Box<dyn DynScene>,
+    problem: AnyProblem,
+}
 
 impl Clone for AnyScene {
     fn clone(&self) -> Self {
-        AnyScene(self.0.clone_box())
+        AnyScene {
+            scene: self.scene.clone_box(),
+            problem: self.problem.clone(),
+        }
     }
 }
 
 impl AnyScene {
-    /// Parses and validates a scene of any procedure, by its `procedure` field (absent:
-    /// `slider_crank`). Malformed JSON is reported at its line and column, an unknown
-    /// procedure with the list of known ones.
+    /// Parses a scene of any procedure, by its `procedure` field (absent: `slider_crank`),
+    /// and reads it into its problem under the limits of a figure. Malformed JSON is
+    /// reported at its line and column, an unknown procedure with the list of known ones.
     pub fn from_json(text: &str, origin: &str) -> Result<AnyScene, SceneError> {
+        AnyScene::read(text, &ReadContext::figure(origin))
+    }
+
+    /// [`AnyScene::from_json`] for what `ctx` says the scene is read for (its checks alone
+    /// may take a larger scene than a figure).
+    pub fn read(text: &str, ctx: &ReadContext) -> Result<AnyScene, SceneError> {
+        let origin = ctx.origin;
         let name = Self::procedure_of(text, origin)?;
         let e = match name {
             None => &REGISTRY[0],
@@ -175,7 +185,7 @@ impl AnyScene {
                 ),
             })?,
         };
-        (e.parse)(text, origin)
+        (e.parse)(text, ctx)
     }
 
     /// The `procedure` field alone; a syntax error anywhere in the file is reported here, at
@@ -213,28 +223,56 @@ impl AnyScene {
         }
     }
 
-    /// Reads, parses and validates a scene file of any procedure.
+    /// Reads a scene file of any procedure ([`AnyScene::from_json`]).
     pub fn load(path: &std::path::Path) -> Result<AnyScene, SceneError> {
+        Self::load_with(path, None)
+    }
+
+    /// Reads a scene file for its checks alone ([`ReadContext::checks`]), which may be
+    /// larger than a figure's, with the memory free for the work.
+    pub fn load_for_checks(
+        path: &std::path::Path,
+        free_memory: Option<u64>,
+    ) -> Result<AnyScene, SceneError> {
+        Self::load_with(path, Some(free_memory))
+    }
+
+    /// A scene file read for a figure (`checks`: `None`) or for its checks alone with the
+    /// memory free.
+    fn load_with(
+        path: &std::path::Path,
+        checks: Option<Option<u64>>,
+    ) -> Result<AnyScene, SceneError> {
         let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
             path: path.display().to_string(),
             message: e.to_string(),
         })?;
-        AnyScene::from_json(&text, &path.display().to_string())
+        let origin = path.display().to_string();
+        let ctx = match checks {
+            None => ReadContext::figure(&origin),
+            Some(free) => ReadContext::checks(&origin, free),
+        };
+        AnyScene::read(&text, &ctx)
     }
 
     /// The procedure's name (`"truss"`).
     pub fn procedure(&self) -> &'static str {
-        self.0.name()
+        self.problem.procedure()
     }
 
     /// The scene as its own type, if it is one: `scene.get::<TrussScene>()`.
     pub fn get<P: Procedure>(&self) -> Option<&P> {
-        self.0.as_any().downcast_ref::<P>()
+        self.scene.as_any().downcast_ref::<P>()
     }
 
     /// The problem the scene describes.
-    pub fn problem(&self) -> AnyProblem {
-        self.0.problem()
+    pub fn problem(&self) -> &AnyProblem {
+        &self.problem
+    }
+
+    /// The problem the scene describes, the scene itself dropped.
+    pub fn into_problem(self) -> AnyProblem {
+        self.problem
     }
 }
 
@@ -260,9 +298,10 @@ impl AnyProblem {
         self.0.as_any().downcast_ref::<P::Problem>()
     }
 
-    /// Constructs the problem on a fresh board (the results are in the protocol).
-    pub fn construct(&self, recording: bool) -> Result<Board, ConstructionError> {
-        self.0.construct(recording)
+    /// Constructs the problem on fresh boards set up by `config` (the results are in the
+    /// protocol).
+    pub fn construct(&self, config: BoardConfig) -> Result<Board, ConstructionError> {
+        self.0.construct(config)
     }
 
     /// Title, source and scale bars of the figure.

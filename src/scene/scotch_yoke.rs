@@ -2,11 +2,12 @@
 
 use super::error::SceneError;
 use super::fields::Fields;
+use super::procedure::ReadContext;
 use super::slider_crank::{check_crank, crank_radius};
 use super::types::{AngleSpec, Rod, Speed};
 use crate::crank::{Angles, Drawing};
 use crate::mechanisms::scotch_yoke::{self, Yoke, YokeRequest, YokeResults};
-use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
 use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
@@ -139,7 +140,7 @@ impl YokeScene {
 
     /// The problem the scene describes, with the scales chosen where none are given: the
     /// crank circle about 100 mm across, v about 30 mm, v²/R about 30 mm.
-    pub fn problem(&self) -> YokeProblem {
+    fn to_problem(&self) -> YokeProblem {
         let r = self.radius();
         let v = self.speed.crank_pin_speed(r);
         let d = self.drawing.unwrap_or(YokeDrawingSpec {
@@ -172,38 +173,6 @@ impl YokeScene {
                 velocity: self.outputs.contains(&YokeOutput::Velocity),
                 acceleration: self.outputs.contains(&YokeOutput::Acceleration),
             },
-        }
-    }
-}
-
-impl YokeProblem {
-    /// Constructs the yoke (and the slider-crank beside it) on a fresh board.
-    pub fn construct(&self, recording: bool) -> Result<(Board, YokeResults), ConstructionError> {
-        let mut board = Board::for_construction(recording);
-        let r = scotch_yoke::construct(
-            &mut board,
-            &self.yoke,
-            &self.drawing,
-            &self.angles,
-            self.request,
-        )?;
-        Ok((board, r))
-    }
-
-    /// Title, source and scale bars.
-    pub fn figure_meta(&self) -> FigureMeta {
-        let d = &self.drawing;
-        let mut scales = vec![ScaleBar::length(d.length_scale, "m")];
-        if self.request.velocity {
-            scales.push(ScaleBar::velocity(d.velocity_scale));
-        }
-        if self.request.acceleration {
-            scales.push(ScaleBar::acceleration(d.acceleration_scale));
-        }
-        FigureMeta {
-            title: self.title.clone(),
-            source: self.source.clone(),
-            scales,
         }
     }
 }
@@ -252,19 +221,37 @@ impl super::Procedure for YokeScene {
     type Problem = YokeProblem;
     type Results = YokeResults;
 
-    fn validate(&self, origin: &str) -> Result<(), SceneError> {
-        self.check_values(origin)
-    }
-    fn problem(&self) -> YokeProblem {
-        YokeScene::problem(self)
+    fn problem(&self, ctx: &ReadContext) -> Result<YokeProblem, SceneError> {
+        self.check_values(ctx.origin)?;
+        Ok(self.to_problem())
     }
     fn construct(
         problem: &YokeProblem,
-        recording: bool,
+        config: BoardConfig,
     ) -> Result<(Board, YokeResults), ConstructionError> {
-        problem.construct(recording)
+        let mut board = Board::new(config);
+        let r = scotch_yoke::construct(
+            &mut board,
+            &problem.yoke,
+            &problem.drawing,
+            &problem.angles,
+            problem.request,
+        )?;
+        Ok((board, r))
     }
     fn figure_meta(problem: &YokeProblem) -> FigureMeta {
-        problem.figure_meta()
+        let d = &problem.drawing;
+        let mut scales = vec![ScaleBar::length(d.length_scale, "m")];
+        if problem.request.velocity {
+            scales.push(ScaleBar::velocity(d.velocity_scale));
+        }
+        if problem.request.acceleration {
+            scales.push(ScaleBar::acceleration(d.acceleration_scale));
+        }
+        FigureMeta {
+            title: problem.title.clone(),
+            source: problem.source.clone(),
+            scales,
+        }
     }
 }

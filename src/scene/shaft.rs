@@ -4,7 +4,8 @@ use super::beam::BeamDrawingSpec;
 use super::defaults::nice_at_least;
 use super::error::SceneError;
 use super::fields::{optional_positive, Fields};
-use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
+use super::procedure::ReadContext;
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::shaft::{self, Shaft, ShaftRow, Torque};
 use crate::statics::{BeamDrawing, PointLoad};
 use serde::{Deserialize, Serialize};
@@ -177,7 +178,7 @@ impl ShaftScene {
     }
 
     /// The problem the scene describes.
-    pub fn problem(&self) -> ShaftProblem {
+    fn to_problem(&self) -> ShaftProblem {
         let [a, b] = self.shaft.supports_m;
         let ends = self.shaft.ends_m.unwrap_or([a, b]);
         let reach = ends[0].abs().max(ends[1].abs());
@@ -239,40 +240,6 @@ impl ShaftScene {
     }
 }
 
-impl ShaftProblem {
-    /// Constructs the shaft on a fresh board.
-    pub fn construct(&self, recording: bool) -> Result<(Board, Vec<ShaftRow>), ConstructionError> {
-        let mut board = Board::for_construction(recording);
-        let mut r = shaft::construct_shaft(&mut board, &self.shaft, &self.drawing)?;
-        r.iter_mut().for_each(|row| row.x += self.offset);
-        Ok((board, r))
-    }
-
-    /// Title, source and scale bars.
-    pub fn figure_meta(&self) -> FigureMeta {
-        use crate::fmt::num;
-        let d = &self.drawing;
-        let ms = d.length_scale / 1000.0 * d.pole_distance;
-        FigureMeta {
-            title: self.title.clone(),
-            source: super::fields::source_line(
-                &self.source,
-                &format!(
-                    "planes at {}°, α0 = {}, pole distance H = {} kg",
-                    num(self.shaft.angle_deg, 3),
-                    num(self.shaft.alpha0, 3),
-                    num(d.pole_distance, 6)
-                ),
-            ),
-            scales: vec![
-                ScaleBar::length(d.length_scale, "m"),
-                ScaleBar::force(d.force_scale),
-                ScaleBar::moment(ms),
-            ],
-        }
-    }
-}
-
 impl super::Procedure for ShaftScene {
     const NAME: &'static str = "shaft";
     const ABOUT: &'static str =
@@ -294,19 +261,39 @@ impl super::Procedure for ShaftScene {
     type Problem = ShaftProblem;
     type Results = Vec<ShaftRow>;
 
-    fn validate(&self, origin: &str) -> Result<(), SceneError> {
-        self.check_values(origin)
-    }
-    fn problem(&self) -> ShaftProblem {
-        ShaftScene::problem(self)
+    fn problem(&self, ctx: &ReadContext) -> Result<ShaftProblem, SceneError> {
+        self.check_values(ctx.origin)?;
+        Ok(self.to_problem())
     }
     fn construct(
         problem: &ShaftProblem,
-        recording: bool,
+        config: BoardConfig,
     ) -> Result<(Board, Vec<ShaftRow>), ConstructionError> {
-        problem.construct(recording)
+        let mut board = Board::new(config);
+        let mut r = shaft::construct_shaft(&mut board, &problem.shaft, &problem.drawing)?;
+        r.iter_mut().for_each(|row| row.x += problem.offset);
+        Ok((board, r))
     }
     fn figure_meta(problem: &ShaftProblem) -> FigureMeta {
-        problem.figure_meta()
+        use crate::fmt::num;
+        let d = &problem.drawing;
+        let ms = d.length_scale / 1000.0 * d.pole_distance;
+        FigureMeta {
+            title: problem.title.clone(),
+            source: super::fields::source_line(
+                &problem.source,
+                &format!(
+                    "planes at {}°, α0 = {}, pole distance H = {} kg",
+                    num(problem.shaft.angle_deg, 3),
+                    num(problem.shaft.alpha0, 3),
+                    num(d.pole_distance, 6)
+                ),
+            ),
+            scales: vec![
+                ScaleBar::length(d.length_scale, "m"),
+                ScaleBar::force(d.force_scale),
+                ScaleBar::moment(ms),
+            ],
+        }
     }
 }

@@ -4,16 +4,17 @@
 use super::defaults;
 use super::error::SceneError;
 use super::fields::Fields;
-use super::procedure::{parse_scene, Procedure};
+use super::procedure::Procedure;
+use super::procedure::ReadContext;
 use super::types::*;
 use crate::crank::{self, Angles, CrankDrive, CrankResults, Drawing, PistonForce, Request};
 use crate::kernel::tolerance::MAX_DIVISIONS;
 use crate::kernel::tolerance::MIN_ROD_EXCESS;
-use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
 
 /// A validated scene, ready to construct.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Problem {
+pub struct SliderCrankProblem {
     /// Title written on the figure.
     pub title: String,
     /// Book reference written under the title.
@@ -28,22 +29,7 @@ pub struct Problem {
     pub request: Request,
 }
 
-impl Scene {
-    /// Parses and validates a slider-crank scene; `origin` (a file name) prefixes every error
-    /// message.
-    pub fn from_json(text: &str, origin: &str) -> Result<Scene, SceneError> {
-        parse_scene(text, origin)
-    }
-
-    /// Reads, parses and validates a scene file.
-    pub fn load(path: &std::path::Path) -> Result<Scene, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
-            path: path.display().to_string(),
-            message: e.to_string(),
-        })?;
-        Scene::from_json(&text, &path.display().to_string())
-    }
-
+impl SliderCrankScene {
     fn check_values(&self, origin: &str) -> Result<(), SceneError> {
         let f = Fields { origin };
         let r = self.mechanism.check(f)?;
@@ -134,7 +120,7 @@ impl Scene {
     }
 
     /// Maps the validated scene to the problem the crank procedures solve.
-    pub fn problem(&self) -> Problem {
+    fn to_problem(&self) -> SliderCrankProblem {
         let r = self.crank_radius();
         let l = self.mechanism.rod_length();
         let v = self.speed.crank_pin_speed(r);
@@ -156,7 +142,7 @@ impl Scene {
         let mut request = Request::default();
         for o in &self.outputs {
             match o {
-                Output::PistonPath => {
+                CrankOutput::PistonPath => {
                     let methods = self
                         .piston_path_methods
                         .clone()
@@ -168,7 +154,7 @@ impl Scene {
                         }
                     }
                 }
-                Output::Velocity => {
+                CrankOutput::Velocity => {
                     let methods = self
                         .velocity_methods
                         .clone()
@@ -180,20 +166,20 @@ impl Scene {
                         }
                     }
                 }
-                Output::RodForce => request.rod_force = true,
-                Output::GuideForce => request.guide_force = true,
-                Output::TangentialForce => request.tangential_force = true,
-                Output::RadialForce => request.radial_force = true,
-                Output::Acceleration => request.acceleration = true,
-                Output::MaxVelocity => request.max_velocity = true,
-                Output::PolarDiagrams => {
+                CrankOutput::RodForce => request.rod_force = true,
+                CrankOutput::GuideForce => request.guide_force = true,
+                CrankOutput::TangentialForce => request.tangential_force = true,
+                CrankOutput::RadialForce => request.radial_force = true,
+                CrankOutput::Acceleration => request.acceleration = true,
+                CrankOutput::MaxVelocity => request.max_velocity = true,
+                CrankOutput::PolarDiagrams => {
                     request.tangential_force = true;
                     request.polar_diagrams = true;
                 }
             }
         }
         let drawing = defaults::drawing(self.drawing.as_ref(), &drive);
-        Problem {
+        SliderCrankProblem {
             title: self.title.clone(),
             source: self.source.clone().unwrap_or_default(),
             drive,
@@ -428,50 +414,7 @@ impl Speed {
     }
 }
 
-impl Problem {
-    /// What the sheet writes besides the construction: title, source and the scale bars.
-    pub fn figure_meta(&self) -> FigureMeta {
-        let d = &self.drawing;
-        let r = &self.request;
-        let mut scales = vec![ScaleBar::length(d.length_scale, "mm")];
-        if r.velocity_parallel || r.velocity_instant_centre || r.max_velocity {
-            scales.push(ScaleBar::velocity(d.velocity_scale));
-        }
-        if r.acceleration {
-            scales.push(ScaleBar::acceleration(d.acceleration_scale));
-        }
-        if r.rod_force || r.guide_force || r.tangential_force || r.radial_force {
-            scales.push(ScaleBar::force(d.force_scale));
-        }
-        let rod = if self.drive.finite_rod {
-            format!(
-                "R = {} mm, L = {} mm (R/L = 1/{})",
-                crate::fmt::num(self.drive.crank_radius, 3),
-                crate::fmt::num(self.drive.rod_length, 3),
-                crate::fmt::num(self.drive.rod_length / self.drive.crank_radius, 3)
-            )
-        } else {
-            format!(
-                "R = {} mm, infinitely long rod",
-                crate::fmt::num(self.drive.crank_radius, 3)
-            )
-        };
-        let source = if self.source.is_empty() {
-            rod
-        } else {
-            format!(
-                "{} — {rod}, v = {} m/s",
-                self.source,
-                crate::fmt::num(self.drive.crank_pin_speed, 4)
-            )
-        };
-        FigureMeta {
-            title: self.title.clone(),
-            source,
-            scales,
-        }
-    }
-
+impl SliderCrankProblem {
     /// The size of the figure on the sheet (mm), for the tolerance.
     pub fn figure_size(&self) -> f64 {
         let d = &self.drawing;
@@ -485,22 +428,9 @@ impl Problem {
                 0.0
             }
     }
-
-    /// Constructs the problem on a fresh board (`recording`: keep steps and checks).
-    pub fn construct(&self, recording: bool) -> Result<(Board, CrankResults), ConstructionError> {
-        let mut board = Board::new(self.figure_size(), recording);
-        let res = crank::construct(
-            &mut board,
-            &self.drive,
-            &self.drawing,
-            &self.angles,
-            &self.request,
-        )?;
-        Ok((board, res))
-    }
 }
 
-impl Procedure for Scene {
+impl Procedure for SliderCrankScene {
     const NAME: &'static str = "slider_crank";
     const ABOUT: &'static str = "the slider-crank: piston path, piston velocity, rod, guide, radial and tangential forces (LH II, KG XIV B)";
     const OUTPUTS: &'static [&'static str] = &[
@@ -516,7 +446,7 @@ impl Procedure for Scene {
     ];
     const GEOMETRY_FIELD: &'static str = "mechanism";
 
-    fn sheet_extent(p: &Problem) -> (f64, &'static str) {
+    fn sheet_extent(p: &SliderCrankProblem) -> (f64, &'static str) {
         let d = &p.drawing;
         let length = (2.0 * p.drive.crank_radius + p.drive.rod_length) / d.length_scale;
         let force = 3.0 * p.drive.piston_force.max_abs() / d.force_scale;
@@ -534,7 +464,7 @@ impl Procedure for Scene {
             super::fields::larger(length, force)
         }
     }
-    fn smallest_part(p: &Problem) -> Option<(f64, &'static str)> {
+    fn smallest_part(p: &SliderCrankProblem) -> Option<(f64, &'static str)> {
         let (d, r) = (&p.drawing, &p.request);
         let forces = r.rod_force || r.guide_force || r.tangential_force || r.radial_force;
         let parts = [
@@ -563,22 +493,66 @@ impl Procedure for Scene {
             .flatten()
             .min_by(|a, b| a.0.total_cmp(&b.0))
     }
-    type Problem = Problem;
+    type Problem = SliderCrankProblem;
     type Results = CrankResults;
 
-    fn validate(&self, origin: &str) -> Result<(), SceneError> {
-        self.check_values(origin)
-    }
-    fn problem(&self) -> Problem {
-        Scene::problem(self)
+    fn problem(&self, ctx: &ReadContext) -> Result<SliderCrankProblem, SceneError> {
+        self.check_values(ctx.origin)?;
+        Ok(self.to_problem())
     }
     fn construct(
-        problem: &Problem,
-        recording: bool,
+        problem: &SliderCrankProblem,
+        config: BoardConfig,
     ) -> Result<(Board, CrankResults), ConstructionError> {
-        problem.construct(recording)
+        let mut board = Board::new(config).with_figure_size(problem.figure_size());
+        let res = crank::construct(
+            &mut board,
+            &problem.drive,
+            &problem.drawing,
+            &problem.angles,
+            &problem.request,
+        )?;
+        Ok((board, res))
     }
-    fn figure_meta(problem: &Problem) -> FigureMeta {
-        problem.figure_meta()
+    fn figure_meta(problem: &SliderCrankProblem) -> FigureMeta {
+        let d = &problem.drawing;
+        let r = &problem.request;
+        let mut scales = vec![ScaleBar::length(d.length_scale, "mm")];
+        if r.velocity_parallel || r.velocity_instant_centre || r.max_velocity {
+            scales.push(ScaleBar::velocity(d.velocity_scale));
+        }
+        if r.acceleration {
+            scales.push(ScaleBar::acceleration(d.acceleration_scale));
+        }
+        if r.rod_force || r.guide_force || r.tangential_force || r.radial_force {
+            scales.push(ScaleBar::force(d.force_scale));
+        }
+        let rod = if problem.drive.finite_rod {
+            format!(
+                "R = {} mm, L = {} mm (R/L = 1/{})",
+                crate::fmt::num(problem.drive.crank_radius, 3),
+                crate::fmt::num(problem.drive.rod_length, 3),
+                crate::fmt::num(problem.drive.rod_length / problem.drive.crank_radius, 3)
+            )
+        } else {
+            format!(
+                "R = {} mm, infinitely long rod",
+                crate::fmt::num(problem.drive.crank_radius, 3)
+            )
+        };
+        let source = if problem.source.is_empty() {
+            rod
+        } else {
+            format!(
+                "{} — {rod}, v = {} m/s",
+                problem.source,
+                crate::fmt::num(problem.drive.crank_pin_speed, 4)
+            )
+        };
+        FigureMeta {
+            title: problem.title.clone(),
+            source,
+            scales,
+        }
     }
 }

@@ -2,9 +2,10 @@
 
 use super::error::SceneError;
 use super::fields::Fields;
+use super::procedure::ReadContext;
 use super::types::{AngleSpec, Speed};
 use crate::mechanisms::slotted_link::{self, LinkRequest, LinkResults, SlottedLink};
-use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
 use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
@@ -117,7 +118,7 @@ impl LinkScene {
 
     /// The problem the scene describes, with the scales chosen where none are given: the
     /// lever about 100 mm long, c₂ about 40 mm.
-    pub fn problem(&self) -> LinkProblem {
+    fn to_problem(&self) -> LinkProblem {
         let l = &self.link;
         let r = l.crank_radius_mm;
         let link = SlottedLink {
@@ -182,17 +183,15 @@ impl super::Procedure for LinkScene {
             crank
         })
     }
-    fn validate(&self, origin: &str) -> Result<(), SceneError> {
-        self.check_values(origin)
-    }
-    fn problem(&self) -> LinkProblem {
-        LinkScene::problem(self)
+    fn problem(&self, ctx: &ReadContext) -> Result<LinkProblem, SceneError> {
+        self.check_values(ctx.origin)?;
+        Ok(self.to_problem())
     }
     fn construct(
         p: &LinkProblem,
-        recording: bool,
+        config: BoardConfig,
     ) -> Result<(Board, LinkResults), ConstructionError> {
-        let mut board = Board::for_construction(recording);
+        let mut board = Board::new(config);
         let r = slotted_link::construct(&mut board, &p.link, p.scales, &p.phis, p.request)?;
         Ok((board, r))
     }

@@ -2,8 +2,9 @@
 
 use super::error::SceneError;
 use super::fields::optional_positive;
+use super::procedure::ReadContext;
 use crate::kernel::{Point, Vector};
-use crate::protocol::{Board, ConstructionError, FigureMeta, ScaleBar};
+use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
 use crate::truss::cremona::{self, CaseResult, TrussDrawing};
 use crate::truss::envelope::{Combination, EnvelopeRule};
 use crate::truss::matrix::{self, Determinacy};
@@ -18,13 +19,13 @@ use serde::{Deserialize, Serialize};
 pub const MAX_JOINTS: usize = 20_000;
 
 /// Most joints a scene may have where only its checks are kept (`check`, `forces`:
-/// [`checks_only`](crate::protocol::checks_only)): the plan, the solve and the checks are
+/// [`ReadContext::checks`]): the plan, the solve and the checks are
 /// linear in time and memory, some 1 KB per joint.
 pub const MAX_JOINTS_CHECKED: usize = 100_000;
 
 /// The limits that hold for a scene read now: for its checks alone, or for its figure.
-fn limits() -> (usize, usize) {
-    if crate::protocol::checks_only() {
+fn limits(ctx: &ReadContext) -> (usize, usize) {
+    if ctx.checks_only {
         (MAX_JOINTS_CHECKED, MAX_CHECKED_STEPS)
     } else {
         (MAX_JOINTS, MAX_RECORDED_STEPS)
@@ -289,15 +290,17 @@ pub struct TrussProblem {
 }
 
 impl TrussScene {
-    fn check_values(&self, origin: &str) -> Result<(), SceneError> {
-        let index = self.check_joints(origin)?;
+    /// The truss the scene describes, every value checked under the limits `ctx` sets.
+    fn checked_truss(&self, ctx: &ReadContext) -> Result<Truss, SceneError> {
+        let origin = ctx.origin;
+        let index = self.check_joints(ctx)?;
         self.check_coincident_joints(origin)?;
         let names = self.check_members(origin, &index)?;
         self.check_supports(origin, &index)?;
         self.check_loads(origin, &index)?;
         let truss = self.truss();
         self.check_case_names(origin, &truss)?;
-        self.check_cost(origin, &truss)?;
+        self.check_cost(ctx, &truss)?;
         if let Some(d) = &self.drawing {
             optional_positive(
                 origin,
@@ -308,20 +311,22 @@ impl TrussScene {
             )?;
         }
         if !self.diagonal_pairs.is_empty() {
-            return self.check_pairs(origin, &names, &truss);
-        }
-        if self.diagonal_mode.is_some() {
+            self.check_pairs(origin, &names, &truss)?;
+        } else if self.diagonal_mode.is_some() {
             return Err(invalid(
                 origin,
                 "diagonal_mode".into(),
                 "a mode without diagonal_pairs".into(),
             ));
+        } else {
+            Self::check_stability(origin, &truss)?;
         }
-        Self::check_stability(origin, &truss)
+        Ok(truss)
     }
 
     /// At least two joints, at finite places, each named once: the index of the names.
-    fn check_joints(&self, origin: &str) -> Result<HashMap<&str, usize>, SceneError> {
+    fn check_joints(&self, ctx: &ReadContext) -> Result<HashMap<&str, usize>, SceneError> {
+        let origin = ctx.origin;
         let bad = |field: String, message: String| invalid(origin, field, message);
         if self.joints.len() < 2 {
             return Err(bad(
@@ -329,7 +334,7 @@ impl TrussScene {
                 "a truss needs at least two joints".into(),
             ));
         }
-        let (max_joints, _) = limits();
+        let (max_joints, _) = limits(ctx);
         if self.joints.len() > max_joints {
             return Err(bad(
                 "joints".into(),
@@ -632,7 +637,8 @@ impl TrussScene {
     /// `STEPS_PER_PART` steps for every joint and member in every case (twice for split
     /// diagonals), at most [`MAX_RECORDED_STEPS`] in all. The error names the field that
     /// drives the count.
-    fn check_cost(&self, origin: &str, truss: &Truss) -> Result<(), SceneError> {
+    fn check_cost(&self, ctx: &ReadContext, truss: &Truss) -> Result<(), SceneError> {
+        let origin = ctx.origin;
         let positions: usize = self
             .moving_loads
             .iter()
@@ -646,16 +652,15 @@ impl TrussScene {
         };
         let per_case = systems * (STEPS_PER_PART * (truss.joints.len() + truss.members.len()) + 20);
         let steps = cases.saturating_mul(per_case);
-        let (_, max_steps) = limits();
+        let (_, max_steps) = limits(ctx);
         let field = if positions > self.load_cases.len() {
             "moving_loads"
         } else {
             "load_cases"
         };
         if steps <= max_steps {
-            if crate::protocol::checks_only() {
-                let free = crate::io::available_memory();
-                super::fields::check_fits_memory(origin, field, steps, free)?;
+            if ctx.checks_only {
+                super::fields::check_fits_memory(origin, field, steps, ctx.free_memory)?;
             }
             return Ok(());
         }
@@ -959,8 +964,7 @@ impl TrussScene {
     }
 
     /// The problem the scene describes.
-    pub fn problem(&self) -> TrussProblem {
-        let truss = self.truss();
+    fn to_problem(&self, truss: Truss) -> TrussProblem {
         let cases = self.all_cases(&truss);
         let drawing = self.drawing_for(&truss, &cases);
         let combinations = self.combinations_of(&cases);
@@ -1075,47 +1079,6 @@ impl TrussScene {
     }
 }
 
-impl TrussProblem {
-    /// Constructs every load case on a fresh board.
-    pub fn construct(
-        &self,
-        recording: bool,
-    ) -> Result<(Board, Vec<CaseResult>), ConstructionError> {
-        let mut board = Board::new(
-            self.truss.size() * 1000.0 / self.drawing.length_scale,
-            recording,
-        );
-        let r = match self.pair_mode {
-            Some(mode) if !self.pairs.is_empty() => redundant::construct_pairs(
-                &mut board,
-                &self.truss,
-                &self.pairs,
-                mode,
-                &self.cases,
-                &self.drawing,
-            )?,
-            _ => cremona::construct_truss(&mut board, &self.truss, &self.cases, &self.drawing)?,
-        };
-        Ok((board, r))
-    }
-
-    /// Title, source and scale bars.
-    pub fn figure_meta(&self) -> FigureMeta {
-        let d = &self.drawing;
-        FigureMeta {
-            title: self.title.clone(),
-            source: super::fields::source_line(
-                &self.source,
-                "force plan (Kräfteplan), tension +, compression −",
-            ),
-            scales: vec![
-                ScaleBar::length(d.length_scale, "m"),
-                ScaleBar::force(d.force_scale),
-            ],
-        }
-    }
-}
-
 impl super::Procedure for TrussScene {
     const NAME: &'static str = "truss";
     const ABOUT: &'static str = "a truss: determinacy, reactions, Cremona plan, Ritter sections, counter-diagonals, envelopes (LH I B)";
@@ -1162,20 +1125,47 @@ impl super::Procedure for TrussScene {
     type Problem = TrussProblem;
     type Results = Vec<CaseResult>;
 
-    fn validate(&self, origin: &str) -> Result<(), SceneError> {
-        self.check_values(origin)
-    }
-    fn problem(&self) -> TrussProblem {
-        TrussScene::problem(self)
+    fn problem(&self, ctx: &ReadContext) -> Result<TrussProblem, SceneError> {
+        let truss = self.checked_truss(ctx)?;
+        Ok(self.to_problem(truss))
     }
     fn construct(
         problem: &TrussProblem,
-        recording: bool,
+        config: BoardConfig,
     ) -> Result<(Board, Vec<CaseResult>), ConstructionError> {
-        problem.construct(recording)
+        let mut board = Board::new(config)
+            .with_figure_size(problem.truss.size() * 1000.0 / problem.drawing.length_scale);
+        let r = match problem.pair_mode {
+            Some(mode) if !problem.pairs.is_empty() => redundant::construct_pairs(
+                &mut board,
+                &problem.truss,
+                &problem.pairs,
+                mode,
+                &problem.cases,
+                &problem.drawing,
+            )?,
+            _ => cremona::construct_truss(
+                &mut board,
+                &problem.truss,
+                &problem.cases,
+                &problem.drawing,
+            )?,
+        };
+        Ok((board, r))
     }
     fn figure_meta(problem: &TrussProblem) -> FigureMeta {
-        problem.figure_meta()
+        let d = &problem.drawing;
+        FigureMeta {
+            title: problem.title.clone(),
+            source: super::fields::source_line(
+                &problem.source,
+                "force plan (Kräfteplan), tension +, compression −",
+            ),
+            scales: vec![
+                ScaleBar::length(d.length_scale, "m"),
+                ScaleBar::force(d.force_scale),
+            ],
+        }
     }
 }
 

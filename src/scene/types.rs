@@ -4,7 +4,7 @@ use serde::{Deserialize, Serialize};
 
 super::header::scene_struct! {
     /// A slider-crank scene: mechanism, speed, piston force, crank angles, effects and outputs.
-    pub struct Scene {
+    pub struct SliderCrankScene {
         /// The mechanism.
         pub mechanism: Mechanism,
         /// How fast the crank turns.
@@ -18,7 +18,7 @@ super::header::scene_struct! {
         #[serde(default)]
         pub effects: Option<Effects>,
         /// What to construct; only what these depend on is constructed.
-        pub outputs: Vec<Output>,
+        pub outputs: Vec<CrankOutput>,
         /// Construction(s) of the piston path, default `["rod_arc"]`.
         #[serde(default)]
         pub piston_path_methods: Option<Vec<PistonPathMethod>>,
@@ -163,7 +163,7 @@ impl Default for Effects {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
-pub enum Output {
+pub enum CrankOutput {
     /// Piston path by the arc with the rod length (KG Abb. 1047, LH Abb. 49).
     PistonPath,
     /// Piston velocity (KG Abb. 1049, LH Abb. 53), by the `velocity_methods`.
@@ -187,16 +187,16 @@ pub enum Output {
     PolarDiagrams,
 }
 
-impl Output {
+impl CrankOutput {
     /// Whether the output is a force (needs `piston_force`).
     pub fn is_force(&self) -> bool {
         matches!(
             self,
-            Output::RodForce
-                | Output::GuideForce
-                | Output::TangentialForce
-                | Output::RadialForce
-                | Output::PolarDiagrams
+            CrankOutput::RodForce
+                | CrankOutput::GuideForce
+                | CrankOutput::TangentialForce
+                | CrankOutput::RadialForce
+                | CrankOutput::PolarDiagrams
         )
     }
 }

@@ -379,7 +379,7 @@ fn torque_rectangle(
 ///     kb: Some(1000.0) };
 /// let d = BeamDrawing { length_scale: 10.0, force_scale: 10.0, pole_distance: 500.0,
 ///     parabola_divisions: 8, origin: graphostatik::kernel::Point::origin() };
-/// let mut b = Board::new(300.0, true);
+/// let mut b = Board::recording().with_figure_size(300.0);
 /// let rows = construct_shaft(&mut b, &shaft, &d).unwrap();
 /// let at = rows.iter().find(|r| (r.x - 0.4).abs() < 1e-12).unwrap();
 /// // M1 = 300·0.4·0.6 = 72, M2 = 96: perpendicular planes give M_b = 120 kg·m.

@@ -64,7 +64,7 @@ pub use super::plan::{CaseResult, ReactionForce, TrussDrawing, ZERO_FORCE_REL};
 /// };
 /// let case = LoadCase { name: "P".into(),
 ///     loads: vec![JointLoad { joint: 2, force: Vector::new(0.0, -1000.0) }] };
-/// let mut b = Board::new(400.0, true);
+/// let mut b = Board::recording().with_figure_size(400.0);
 /// let r = construct_truss(&mut b, &t, &[case],
 ///     &TrussDrawing { length_scale: 20.0, force_scale: 20.0 }).unwrap();
 /// let s: Vec<f64> = r[0].members.iter().map(|m| m.force).collect();
