@@ -100,8 +100,8 @@ fn measure(text: &str, checks_only: bool, reps: usize) -> Option<(f64, f64)> {
     let mut peak = 0;
     for _ in 0..reps {
         let base = counting::start();
-        // Every run from the start: the rank test's LU is not taken from the run before.
-        graphostatik::truss::matrix::forget();
+        // Every run from the start: each reads its own truss, whose LU and rank test are
+        // made afresh (they travel with the truss, not from one run to the next).
         let t = Instant::now();
         check(text, checks_only)?;
         times.push(t.elapsed().as_secs_f64() * 1e3);

@@ -89,12 +89,12 @@ fn main() {
             black_box(construct_plan(&mut b, &t, &cases, &D).unwrap());
         });
         let (ts, ms) = measure(5, &|| {
-            matrix::forget();
+            t.forget_matrix();
             black_box(matrix::solve(&t, &cases[0]).unwrap());
         });
         let (tc, mc) = measure(3, &|| {
             // The rank test made afresh in every run (not taken from the run before).
-            matrix::forget();
+            t.forget_matrix();
             let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(1000.0);
             black_box(construct_truss(&mut b, &t, &cases, &D).unwrap());
             assert!(b.all_passed());

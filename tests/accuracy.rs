@@ -1,5 +1,5 @@
-//! Error bounds that predict the error (issue 12, item 2), the double-double reference replay
-//! (item 3), and the hard cases they decide (case 6).
+//! Error bounds that predict the error, the double-double reference replay, and the hard
+//! cases they decide.
 
 use graphostatik::prelude::*;
 use graphostatik::protocol::BoardConfig;
@@ -63,7 +63,7 @@ fn abb21(k2: &str) -> String {
     )
 }
 
-/// Issue 12, case 6: Abb. 21 with nearly equal and opposite forces. The partial resultants
+/// A hard case: Abb. 21 with nearly equal and opposite forces. The partial resultants
 /// meet at a glancing angle: the row says so (the cut upstream, not the 90° of its own step),
 /// and its bound covers the error; at 1e-9 kg apart the pair is refused at validation, naming
 /// the force.
@@ -113,7 +113,7 @@ fn crank(l_mm: f64, degrees: &[f64]) -> String {
     )
 }
 
-/// The crank near R/L = 1 at 90° (issue 12, case 2's measurement): the error of S, N, K grows
+/// The crank near R/L = 1 at 90° (a hard case, measured): the error of S, N, K grows
 /// with the square of the crosshead cut's amplification, and the bound follows it.
 #[test]
 fn near_a_rod_as_short_as_the_crank_the_bound_follows_the_squared_amplification() {

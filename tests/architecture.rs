@@ -1,6 +1,7 @@
 //! The shape of the source tree, checked: the layers of the crate docs use only the layers
-//! before them, no two modules import each other (directly or round a loop), and no function
-//! of a procedure runs over the length at which it should be split.
+//! before them, no two modules import each other (directly or round a loop), no function
+//! of a procedure runs over the length at which it should be split, no thread-local state
+//! outside a documented cache, and docs and comments point only at what the repository holds.
 //!
 //! An edge A → B is a path from a file of module A into module B: `crate::…`, `super::…`,
 //! `self::…`, or a child module's name. A parent's re-exports (`pub use child::X;`) declare
@@ -361,4 +362,103 @@ fn function_lengths_are_measured_through_strings_and_braces() {
     let text = "fn a() {\n    let s = \"{\";\n    let c = '}';\n}\nfn b();\npub fn c() { }\n";
     let got = function_lengths(text);
     assert_eq!(got, vec![("a".into(), 1, 4), ("c".into(), 6, 1)]);
+}
+
+/// Every text file under `dir` (recursively) with one of the extensions, skipping build
+/// output and installed packages.
+fn files_under(dir: &Path, exts: &[&str], out: &mut Vec<PathBuf>) {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
+    };
+    for e in entries {
+        let p = e.unwrap().path();
+        let name = p.file_name().unwrap_or_default().to_string_lossy();
+        if p.is_dir() {
+            if !matches!(name.as_ref(), "target" | "node_modules" | ".git") {
+                files_under(&p, exts, out);
+            }
+        } else if p.extension().is_some_and(|x| exts.iter().any(|e| x == *e)) {
+            out.push(p);
+        }
+    }
+}
+
+/// A `thread_local!` is state that a call cannot see: it may hold a cache (what is kept must
+/// not change a result), documented as one within the five lines above it, and nothing else.
+#[test]
+fn no_thread_local_state_outside_a_documented_cache() {
+    let mut found = Vec::new();
+    for p in modules().values() {
+        let text = std::fs::read_to_string(p).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        for (i, l) in lines.iter().enumerate() {
+            if !l.trim_start().starts_with(concat!("thread_", "local!")) {
+                continue;
+            }
+            let above = &lines[i.saturating_sub(5)..i];
+            let documented = above
+                .iter()
+                .any(|a| a.trim_start().starts_with("//") && a.contains("cache"));
+            if !documented {
+                found.push(format!("{}:{}", p.display(), i + 1));
+            }
+        }
+    }
+    assert!(found.is_empty(), "state a call cannot see: {found:#?}");
+}
+
+/// Where a text points outside the repository: at the list of procedures the books were
+/// read into (not shipped here) or at an issue tracker's numbers, which mean nothing to a
+/// reader of the repository. Books are cited by their sections (LH C.4, KG Abb. 1047).
+fn outside_pointers(text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let lower = text.to_lowercase();
+    let procedures = concat!("procedures", ".md");
+    for (k, _) in lower.match_indices(procedures) {
+        out.push(text[k..].chars().take(40).collect());
+    }
+    for (k, _) in lower.match_indices("issue") {
+        let rest = lower[k + 5..].trim_start_matches([' ', '#']);
+        let spaced = lower[k + 5..].starts_with([' ', '#']);
+        if spaced && rest.starts_with(|c: char| c.is_ascii_digit()) {
+            out.push(text[k..].chars().take(40).collect());
+        }
+    }
+    out
+}
+
+#[test]
+fn docs_and_comments_point_only_into_the_repository() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut files = Vec::new();
+    for dir in ["src", "tests", "benches", "examples", "fuzz", "docs", ".ci"] {
+        files_under(
+            &root.join(dir),
+            &["rs", "md", "py", "sh", "js", "html"],
+            &mut files,
+        );
+    }
+    files_under(root, &["md"], &mut files);
+    files.sort();
+    files.dedup();
+    let mut found = Vec::new();
+    for p in &files {
+        let text = std::fs::read_to_string(p).unwrap_or_default();
+        for hit in outside_pointers(&text) {
+            found.push(format!("{}: {hit}", p.display()));
+        }
+    }
+    assert!(found.is_empty(), "point into the repository: {found:#?}");
+}
+
+#[test]
+fn the_pointer_test_finds_what_it_looks_for() {
+    let issue = concat!("Iss", "ue 12, case 3");
+    assert_eq!(outside_pointers(issue).len(), 1);
+    assert_eq!(
+        outside_pointers(&format!("see {}", concat!("PROCEDURES", ".md D1"))).len(),
+        1
+    );
+    assert_eq!(outside_pointers(concat!("(iss", "ue #7)")).len(), 1);
+    assert!(outside_pointers("an issue of the book, LH C.4, 12 issues").is_empty());
 }

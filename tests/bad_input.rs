@@ -622,7 +622,7 @@ fn an_absurd_scale_is_named_as_the_cause() {
 
 #[test]
 fn a_rod_a_hair_longer_than_the_crank_is_refused_and_a_little_longer_constructs() {
-    // Issue 12, case 2: R/L = 0.999999999 failed its checks at 90°, and R/L = 1 − 1e-12 passed
+    // A hard case: R/L = 0.999999999 failed its checks at 90°, and R/L = 1 − 1e-12 passed
     // validation and was refused at 89.999999°. Near locking is refused at validation; from
     // L/R = 1 + 1.1e-6 on, every angle constructs and every check passes.
     let scene = |k: &str| {
@@ -702,7 +702,7 @@ fn render_on_every_core_writes_what_a_serial_run_writes_and_names_the_first_bad_
 
 #[test]
 fn a_bad_engine_is_refused_by_the_command_line_with_its_field_and_nothing_written() {
-    // Issue 10's bad input through the CLI: one line naming the field, exit 2, no figure.
+    // Bad input through the CLI: one line naming the field, exit 2, no figure.
     let d = tmp("engine");
     let good = include_str!("../scenes/lh_j_locomotive_dynamics.json");
     let cases = [
@@ -758,7 +758,7 @@ fn an_unknown_key_with_a_newline_is_one_line_in_the_library_error_too() {
 }
 
 /// Shell completions and the manual page come from the command line's own definition, so
-/// they know every subcommand and option (issue 14, item 5).
+/// they know every subcommand and option.
 #[test]
 fn completions_and_the_manual_page_know_every_command() {
     for shell in ["bash", "zsh", "fish", "elvish", "powershell"] {

@@ -538,7 +538,7 @@ fn lh_abb35_five_stringer_panels_shear_zero_over_the_middle_one() {
 fn equal_and_opposite_largest_moments_pass_the_largest_moment_check() {
     // +123.4 kg at 2 m and −123.4 kg (upwards) at 6 m on supports 0 and 8: M = +123.4 kg·m at
     // 2 m and −123.4 kg·m at 6 m, a tie the construction and the closed form may break
-    // differently (issue 12, case 4); shifted a little, every such beam passes.
+    // differently; shifted a little, every such beam passes.
     for shift in [0.0, 0.1, 0.25, 0.37, 0.5] {
         let beam = Beam {
             supports: [0.0, 8.0],
@@ -564,7 +564,7 @@ fn equal_and_opposite_largest_moments_pass_the_largest_moment_check() {
 
 #[test]
 fn an_absurd_pole_distance_is_refused_naming_it() {
-    // Issue 12, case 5: H = 1e12 kg puts the pole 25,000 km from the load line; H = 1e-9 kg
+    // A hard case: H = 1e12 kg puts the pole 25,000 km from the load line; H = 1e-9 kg
     // hangs the polygon 67 million km deep. Both are named, before anything is built.
     for h in ["1e12", "1e-9"] {
         let text = GOOD.replace(
@@ -581,7 +581,7 @@ fn an_absurd_pole_distance_is_refused_naming_it() {
 
 #[test]
 fn a_beam_far_from_the_origin_is_built_in_its_own_frame() {
-    // Issue 12, case 3: loads a millimetre apart on a 10 mm beam at x = 1e6 m and 1e8 m lost
+    // A hard case: loads a millimetre apart on a 10 mm beam at x = 1e6 m and 1e8 m lost
     // their digits (12 and 29 of 30 checks failed). In the beam's own frame every check
     // passes and the results are the near beam's, moved.
     let beam = |dx: f64| Beam {

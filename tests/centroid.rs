@@ -115,7 +115,7 @@ fn points(v: &[[f64; 2]]) -> Vec<graphostatik::kernel::Point> {
 
 #[test]
 fn a_sliver_polygon_is_refused_at_validation_naming_the_polygon() {
-    // Issue 12, case 7: a quadrilateral 1e-13 m thick on a 2 m length.
+    // A hard case: a quadrilateral 1e-13 m thick on a 2 m length.
     let text = r#"{ "procedure": "centroid", "title": "t", "polygon_m": [[0,0],[1,0],[2,1e-13],[1,2e-13]] }"#;
     let e = AnyScene::from_json(text, "s.json").unwrap_err().to_string();
     assert!(
@@ -135,7 +135,7 @@ fn a_sliver_polygon_is_refused_at_validation_naming_the_polygon() {
 
 #[test]
 fn a_polygon_far_from_the_origin_keeps_its_centroid() {
-    // Issue 12, case 3: a pentagon at 1e6 m had its closed-form centroid 9.2 m away, and a unit
+    // A hard case: a pentagon at 1e6 m had its closed-form centroid 9.2 m away, and a unit
     // square at 1e8 m was "of zero area". Measured from the first vertex, both are right.
     let pentagon = [[0.0, 0.0], [3.0, 0.0], [4.0, 2.0], [1.5, 3.5], [-0.5, 2.0]];
     let near = run(&pentagon, 0);

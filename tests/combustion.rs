@@ -1,4 +1,4 @@
-//! Combustion engines (KG Abb. 1056-1060, issue 11 item 5).
+//! Combustion engines (KG Abb. 1056-1060).
 
 use graphostatik::dynamics::combustion::*;
 use graphostatik::dynamics::model::{area_cm2, Kinematics};

@@ -275,7 +275,7 @@ fn lh_u_difference_of_outstroke_and_return_stroke() {
 
 #[test]
 fn a_crank_angle_of_a_billionth_of_a_degree_keeps_its_digits() {
-    // Issue 12, case 13: at θ = 1e-9° the pin was placed at 180° − θ formed in degrees, and
+    // A hard case: at θ = 1e-9° the pin was placed at 180° − θ formed in degrees, and
     // the velocity and tangential force came out 1e-5 relative off. Placed by the sine and
     // cosine of θ itself, they keep their digits.
     let d = CrankDrive {

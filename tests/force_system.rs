@@ -334,7 +334,7 @@ fn a_construction_error_names_the_scene_field_that_caused_it() {
 
 #[test]
 fn directions_5e_minus_11_degrees_apart_are_refused_either_way_round() {
-    // Issue 12, case 9: [0, 5e-11] passed validation and failed in construction, while
+    // A hard case: [0, 5e-11] passed validation and failed in construction, while
     // [5e-11, 0] was refused; both are parallel, and both are refused at validation.
     for along in ["[0, 5e-11]", "[5e-11, 0]"] {
         let text = format!(
@@ -354,7 +354,7 @@ fn directions_5e_minus_11_degrees_apart_are_refused_either_way_round() {
 
 #[test]
 fn a_force_polygon_closed_to_rounding_is_a_couple_judged_against_the_forces() {
-    // Issue 12, case 1: R = 1e-9 kg against forces of 1000 kg is closed; the system is the
+    // A hard case: R = 1e-9 kg against forces of 1000 kg is closed; the system is the
     // couple of their moment, 1000 kg·m, not equilibrium.
     let forces = [f(0.0, 0.0, 0.0, -1000.0), f(1.0, 0.0, 0.0, 999.999999999)];
     let (b, r) = run(&forces, &[]);
@@ -367,7 +367,7 @@ fn a_force_polygon_closed_to_rounding_is_a_couple_judged_against_the_forces() {
 
 #[test]
 fn forces_far_from_the_origin_keep_their_resultant_and_moment() {
-    // Issue 12, case 3: the resultant's line and its moment about the origin, for four forces
+    // A hard case: the resultant's line and its moment about the origin, for four forces
     // near the origin and the same forces 1e6 and 1e8 m away.
     let near = [
         f(0.0, 0.0, 100.0, -300.0),

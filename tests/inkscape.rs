@@ -1,4 +1,4 @@
-//! Issue 14, item 6: every bundled figure opens in Inkscape with its step layers in step
+//! Every bundled figure opens in Inkscape with its step layers in step
 //! order. Run where Inkscape is installed (`apt-get install inkscape`); elsewhere the test says
 //! so and passes, and `tests/snapshots.rs` checks the same layers' names in the text.
 //!

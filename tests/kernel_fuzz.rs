@@ -1,5 +1,5 @@
 //! The kernel's entry points under any finite input, from 1e-300 to 1e300 and back: no panic,
-//! and every outcome either typed or made of finite numbers (issue 12, item 6). A point is
+//! and every outcome either typed or made of finite numbers. A point is
 //! finite, a distance or gap is finite and not negative, a conditioning is a number.
 
 use graphostatik::kernel::{

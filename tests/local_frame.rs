@@ -1,4 +1,4 @@
-//! Issue 12, item 1: every bundled scene translated far from the origin constructs the same
+//! Every bundled scene translated far from the origin constructs the same
 //! to about 1e-12 relative: the constructions and the closed forms work in the scene's own
 //! frame, not in absolute sheet coordinates.
 

@@ -1,4 +1,4 @@
-//! The other mechanisms of KG XIV (issue 11): the scotch yoke (KG Abb. 1069) against its
+//! The other mechanisms of KG XIV: the scotch yoke (KG Abb. 1069) against its
 //! closed forms and beside the slider-crank of the same stroke; the slotted link, the offset
 //! crank and the four-bars in their modules.
 

@@ -53,8 +53,8 @@ fn case(loads: Vec<JointLoad>) -> Vec<LoadCase> {
 
 fn small(joints: &[(f64, f64)], members: &[(usize, usize)], roller_deg: f64) -> Truss {
     let (s, c) = graphostatik::kernel::angle::sin_cos_deg(roller_deg);
-    Truss {
-        joints: joints
+    Truss::new(
+        joints
             .iter()
             .enumerate()
             .map(|(i, &(x, y))| Joint {
@@ -62,7 +62,7 @@ fn small(joints: &[(f64, f64)], members: &[(usize, usize)], roller_deg: f64) -> 
                 at: Point::new(x, y),
             })
             .collect(),
-        members: members
+        members
             .iter()
             .enumerate()
             .map(|(i, &(a, b))| Member {
@@ -70,11 +70,11 @@ fn small(joints: &[(f64, f64)], members: &[(usize, usize)], roller_deg: f64) -> 
                 ends: [a, b],
             })
             .collect(),
-        supports: vec![
+        vec![
             Support::pinned(0, "A"),
             Support::roller(1, Vector::new(c, s), "B"),
         ],
-    }
+    )
 }
 
 /// A roller at joint `j` whose reaction acts at `deg` degrees, named by the joint's index.
@@ -1405,7 +1405,7 @@ fn a_truss_not_in_metres_is_refused_naming_its_joints() {
 
 #[test]
 fn a_flat_but_determinate_triangle_is_not_a_mechanism_and_its_cuts_are_flagged() {
-    // Issue 12, case 8: apex 1e-10 of the span. Determinate; member forces of 2.5e12 kg from
+    // A hard case: apex 1e-10 of the span. Determinate; member forces of 2.5e12 kg from
     // cuts at 1e-8 degrees, every such row flagged as glancing.
     let text = r#"{ "procedure": "truss", "title": "t",
         "joints": [ { "name": "I", "at_m": [0, 0] }, { "name": "II", "at_m": [2, 0] }, { "name": "III", "at_m": [1, 2e-10] } ],
@@ -1489,7 +1489,7 @@ fn a_large_determinate_truss_gets_its_rank_without_the_svd() {
 }
 
 /// The CSV table holds every digit: each force and plan length reads back as the very f64
-/// the construction found (issue 14: it rounded to 3 decimals).
+/// the construction found (it rounded to 3 decimals).
 #[test]
 fn the_csv_table_reads_back_as_the_same_numbers() {
     let p = load_scene("lh_aufgabe4_shed_roof.json");
@@ -1672,14 +1672,14 @@ fn a_large_truss_of_members_joined_at_random_is_refused_at_once() {
             });
         }
     }
-    let t = Truss {
+    let t = Truss::new(
         joints,
         members,
-        supports: vec![
+        vec![
             Support::pinned(0, "A"),
             Support::roller(1, Vector::new(0.0, 1.0), "B"),
         ],
-    };
+    );
     assert!(matches!(
         analyse(&t).determinacy,
         Determinacy::Undecided { .. }

@@ -1,4 +1,4 @@
-//! Combustion engines (KG XIV B.4, Abb. 1056-1060; PROCEDURES.md D12): the pressure in a
+//! Combustion engines (KG XIV B.4, Abb. 1056-1060): the pressure in a
 //! single-acting cylinder over its cycle from polytropic models, four-stroke over 720° of the
 //! shaft or two-stroke over 360°, with combustion at constant volume (Verpuffung, Otto) or at
 //! constant pressure (Selbstzündung, Diesel). The piston force is the gas pressure above the

@@ -1,7 +1,7 @@
 //! The four-bar linkages of KG XIV (Abb. 1043, 1045): the crank-rocker (Bogenschubkurbel),
 //! whose crank OP turns round and whose rocker AB swings, and the parallel crank
 //! (Parallelkurbel) of equal cranks and a coupler as long as the frame, as on a locomotive's
-//! coupled axles (PROCEDURES.md K8).
+//! coupled axles.
 //!
 //! Per crank angle the coupler's far joint B is the cut of two circles: the coupler length L
 //! about the pin P and the rocker length ρ about its pivot A, with the branch named (left or

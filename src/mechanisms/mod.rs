@@ -1,6 +1,6 @@
 //! The other mechanisms of KG XIV beside the straight slider-crank ([`crate::crank`]), each a
 //! procedure of ruler and compass on a [`Board`](crate::protocol::Board), checked against the
-//! closed form of its loop (PROCEDURES.md K6-K8).
+//! closed form of its loop.
 //!
 //! - [`scotch_yoke`]: the Kurbelschleife, KG Abb. 1069;
 //! - [`slotted_link`]: the oscillating slotted link (quick return), KG Abb. 1071-1072;

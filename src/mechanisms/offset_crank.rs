@@ -3,7 +3,7 @@
 //! longer lie on one line through O. They are found by the arcs L + R and L − R about O cut
 //! with the line of the stroke; between them the outstroke takes 180° + δ of the crank and the
 //! return 180° − δ, δ = arcsin(a/(L − R)) − arcsin(a/(L + R)), and the stroke is longer than
-//! 2R (PROCEDURES.md K8).
+//! 2R.
 //!
 //! Per crank angle the crosshead K is the cut of the arc L about the pin with the line of the
 //! stroke; the piston velocity is c = v·OQ/R, Q where the rod cuts the perpendicular to the

@@ -1,6 +1,6 @@
 //! The scotch yoke (Kurbelschleife, KG XIV, Abb. 1069): the crank pin slides in a slot at
 //! right angles to the stroke, so the yoke moves exactly as the pin's projection on the line
-//! of the stroke: x′ = R(1 − cos φ), c′ = v·sin φ, b′ = v²/R·cos φ (PROCEDURES.md K6).
+//! of the stroke: x′ = R(1 − cos φ), c′ = v·sin φ, b′ = v²/R·cos φ.
 //!
 //! Per crank angle the construction drops the pin onto the line of the stroke (the slot), and
 //! projects the pin's velocity v (on the tangent) and its acceleration v²/R (along the crank,

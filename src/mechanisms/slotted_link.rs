@@ -2,8 +2,7 @@
 //! crank pin C, turning about M at the uniform speed v, slides in the slotted lever DE, which
 //! swings about D and drives the table at E. The working stroke takes the crank angle 2α, the
 //! return 2β, found by the perpendiculars from M on the lever's outer positions (its tangents
-//! to the crank circle): the table's mean speeds are in the ratio v_a/v_r = β/α
-//! (PROCEDURES.md K7).
+//! to the crank circle): the table's mean speeds are in the ratio v_a/v_r = β/α.
 //!
 //! Per crank angle the construction follows KG: F is the foot of the perpendicular from M on
 //! DC (it lies on the circle over MD), G the foot of E on the line MD, and the parallel to CG

@@ -70,7 +70,7 @@ pub struct ShaftProblem {
     /// Where x = 0 of [`ShaftProblem::shaft`] lies in the scene (m): support A for a shaft
     /// farther from the scene's origin than
     /// [`REL_LOCAL_FRAME`](crate::kernel::tolerance::REL_LOCAL_FRAME) times its length, which
-    /// is then built in its own frame (issue 12, case 3); 0 otherwise.
+    /// is then built in its own frame; 0 otherwise.
     pub offset: f64,
 }
 

@@ -891,25 +891,22 @@ impl TrussScene {
             .map(|(i, j)| (j.name.as_str(), i))
             .collect();
         let o = self.local_origin();
-        Truss {
-            joints: self
-                .joints
+        Truss::new(
+            self.joints
                 .iter()
                 .map(|j| Joint {
                     name: j.name.clone(),
                     at: Point::new(j.at_m[0] - o[0], j.at_m[1] - o[1]),
                 })
                 .collect(),
-            members: self
-                .members
+            self.members
                 .iter()
                 .map(|m| Member {
                     name: m.name.clone(),
                     ends: [index[m.joints[0].as_str()], index[m.joints[1].as_str()]],
                 })
                 .collect(),
-            supports: self
-                .supports
+            self.supports
                 .iter()
                 .enumerate()
                 .map(|(i, s)| {
@@ -924,12 +921,12 @@ impl TrussScene {
                     }
                 })
                 .collect(),
-        }
+        )
     }
 
     /// The origin the truss is built from: the first joint, for a truss farther from the
     /// scene's origin than [`REL_LOCAL_FRAME`](crate::kernel::tolerance::REL_LOCAL_FRAME)
-    /// times its size (issue 12, case 3: at 1e6 m the plan lost six digits in absolute
+    /// times its size (at 1e6 m the plan lost six digits in absolute
     /// coordinates); the scene's origin otherwise, so that a truss near it is drawn as given.
     /// Member forces and reactions do not depend on where the truss stands.
     fn local_origin(&self) -> [f64; 2] {

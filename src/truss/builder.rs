@@ -171,11 +171,7 @@ impl TrussBuilder {
                 }
             });
         }
-        Ok(Truss {
-            joints,
-            members,
-            supports,
-        })
+        Ok(Truss::new(joints, members, supports))
     }
 }
 

@@ -54,14 +54,14 @@ pub use super::plan::{CaseResult, ReactionForce, TrussDrawing, ZERO_FORCE_REL};
 /// // A triangle, span 2 m, height 1 m, 1000 kg at the apex: each rafter −707 kg, the tie +500.
 /// let j = |n: &str, x, y| Joint { name: n.into(), at: Point::new(x, y) };
 /// let m = |n: &str, a, b| Member { name: n.into(), ends: [a, b] };
-/// let t = Truss {
-///     joints: vec![j("I", 0.0, 0.0), j("II", 2.0, 0.0), j("III", 1.0, 1.0)],
-///     members: vec![m("1", 0, 2), m("2", 2, 1), m("3", 0, 1)],
-///     supports: vec![
+/// let t = Truss::new(
+///     vec![j("I", 0.0, 0.0), j("II", 2.0, 0.0), j("III", 1.0, 1.0)],
+///     vec![m("1", 0, 2), m("2", 2, 1), m("3", 0, 1)],
+///     vec![
 ///         Support::pinned(0, "A"),
 ///         Support::roller(1, Vector::new(0.0, 1.0), "B"),
 ///     ],
-/// };
+/// );
 /// let case = LoadCase { name: "P".into(),
 ///     loads: vec![JointLoad { joint: 2, force: Vector::new(0.0, -1000.0) }] };
 /// let mut b = Board::recording().with_figure_size(400.0);

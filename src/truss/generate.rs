@@ -86,12 +86,12 @@ pub fn parallel_chord(web: Web, n: usize, panel: f64, height: f64) -> Truss {
             }
         }
     }
-    Truss {
+    Truss::new(
         joints,
         members,
-        supports: vec![
+        vec![
             Support::pinned(0, "A"),
             Support::roller(n, Vector::new(0.0, 1.0), "B"),
         ],
-    }
+    )
 }

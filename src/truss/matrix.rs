@@ -25,6 +25,7 @@ use super::{LoadCase, SupportKind, Truss};
 use crate::kernel::tolerance::REL_TIE_EPS_MOTION;
 use nalgebra::DMatrix;
 use serde::Serialize;
+use std::sync::Arc;
 
 pub use crate::kernel::tolerance::RANK_REL;
 
@@ -98,14 +99,14 @@ pub fn equilibrium_matrix(t: &Truss) -> DMatrix<f64> {
 /// // A triangle on a pin and a roller: s = 3 = 2·3 − 3.
 /// let j = |n: &str, x, y| Joint { name: n.into(), at: Point::new(x, y) };
 /// let m = |n: &str, a, b| Member { name: n.into(), ends: [a, b] };
-/// let mut t = Truss {
-///     joints: vec![j("I", 0.0, 0.0), j("II", 2.0, 0.0), j("III", 1.0, 1.0)],
-///     members: vec![m("1", 0, 1), m("2", 1, 2), m("3", 2, 0)],
-///     supports: vec![
+/// let mut t = Truss::new(
+///     vec![j("I", 0.0, 0.0), j("II", 2.0, 0.0), j("III", 1.0, 1.0)],
+///     vec![m("1", 0, 1), m("2", 1, 2), m("3", 2, 0)],
+///     vec![
 ///         Support::pinned(0, "A"),
 ///         Support::roller(1, Vector::new(0.0, 1.0), "B"),
 ///     ],
-/// };
+/// );
 /// assert_eq!(analyse(&t).determinacy, Determinacy::Determinate);
 /// // Without member 2, joint III can swing about I.
 /// t.members.remove(1);
@@ -422,20 +423,15 @@ pub fn solve_all(t: &Truss, cases: &[LoadCase]) -> Vec<Option<Solution>> {
 
 type Lu = faer::sparse::linalg::solvers::Lu<usize, f64>;
 
-/// What is known of the last truss asked about on this thread: the scene's validation, the
-/// rank test of the construction and the solve its checks are made with all ask about the
-/// same matrix, which is factorised and tested once. The truss is recognised by its
-/// geometry bit for bit (joint coordinates, member ends, supports), never by a hash.
+/// What is known of one truss's matrix, kept in the truss's analysis cache. The truss is
+/// recognised by its geometry bit for bit (joint coordinates, member ends, supports), never
+/// by a hash.
 #[derive(Default)]
 struct Memo {
     key: Vec<u64>,
     /// The sparse LU of the square system: not yet made, or made (`None` if it failed).
-    lu: Option<Option<std::rc::Rc<Lu>>>,
+    lu: Option<Option<Arc<Lu>>>,
     analysis: Option<Analysis>,
-}
-
-thread_local! {
-    static MEMO: std::cell::RefCell<Memo> = std::cell::RefCell::new(Memo::default());
 }
 
 /// The geometry a truss's equilibrium matrix is made of, bit for bit.
@@ -464,34 +460,26 @@ fn memo_key(t: &Truss) -> Vec<u64> {
     key
 }
 
-/// Forgets what is known of the last truss on this thread (its LU, its rank test): for a
-/// benchmark that times the whole path of a check again and again on one truss, which would
-/// otherwise find both made by the run before.
-pub fn forget() {
-    MEMO.with(|m| *m.borrow_mut() = Memo::default());
-}
-
-/// `f` on what is known of `t`, forgetting the last truss if `t` is another.
+/// `f` on what is known of `t`, forgetting what was known if `t` has changed since.
 fn memo<R>(t: &Truss, f: impl FnOnce(&mut Memo) -> R) -> R {
     let key = memo_key(t);
-    MEMO.with(|m| {
-        let mut m = m.borrow_mut();
+    t.memo.with(|m: &mut Memo| {
         if m.key != key {
             *m = Memo {
                 key,
                 ..Memo::default()
             };
         }
-        f(&mut m)
+        f(m)
     })
 }
 
 /// The sparse LU of the square equilibrium matrix, made once per truss ([`Memo`]).
-fn factorised(t: &Truss, triplets: &[Triplet]) -> Option<std::rc::Rc<Lu>> {
+fn factorised(t: &Truss, triplets: &[Triplet]) -> Option<Arc<Lu>> {
     if let Some(lu) = memo(t, |m| m.lu.clone()) {
         return lu;
     }
-    let lu = sparse_lu(t, triplets).map(std::rc::Rc::new);
+    let lu = sparse_lu(t, triplets).map(Arc::new);
     memo(t, |m| m.lu = Some(lu.clone()));
     lu
 }
@@ -625,7 +613,7 @@ mod memo_tests {
         t.joints[j].at.y = f64::from_bits(t.joints[j].at.y.to_bits() + 1);
         let moved = solve(&t, &c).unwrap();
         assert_ne!(moved, before);
-        forget();
+        t.forget_matrix();
         assert_eq!(solve(&t, &c).unwrap(), moved);
         // A member taken out: a mechanism, not the determinate truss known before.
         t.members.remove(2);
@@ -634,5 +622,40 @@ mod memo_tests {
             Determinacy::Mechanism { .. }
         ));
         assert_eq!(solve(&t, &c), None);
+    }
+
+    #[test]
+    fn what_is_known_travels_with_the_truss_and_its_clones() {
+        let t = parallel_chord(Web::Warren, 6, 2.0, 2.0);
+        let known = |t: &Truss| {
+            t.memo
+                .with(|m: &mut Memo| (m.analysis.is_some(), m.lu.is_some()))
+        };
+        assert_eq!(known(&t), (false, false));
+        analyse(&t);
+        solve(&t, &case(6)).unwrap();
+        assert_eq!(known(&t), (true, true));
+        let c = t.clone();
+        assert_eq!(known(&c), (true, true), "a clone shares what is known");
+        // Another truss knows nothing of it: no state outside the value.
+        assert_eq!(
+            known(&parallel_chord(Web::Warren, 6, 2.0, 2.0)),
+            (false, false)
+        );
+        t.forget_matrix();
+        assert_eq!(known(&c), (false, false));
+    }
+
+    #[test]
+    fn a_scene_read_hands_its_analysis_to_the_construction() {
+        use crate::scene::{Procedure, TrussScene};
+        let text = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/scenes/lh_aufgabe4_shed_roof.json"
+        ))
+        .unwrap();
+        let (_, p) = TrussScene::read(&text, "roof.json").unwrap();
+        let kept = p.truss.memo.with(|m: &mut Memo| m.analysis.is_some());
+        assert!(kept, "validation's rank test kept");
     }
 }

@@ -47,6 +47,8 @@ pub use builder::{TrussBuilder, TrussError};
 
 use crate::kernel::{Point, Vector};
 use serde::Serialize;
+use std::any::Any;
+use std::sync::{Arc, Mutex};
 
 /// A joint (Knotenpunkt).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -146,6 +148,12 @@ pub struct LoadCase {
 }
 
 /// A plane truss with its supports.
+///
+/// It carries what is known of its equilibrium matrix (its sparse LU and rank test, made
+/// when first asked for): the scene's validation, the construction's rank test and the
+/// solve its checks are made with ask about the same matrix, which is factorised once. The
+/// memo checks the geometry bit for bit before it answers, so a truss changed in place is
+/// analysed afresh.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Truss {
     /// The joints.
@@ -154,9 +162,66 @@ pub struct Truss {
     pub members: Vec<Member>,
     /// The supports.
     pub supports: Vec<Support>,
+    /// What is known of its equilibrium matrix.
+    #[serde(skip)]
+    pub(crate) memo: AnalysisCache,
+}
+
+/// A slot for what the analyses of a truss know of it (its matrix's LU and rank test): opaque
+/// here, filled and read by the module that makes them. Clones of a truss share it; it is no
+/// part of what a truss is (equal, debug-printed and serialised without it).
+#[derive(Clone, Default)]
+pub(crate) struct AnalysisCache(Arc<Mutex<Option<Box<dyn Any + Send>>>>);
+
+impl AnalysisCache {
+    /// `f` on the value of type `T` kept here (made by `T::default()` where there is none).
+    pub(crate) fn with<T: Default + Send + 'static, R>(&self, f: impl FnOnce(&mut T) -> R) -> R {
+        // A panic while it was held leaves at worst a value not yet complete, which the
+        // analyses check (by the truss's geometry) before they use it.
+        let mut slot = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        let v = slot.get_or_insert_with(|| Box::new(T::default()));
+        if !v.is::<T>() {
+            *v = Box::new(T::default());
+        }
+        f(v.downcast_mut::<T>()
+            .expect("a value of this type was just put here"))
+    }
+
+    fn clear(&self) {
+        *self.0.lock().unwrap_or_else(|e| e.into_inner()) = None;
+    }
+}
+
+impl std::fmt::Debug for AnalysisCache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("AnalysisCache")
+    }
+}
+
+impl PartialEq for AnalysisCache {
+    fn eq(&self, _: &AnalysisCache) -> bool {
+        true
+    }
 }
 
 impl Truss {
+    /// A truss of these joints, members (by joint index) and supports.
+    pub fn new(joints: Vec<Joint>, members: Vec<Member>, supports: Vec<Support>) -> Truss {
+        Truss {
+            joints,
+            members,
+            supports,
+            memo: Default::default(),
+        }
+    }
+
+    /// Forgets what is known of the truss's matrix (its LU, its rank test), so that the
+    /// next question makes them afresh: for a benchmark that times the whole path again and
+    /// again on one truss.
+    pub fn forget_matrix(&self) {
+        self.memo.clear();
+    }
+
     /// Number of reaction unknowns: two per pin, one per roller.
     pub fn reaction_unknowns(&self) -> usize {
         self.supports

@@ -29,14 +29,14 @@ pub use crate::kernel::tolerance::LEVER_REL;
 /// use graphostatik::truss::{Joint, JointLoad, Member, Support, SupportKind, Truss};
 /// use graphostatik::truss::reactions::by_moments;
 /// let joint = |n: &str, x: f64, y: f64| Joint { name: n.into(), at: Point::new(x, y) };
-/// let t = Truss {
-///     joints: vec![joint("I", 0.0, 0.0), joint("II", 6.0, 0.0), joint("III", 2.0, 2.0)],
-///     members: vec![],
-///     supports: vec![
+/// let t = Truss::new(
+///     vec![joint("I", 0.0, 0.0), joint("II", 6.0, 0.0), joint("III", 2.0, 2.0)],
+///     vec![],
+///     vec![
 ///         Support::pinned(0, "A"),
 ///         Support::roller(1, Vector::new(0.0, 1.0), "B"),
 ///     ],
-/// };
+/// );
 /// // 600 kg at a third of the span: B takes a third, A two thirds.
 /// let r = by_moments(&t, &[JointLoad { joint: 2, force: Vector::new(0.0, -600.0) }]).unwrap();
 /// assert!((r[1].y - 200.0).abs() < 1e-12 && (r[0].y - 400.0).abs() < 1e-12);

@@ -41,11 +41,11 @@ pub fn without(t: &Truss, drop: &[usize]) -> (Truss, Vec<usize>) {
     }
     let keep: Vec<usize> = (0..t.members.len()).filter(|&m| !dropped[m]).collect();
     (
-        Truss {
-            joints: t.joints.clone(),
-            members: keep.iter().map(|&m| t.members[m].clone()).collect(),
-            supports: t.supports.clone(),
-        },
+        Truss::new(
+            t.joints.clone(),
+            keep.iter().map(|&m| t.members[m].clone()).collect(),
+            t.supports.clone(),
+        ),
         keep,
     )
 }

@@ -1,4 +1,4 @@
-//! The crank-rocker and the parallel crank (KG XIV, Abb. 1043, 1045; issue 11 item 4): B by two
+//! The crank-rocker and the parallel crank (KG XIV, Abb. 1043, 1045): B by two
 //! circles against the loop's closed form, the dead positions, the transmission angle flagged,
 //! the parallel crank's change points typed, and Grashof's limits refused naming the links.
 

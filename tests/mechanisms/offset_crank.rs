@@ -1,4 +1,4 @@
-//! The offset slider-crank (KG XIV, Abb. 1046, issue 11 item 4): the construction against the
+//! The offset slider-crank (KG XIV, Abb. 1046): the construction against the
 //! loop's closed forms, the straight slider-crank at offset 0 to 1e-12, and the refusal of an
 //! offset the rod cannot bridge.
 

@@ -1,4 +1,4 @@
-//! The oscillating slotted link (KG XIV, Abb. 1071-1072, issue 11 item 3): the table's path and
+//! The oscillating slotted link (KG XIV, Abb. 1071-1072): the table's path and
 //! speed by KG's construction against the loop's closed forms, c₁ and c₂ against KG 304-305,
 //! β/α for any e > r, and the refusal at e ≤ r.
 

@@ -180,7 +180,7 @@ mod tests {
     #[test]
     fn a_large_and_a_small_circle_meeting_at_right_angles_keep_their_digits_either_way() {
         use super::*;
-        // Issue 12, case 10: r = 1000 and 1e-4, centres √(r1² + r2²) apart: they meet at 90°,
+        // A hard case: r = 1000 and 1e-4, centres √(r1² + r2²) apart: they meet at 90°,
         // at y = ±r1·r2/d from the centre line, whichever circle comes first.
         let (r1, r2) = (1000.0f64, 1e-4f64);
         let d = r1.hypot(r2);

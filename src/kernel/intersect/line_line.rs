@@ -92,7 +92,7 @@ mod tests {
 
     #[test]
     fn lines_meeting_beyond_f64_are_parallel_not_nan() {
-        // Issue 12, case 10: origins near 1e300.
+        // A hard case: origins near 1e300.
         let tol = Tolerance::for_figure(1.0);
         let a = Line::new(Point::new(1e300, 0.0), Vector::new(1.0, 1e-10)).unwrap();
         let b = Line::new(Point::new(-1e300, 1e300), Vector::new(1.0, -1e-10)).unwrap();
