@@ -137,7 +137,8 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// Write one cumulative SVG per construction step and an index.html that pages through them.
+    /// Write a self-contained walk-through (index.html, the figure inlined once) that shows the
+    /// construction one step at a time, with caption, German term, book and checks, and a print view.
     Steps {
         /// The scene file.
         scene: PathBuf,
@@ -176,8 +177,13 @@ enum Command {
         #[arg(long, default_value = "markdown")]
         format: TableFormat,
     },
-    /// Print the JSON Schema of the scene format.
-    Schema,
+    /// Print the JSON Schema of the scene format (with --markdown: the scene reference,
+    /// every procedure's fields and the types they use, as docs/scene-reference.md holds it).
+    Schema {
+        /// The reference as Markdown instead of the schema.
+        #[arg(long)]
+        markdown: bool,
+    },
     /// List the procedures a scene can name, with what each constructs and its outputs.
     Procedures,
     /// Print the shell completion script for bash, zsh, fish, elvish or powershell (e.g.
@@ -340,8 +346,13 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
         Command::Procedures => procedures_cmd(),
         Command::Completions { shell } => completions_cmd(shell),
         Command::Man => man_cmd(),
-        Command::Schema => {
-            say(&(graphostatik::scene::schema_json() + "\n"))?;
+        Command::Schema { markdown } => {
+            let text = if markdown {
+                graphostatik::scene::reference_markdown()
+            } else {
+                graphostatik::scene::schema_json() + "\n"
+            };
+            say(&text)?;
             Ok(ExitCode::SUCCESS)
         }
     }

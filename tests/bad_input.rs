@@ -336,26 +336,39 @@ fn a_closed_pipe_is_not_a_panic() {
     assert_eq!(o.status.code(), Some(0), "{err}");
 }
 
-/// Every scene shown in README.md parses, validates and constructs with all checks passing,
-/// so the documentation cannot drift from the format.
+/// Every scene shown in README.md and docs/ parses, validates and constructs with all checks
+/// passing, so the documentation cannot drift from the format.
 #[test]
-fn the_scenes_in_the_readme_are_valid() {
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
-    let mut n = 0;
-    for block in readme.split("```json\n").skip(1) {
-        let json = block.split("```").next().unwrap();
-        let scene = graphostatik::scene::AnyScene::from_json(json, "README.md")
-            .unwrap_or_else(|e| panic!("{e}\n{json}"));
-        let board = scene.problem().construct(BoardConfig::DRAWING).unwrap();
-        assert!(board
-            .steps()
-            .iter()
-            .flat_map(|s| &s.checks)
-            .all(|c| c.passed));
-        n += 1;
+fn the_scenes_in_the_docs_are_valid() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut docs = vec![root.join("README.md")];
+    for e in std::fs::read_dir(root.join("docs")).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_some_and(|x| x == "md") {
+            docs.push(p);
+        }
     }
-    assert!(n >= 3, "{n} scenes found");
+    docs.sort();
+    let mut n = 0;
+    let texts: Vec<(String, String)> = docs
+        .iter()
+        .map(|p| (p.display().to_string(), std::fs::read_to_string(p).unwrap()))
+        .collect();
+    for (name, text) in &texts {
+        for block in text.split("```json\n").skip(1) {
+            let json = block.split("```").next().unwrap();
+            let scene = graphostatik::scene::AnyScene::from_json(json, name)
+                .unwrap_or_else(|e| panic!("{e}\n{json}"));
+            let board = scene.problem().construct(BoardConfig::DRAWING).unwrap();
+            assert!(board
+                .steps()
+                .iter()
+                .flat_map(|s| &s.checks)
+                .all(|c| c.passed));
+            n += 1;
+        }
+    }
+    assert!(n >= 6, "{n} scenes found");
 }
 
 #[test]

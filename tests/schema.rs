@@ -20,6 +20,20 @@ fn the_committed_schema_is_the_one_the_code_writes() {
     );
 }
 
+/// `docs/scene-reference.md` is the scene reference the code writes today, regenerated with
+/// `cargo run --release -- schema --markdown > docs/scene-reference.md`.
+#[cfg(feature = "schema")]
+#[test]
+fn the_committed_scene_reference_is_the_one_the_code_writes() {
+    let committed =
+        std::fs::read_to_string(Path::new(ROOT).join("docs/scene-reference.md")).unwrap();
+    assert_eq!(
+        committed.trim_end(),
+        graphostatik::scene::reference_markdown().trim_end(),
+        "regenerate: cargo run --release -- schema --markdown > docs/scene-reference.md"
+    );
+}
+
 /// Every bundled scene begins with `"$schema": "../schema/scene.schema.json"`, and the
 /// key is accepted (and ignored) by every procedure.
 #[test]

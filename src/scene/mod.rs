@@ -33,6 +33,8 @@ mod four_bar;
 mod header;
 mod offset_crank;
 mod procedure;
+#[cfg(feature = "schema")]
+mod reference;
 mod registry;
 mod scan;
 mod scotch_yoke;
@@ -67,6 +69,8 @@ pub use four_bar::{FourBarDrawingSpec, FourBarOutput, FourBarProblem, FourBarSce
 pub use header::{Preview, Slider};
 pub use offset_crank::{OffsetDrawingSpec, OffsetOutput, OffsetProblem, OffsetScene};
 pub use procedure::{parse_scene, scene_field, Procedure, ReadContext, SceneHeader, SchemaType};
+#[cfg(feature = "schema")]
+pub use reference::reference_markdown;
 #[cfg(feature = "schema")]
 pub use registry::schema_json;
 pub use registry::{AnyProblem, AnyScene, Entry, REGISTRY};
