@@ -124,7 +124,7 @@ fn the_forces_are_constructed_and_checked() {
 #[test]
 fn bad_combustion_input_names_the_field() {
     use graphostatik::scene::AnyScene;
-    let text = include_str!("../scenes/kg_abb1056_otto_four_cylinders.json");
+    let text = include_str!("../../scenes/kg_abb1056_otto_four_cylinders.json");
     for (from, to, field) in [
         (
             "\"compression_ratio\": 5",
@@ -168,7 +168,7 @@ fn bad_combustion_input_names_the_field() {
 #[test]
 fn the_firing_order_spaces_the_cylinders() {
     use graphostatik::scene::{AnyScene, CombustionScene};
-    let text = include_str!("../scenes/kg_abb1056_otto_four_cylinders.json");
+    let text = include_str!("../../scenes/kg_abb1056_otto_four_cylinders.json");
     let p = AnyScene::from_json(text, "e.json")
         .unwrap()
         .problem()

@@ -4,7 +4,7 @@
 //! Where chromium or chromedriver is missing the tests say they are skipped, unless
 //! `GRAPHOSTATIK_BROWSER=required` (as `.ci/run` sets after installing both), when they fail.
 //! With `GRAPHOSTATIK_SCREENSHOTS=DIR` the screenshots are written to `DIR` (the README's
-//! come from `GRAPHOSTATIK_SCREENSHOTS=figures/screenshots cargo test --test browser`).
+//! come from `GRAPHOSTATIK_SCREENSHOTS=figures/screenshots cargo test --test it browser::`).
 
 #[path = "browser/webdriver.rs"]
 mod webdriver;

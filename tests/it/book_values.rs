@@ -281,7 +281,7 @@ fn scene(text: &str) -> graphostatik::scene::SliderCrankProblem {
 #[test]
 fn lh_locomotive_speeds() {
     // LH Abb. 43: v1 = 60000/3600 = 16.7 m/s, v = v1 · s/D1 = 7 m/s, v/r = 22.2.
-    let p = scene(include_str!("../scenes/lh_abb43_locomotive.json"));
+    let p = scene(include_str!("../../scenes/lh_abb43_locomotive.json"));
     assert!((p.drive.crank_pin_speed - 7.0).abs() < 1e-12);
     assert!((p.drive.omega() - 22.2).abs() < 0.05);
     assert!((p.drive.lambda() - 1.0 / 6.0).abs() < 1e-15);
@@ -290,7 +290,7 @@ fn lh_locomotive_speeds() {
 #[test]
 fn kg_tafel_1_crank_pin_speed() {
     // KG B.4b: v = 2.095 m/s for R = 0.4 m, n = 50/min (2π · 0.4 · 50/60 = 2.0944).
-    let p = scene(include_str!("../scenes/kg_tafel1.json"));
+    let p = scene(include_str!("../../scenes/kg_tafel1.json"));
     assert!((p.drive.crank_pin_speed - 2.095).abs() < 0.001);
 }
 
@@ -298,7 +298,7 @@ fn kg_tafel_1_crank_pin_speed() {
 fn lh_aufgabe_1_piston_force() {
     // LH Aufgabe 1: K = π·43²/4 · 6 = 1450 · 6 ≈ 8700 kg (exact 8713 kg: the book rounds the
     // area to 1450 cm², 0.15 %).
-    let p = scene(include_str!("../scenes/lh_aufgabe1_forces.json"));
+    let p = scene(include_str!("../../scenes/lh_aufgabe1_forces.json"));
     let k = p.drive.piston_force.max_abs();
     assert!((k - std::f64::consts::PI / 4.0 * 43.0 * 43.0 * 6.0).abs() < 1e-9);
     assert!((k - 8700.0).abs() / 8700.0 < 0.0016);
@@ -368,7 +368,7 @@ fn lh_aufgabe_1_printed_forces_do_not_belong_to_one_crank_angle() {
     assert!((best - 70.1).abs() < 0.011, "{best}");
     // The bundled scene constructs that position; S and T agree with the book within the
     // books' drawing error (3.5 %), D is 7.3 % off, and V 85 %.
-    let p = scene(include_str!("../scenes/lh_aufgabe1_abb30.json"));
+    let p = scene(include_str!("../../scenes/lh_aufgabe1_abb30.json"));
     let (board, res) = SliderCrankScene::construct(&p, BoardConfig::DRAWING).unwrap();
     assert!(board.all_passed());
     let r = &res.rows[0];
@@ -416,7 +416,7 @@ const LH_ONE_UNIT: f64 = 0.1;
 fn lh_b3_accelerations_of_the_locomotive_by_tolles_parabola() {
     // LH B.3 (s = 630 mm, λ = 1/6, v = 7 m/s): v²/r = 155.5, p0 = 181.5, p180 = 129.7,
     // OC = 3.125 mm, CD = 77.7 m/s² = 0.52 cm at 1 cm = 150 m/s² over 2r = 37.5 mm.
-    let p = scene(include_str!("../scenes/lh_abb55_acceleration.json"));
+    let p = scene(include_str!("../../scenes/lh_abb55_acceleration.json"));
     let (board, res) = SliderCrankScene::construct(&p, BoardConfig::DRAWING).unwrap();
     assert!(board.all_passed());
     let a = p.drive.v2_over_r();
@@ -470,7 +470,7 @@ fn lh_gl34_infinite_rod_acceleration_is_a_straight_line() {
     // LH Gl. 34, Abb. 56: p0 = p180 = v²/r = 155.5 m/s² = 1.04 cm; the curve is the straight
     // line through the middle O, so b is linear in the piston path x.
     let p = scene(include_str!(
-        "../scenes/lh_abb56_acceleration_infinite_rod.json"
+        "../../scenes/lh_abb56_acceleration_infinite_rod.json"
     ));
     let (board, res) = SliderCrankScene::construct(&p, BoardConfig::DRAWING).unwrap();
     assert!(board.all_passed());

@@ -7,7 +7,7 @@ use graphostatik::protocol::BoardConfig;
 use graphostatik::scene::Procedure;
 use graphostatik::scene::{AnyScene, DynamicsProblem, DynamicsScene};
 
-const SCENE: &str = include_str!("../scenes/kg_abb1065_pump_engine.json");
+const SCENE: &str = include_str!("../../scenes/kg_abb1065_pump_engine.json");
 
 fn problem(text: &str) -> DynamicsProblem {
     AnyScene::from_json(text, "pump.json")

@@ -1,6 +1,6 @@
 //! Every bundled figure opens in Inkscape with its step layers in step
 //! order. Run where Inkscape is installed (`apt-get install inkscape`); elsewhere the test says
-//! so and passes, and `tests/snapshots.rs` checks the same layers' names in the text.
+//! so and passes, and `tests/it/snapshots.rs` checks the same layers' names in the text.
 //!
 //! `inkscape --query-all` lists every object Inkscape reads, in document order, with its
 //! bounding box; a layer that draws nothing (a step that only measures) has no box and is not

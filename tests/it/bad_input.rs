@@ -717,7 +717,7 @@ fn render_on_every_core_writes_what_a_serial_run_writes_and_names_the_first_bad_
 fn a_bad_engine_is_refused_by_the_command_line_with_its_field_and_nothing_written() {
     // Bad input through the CLI: one line naming the field, exit 2, no figure.
     let d = tmp("engine");
-    let good = include_str!("../scenes/lh_j_locomotive_dynamics.json");
+    let good = include_str!("../../scenes/lh_j_locomotive_dynamics.json");
     let cases = [
         (
             "\"cutoff\": 0.175",

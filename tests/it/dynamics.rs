@@ -15,7 +15,7 @@ fn scene(text: &str) -> DynamicsProblem {
 }
 
 fn locomotive() -> DynamicsProblem {
-    scene(include_str!("../scenes/lh_j_locomotive_dynamics.json"))
+    scene(include_str!("../../scenes/lh_j_locomotive_dynamics.json"))
 }
 
 #[test]
@@ -79,7 +79,7 @@ fn lh_j_inertia_of_the_compound_engine() {
     // LH J: q·F_N/g · v²/r = 0.33 · 804.2 · 5.1/(9.81 · 0.16) = 862; B0 = 1034.4,
     // B180 = 689.6, CD = 517.2 kg. The book squares v = 2.26 to 5.1 (2.2619² = 5.116): the
     // exact factor is 865.4 (0.4 % more), B0 = 1038.5. Both cylinders carry q on the LP area.
-    let p = scene(include_str!("../scenes/lh_j_compound_engine.json"));
+    let p = scene(include_str!("../../scenes/lh_j_compound_engine.json"));
     let k = p.engine.kinematics;
     assert!((k.v - 2.26).abs() < 0.005);
     for c in &p.engine.cylinders {
@@ -301,7 +301,7 @@ fn with(text: &str, edit: impl FnOnce(&mut serde_json::Value)) -> Result<Dynamic
 /// A change made to a scene's JSON.
 type Edit = Box<dyn FnOnce(&mut serde_json::Value)>;
 
-const LOCO: &str = include_str!("../scenes/lh_j_locomotive_dynamics.json");
+const LOCO: &str = include_str!("../../scenes/lh_j_locomotive_dynamics.json");
 
 #[test]
 fn hard_cases_construct_and_pass() {
