@@ -3,7 +3,8 @@
 use super::defaults::nice_at_least;
 use super::error::SceneError;
 use super::fields::{optional_positive, Fields};
-use super::procedure::ReadContext;
+use super::procedure::{Procedure, ReadContext};
+use super::sweep::{one, timed, Setting, Sweep};
 use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::{self, Beam, BeamDrawing, BeamRequest, PointLoad, UniformLoad};
 use serde::{Deserialize, Serialize};
@@ -461,6 +462,9 @@ impl super::Procedure for BeamScene {
         };
         Ok((board, r))
     }
+    fn sweeps(p: &BeamProblem) -> Vec<Setting<'_>> {
+        beam_loads(p)
+    }
     fn figure_meta(problem: &BeamProblem) -> FigureMeta {
         use crate::fmt::num;
         let d = &problem.drawing;
@@ -491,4 +495,83 @@ fn on_beam(f: Fields, field: &str, x: f64, [e0, e1]: [f64; 2]) -> Result<(), Sce
     } else {
         Ok(())
     }
+}
+
+const POINT_LOADS: [usize; 8] = [1, 2, 4, 8, 16, 32, 64, 128];
+const TANGENT_PARTS: [usize; 5] = [2, 4, 8, 16, 64];
+
+/// A beam's uniform loads as n point loads (strip centres), and the parabola by d tangent
+/// parts: the largest moment error at the sections, against the uniform loads' exact moment.
+fn beam_loads(b: &BeamProblem) -> Vec<Setting<'_>> {
+    if b.beam.uniform_loads.is_empty() || !b.request.moment_area {
+        return Vec::new();
+    }
+    let mut out: Vec<Setting<'_>> = Vec::new();
+    for &n in &POINT_LOADS {
+        out.push(Box::new(move || {
+            let mut q = b.clone();
+            q.beam = as_point_loads(&b.beam, n);
+            let s = moment_error(b, &q, "n point loads for each uniform load", n)?;
+            Ok(vec![s])
+        }));
+    }
+    for &d in &TANGENT_PARTS {
+        out.push(Box::new(move || {
+            let mut q = b.clone();
+            q.drawing.parabola_divisions = d;
+            Ok(vec![moment_error(
+                b,
+                &q,
+                "parabola by its tangents, d parts",
+                d,
+            )?])
+        }));
+    }
+    out
+}
+
+/// The beam with every uniform load replaced by `n` equal point loads at its strips' centres.
+fn as_point_loads(beam: &Beam, n: usize) -> Beam {
+    let mut out = beam.clone();
+    out.uniform_loads.clear();
+    for u in &beam.uniform_loads {
+        let w = (u.to - u.from) / n as f64;
+        out.point_loads.extend((0..n).map(|k| PointLoad {
+            x: u.from + w * (k as f64 + 0.5),
+            p: u.q * w,
+        }));
+    }
+    out.point_loads.sort_by(|a, c| a.x.total_cmp(&c.x));
+    out
+}
+
+/// The largest |M| error over the constructed sections, against the original beam's moment.
+fn moment_error(
+    orig: &BeamProblem,
+    q: &BeamProblem,
+    knob: &str,
+    setting: usize,
+) -> Result<Sweep, ConstructionError> {
+    let (r, secs) = timed(|| BeamScene::construct(q, BoardConfig::DRAWING));
+    let res = r?.1;
+    let cf = crate::statics::closed_form::Sections::new(&orig.beam);
+    let err = res
+        .sections
+        .iter()
+        .map(|s| (s.moment - cf.moment(s.x)).abs())
+        .fold(0.0, f64::max);
+    // No single exact value: the setting's value is its error.
+    let mut s = one(
+        knob,
+        "largest moment error at the sections",
+        "kg·m",
+        None,
+        setting.to_string(),
+        err,
+        secs,
+    );
+    s.scale = crate::statics::closed_form::max_abs_moment(&orig.beam)
+        .0
+        .abs();
+    Ok(s)
 }

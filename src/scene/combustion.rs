@@ -3,7 +3,8 @@
 
 use super::error::SceneError;
 use super::fields::Fields;
-use super::procedure::ReadContext;
+use super::procedure::{Procedure, ReadContext};
+use super::sweep::{one, timed, Setting};
 use super::types::{Mechanism, Speed};
 use crate::dynamics::combustion::{
     self, Combustion, GasCycle, GasCylinder, GasDrawing, GasEngine, GasResults, Strokes,
@@ -354,6 +355,9 @@ impl super::Procedure for CombustionScene {
         let r = combustion::construct(&mut board, &p.engine, &p.drawing, p.divisions)?;
         Ok((board, r))
     }
+    fn sweeps(p: &CombustionProblem) -> Vec<Setting<'_>> {
+        gas_divisions(p)
+    }
     fn figure_meta(p: &CombustionProblem) -> FigureMeta {
         FigureMeta {
             title: p.title.clone(),
@@ -364,4 +368,30 @@ impl super::Procedure for CombustionScene {
             ],
         }
     }
+}
+
+/// A combustion engine's shaft angles over the cycle swept, the mean of the drawn turning
+/// force against the exact integral: the gas force jumps at the firing dead centre and at
+/// the cut-off's corner, so the mean converges as n⁻¹ until the ordinates resolve the peak.
+fn gas_divisions(g: &CombustionProblem) -> Vec<Setting<'_>> {
+    [8, 12, 24, 48, 96, 180, 360, 720, 1440, 3600]
+        .into_iter()
+        .map(|n| -> Setting<'_> {
+            Box::new(move || {
+                let mut q = g.clone();
+                q.divisions = n;
+                let (r, secs) = timed(|| CombustionScene::construct(&q, BoardConfig::DRAWING));
+                let res = r?.1;
+                Ok(vec![one(
+                    "shaft divisions over the cycle",
+                    "mean turning force T_m (of the ordinates)",
+                    "kg",
+                    Some(res.t_m_exact),
+                    n.to_string(),
+                    res.t_m,
+                    secs,
+                )])
+            })
+        })
+        .collect()
 }

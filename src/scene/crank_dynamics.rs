@@ -5,8 +5,10 @@
 use super::defaults::nice_at_least;
 use super::error::SceneError;
 use super::fields::{optional_positive, Fields};
-use super::procedure::ReadContext;
+use super::procedure::{Procedure, ReadContext};
+use super::sweep::{one, timed, Setting};
 use super::{Mechanism, Speed};
+use crate::crank::Angles;
 use crate::dynamics::model::{self, area_cm2, Cylinder, Indicator, Kinematics, Side, SteamModel};
 use crate::dynamics::{self, DynamicsDrawing, DynamicsRequest, DynamicsResults, Engine};
 use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
@@ -528,6 +530,9 @@ impl super::Procedure for DynamicsScene {
         )?;
         Ok((board, res))
     }
+    fn sweeps(p: &DynamicsProblem) -> Vec<Setting<'_>> {
+        dynamics_divisions(p)
+    }
     fn figure_meta(problem: &DynamicsProblem) -> FigureMeta {
         use crate::fmt::num;
         let k = &problem.engine.kinematics;
@@ -549,4 +554,41 @@ impl super::Procedure for DynamicsScene {
             ],
         }
     }
+}
+
+const DYNAMICS_DIVISIONS: [usize; 6] = [12, 24, 60, 120, 360, 1200];
+
+/// The engine's divisions swept; each rule of the mean turning force its own curve.
+fn dynamics_divisions(d: &DynamicsProblem) -> Vec<Setting<'_>> {
+    if !d.request.mean_height {
+        return Vec::new();
+    }
+    DYNAMICS_DIVISIONS
+        .iter()
+        .map(|&n| -> Setting<'_> {
+            Box::new(move || {
+                let mut q = d.clone();
+                q.rays = Angles::Divisions(n);
+                let (r, secs) = timed(|| DynamicsScene::construct(&q, BoardConfig::DRAWING));
+                let res = r?.1;
+                let exact = res.t_m_exact;
+                Ok(res
+                    .mean_heights
+                    .iter()
+                    .map(|m| {
+                        // m.error is m.t_m − exact: the error `one` finds.
+                        one(
+                            &format!("divisions, {}", m.rule),
+                            "mean turning force T_m",
+                            "kg",
+                            exact,
+                            n.to_string(),
+                            m.t_m,
+                            secs,
+                        )
+                    })
+                    .collect())
+            })
+        })
+        .collect()
 }

@@ -41,10 +41,11 @@ mod scotch_yoke;
 mod shaft;
 mod slider_crank;
 mod slotted_link;
+mod sweep;
 mod truss;
 mod types;
 
-pub use accuracy::{sweeps, Sweep, SweepPoint};
+pub use accuracy::sweeps;
 pub use beam::{
     BeamDrawingSpec, BeamOutput, BeamProblem, BeamScene, BeamSpec, PointLoadSpec, UniformLoadSpec,
     MAX_LOADS,
@@ -78,5 +79,6 @@ pub use scotch_yoke::{YokeCrank, YokeDrawingSpec, YokeOutput, YokeProblem, YokeS
 pub use shaft::{ShaftProblem, ShaftScene, TorqueSpec};
 pub use slider_crank::SliderCrankProblem;
 pub use slotted_link::{LinkDrawingSpec, LinkOutput, LinkProblem, LinkScene, LinkSpec};
+pub use sweep::{Setting, Sweep, SweepPoint};
 pub use truss::{TrussProblem, TrussScene};
 pub use types::*;

@@ -7,6 +7,7 @@
 //! ([`REGISTRY`](super::REGISTRY)).
 
 use super::error::SceneError;
+use super::sweep::Setting;
 use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta};
 use std::fmt::Debug;
 
@@ -85,6 +86,15 @@ pub trait Procedure:
     ) -> Result<(Board, Self::Results), ConstructionError>;
     /// Title, source and scale bars of the figure.
     fn figure_meta(problem: &Self::Problem) -> FigureMeta;
+
+    /// The knobs of this procedure that trade time for accuracy, swept by `graphostatik
+    /// accuracy` beside the precision every scene has: each setting constructs the problem
+    /// so set and measures its error against the exact value. None by default; only what the
+    /// problem asks for is swept (a beam without uniform loads has no point-load knob).
+    fn sweeps(problem: &Self::Problem) -> Vec<Setting<'_>> {
+        let _ = problem;
+        Vec::new()
+    }
 
     /// How large the figure comes out on the sheet at the problem's scales (mm), with the
     /// scale field that drives it: its lengths against the length scale and its forces against

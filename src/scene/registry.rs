@@ -4,6 +4,7 @@
 
 use super::error::SceneError;
 use super::procedure::{parse_scene, syntax_error, Procedure, ReadContext};
+use super::sweep::Setting;
 use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta};
 use std::any::Any;
 use std::fmt::Debug;
@@ -104,6 +105,7 @@ trait DynProblem: Debug + Send + Sync {
     fn error_field(&self, err: &ConstructionError) -> Option<String>;
     fn construct(&self, config: BoardConfig) -> Result<Board, ConstructionError>;
     fn figure_meta(&self) -> FigureMeta;
+    fn sweeps(&self) -> Vec<Setting<'_>>;
     fn as_any(&self) -> &dyn Any;
     fn clone_box(&self) -> Box<dyn DynProblem>;
 }
@@ -128,6 +130,9 @@ impl<P: Procedure> DynProblem for ProblemOf<P> {
     }
     fn figure_meta(&self) -> FigureMeta {
         P::figure_meta(&self.0)
+    }
+    fn sweeps(&self) -> Vec<Setting<'_>> {
+        P::sweeps(&self.0)
     }
     fn as_any(&self) -> &dyn Any {
         &self.0
@@ -307,6 +312,12 @@ impl AnyProblem {
     /// Title, source and scale bars of the figure.
     pub fn figure_meta(&self) -> FigureMeta {
         self.0.figure_meta()
+    }
+
+    /// The knobs of the procedure that trade time for accuracy
+    /// ([`Procedure::sweeps`]), each setting ready to run.
+    pub fn sweeps(&self) -> Vec<Setting<'_>> {
+        self.0.sweeps()
     }
 
     /// The scene field a construction error comes from, where the procedure can tell.

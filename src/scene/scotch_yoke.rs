@@ -2,8 +2,9 @@
 
 use super::error::SceneError;
 use super::fields::Fields;
-use super::procedure::ReadContext;
+use super::procedure::{Procedure, ReadContext};
 use super::slider_crank::{check_crank, crank_radius};
+use super::sweep::{mean_over_divisions, timed, MeanOf, Setting};
 use super::types::{AngleSpec, Rod, Speed};
 use crate::crank::{Angles, Drawing};
 use crate::mechanisms::scotch_yoke::{self, Yoke, YokeRequest, YokeResults};
@@ -239,6 +240,9 @@ impl super::Procedure for YokeScene {
         )?;
         Ok((board, r))
     }
+    fn sweeps(p: &YokeProblem) -> Vec<Setting<'_>> {
+        yoke_divisions(p)
+    }
     fn figure_meta(problem: &YokeProblem) -> FigureMeta {
         let d = &problem.drawing;
         let mut scales = vec![ScaleBar::length(d.length_scale, "m")];
@@ -254,4 +258,24 @@ impl super::Procedure for YokeScene {
             scales,
         }
     }
+}
+
+/// A scotch yoke's crank angles swept, against its mean speed 2v/π (velocity asked for):
+/// |c′| = v·|sin φ| has kinks at the dead centres, so the mean of the divisions converges as
+/// n⁻², as the slider-crank's does.
+fn yoke_divisions(y: &YokeProblem) -> Vec<Setting<'_>> {
+    if !y.request.velocity {
+        return Vec::new();
+    }
+    let what = MeanOf {
+        quantity: "mean yoke speed (of the divisions)",
+        unit: "m/s",
+        exact: 2.0 * y.yoke.crank_pin_speed / std::f64::consts::PI,
+    };
+    mean_over_divisions(what, move |n| {
+        let mut q = y.clone();
+        q.angles = Angles::Divisions(n);
+        let (r, secs) = timed(|| YokeScene::construct(&q, BoardConfig::DRAWING));
+        Ok((r?.1.rows.iter().filter_map(|r| r.c).collect(), secs))
+    })
 }

@@ -6,6 +6,7 @@ use super::error::SceneError;
 use super::fields::Fields;
 use super::procedure::Procedure;
 use super::procedure::ReadContext;
+use super::sweep::{mean_over_divisions, timed, MeanOf, Setting};
 use super::types::*;
 use crate::crank::{self, Angles, CrankDrive, CrankResults, Drawing, PistonForce, Request};
 use crate::kernel::tolerance::MAX_DIVISIONS;
@@ -514,6 +515,9 @@ impl Procedure for SliderCrankScene {
         )?;
         Ok((board, res))
     }
+    fn sweeps(p: &SliderCrankProblem) -> Vec<Setting<'_>> {
+        crank_divisions(p)
+    }
     fn figure_meta(problem: &SliderCrankProblem) -> FigureMeta {
         let d = &problem.drawing;
         let r = &problem.request;
@@ -555,4 +559,40 @@ impl Procedure for SliderCrankScene {
             scales,
         }
     }
+}
+
+/// Crank angles swept, against 2P/π (constant piston force, tangential force asked for) or
+/// 2v/π (the mean piston speed, velocity asked for).
+fn crank_divisions(c: &SliderCrankProblem) -> Vec<Setting<'_>> {
+    let by_t =
+        c.request.tangential_force && matches!(c.drive.piston_force, PistonForce::Constant(_));
+    let what = if by_t {
+        MeanOf {
+            quantity: "mean tangential force T_m (of the divisions)",
+            unit: "kg",
+            exact: 2.0 * c.drive.piston_force.max_abs() / std::f64::consts::PI,
+        }
+    } else if c.request.velocity_parallel || c.request.velocity_instant_centre {
+        MeanOf {
+            quantity: "mean piston speed (of the divisions)",
+            unit: "m/s",
+            exact: 2.0 * c.drive.crank_pin_speed / std::f64::consts::PI,
+        }
+    } else {
+        return Vec::new();
+    };
+    mean_over_divisions(what, move |n| {
+        let mut q = c.clone();
+        q.angles = Angles::Divisions(n);
+        let (r, secs) = timed(|| SliderCrankScene::construct(&q, BoardConfig::DRAWING));
+        let rows = r?.1.rows;
+        let sample = rows.iter().filter_map(|r| {
+            if by_t {
+                r.tangential_force
+            } else {
+                r.c_parallel.or(r.c_instant_centre)
+            }
+        });
+        Ok((sample.collect(), secs))
+    })
 }
