@@ -70,17 +70,16 @@ pub struct UniformLoadSpec {
     pub kg_per_m: f64,
 }
 
-/// An output of a beam scene (the reactions are always constructed).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-#[serde(rename_all = "snake_case")]
-pub enum BeamOutput {
-    /// Reactions by the closing line (always constructed).
-    Reactions,
-    /// The moment area M = y·H.
-    MomentArea,
-    /// The shear diagram and the largest moment.
-    ShearDiagram,
+super::header::output_enum! {
+    /// An output of a beam scene (the reactions are always constructed).
+    pub enum BeamOutput {
+        /// Reactions by the closing line (always constructed).
+        Reactions = "reactions",
+        /// The moment area M = y·H.
+        MomentArea = "moment_area",
+        /// The shear diagram and the largest moment.
+        ShearDiagram = "shear_diagram",
+    }
 }
 
 /// Scales and the pole.
@@ -402,7 +401,7 @@ impl BeamScene {
 impl super::Procedure for BeamScene {
     const NAME: &'static str = "beam";
     const ABOUT: &'static str = "a beam on two supports: reactions by the closing line, moment area, shear, parabola by tangents (LH I C.4-6)";
-    const OUTPUTS: &'static [&'static str] = &["reactions", "moment_area", "shear_diagram"];
+    const OUTPUTS: &'static [&'static str] = BeamOutput::NAMES;
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
         ("supports", "beam.supports_m"),
         ("stringers", "stringers_m"),

@@ -238,21 +238,20 @@ pub struct FlywheelSpec {
     pub irregularity: f64,
 }
 
-/// An output of the dynamics procedure.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-#[serde(rename_all = "snake_case")]
-pub enum DynamicsOutput {
-    /// Net pressure, inertia and resulting curves (LH Abb. 58; KG Abb. 1055).
-    NetPressure,
-    /// Tangential force on every ray and the turning-force diagram (LH Abb. 67; KG Abb. 1064).
-    TurningForce,
-    /// Mean height of the turning-force diagram by every rule (LH G).
-    MeanHeight,
-    /// Indicated power from the mean pressures and from T_m (LH H).
-    Power,
-    /// The flywheel (LH J; KG Abb. 1062).
-    Flywheel,
+super::header::output_enum! {
+    /// An output of the dynamics procedure.
+    pub enum DynamicsOutput {
+        /// Net pressure, inertia and resulting curves (LH Abb. 58; KG Abb. 1055).
+        NetPressure = "net_pressure",
+        /// Tangential force on every ray and the turning-force diagram (LH Abb. 67; KG Abb. 1064).
+        TurningForce = "turning_force",
+        /// Mean height of the turning-force diagram by every rule (LH G).
+        MeanHeight = "mean_height",
+        /// Indicated power from the mean pressures and from T_m (LH H).
+        Power = "power",
+        /// The flywheel (LH J; KG Abb. 1062).
+        Flywheel = "flywheel",
+    }
 }
 
 /// Scales of a dynamics drawing.
@@ -461,13 +460,7 @@ fn points(s: &SidePoints, gauge: bool, stroke: f64) -> Indicator {
 impl super::Procedure for DynamicsScene {
     const NAME: &'static str = "crank_dynamics";
     const ABOUT: &'static str = "an engine's dynamics: net pressure, inertia, turning force, mean heights, power, flywheel (LH II A, C-J; KG XIV B.4)";
-    const OUTPUTS: &'static [&'static str] = &[
-        "net_pressure",
-        "turning_force",
-        "mean_height",
-        "power",
-        "flywheel",
-    ];
+    const OUTPUTS: &'static [&'static str] = DynamicsOutput::NAMES;
     const GEOMETRY_FIELD: &'static str = "mechanism";
 
     fn sheet_extent(p: &DynamicsProblem) -> (f64, &'static str) {

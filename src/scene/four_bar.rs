@@ -47,15 +47,14 @@ pub struct LinksSpec {
     pub rocker_mm: f64,
 }
 
-/// What a four-bar scene can ask for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-#[serde(rename_all = "snake_case")]
-pub enum FourBarOutput {
-    /// The rocker's dead positions by the arcs L ± R about O.
-    DeadPositions,
-    /// The transmission angle at every position, flagged below the limit.
-    Transmission,
+super::header::output_enum! {
+    /// What a four-bar scene can ask for.
+    pub enum FourBarOutput {
+        /// The rocker's dead positions by the arcs L ± R about O.
+        DeadPositions = "dead_positions",
+        /// The transmission angle at every position, flagged below the limit.
+        Transmission = "transmission",
+    }
 }
 
 /// Scales of a four-bar scene.
@@ -159,7 +158,7 @@ impl FourBarScene {
 impl super::Procedure for FourBarScene {
     const NAME: &'static str = "four_bar";
     const ABOUT: &'static str = "the crank-rocker (Bogenschubkurbel) and the parallel crank: positions by two circles with the branch named, the rocker's dead positions, the transmission angle flagged below a limit, Grashof's rule (KG XIV, Abb. 1043, 1045)";
-    const OUTPUTS: &'static [&'static str] = &["dead_positions", "transmission"];
+    const OUTPUTS: &'static [&'static str] = FourBarOutput::NAMES;
     const GEOMETRY_FIELD: &'static str = "links";
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
         ("frame", "links.frame_mm"),

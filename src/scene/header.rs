@@ -58,6 +58,32 @@ macro_rules! scene_struct {
 
 pub(crate) use scene_struct;
 
+/// Declares the outputs a procedure's scene can ask for, once: the enum a scene's `outputs`
+/// field is read into (each variant by the name given), and the list of those names in the
+/// order declared (`NAMES`, what `graphostatik procedures` prints).
+macro_rules! output_enum {
+    (
+        $(#[$m:meta])*
+        pub enum $name:ident {
+            $($(#[$vm:meta])* $variant:ident = $text:literal),* $(,)?
+        }
+    ) => {
+        $(#[$m])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+        #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+        pub enum $name {
+            $($(#[$vm])* #[serde(rename = $text)] $variant,)*
+        }
+
+        impl $name {
+            /// Every output, by the name a scene gives it, in the order declared.
+            pub const NAMES: &'static [&'static str] = &[$($text),*];
+        }
+    };
+}
+
+pub(crate) use output_enum;
+
 /// What the live preview offers to move (`"preview": { "sliders": [ … ] }` in any scene).
 ///
 /// ```json

@@ -38,15 +38,14 @@ super::header::scene_struct! {
     }
 }
 
-/// What an offset-crank scene can ask for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-#[serde(rename_all = "snake_case")]
-pub enum OffsetOutput {
-    /// The piston velocity by Q on the perpendicular through O.
-    Velocity,
-    /// The rod, guide and tangential forces from the piston force.
-    Forces,
+super::header::output_enum! {
+    /// What an offset-crank scene can ask for.
+    pub enum OffsetOutput {
+        /// The piston velocity by Q on the perpendicular through O.
+        Velocity = "velocity",
+        /// The rod, guide and tangential forces from the piston force.
+        Forces = "forces",
+    }
 }
 
 /// Scales of an offset-crank scene.
@@ -178,7 +177,7 @@ impl OffsetScene {
 impl super::Procedure for OffsetScene {
     const NAME: &'static str = "offset_crank";
     const ABOUT: &'static str = "the offset (geschränkt) slider-crank: dead centres by the arcs L ± R, the unequal strokes’ crank angles 180° ± δ, path, velocity and forces (KG XIV, Abb. 1046)";
-    const OUTPUTS: &'static [&'static str] = &["velocity", "forces"];
+    const OUTPUTS: &'static [&'static str] = OffsetOutput::NAMES;
     const GEOMETRY_FIELD: &'static str = "offset_mm";
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
         ("offset", "offset_mm"),

@@ -46,17 +46,16 @@ pub struct YokeCrank {
     pub stroke_mm: Option<f64>,
 }
 
-/// What a scotch-yoke scene can ask for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-#[serde(rename_all = "snake_case")]
-pub enum YokeOutput {
-    /// The velocity c′ over the stroke.
-    Velocity,
-    /// The acceleration b′ over the stroke.
-    Acceleration,
-    /// The slider-crank of the same stroke, drawn beside and laid into the diagrams.
-    SliderCrank,
+super::header::output_enum! {
+    /// What a scotch-yoke scene can ask for.
+    pub enum YokeOutput {
+        /// The velocity c′ over the stroke.
+        Velocity = "velocity",
+        /// The acceleration b′ over the stroke.
+        Acceleration = "acceleration",
+        /// The slider-crank of the same stroke, drawn beside and laid into the diagrams.
+        SliderCrank = "slider_crank",
+    }
 }
 
 /// Scales of a scotch-yoke scene.
@@ -181,7 +180,7 @@ impl YokeScene {
 impl super::Procedure for YokeScene {
     const NAME: &'static str = "scotch_yoke";
     const ABOUT: &'static str = "the scotch yoke (Kurbelschleife): path, velocity and acceleration over the stroke, beside the slider-crank of the same stroke (KG XIV, Abb. 1069)";
-    const OUTPUTS: &'static [&'static str] = &["velocity", "acceleration", "slider_crank"];
+    const OUTPUTS: &'static [&'static str] = YokeOutput::NAMES;
     const GEOMETRY_FIELD: &'static str = "crank";
 
     fn sheet_extent(p: &YokeProblem) -> (f64, &'static str) {

@@ -434,17 +434,7 @@ impl SliderCrankProblem {
 impl Procedure for SliderCrankScene {
     const NAME: &'static str = "slider_crank";
     const ABOUT: &'static str = "the slider-crank: piston path, piston velocity, rod, guide, radial and tangential forces (LH II, KG XIV B)";
-    const OUTPUTS: &'static [&'static str] = &[
-        "piston_path",
-        "velocity",
-        "rod_force",
-        "guide_force",
-        "tangential_force",
-        "radial_force",
-        "acceleration",
-        "max_velocity",
-        "polar_diagrams",
-    ];
+    const OUTPUTS: &'static [&'static str] = CrankOutput::NAMES;
     const GEOMETRY_FIELD: &'static str = "mechanism";
 
     fn sheet_extent(p: &SliderCrankProblem) -> (f64, &'static str) {

@@ -41,13 +41,12 @@ pub struct LinkSpec {
     pub lever_mm: f64,
 }
 
-/// What a slotted-link scene can ask for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-#[serde(rename_all = "snake_case")]
-pub enum LinkOutput {
-    /// The table speed over the stroke (Abb. 1072), with c₁ and c₂.
-    Velocity,
+super::header::output_enum! {
+    /// What a slotted-link scene can ask for.
+    pub enum LinkOutput {
+        /// The table speed over the stroke (Abb. 1072), with c₁ and c₂.
+        Velocity = "velocity",
+    }
 }
 
 /// Scales of a slotted-link scene.
@@ -153,7 +152,7 @@ impl LinkScene {
 impl super::Procedure for LinkScene {
     const NAME: &'static str = "slotted_link";
     const ABOUT: &'static str = "the oscillating slotted link (schwingende Kurbelschleife, quick return): working and return angles, β/α, the table's path and speed by the parallel through F, c₁ and c₂ (KG XIV, Abb. 1071-1072, eq. 304-305)";
-    const OUTPUTS: &'static [&'static str] = &["velocity"];
+    const OUTPUTS: &'static [&'static str] = LinkOutput::NAMES;
     const GEOMETRY_FIELD: &'static str = "link";
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
         ("centre_distance", "link.centre_distance_mm"),

@@ -159,32 +159,31 @@ impl Default for Effects {
     }
 }
 
-/// An output of the slider-crank procedures.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-#[serde(rename_all = "snake_case")]
-pub enum CrankOutput {
-    /// Piston path by the arc with the rod length (KG Abb. 1047, LH Abb. 49).
-    PistonPath,
-    /// Piston velocity (KG Abb. 1049, LH Abb. 53), by the `velocity_methods`.
-    Velocity,
-    /// Rod force S (LH Abb. 61, KG (300)).
-    RodForce,
-    /// Guide force N (LH Abb. 61, KG (301)).
-    GuideForce,
-    /// Tangential force T (LH Abb. 65, KG Abb. 1063).
-    TangentialForce,
-    /// Radial crank-pin force K (LH Abb. 61, KG (302)).
-    RadialForce,
-    /// Piston acceleration over the stroke by Tolle's parabola, outstroke and return
-    /// (LH Abb. 55-57, KG Abb. 1050).
-    Acceleration,
-    /// Esselborn's construction of the crank angle of the largest piston velocity (LH Abb. 52),
-    /// beside the exact maximum and the book's 79°16'.
-    MaxVelocity,
-    /// The polar net-pressure diagram and the polar turning-force diagram on the crank rays
-    /// (LH C.2, F, Abb. 59), with the tangential force they need.
-    PolarDiagrams,
+super::header::output_enum! {
+    /// An output of the slider-crank procedures.
+    pub enum CrankOutput {
+        /// Piston path by the arc with the rod length (KG Abb. 1047, LH Abb. 49).
+        PistonPath = "piston_path",
+        /// Piston velocity (KG Abb. 1049, LH Abb. 53), by the `velocity_methods`.
+        Velocity = "velocity",
+        /// Rod force S (LH Abb. 61, KG (300)).
+        RodForce = "rod_force",
+        /// Guide force N (LH Abb. 61, KG (301)).
+        GuideForce = "guide_force",
+        /// Tangential force T (LH Abb. 65, KG Abb. 1063).
+        TangentialForce = "tangential_force",
+        /// Radial crank-pin force K (LH Abb. 61, KG (302)).
+        RadialForce = "radial_force",
+        /// Piston acceleration over the stroke by Tolle's parabola, outstroke and return
+        /// (LH Abb. 55-57, KG Abb. 1050).
+        Acceleration = "acceleration",
+        /// Esselborn's construction of the crank angle of the largest piston velocity (LH Abb. 52),
+        /// beside the exact maximum and the book's 79°16'.
+        MaxVelocity = "max_velocity",
+        /// The polar net-pressure diagram and the polar turning-force diagram on the crank rays
+        /// (LH C.2, F, Abb. 59), with the tangential force they need.
+        PolarDiagrams = "polar_diagrams",
+    }
 }
 
 impl CrankOutput {
