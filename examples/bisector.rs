@@ -10,8 +10,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let a = b.point(Point::new(0.0, 0.0), lbl("A"), Role::Given, n("point A"));
     let c = b.point(Point::new(80.0, 30.0), lbl("B"), Role::Given, n("point B"));
     let r = (c.g - a.g).norm();
-    let ka = b.circle(&a, r, true, Label::NONE, con, n("circle about A through B"))?;
-    let kb = b.circle(&c, r, true, Label::NONE, con, n("circle about B through A"))?;
+    let ka = b.circle(&a, r, Drawn::Whole, Label::NONE, con, n("circle about A through B"))?;
+    let kb = b.circle(&c, r, Drawn::Whole, Label::NONE, con, n("circle about B through A"))?;
     let p = b.cut_circle_circle(&ka, &kb, Branch::First, lbl("P"), n("the circles cut in P"))?;
     let q = b.cut_circle_circle(&ka, &kb, Branch::Second, lbl("Q"), n("and in Q"))?;
     let pq = b.line_through(&p, &q, lbl("m"), Role::Result, n("the bisector PQ"))?;

@@ -10,8 +10,8 @@
 
 pub use crate::kernel::{Branch, Circle, Line, Point, Segment, Vector};
 pub use crate::protocol::{
-    note, Board, Check, ConstructionError, Cut, FigureMeta, Label, Note, Role, Scale, ScaleBar,
-    Topic, H,
+    note, Board, Check, ConstructionError, Cut, Drawn, FigureMeta, Label, Note, Role, Scale,
+    ScaleBar, Topic, H,
 };
 pub use crate::render::figure;
 pub use crate::scene::{AnyProblem, AnyScene, Procedure};

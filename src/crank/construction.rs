@@ -2,8 +2,11 @@
 
 use super::closed_form as cf;
 use super::{Angles, CrankDrive, Drawing, Request};
+use crate::kernel::angle::SinCos;
 use crate::kernel::{Branch, Circle, Line, Point, Vector};
-use crate::protocol::{note, Board, ConstructionError, Cut, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{
+    note, Board, ConstructionError, Cut, Drawn, Label, Note, Role, Scale, Topic, H,
+};
 use serde::Serialize;
 
 mod accel;
@@ -663,7 +666,7 @@ impl Builder<'_> {
                 let arc = self.b.circle(
                     &xk,
                     self.l,
-                    false,
+                    Drawn::Marks,
                     Label::NONE,
                     Role::Construction,
                     N_STROKE_ARC,
@@ -795,8 +798,14 @@ impl Builder<'_> {
                 Role::Axis,
                 N_VERTICAL,
             )?;
-            let crank_circle =
-                b.circle(&o, self.r, true, Label::NONE, Role::Given, N_CRANK_CIRCLE)?;
+            let crank_circle = b.circle(
+                &o,
+                self.r,
+                Drawn::Whole,
+                Label::NONE,
+                Role::Given,
+                N_CRANK_CIRCLE,
+            )?;
             let dead = b.cut_line_circle(
                 &piston_line,
                 &crank_circle,
@@ -809,7 +818,7 @@ impl Builder<'_> {
                 let arc = b.circle(
                     &dead,
                     self.l,
-                    false,
+                    Drawn::Marks,
                     Label::NONE,
                     Role::Construction,
                     N_DEAD_ARC,
@@ -877,7 +886,7 @@ impl Builder<'_> {
             let (s, c) = crate::kernel::angle::sin_cos_deg(self.thetas[i]);
             self.b.point_on_circle_dir(
                 &circle,
-                (s, -c),
+                SinCos { sin: s, cos: -c },
                 Label::indexed("A", i as u32),
                 Role::Result,
                 N_CRANK_AT,
@@ -897,7 +906,7 @@ impl Builder<'_> {
             let arc = self.b.circle(
                 &pin,
                 self.l,
-                false,
+                Drawn::Marks,
                 Label::NONE,
                 Role::Construction,
                 N_ROD_ARC,
@@ -1364,7 +1373,7 @@ impl Builder<'_> {
         let circle = self.b.circle(
             &o,
             self.r,
-            true,
+            Drawn::Whole,
             Label::NONE,
             Role::Construction,
             N_POLAR_ZERO,

@@ -37,6 +37,24 @@ pub fn sin_cos_deg(deg: f64) -> (f64, f64) {
     }
 }
 
+/// A direction by its sine and cosine: for an angle better known by those than by its degrees
+/// (180° − θ for a tiny θ, where forming 180 − θ would round θ away).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SinCos {
+    /// The sine.
+    pub sin: f64,
+    /// The cosine.
+    pub cos: f64,
+}
+
+impl SinCos {
+    /// The sine and cosine of `deg` degrees, exact at the quadrants ([`sin_cos_deg`]).
+    pub fn of_deg(deg: f64) -> SinCos {
+        let (sin, cos) = sin_cos_deg(deg);
+        SinCos { sin, cos }
+    }
+}
+
 /// `deg.rem_euclid(360.0)`, the same bits, without the division where the angle is in
 /// [0°, 360°) already (as nearly every angle of a construction is): `fmod` was 2 % of the
 /// crank construction's instructions.

@@ -17,7 +17,7 @@
 //! undetermined (the parallel crank may turn into the antiparallel one).
 
 use crate::kernel::{Branch, Circle, Point, Vector};
-use crate::protocol::{Board, ConstructionError, Label, Note, Role, Topic, H};
+use crate::protocol::{Board, ConstructionError, Drawn, Label, Note, Role, Topic, H};
 
 fn n(caption: &'static str, term: Option<&'static str>) -> Note {
     crate::protocol::note(
@@ -331,7 +331,7 @@ fn frame(b: &mut Board, fb: &FourBar, ls: f64) -> Result<Frame, ConstructionErro
     let crank = b.circle(
         &o,
         fb.crank / ls,
-        true,
+        Drawn::Whole,
         Label::NONE,
         Role::Given,
         setup.clone(),
@@ -339,7 +339,11 @@ fn frame(b: &mut Board, fb: &FourBar, ls: f64) -> Result<Frame, ConstructionErro
     let rocker = b.circle(
         &a,
         fb.rocker / ls,
-        !fb.rocker_swings(),
+        if fb.rocker_swings() {
+            Drawn::Marks
+        } else {
+            Drawn::Whole
+        },
         Label::NONE,
         Role::Given,
         setup,
@@ -377,7 +381,7 @@ fn dead_positions(
         let arc = b.circle(
             &fr.o,
             reach / ls,
-            false,
+            Drawn::Marks,
             Label::NONE,
             Role::Construction,
             note.clone(),
@@ -437,7 +441,7 @@ fn position(
     let arc = b.circle(
         &pin,
         fb.coupler / ls,
-        false,
+        Drawn::Marks,
         Label::NONE,
         Role::Construction,
         n("the coupler’s length about the pin", Some("Koppel")),

@@ -13,7 +13,7 @@
 //! = 0 every value is the straight slider-crank's ([`crate::crank`]).
 
 use crate::kernel::{Branch, Circle, Line, Point, Vector};
-use crate::protocol::{Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{Board, ConstructionError, Drawn, Label, Note, Role, Scale, Topic, H};
 
 fn n(caption: &'static str, term: Option<&'static str>) -> Note {
     crate::protocol::note(
@@ -260,7 +260,7 @@ fn frame(
     let circle = b.circle(
         &o,
         k.crank_radius / ls,
-        true,
+        Drawn::Whole,
         Label::NONE,
         Role::Given,
         setup.clone(),
@@ -322,7 +322,7 @@ fn dead_centres(
         let arc = b.circle(
             o,
             reach / ls,
-            false,
+            Drawn::Marks,
             Label::NONE,
             Role::Construction,
             n(caption, Some("Totpunkt")),
@@ -397,7 +397,7 @@ fn crosshead(
     let arc = b.circle(
         &pin,
         k.rod_length / ls,
-        false,
+        Drawn::Marks,
         Label::NONE,
         Role::Construction,
         n("the arc of the rod length about the pin", None),

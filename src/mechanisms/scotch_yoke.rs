@@ -11,7 +11,7 @@
 
 use crate::crank::{self, Angles, CrankDrive, CrankResults, Drawing, PistonForce, Request};
 use crate::kernel::Point;
-use crate::protocol::{Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{Board, ConstructionError, Drawn, Label, Note, Role, Scale, Topic, H};
 
 fn n(caption: &'static str, term: Option<&'static str>) -> Note {
     crate::protocol::note(
@@ -164,7 +164,7 @@ fn frame(
         Role::Given,
         setup.clone(),
     );
-    let circle = b.circle(&o, r, true, Label::NONE, Role::Given, setup.clone())?;
+    let circle = b.circle(&o, r, Drawn::Whole, Label::NONE, Role::Given, setup.clone())?;
     let t = b.point_on_circle(&circle, 0.0, Label::plain("T"), Role::Axis, setup.clone());
     let axis = b.line_through(&t, &o, Label::NONE, Role::Axis, setup.clone())?;
     let c_mm = yoke.crank_pin_speed / dr.velocity_scale;

@@ -15,7 +15,7 @@
 //! start of the working stroke, where ψ is the lever's angle from MD.
 
 use crate::kernel::{Circle, Line, Point};
-use crate::protocol::{Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{Board, ConstructionError, Drawn, Label, Note, Role, Scale, Topic, H};
 
 fn n(caption: &'static str, term: Option<&'static str>) -> Note {
     crate::protocol::note(
@@ -164,6 +164,15 @@ struct Frame {
     base: Option<H<Line>>,
 }
 
+/// The scales of a slotted link's figure.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinkScales {
+    /// Length scale 1 : n.
+    pub length: f64,
+    /// m/s per mm of the table's speed.
+    pub velocity: f64,
+}
+
 /// Sheet and machine units of one construction.
 #[derive(Debug, Clone, Copy)]
 struct Units {
@@ -209,7 +218,8 @@ impl LinkError {
 /// // KG Abb. 1071 with r = 100, e = 200, R = 500 mm: β = arccos(r/e) = 60°, α = 120°.
 /// let link = SlottedLink { crank_radius: 100.0, centre_distance: 200.0, lever_length: 500.0, crank_pin_speed: 1.0 };
 /// let mut b = Board::recording();
-/// let r = construct(&mut b, &link, (5.0, 0.02), &[0.0, 120.0, 300.0], LinkRequest { velocity: true }).unwrap();
+/// let scales = LinkScales { length: 5.0, velocity: 0.02 };
+/// let r = construct(&mut b, &link, scales, &[0.0, 120.0, 300.0], LinkRequest { velocity: true }).unwrap();
 /// assert!((r.ratio - 0.5).abs() < 1e-12);          // v_a/v_r = β/α
 /// let (c1, c2) = r.c1_c2.unwrap();
 /// assert!((c1 - 500.0 / 300.0).abs() < 1e-12);     // KG 304: vR/(e + r)
@@ -219,14 +229,14 @@ impl LinkError {
 pub fn construct(
     b: &mut Board,
     link: &SlottedLink,
-    (length_scale, velocity_scale): (f64, f64),
+    scales: LinkScales,
     phis: &[f64],
     rq: LinkRequest,
 ) -> Result<LinkResults, ConstructionError> {
     link.validate().map_err(|e| e.refusal(link))?;
     let u = Units {
-        length_scale,
-        velocity_scale,
+        length_scale: scales.length,
+        velocity_scale: scales.velocity,
     };
     let mut fr = frame(b, link, u, rq.velocity)?;
     let mut res = outer_positions(b, &mut fr, link, u)?;
@@ -286,7 +296,7 @@ fn frame(
     let circle = b.circle(
         &m,
         link.crank_radius / ls,
-        true,
+        Drawn::Whole,
         Label::NONE,
         Role::Given,
         setup,
@@ -341,7 +351,7 @@ fn tangents(
     let thales = b.circle(
         &mid,
         e / 2.0,
-        true,
+        Drawn::Whole,
         Label::NONE,
         Role::Construction,
         thales_note,

@@ -4,6 +4,7 @@ use super::accuracy::{ErrorModel, Track, WorstCut};
 use super::config::{BoardConfig, Jitter, Mode};
 use super::reference::{self as refr, ReferenceRow, Shadow, DP};
 use super::step::*;
+use crate::kernel::angle::SinCos;
 use crate::kernel::construct;
 use crate::kernel::tolerance::CHECK_REL;
 use crate::kernel::{
@@ -865,13 +866,13 @@ impl Board {
         });
     }
 
-    /// The circle about `center` with `radius` mm (the compass). `full` draws it whole;
-    /// otherwise only the short arcs where points are constructed on it.
+    /// The circle about `center` with `radius` mm (the compass), drawn whole or only in the
+    /// short arcs where points are constructed on it ([`Drawn`]).
     pub fn circle(
         &mut self,
         center: &H<Point>,
         radius: f64,
-        full: bool,
+        drawn: Drawn,
         label: Label,
         role: Role,
         note: Note,
@@ -888,7 +889,7 @@ impl Board {
         self.begin(kind, &note, &[center.id]);
         let id = self.add(label, role, || Geom::Circle {
             circle: c,
-            full,
+            full: drawn == Drawn::Whole,
             marks: Vec::new(),
         });
         self.set_tr(id, |b| {
@@ -911,27 +912,28 @@ impl Board {
         role: Role,
         note: Note,
     ) -> H<Point> {
-        let sc = crate::kernel::angle::sin_cos_deg(deg);
-        self.point_on_circle_dir(circle, sc, label, role, note)
+        let dir = SinCos::of_deg(deg);
+        self.point_on_circle_dir(circle, dir, label, role, note)
     }
 
-    /// The point of a circle in the direction given by its sine and cosine `(s, c)`, for an
+    /// The point of a circle in the direction given by its sine and cosine ([`SinCos`]), for an
     /// angle better known by those than by its degrees (180° − θ for a tiny θ: forming
     /// 180 − θ would round θ away), with the ray from the centre drawn.
     pub fn point_on_circle_dir(
         &mut self,
         circle: &H<Circle>,
-        (s, c): (f64, f64),
+        dir: SinCos,
         label: Label,
         role: Role,
         note: Note,
     ) -> H<Point> {
+        let SinCos { sin: s, cos: c } = dir;
         let g = &circle.g;
         let p = Point::new(g.center.x + g.radius * c, g.center.y + g.radius * s);
         let p = self.mark(p);
         self.begin(StepKind::Divide, &note, &[circle.id]);
         let id = self.add(label, Role::Given, || Geom::Point { at: p });
-        self.on_circle(id, circle, &p, (s, c));
+        self.on_circle(id, circle, &p, dir);
         let c = circle.g.center;
         self.add(Label::NONE, role, || Geom::Segment {
             segment: Segment { a: c, b: p },
@@ -941,7 +943,8 @@ impl Board {
     }
 
     /// The bound and reference of the point `p` of a circle in the direction `(sin, cos)`.
-    fn on_circle(&mut self, id: ObjId, circle: &H<Circle>, p: &Point, (s, c): (f64, f64)) {
+    fn on_circle(&mut self, id: ObjId, circle: &H<Circle>, p: &Point, dir: SinCos) {
+        let SinCos { sin: s, cos: c } = dir;
         self.set_tr(id, |b| {
             b.model.on_circle(&b.tr(circle.id), p, circle.g.radius)
         });
@@ -975,7 +978,7 @@ impl Board {
             });
             if self.recording {
                 let deg = start_deg + sign * 360.0 * k as f64 / n.max(1) as f64;
-                self.on_circle(id, circle, &p, crate::kernel::angle::sin_cos_deg(deg));
+                self.on_circle(id, circle, &p, SinCos::of_deg(deg));
             }
             self.touch(circle.id, &p);
             out.push(H { id, g: p });

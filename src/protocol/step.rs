@@ -115,6 +115,16 @@ pub enum Topic {
     Custom(&'static str),
 }
 
+/// How much of a circle the figure draws: the whole circle (a crank circle, a given circle)
+/// or, as a draftsman sets the compass, only short arcs where points are cut on it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Drawn {
+    /// The whole circle.
+    Whole,
+    /// Only the compass's marks: short arcs where points are constructed on it.
+    Marks,
+}
+
 /// How an object is drawn: the textbook's hierarchy of lines.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "snake_case")]

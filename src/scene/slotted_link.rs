@@ -4,7 +4,7 @@ use super::error::SceneError;
 use super::fields::Fields;
 use super::procedure::ReadContext;
 use super::types::{AngleSpec, Speed};
-use crate::mechanisms::slotted_link::{self, LinkRequest, LinkResults, SlottedLink};
+use crate::mechanisms::slotted_link::{self, LinkRequest, LinkResults, LinkScales, SlottedLink};
 use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
 use serde::{Deserialize, Serialize};
 
@@ -72,7 +72,7 @@ pub struct LinkProblem {
     /// The link.
     pub link: SlottedLink,
     /// Length scale 1 : n and velocity scale (m/s per mm).
-    pub scales: (f64, f64),
+    pub scales: LinkScales,
     /// Crank angles from the start of the working stroke (degrees).
     pub phis: Vec<f64>,
     /// What to draw.
@@ -136,11 +136,12 @@ impl LinkScene {
             title: self.title.clone(),
             source: self.source.clone().unwrap_or_default(),
             link,
-            scales: (
-                d.length_scale.unwrap_or_else(|| nice(l.lever_mm / 100.0)),
-                d.velocity_scale_m_s_per_mm
+            scales: LinkScales {
+                length: d.length_scale.unwrap_or_else(|| nice(l.lever_mm / 100.0)),
+                velocity: d
+                    .velocity_scale_m_s_per_mm
                     .unwrap_or_else(|| nice(link.c2() / 40.0)),
-            ),
+            },
             phis,
             request: LinkRequest {
                 velocity: self.outputs.contains(&LinkOutput::Velocity),
@@ -163,7 +164,7 @@ impl super::Procedure for LinkScene {
     type Results = LinkResults;
 
     fn sheet_extent(p: &LinkProblem) -> (f64, &'static str) {
-        let (ls, vs) = p.scales;
+        let (ls, vs) = (p.scales.length, p.scales.velocity);
         let length = 2.0 * p.link.lever_length / ls;
         let speed = 2.0 * p.link.c2() / vs;
         if speed > length && p.request.velocity {
@@ -173,7 +174,7 @@ impl super::Procedure for LinkScene {
         }
     }
     fn smallest_part(p: &LinkProblem) -> Option<(f64, &'static str)> {
-        let (ls, vs) = p.scales;
+        let (ls, vs) = (p.scales.length, p.scales.velocity);
         let crank = (p.link.crank_radius / ls, "drawing.length_scale");
         let speed = (p.link.c1() / vs, "drawing.velocity_scale_m_s_per_mm");
         Some(if p.request.velocity && speed.0 < crank.0 {
@@ -195,9 +196,9 @@ impl super::Procedure for LinkScene {
         Ok((board, r))
     }
     fn figure_meta(p: &LinkProblem) -> FigureMeta {
-        let mut scales = vec![ScaleBar::length(p.scales.0, "m")];
+        let mut scales = vec![ScaleBar::length(p.scales.length, "m")];
         if p.request.velocity {
-            scales.push(ScaleBar::velocity(p.scales.1));
+            scales.push(ScaleBar::velocity(p.scales.velocity));
         }
         FigureMeta {
             title: p.title.clone(),

@@ -10,7 +10,7 @@
 use super::super::closed_form as cf;
 use super::{Builder, MaxVelocity};
 use crate::kernel::{Branch, Circle, Line, Point, Vector};
-use crate::protocol::{note, ConstructionError, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{note, ConstructionError, Drawn, Label, Note, Role, Scale, Topic, H};
 
 const N_PERP: Note = note(
     "perpendicular to the piston line at the dead centre T₁",
@@ -181,7 +181,7 @@ impl Builder<'_> {
         let swing = b.circle(
             &o,
             (b1.g - o.g).norm(),
-            false,
+            Drawn::Marks,
             Label::NONE,
             Role::Construction,
             N_SWING,
@@ -190,7 +190,7 @@ impl Builder<'_> {
         let arc = b.circle(
             &bp,
             self.l,
-            false,
+            Drawn::Marks,
             Label::NONE,
             Role::Construction,
             N_ROD_ARC,

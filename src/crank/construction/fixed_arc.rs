@@ -8,7 +8,7 @@
 use super::super::closed_form as cf;
 use super::{Builder, Fixed};
 use crate::kernel::Branch;
-use crate::protocol::{note, ConstructionError, Label, Note, Role, Scale, Topic};
+use crate::protocol::{note, ConstructionError, Drawn, Label, Note, Role, Scale, Topic};
 
 const N_ARC: Note = note(
     "arc with the rod length about the crosshead’s dead position, drawn once",
@@ -64,12 +64,22 @@ impl Builder<'_> {
                 Role::Construction,
                 N_OUTER,
             )?;
-            let a0 = self
-                .b
-                .circle(&x0, self.l, false, Label::NONE, Role::Construction, N_ARC)?;
-            let a1 = self
-                .b
-                .circle(&x1, self.l, false, Label::NONE, Role::Construction, N_ARC)?;
+            let a0 = self.b.circle(
+                &x0,
+                self.l,
+                Drawn::Marks,
+                Label::NONE,
+                Role::Construction,
+                N_ARC,
+            )?;
+            let a1 = self.b.circle(
+                &x1,
+                self.l,
+                Drawn::Marks,
+                Label::NONE,
+                Role::Construction,
+                N_ARC,
+            )?;
             Fixed::Arcs([a0, a1])
         } else {
             let d1 = self.b.lay_off(

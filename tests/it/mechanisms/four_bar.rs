@@ -3,7 +3,7 @@
 //! the parallel crank's change points typed, and Grashof's limits refused naming the links.
 
 use graphostatik::mechanisms::four_bar::*;
-use graphostatik::protocol::{Board, ConstructionError};
+use graphostatik::protocol::{Board, ConstructionError, Drawn};
 use proptest::prelude::*;
 
 const ALL: FourBarRequest = FourBarRequest {
@@ -266,13 +266,34 @@ fn at_the_dead_positions_the_circles_touch() {
             note.clone(),
         );
         let crank = b
-            .circle(&o, fb.crank, true, Label::NONE, Role::Given, note.clone())
+            .circle(
+                &o,
+                fb.crank,
+                Drawn::Whole,
+                Label::NONE,
+                Role::Given,
+                note.clone(),
+            )
             .unwrap();
         let rock = b
-            .circle(&a, fb.rocker, true, Label::NONE, Role::Given, note.clone())
+            .circle(
+                &a,
+                fb.rocker,
+                Drawn::Whole,
+                Label::NONE,
+                Role::Given,
+                note.clone(),
+            )
             .unwrap();
         let arc = b
-            .circle(&o, reach, false, Label::NONE, Role::Given, note.clone())
+            .circle(
+                &o,
+                reach,
+                Drawn::Marks,
+                Label::NONE,
+                Role::Given,
+                note.clone(),
+            )
             .unwrap();
         let dead = b
             .cut_circle_circle(&arc, &rock, Branch::Second, Label::NONE, note.clone())
@@ -282,7 +303,7 @@ fn at_the_dead_positions_the_circles_touch() {
             .circle(
                 &dead,
                 fb.coupler,
-                false,
+                Drawn::Marks,
                 Label::NONE,
                 Role::Given,
                 note.clone(),

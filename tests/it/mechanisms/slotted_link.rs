@@ -17,8 +17,11 @@ fn link(r: f64, e: f64, l: f64) -> SlottedLink {
     }
 }
 
-fn scales(k: &SlottedLink) -> (f64, f64) {
-    (k.lever_length / 100.0, k.c2() / 40.0)
+fn scales(k: &SlottedLink) -> LinkScales {
+    LinkScales {
+        length: k.lever_length / 100.0,
+        velocity: k.c2() / 40.0,
+    }
 }
 
 /// Every 5° of the crank, both strokes: every check passes (path, speed, 2β, β/α, stroke, c₁,
@@ -72,7 +75,17 @@ fn the_return_speed_grows_without_bound_and_e_at_r_is_refused() {
     }
     for e in [100.0, 99.0, 0.0] {
         let k = link(100.0, e, 500.0);
-        let err = construct(&mut Board::recording(), &k, (5.0, 0.1), &[0.0], V).unwrap_err();
+        let err = construct(
+            &mut Board::recording(),
+            &k,
+            LinkScales {
+                length: 5.0,
+                velocity: 0.1,
+            },
+            &[0.0],
+            V,
+        )
+        .unwrap_err();
         match err {
             ConstructionError::Unsupported { input, reason } => {
                 assert_eq!(
@@ -89,7 +102,17 @@ fn the_return_speed_grows_without_bound_and_e_at_r_is_refused() {
         }
     }
     let short = link(100.0, 200.0, 299.0);
-    let err = construct(&mut Board::recording(), &short, (5.0, 0.1), &[0.0], V).unwrap_err();
+    let err = construct(
+        &mut Board::recording(),
+        &short,
+        LinkScales {
+            length: 5.0,
+            velocity: 0.1,
+        },
+        &[0.0],
+        V,
+    )
+    .unwrap_err();
     assert!(
         matches!(err, ConstructionError::Unsupported { ref input, .. } if *input == "lever_length"),
         "{err:?}"
