@@ -3,14 +3,15 @@
 use super::error::SceneError;
 use super::fields::optional_positive;
 use super::procedure::ReadContext;
-use crate::kernel::{Point, Vector};
+use crate::kernel::Vector;
 use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
+use crate::truss::builder::Part;
 use crate::truss::cremona::{self, CaseResult, TrussDrawing};
 use crate::truss::envelope::{Combination, EnvelopeRule};
 use crate::truss::matrix::{self, Determinacy};
 use crate::truss::redundant::{self, PairMode};
 use crate::truss::roof;
-use crate::truss::{Joint, JointLoad, LoadCase, Member, Support, Truss};
+use crate::truss::{JointLoad, LoadCase, Truss, TrussError};
 use foldhash::{HashMap, HashMapExt};
 use serde::{Deserialize, Serialize};
 
@@ -293,12 +294,11 @@ impl TrussScene {
     /// The truss the scene describes, every value checked under the limits `ctx` sets.
     fn checked_truss(&self, ctx: &ReadContext) -> Result<Truss, SceneError> {
         let origin = ctx.origin;
-        let index = self.check_joints(ctx)?;
-        self.check_coincident_joints(origin)?;
-        let names = self.check_members(origin, &index)?;
-        self.check_supports(origin, &index)?;
+        self.check_joint_count(ctx)?;
+        let truss = self.build_truss(origin)?;
+        self.check_support_layout(origin)?;
+        let index = self.joint_index();
         self.check_loads(origin, &index)?;
-        let truss = self.truss();
         self.check_case_names(origin, &truss)?;
         self.check_cost(ctx, &truss)?;
         if let Some(d) = &self.drawing {
@@ -311,7 +311,7 @@ impl TrussScene {
             )?;
         }
         if !self.diagonal_pairs.is_empty() {
-            self.check_pairs(origin, &names, &truss)?;
+            self.check_pairs(origin, &self.member_index(), &truss)?;
         } else if self.diagonal_mode.is_some() {
             return Err(invalid(
                 origin,
@@ -324,202 +324,190 @@ impl TrussScene {
         Ok(truss)
     }
 
-    /// At least two joints, at finite places, each named once: the index of the names.
-    fn check_joints(&self, ctx: &ReadContext) -> Result<HashMap<&str, usize>, SceneError> {
-        let origin = ctx.origin;
-        let bad = |field: String, message: String| invalid(origin, field, message);
+    /// At least two joints, and no more than the limits of what the scene is read for.
+    fn check_joint_count(&self, ctx: &ReadContext) -> Result<(), SceneError> {
+        let bad = |message: String| invalid(ctx.origin, "joints".into(), message);
         if self.joints.len() < 2 {
-            return Err(bad(
-                "joints".into(),
-                "a truss needs at least two joints".into(),
-            ));
+            return Err(bad("a truss needs at least two joints".into()));
         }
         let (max_joints, _) = limits(ctx);
         if self.joints.len() > max_joints {
-            return Err(bad(
-                "joints".into(),
-                format!("more than {max_joints} joints"),
-            ));
+            return Err(bad(format!("more than {max_joints} joints")));
         }
-        let mut index: HashMap<&str, usize> = HashMap::new();
-        for (i, j) in self.joints.iter().enumerate() {
-            if !(j.at_m[0].is_finite() && j.at_m[1].is_finite()) {
-                return Err(bad(
-                    format!("joints[{i}].at_m"),
-                    "must be finite numbers".into(),
-                ));
-            }
-            if let Some(first) = index.insert(j.name.as_str(), i) {
-                return Err(bad(
-                    format!("joints[{i}].name"),
-                    format!("joint `{}` is named twice (joints[{first}])", j.name),
-                ));
-            }
-        }
-        Ok(index)
+        Ok(())
     }
 
-    /// No two joints at one place: sorted by position, neighbours compared (O(k log k)).
-    fn check_coincident_joints(&self, origin: &str) -> Result<(), SceneError> {
-        let bad = |field: String, message: String| invalid(origin, field, message);
-        let size = {
-            let xs = self.joints.iter().map(|j| j.at_m[0]);
-            let ys = self.joints.iter().map(|j| j.at_m[1]);
-            let span = |v: Vec<f64>| {
-                v.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
-                    - v.iter().cloned().fold(f64::INFINITY, f64::min)
-            };
-            span(xs.collect()).max(span(ys.collect()))
-        };
-        if !(MIN_TRUSS_SIZE_M..=MAX_TRUSS_SIZE_M).contains(&size) {
-            return Err(bad(
+    /// The truss, built and checked by the truss model's own validator
+    /// ([`TrussBuilder`](crate::truss::TrussBuilder)) in the scene's local frame, its errors
+    /// named by the scene's fields. A roller's direction in degrees, and a pin given one, are
+    /// the scene's own to refuse; the builder reports them in their turn.
+    fn build_truss(&self, origin: &str) -> Result<Truss, SceneError> {
+        let mut b = Truss::builder()
+            .size_within(MIN_TRUSS_SIZE_M, MAX_TRUSS_SIZE_M)
+            .in_frame_of(self.local_origin());
+        for j in &self.joints {
+            b = b.joint(j.name.as_str(), (j.at_m[0], j.at_m[1]));
+        }
+        for m in &self.members {
+            b = b.member(m.name.as_str(), m.joints[0].as_str(), m.joints[1].as_str());
+        }
+        for (i, s) in self.supports.iter().enumerate() {
+            b = match (s.kind, s.direction_deg) {
+                (SupportKindSpec::Pinned, None) => b.pin(s.joint.as_str()),
+                (SupportKindSpec::Roller, Some(a)) if a.is_finite() => {
+                    let (sn, c) = crate::kernel::angle::sin_cos_deg(a);
+                    b.roller_unit(s.joint.as_str(), Vector::new(c, sn))
+                }
+                (SupportKindSpec::Roller, None) => b
+                    .pin(s.joint.as_str())
+                    .refused("a roller needs the direction of its reaction"),
+                (SupportKindSpec::Roller, Some(_)) => {
+                    b.pin(s.joint.as_str()).refused("must be finite")
+                }
+                (SupportKindSpec::Pinned, Some(_)) => b
+                    .pin(s.joint.as_str())
+                    .refused("a pin takes any direction; give a direction only for a roller"),
+            }
+            .named(s.reaction_name(i));
+        }
+        b.build().map_err(|e| self.truss_error(origin, e))
+    }
+
+    /// A truss model's error, named by the scene's field.
+    fn truss_error(&self, origin: &str, e: TrussError) -> SceneError {
+        let (field, message) = match e {
+            TrussError::Invalid {
+                at: Some(Part::Joint(i)),
+                ..
+            } => (format!("joints[{i}].at_m"), "must be finite numbers".into()),
+            TrussError::Duplicate {
+                what: "joint",
+                name,
+                at: Part::Joint(i),
+                first: Part::Joint(f),
+            } => (
+                format!("joints[{i}].name"),
+                format!("joint `{name}` is named twice (joints[{f}])"),
+            ),
+            TrussError::Size { size, .. } => (
                 "joints".into(),
                 format!(
                     "the truss spans {size:e} m: give its joints in metres, within \
                      {MIN_TRUSS_SIZE_M:e} to {MAX_TRUSS_SIZE_M:e} m across"
                 ),
-            ));
-        }
-        let eps = crate::kernel::tolerance::REL_LENGTH_EPS * size.max(f64::MIN_POSITIVE);
-        // A grid of cells as wide as the tolerance: a joint can only lie on a joint in its
-        // own cell or the eight around it, whatever lies between them in any ordering
-        // (O(k) for k joints; −0.0 and 0.0 are one coordinate).
-        let cell = |v: f64| ((v + 0.0) / eps).floor() as i64;
-        let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
-        for (b, jb) in self.joints.iter().enumerate() {
-            let [x, y] = jb.at_m;
-            let (cx, cy) = (cell(x), cell(y));
-            for dx in -1..=1i64 {
-                for dy in -1..=1i64 {
-                    let key = (cx.saturating_add(dx), cy.saturating_add(dy));
-                    for &a in grid.get(&key).map_or(&[][..], |v| v.as_slice()) {
-                        let [ax, ay] = self.joints[a].at_m;
-                        if (ax - x).abs() <= eps && (ay - y).abs() <= eps {
-                            return Err(bad(
-                                format!("joints[{b}]"),
-                                format!(
-                                    "joint `{}` lies on joint `{}`",
-                                    crate::fmt::clip(&jb.name, 60),
-                                    crate::fmt::clip(&self.joints[a].name, 60)
-                                ),
-                            ));
-                        }
-                    }
-                }
-            }
-            grid.entry((cx, cy)).or_default().push(b);
-        }
-        Ok(())
+            ),
+            TrussError::Coincident {
+                joint,
+                on,
+                at: Part::Joint(b),
+            } => (
+                format!("joints[{b}]"),
+                format!(
+                    "joint `{}` lies on joint `{}`",
+                    crate::fmt::clip(&joint, 60),
+                    crate::fmt::clip(&on, 60)
+                ),
+            ),
+            e => return self.member_or_support_error(origin, e),
+        };
+        invalid(origin, field, message)
     }
 
-    /// Members between existing, distinct joints, none twice, each named once: the index of
-    /// their names.
-    fn check_members(
-        &self,
-        origin: &str,
-        index: &HashMap<&str, usize>,
-    ) -> Result<HashMap<&str, usize>, SceneError> {
-        let bad = |field: String, message: String| invalid(origin, field, message);
-        let mut pairs: HashMap<(usize, usize), usize> = HashMap::new();
-        let mut names: HashMap<&str, usize> = HashMap::new();
-        for (m, mem) in self.members.iter().enumerate() {
-            let mut ends = [0; 2];
-            for (e, name) in mem.joints.iter().enumerate() {
-                ends[e] = *index.get(name.as_str()).ok_or_else(|| {
-                    bad(
-                        format!("members[{m}].joints[{e}]"),
-                        format!(
-                            "member `{}` refers to joint `{name}`, which does not exist",
-                            mem.name
-                        ),
-                    )
-                })?;
-            }
-            if ends[0] == ends[1] {
-                return Err(bad(
-                    format!("members[{m}].joints"),
-                    format!(
-                        "member `{}` joins joint `{}` to itself: zero length",
-                        mem.name, mem.joints[0]
-                    ),
-                ));
-            }
-            let key = (ends[0].min(ends[1]), ends[0].max(ends[1]));
-            if let Some(first) = pairs.insert(key, m) {
-                return Err(bad(
-                    format!("members[{m}]"),
-                    format!(
-                        "member `{}` duplicates member `{}` between `{}` and `{}`",
-                        mem.name, self.members[first].name, mem.joints[0], mem.joints[1]
-                    ),
-                ));
-            }
-            if let Some(first) = names.insert(mem.name.as_str(), m) {
-                return Err(bad(
-                    format!("members[{m}].name"),
-                    format!("member `{}` is named twice (members[{first}])", mem.name),
-                ));
-            }
-        }
-        Ok(names)
+    /// A truss model's error of a member or a support, named by the scene's field.
+    fn member_or_support_error(&self, origin: &str, e: TrussError) -> SceneError {
+        let ends = |m: usize| &self.members[m].joints;
+        let (field, message) = match e {
+            TrussError::UnknownJoint {
+                joint,
+                at: Some((Part::Member(m), end)),
+                ..
+            } => (
+                format!("members[{m}].joints[{end}]"),
+                format!(
+                    "member `{}` refers to joint `{joint}`, which does not exist",
+                    self.members[m].name
+                ),
+            ),
+            TrussError::ZeroLength {
+                member,
+                at: Part::Member(m),
+            } => (
+                format!("members[{m}].joints"),
+                format!(
+                    "member `{member}` joins joint `{}` to itself: zero length",
+                    ends(m)[0]
+                ),
+            ),
+            TrussError::DuplicateMember {
+                member,
+                first,
+                at: Part::Member(m),
+            } => (
+                format!("members[{m}]"),
+                format!(
+                    "member `{member}` duplicates member `{first}` between `{}` and `{}`",
+                    ends(m)[0],
+                    ends(m)[1]
+                ),
+            ),
+            TrussError::Duplicate {
+                what: "member",
+                name,
+                at: Part::Member(m),
+                first: Part::Member(f),
+            } => (
+                format!("members[{m}].name"),
+                format!("member `{name}` is named twice (members[{f}])"),
+            ),
+            e => return self.support_error(origin, e),
+        };
+        invalid(origin, field, message)
     }
 
-    /// Supports at existing joints, one each, a direction for a roller only, their reactions
-    /// named once; one pin and one roller, or three rollers.
-    fn check_supports(&self, origin: &str, index: &HashMap<&str, usize>) -> Result<(), SceneError> {
-        let bad = |field: String, message: String| invalid(origin, field, message);
-        let mut supported: HashMap<usize, usize> = HashMap::new();
-        for (s, sup) in self.supports.iter().enumerate() {
-            let j = *index.get(sup.joint.as_str()).ok_or_else(|| {
-                bad(
-                    format!("supports[{s}].joint"),
-                    format!("support at joint `{}`, which does not exist", sup.joint),
-                )
-            })?;
-            if supported.insert(j, s).is_some() {
-                return Err(bad(
-                    format!("supports[{s}].joint"),
-                    format!("joint `{}` has two supports", sup.joint),
-                ));
-            }
-            match (sup.kind, sup.direction_deg) {
-                (SupportKindSpec::Roller, None) => {
-                    return Err(bad(
-                        format!("supports[{s}].direction_deg"),
-                        "a roller needs the direction of its reaction".into(),
-                    ))
-                }
-                (SupportKindSpec::Roller, Some(a)) if !a.is_finite() => {
-                    return Err(bad(
-                        format!("supports[{s}].direction_deg"),
-                        "must be finite".into(),
-                    ))
-                }
-                (SupportKindSpec::Pinned, Some(_)) => {
-                    return Err(bad(
-                        format!("supports[{s}].direction_deg"),
-                        "a pin takes any direction; give a direction only for a roller".into(),
-                    ))
-                }
-                _ => {}
-            }
-        }
-        let mut reaction_names: HashMap<String, usize> = HashMap::new();
-        for (s, sup) in self.supports.iter().enumerate() {
-            let name = sup.reaction_name(s);
-            if name.trim().is_empty() {
-                return Err(bad(
-                    format!("supports[{s}].name"),
-                    "a support's name must not be empty".into(),
-                ));
-            }
-            if let Some(first) = reaction_names.insert(name.clone(), s) {
-                return Err(bad(
-                    format!("supports[{s}].name"),
-                    format!("two supports are called `{name}` (supports[{first}])"),
-                ));
-            }
-        }
+    /// A truss model's error of a support, named by the scene's field.
+    fn support_error(&self, origin: &str, e: TrussError) -> SceneError {
+        let (field, message) = match e {
+            TrussError::UnknownJoint {
+                joint,
+                at: Some((Part::Support(s), _)),
+                ..
+            } => (
+                format!("supports[{s}].joint"),
+                format!("support at joint `{joint}`, which does not exist"),
+            ),
+            TrussError::TwoSupports {
+                joint,
+                at: Part::Support(s),
+            } => (
+                format!("supports[{s}].joint"),
+                format!("joint `{joint}` has two supports"),
+            ),
+            TrussError::Refused {
+                at: Part::Support(s),
+                message,
+            } => (format!("supports[{s}].direction_deg"), message.into()),
+            TrussError::Invalid {
+                at: Some(Part::Support(s)),
+                message,
+                ..
+            } => (format!("supports[{s}].name"), message.into()),
+            TrussError::Duplicate {
+                what: "reaction",
+                name,
+                at: Part::Support(s),
+                first: Part::Support(f),
+            } => (
+                format!("supports[{s}].name"),
+                format!("two supports are called `{name}` (supports[{f}])"),
+            ),
+            // Every error the builder gives a scene's truss is named above.
+            e => ("joints".into(), e.to_string()),
+        };
+        invalid(origin, field, message)
+    }
+
+    /// One pin and one roller, or three rollers: what the reactions' construction takes.
+    fn check_support_layout(&self, origin: &str) -> Result<(), SceneError> {
         let pins = self
             .supports
             .iter()
@@ -527,7 +515,8 @@ impl TrussScene {
             .count();
         let rollers = self.supports.len() - pins;
         if !matches!((pins, rollers), (1, 1) | (0, 3)) {
-            return Err(bad(
+            return Err(invalid(
+                origin,
                 "supports".into(),
                 format!(
                     "give one pin and one roller, or three rollers (found {pins} pin(s), {rollers} roller(s))"
@@ -535,6 +524,13 @@ impl TrussScene {
             ));
         }
         Ok(())
+    }
+
+    /// The joints' places by their names (each named once: the truss is built).
+    fn joint_index(&self) -> HashMap<&str, usize> {
+        (self.joints.iter().enumerate())
+            .map(|(i, j)| (j.name.as_str(), i))
+            .collect()
     }
 
     /// At least one load case (or a roof, or a moving load); the roof's numbers, every load
@@ -881,47 +877,6 @@ impl TrussScene {
             .iter()
             .map(|[a, b]| [pos(a), pos(b)])
             .collect()
-    }
-
-    fn truss(&self) -> Truss {
-        let index: HashMap<&str, usize> = self
-            .joints
-            .iter()
-            .enumerate()
-            .map(|(i, j)| (j.name.as_str(), i))
-            .collect();
-        let o = self.local_origin();
-        Truss::new(
-            self.joints
-                .iter()
-                .map(|j| Joint {
-                    name: j.name.clone(),
-                    at: Point::new(j.at_m[0] - o[0], j.at_m[1] - o[1]),
-                })
-                .collect(),
-            self.members
-                .iter()
-                .map(|m| Member {
-                    name: m.name.clone(),
-                    ends: [index[m.joints[0].as_str()], index[m.joints[1].as_str()]],
-                })
-                .collect(),
-            self.supports
-                .iter()
-                .enumerate()
-                .map(|(i, s)| {
-                    let (joint, name) = (index[s.joint.as_str()], s.reaction_name(i));
-                    match s.kind {
-                        SupportKindSpec::Pinned => Support::pinned(joint, name),
-                        SupportKindSpec::Roller => {
-                            let (sn, c) =
-                                crate::kernel::angle::sin_cos_deg(s.direction_deg.unwrap_or(90.0));
-                            Support::roller(joint, Vector::new(c, sn), name)
-                        }
-                    }
-                })
-                .collect(),
-        )
     }
 
     /// The origin the truss is built from: the first joint, for a truss farther from the

@@ -4,18 +4,35 @@ use super::cremona::{self, CaseResult, TrussDrawing};
 use super::{Joint, JointLoad, LoadCase, Member, Support, Truss};
 use crate::kernel::{Point, Vector};
 use crate::protocol::{nice_at_least, Board, ConstructionError};
+use foldhash::{HashMap, HashMapExt};
 
-/// What is wrong with a truss as built: each names the joint or member.
+/// What a member, support or load is, where an error names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Part {
+    /// A joint, by its place in the order added.
+    Joint(usize),
+    /// A member, by its place in the order added.
+    Member(usize),
+    /// A support, by its place in the order added.
+    Support(usize),
+}
+
+/// What is wrong with a truss as built: each names the joint, member or support by its name
+/// and its place in the order added, so that a scene can name its field.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum TrussError {
-    /// Two joints, or two members, with one name.
+    /// Two joints, two members or two reactions with one name.
     #[error("{what} `{name}` is named twice")]
     Duplicate {
-        /// "joint" or "member".
+        /// "joint", "member" or "reaction".
         what: &'static str,
         /// The name.
         name: String,
+        /// The second of the two.
+        at: Part,
+        /// The first of the two.
+        first: Part,
     },
     /// A member, support or load names a joint the truss does not have.
     #[error("{by}: no joint `{joint}`")]
@@ -24,24 +41,90 @@ pub enum TrussError {
         by: String,
         /// The name given.
         joint: String,
+        /// The member (with which of its two ends) or support that names it; `None` for a load.
+        at: Option<(Part, usize)>,
     },
-    /// A member joins a joint to itself, or two joints at one place.
+    /// A member joins a joint to itself.
     #[error("member `{member}` has no length")]
     ZeroLength {
         /// The member.
         member: String,
+        /// Its place.
+        at: Part,
     },
-    /// A coordinate, direction or force that is not a finite number, or a zero direction.
+    /// Two joints at one place (within the truss's length tolerance).
+    #[error("joint `{joint}` lies on joint `{on}`")]
+    Coincident {
+        /// The later joint.
+        joint: String,
+        /// The joint it lies on.
+        on: String,
+        /// The later joint's place.
+        at: Part,
+    },
+    /// Two members between the same two joints.
+    #[error("member `{member}` duplicates member `{first}`")]
+    DuplicateMember {
+        /// The later member.
+        member: String,
+        /// The member it duplicates.
+        first: String,
+        /// The later member's place.
+        at: Part,
+    },
+    /// The truss's size (its larger span, m) lies outside the range the builder was given.
+    #[error("the truss spans {size:e} m, outside {min:e} to {max:e} m")]
+    Size {
+        /// Its larger span.
+        size: f64,
+        /// The least span allowed.
+        min: f64,
+        /// The largest span allowed.
+        max: f64,
+    },
+    /// A support its caller refused before it was built (a scene's roller without a
+    /// direction), reported in its turn among the supports.
+    #[error("support {}: {message}", match at { Part::Support(k) => k + 1, _ => 0 })]
+    Refused {
+        /// The support's place.
+        at: Part,
+        /// Why.
+        message: &'static str,
+    },
+    /// Two supports at one joint.
+    #[error("joint `{joint}` has two supports")]
+    TwoSupports {
+        /// The joint.
+        joint: String,
+        /// The second support's place.
+        at: Part,
+    },
+    /// A coordinate, direction or force that is not a finite number, a zero direction, or an
+    /// empty name.
     #[error("{what}: {message}")]
     Invalid {
         /// What it is ("joint II", "support B").
         what: String,
         /// Why.
         message: &'static str,
+        /// The joint or support at fault, where it is one.
+        at: Option<Part>,
     },
 }
 
-/// Builds a [`Truss`] joint by joint and member by member, by name (LH I B).
+/// A support as added: its joint, a roller's direction (and whether it is a unit vector
+/// already), the reaction's name.
+#[derive(Debug, Clone)]
+struct SupportSpec {
+    joint: String,
+    roller: Option<(Vector, bool)>,
+    name: Option<String>,
+    refused: Option<&'static str>,
+}
+
+/// Builds a [`Truss`] joint by joint and member by member, by name (LH I B), and checks it
+/// on [`build`](TrussBuilder::build): the one validator of the truss model, which a truss
+/// scene uses too.
 ///
 /// ```
 /// use graphostatik::prelude::*;
@@ -61,9 +144,16 @@ pub enum TrussError {
 #[derive(Debug, Clone, Default)]
 pub struct TrussBuilder {
     joints: Vec<(String, [f64; 2])>,
-    members: Vec<(String, String, String)>,
-    supports: Vec<(String, Option<[f64; 2]>, Option<String>)>,
+    members: Vec<(String, [String; 2])>,
+    supports: Vec<SupportSpec>,
+    /// Subtracted from every joint's position once the truss is checked (a scene far from
+    /// its origin is built in its own frame).
+    origin: [f64; 2],
+    /// The least and largest span the truss may have (m), where the caller sets them.
+    size_range: Option<(f64, f64)>,
 }
+
+type Names<'a> = HashMap<&'a str, usize>;
 
 impl TrussBuilder {
     /// A joint (Knotenpunkt) at `(x, y)` m.
@@ -79,104 +169,274 @@ impl TrussBuilder {
         a: impl Into<String>,
         b: impl Into<String>,
     ) -> Self {
-        self.members.push((name.into(), a.into(), b.into()));
+        self.members.push((name.into(), [a.into(), b.into()]));
         self
     }
 
     /// A pin (festes Auflager) at the joint; its reaction is named A, B, … in the order of the
     /// supports.
     pub fn pin(mut self, joint: impl Into<String>) -> Self {
-        self.supports.push((joint.into(), None, None));
+        self.supports.push(SupportSpec {
+            joint: joint.into(),
+            roller: None,
+            name: None,
+            refused: None,
+        });
         self
     }
 
     /// A roller (bewegliches Auflager) at the joint whose reaction acts along `dir`.
     pub fn roller(mut self, joint: impl Into<String>, dir: (f64, f64)) -> Self {
-        self.supports
-            .push((joint.into(), Some([dir.0, dir.1]), None));
+        self.supports.push(SupportSpec {
+            joint: joint.into(),
+            roller: Some((Vector::new(dir.0, dir.1), false)),
+            name: None,
+            refused: None,
+        });
+        self
+    }
+
+    /// A roller whose direction is a unit vector already (taken as it is, bit for bit).
+    pub(crate) fn roller_unit(mut self, joint: impl Into<String>, dir: Vector) -> Self {
+        self.supports.push(SupportSpec {
+            joint: joint.into(),
+            roller: Some((dir, true)),
+            name: None,
+            refused: None,
+        });
+        self
+    }
+
+    /// Refuses the last support added, for `why`: the error is reported in its turn, after
+    /// its joint is checked, as [`TrussError::Refused`].
+    pub(crate) fn refused(mut self, why: &'static str) -> Self {
+        if let Some(s) = self.supports.last_mut() {
+            s.refused = Some(why);
+        }
+        self
+    }
+
+    /// Refuses a truss whose larger span (m) lies outside `[min, max]`, as
+    /// [`TrussError::Size`], once its joints are known to be finite.
+    pub(crate) fn size_within(mut self, min: f64, max: f64) -> Self {
+        self.size_range = Some((min, max));
         self
     }
 
     /// Names the reaction of the last support added (the book's own name, e.g. "G").
     pub fn named(mut self, reaction: impl Into<String>) -> Self {
         if let Some(s) = self.supports.last_mut() {
-            s.2 = Some(reaction.into());
+            s.name = Some(reaction.into());
         }
         self
     }
 
-    /// The truss, or the first thing wrong with it.
+    /// The truss built with every position less `origin` (checked as given).
+    pub(crate) fn in_frame_of(mut self, origin: [f64; 2]) -> Self {
+        self.origin = origin;
+        self
+    }
+
+    /// The truss, or the first thing wrong with it, in this order: each joint at a finite
+    /// place and named once; no two joints at one place; each member between two known,
+    /// distinct joints, no two members between the same pair, each named once; each support
+    /// at a known joint, one a joint, a roller's direction finite and not zero, each reaction
+    /// named, once. Linear in the size of the truss (names hashed, coincidence by a grid).
     pub fn build(self) -> Result<Truss, TrussError> {
-        let mut joints: Vec<Joint> = Vec::with_capacity(self.joints.len());
-        for (name, [x, y]) in self.joints {
+        let joints = self.check_joints()?;
+        self.check_coincident()?;
+        let members = self.check_members(&joints)?;
+        let supports = self.check_supports(&joints)?;
+        let [ox, oy] = self.origin;
+        let joints = self
+            .joints
+            .into_iter()
+            .map(|(name, [x, y])| Joint {
+                name,
+                at: Point::new(x - ox, y - oy),
+            })
+            .collect();
+        Ok(Truss::new(joints, members, supports))
+    }
+
+    /// Every joint at a finite place and named once: the index of the names.
+    fn check_joints(&self) -> Result<Names<'_>, TrussError> {
+        let mut index = Names::with_capacity(self.joints.len());
+        for (i, (name, [x, y])) in self.joints.iter().enumerate() {
             if !(x.is_finite() && y.is_finite()) {
-                return Err(invalid(format!("joint {name}"), "not a finite position"));
+                return Err(TrussError::Invalid {
+                    what: format!("joint {name}"),
+                    message: "not a finite position",
+                    at: Some(Part::Joint(i)),
+                });
             }
-            if joints.iter().any(|j| j.name == name) {
+            if let Some(first) = index.insert(name.as_str(), i) {
                 return Err(TrussError::Duplicate {
                     what: "joint",
-                    name,
+                    name: name.clone(),
+                    at: Part::Joint(i),
+                    first: Part::Joint(first),
                 });
             }
-            joints.push(Joint {
-                name,
-                at: Point::new(x, y),
-            });
         }
-        let index = |by: &str, name: &str| {
-            joints
-                .iter()
-                .position(|j| j.name == name)
-                .ok_or_else(|| TrussError::UnknownJoint {
-                    by: by.to_string(),
-                    joint: name.to_string(),
-                })
-        };
-        let mut members: Vec<Member> = Vec::with_capacity(self.members.len());
-        for (name, a, b) in &self.members {
-            let by = format!("member {name}");
-            let ends = [index(&by, a)?, index(&by, b)?];
-            if joints[ends[0]].at == joints[ends[1]].at {
+        Ok(index)
+    }
+
+    /// No two joints within the length tolerance of the truss's size: a grid of cells as
+    /// wide as the tolerance, each joint compared with its own cell and the eight around it
+    /// (O(k) for k joints; −0.0 and 0.0 are one coordinate).
+    fn check_coincident(&self) -> Result<(), TrussError> {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for (_, p) in &self.joints {
+            for k in 0..2 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        let size = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+        if let Some((min, max)) = self.size_range {
+            if !(min..=max).contains(&size) {
+                return Err(TrussError::Size { size, min, max });
+            }
+        }
+        let eps = crate::kernel::tolerance::REL_LENGTH_EPS * size.max(f64::MIN_POSITIVE);
+        let cell = |v: f64| ((v + 0.0) / eps).floor() as i64;
+        let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+        for (b, (name, [x, y])) in self.joints.iter().enumerate() {
+            let (cx, cy) = (cell(*x), cell(*y));
+            for dx in -1..=1i64 {
+                for dy in -1..=1i64 {
+                    let key = (cx.saturating_add(dx), cy.saturating_add(dy));
+                    for &a in grid.get(&key).map_or(&[][..], |v| v.as_slice()) {
+                        let [ax, ay] = self.joints[a].1;
+                        if (ax - x).abs() <= eps && (ay - y).abs() <= eps {
+                            return Err(TrussError::Coincident {
+                                joint: name.clone(),
+                                on: self.joints[a].0.clone(),
+                                at: Part::Joint(b),
+                            });
+                        }
+                    }
+                }
+            }
+            grid.entry((cx, cy)).or_default().push(b);
+        }
+        Ok(())
+    }
+
+    /// Every member between two known, distinct joints, no two between the same pair, each
+    /// named once.
+    fn check_members(&self, joints: &Names<'_>) -> Result<Vec<Member>, TrussError> {
+        let mut pairs: HashMap<(usize, usize), usize> = HashMap::new();
+        let mut names = Names::with_capacity(self.members.len());
+        let mut out = Vec::with_capacity(self.members.len());
+        for (m, (name, ends)) in self.members.iter().enumerate() {
+            let mut at = [0; 2];
+            for (e, joint) in ends.iter().enumerate() {
+                at[e] = *joints
+                    .get(joint.as_str())
+                    .ok_or_else(|| TrussError::UnknownJoint {
+                        by: format!("member {name}"),
+                        joint: joint.clone(),
+                        at: Some((Part::Member(m), e)),
+                    })?;
+            }
+            if at[0] == at[1] {
                 return Err(TrussError::ZeroLength {
                     member: name.clone(),
+                    at: Part::Member(m),
                 });
             }
-            if members.iter().any(|m| &m.name == name) {
-                let name = name.clone();
+            if let Some(first) = pairs.insert((at[0].min(at[1]), at[0].max(at[1])), m) {
+                return Err(TrussError::DuplicateMember {
+                    member: name.clone(),
+                    first: self.members[first].0.clone(),
+                    at: Part::Member(m),
+                });
+            }
+            if let Some(first) = names.insert(name.as_str(), m) {
                 return Err(TrussError::Duplicate {
                     what: "member",
-                    name,
+                    name: name.clone(),
+                    at: Part::Member(m),
+                    first: Part::Member(first),
                 });
             }
-            members.push(Member {
+            out.push(Member {
                 name: name.clone(),
-                ends,
+                ends: at,
             });
         }
-        let mut supports = Vec::with_capacity(self.supports.len());
-        for (k, (joint, dir, name)) in self.supports.iter().enumerate() {
-            let name = name
+        Ok(out)
+    }
+
+    /// Every support at a known joint, one a joint, a roller's direction finite and not zero;
+    /// then every reaction named, once.
+    fn check_supports(&self, joints: &Names<'_>) -> Result<Vec<Support>, TrussError> {
+        let mut supported: HashMap<usize, usize> = HashMap::new();
+        let mut out = Vec::with_capacity(self.supports.len());
+        for (k, s) in self.supports.iter().enumerate() {
+            let name = s
+                .name
                 .clone()
                 .unwrap_or_else(|| super::default_support_name(k));
-            let j = index(&format!("support {name}"), joint)?;
-            supports.push(match dir {
+            let j = *joints
+                .get(s.joint.as_str())
+                .ok_or_else(|| TrussError::UnknownJoint {
+                    by: format!("support {name}"),
+                    joint: s.joint.clone(),
+                    at: Some((Part::Support(k), 0)),
+                })?;
+            if supported.insert(j, k).is_some() {
+                return Err(TrussError::TwoSupports {
+                    joint: s.joint.clone(),
+                    at: Part::Support(k),
+                });
+            }
+            if let Some(message) = s.refused {
+                return Err(TrussError::Refused {
+                    at: Part::Support(k),
+                    message,
+                });
+            }
+            out.push(match s.roller {
                 None => Support::pinned(j, name),
-                Some([dx, dy]) => {
-                    let d = Vector::new(*dx, *dy);
+                Some((d, true)) if d.x.is_finite() && d.y.is_finite() => {
+                    Support::roller(j, d, name)
+                }
+                Some((d, unit)) => {
                     let n = d.norm();
-                    if !(n.is_finite() && n > 0.0) {
-                        return Err(invalid(format!("support {name}"), "needs a direction"));
+                    if unit || !(n.is_finite() && n > 0.0) {
+                        return Err(TrussError::Invalid {
+                            what: format!("support {name}"),
+                            message: "needs a direction",
+                            at: Some(Part::Support(k)),
+                        });
                     }
                     Support::roller(j, d / n, name)
                 }
             });
         }
-        Ok(Truss::new(joints, members, supports))
+        let mut names = Names::with_capacity(out.len());
+        for (k, s) in out.iter().enumerate() {
+            if s.name.trim().is_empty() {
+                return Err(TrussError::Invalid {
+                    what: format!("support {}", k + 1),
+                    message: "a support's name must not be empty",
+                    at: Some(Part::Support(k)),
+                });
+            }
+            if let Some(first) = names.insert(s.name.as_str(), k) {
+                return Err(TrussError::Duplicate {
+                    what: "reaction",
+                    name: s.name.clone(),
+                    at: Part::Support(k),
+                    first: Part::Support(first),
+                });
+            }
+        }
+        Ok(out)
     }
-}
-
-fn invalid(what: String, message: &'static str) -> TrussError {
-    TrussError::Invalid { what, message }
 }
 
 impl Truss {
@@ -204,9 +464,14 @@ impl Truss {
                 .ok_or_else(|| TrussError::UnknownJoint {
                     by: format!("load case {name}"),
                     joint: joint.to_string(),
+                    at: None,
                 })?;
             if !(px.is_finite() && py.is_finite()) {
-                return Err(invalid(format!("load case {name}"), "a load is not finite"));
+                return Err(TrussError::Invalid {
+                    what: format!("load case {name}"),
+                    message: "a load is not finite",
+                    at: None,
+                });
             }
             out.push(JointLoad {
                 joint: j,
@@ -284,6 +549,61 @@ mod tests {
         let t = triangle().build().unwrap();
         let e = t.load_case("P", &[("V", (0.0, -1.0))]).unwrap_err();
         assert_eq!(e.to_string(), "load case P: no joint `V`");
+    }
+
+    #[test]
+    fn the_model_is_checked_whole_and_each_error_names_its_place() {
+        let e = triangle().joint("IV", (1.0, 1.0)).build().unwrap_err();
+        assert!(
+            matches!(
+                &e,
+                TrussError::Coincident {
+                    at: Part::Joint(3),
+                    ..
+                }
+            ),
+            "{e}"
+        );
+        assert_eq!(e.to_string(), "joint `IV` lies on joint `III`");
+        let e = triangle().member("3", "II", "III").build().unwrap_err();
+        assert_eq!(e.to_string(), "member `3` duplicates member `2`");
+        let e = triangle()
+            .member("3", "I", "II")
+            .pin("I")
+            .pin("I")
+            .build()
+            .unwrap_err();
+        assert!(matches!(
+            e,
+            TrussError::TwoSupports {
+                at: Part::Support(1),
+                ..
+            }
+        ));
+        let e = (triangle().member("3", "I", "II").pin("I").named("A"))
+            .roller("II", (0.0, 1.0))
+            .named("A")
+            .build()
+            .unwrap_err();
+        assert_eq!(e.to_string(), "reaction `A` is named twice");
+        let e = triangle().size_within(3.0, 10.0).build().unwrap_err();
+        assert!(matches!(e, TrussError::Size { size, .. } if size == 2.0));
+        let e = (triangle().member("3", "I", "II").pin("I"))
+            .roller("II", (0.0, 1.0))
+            .refused("why")
+            .build()
+            .unwrap_err();
+        assert_eq!(e.to_string(), "support 2: why");
+        // A joint out of place is reported before anything about members.
+        let e = triangle()
+            .joint("I", (9.0, 9.0))
+            .member("9", "I", "X")
+            .build()
+            .unwrap_err();
+        assert_eq!(e.to_string(), "joint `I` is named twice");
+        // Checked as given, built in the frame asked for.
+        let t = triangle().in_frame_of([1.0, 0.0]).build().unwrap();
+        assert_eq!(t.joints[0].at, Point::new(-1.0, 0.0));
     }
 
     #[test]
