@@ -5,7 +5,8 @@ use super::{Angles, CrankDrive, Drawing, Request};
 use crate::kernel::angle::SinCos;
 use crate::kernel::{Branch, Circle, Line, Point, Vector};
 use crate::protocol::{
-    note, Board, ConstructionError, Cut, Drawn, Label, Note, Role, Scale, Topic, H,
+    note, Board, ConstructionError, Cut, Drawn, Label, Note, Reading, Role, Scale, Topic, Trace,
+    Turning, H,
 };
 use serde::Serialize;
 
@@ -870,7 +871,9 @@ impl Builder<'_> {
                 // Clockwise from the inner dead centre (180° on the sheet): the pin runs over
                 // the upper half on the outstroke.
                 self.b.clear_context();
-                let pts = self.b.divide_circle(&circle, 180.0, n, true, "A", N_DIVIDE);
+                let pts =
+                    self.b
+                        .divide_circle(&circle, 180.0, n, Turning::Clockwise, "A", N_DIVIDE);
                 self.divided = Some(pts);
                 let theta = self.thetas[i];
                 self.b
@@ -1115,7 +1118,10 @@ impl Builder<'_> {
         let q = self.b.transfer(
             &b,
             &normal,
-            (&c, self.scales.velocity_scale),
+            Reading {
+                value: &c,
+                per_mm: self.scales.velocity_scale,
+            },
             Label::quiet("Q", i as u32),
             Role::Construction,
             N_C_ORDINATE,
@@ -1133,8 +1139,13 @@ impl Builder<'_> {
             pts.push(pts[0]);
         }
         if pts.len() >= 2 {
-            self.b
-                .curve(&pts, true, Label::plain("c"), Role::Result, N_C_CURVE);
+            self.b.curve(
+                &pts,
+                Trace::Smooth,
+                Label::plain("c"),
+                Role::Result,
+                N_C_CURVE,
+            );
         }
         Ok(())
     }
@@ -1220,7 +1231,10 @@ impl Builder<'_> {
         let g = self.b.transfer(
             &pin,
             &rod,
-            (&s, self.scales.force_scale),
+            Reading {
+                value: &s,
+                per_mm: self.scales.force_scale,
+            },
             Label::quiet("G", i as u32),
             Role::Force,
             N_S_AT_PIN,
@@ -1408,14 +1422,14 @@ impl Builder<'_> {
         if p_pts.len() >= 2 {
             self.b.curve(
                 &p_pts,
-                false,
+                Trace::Polygon,
                 Label::plain("P"),
                 Role::Result,
                 N_POLAR_P_CURVE,
             );
             self.b.curve(
                 &t_pts,
-                false,
+                Trace::Polygon,
                 Label::plain("T"),
                 Role::Result,
                 N_POLAR_T_CURVE,

@@ -14,7 +14,7 @@
 //! and the point at any crank angle is the same division at s (de Casteljau's construction).
 
 use crate::kernel::{Line, Point, Vector};
-use crate::protocol::{Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{Board, ConstructionError, Label, Note, Role, Scale, Topic, Weighted, H};
 
 fn n(caption: &'static str, term: &'static str, book: &'static str) -> Note {
     crate::protocol::note(caption, Some(term), book, Topic::Acceleration)
@@ -288,8 +288,12 @@ pub(crate) fn balance(b: &mut Board, ax: &TolleAxis, c: &TolleCurve) -> H<f64> {
     // width plus height (mm² per mm).
     let h = b.reckon(
         area,
-        ("mm²", Label::NONE),
-        (&[c.t.id, c.d.id, c.t1.id], width + height),
+        "mm²",
+        Label::NONE,
+        Weighted {
+            inputs: &[c.t.id, c.d.id, c.t1.id],
+            weight: width + height,
+        },
         n(
             "the areas of acceleration and retardation: their difference",
             "Beschleunigungs- und Verzögerungsfläche gleich",

@@ -6,7 +6,9 @@ use crate::crank::closed_form as cf;
 use crate::crank::tolle::{self, TolleAxis, TolleCurve};
 use crate::crank::{self, Angles, CrankDrive, Drawing, PistonForce, Request};
 use crate::kernel::{Line, Point};
-use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{
+    note, Board, ConstructionError, Label, Note, Reading, Role, Scale, Topic, Trace, H,
+};
 
 mod summary;
 
@@ -233,8 +235,13 @@ impl Builder<'_> {
                     tolle::balance(self.b, &axis, &cv);
                     let pts = tolle::envelope(self.b, &cv, 10);
                     if pts.len() >= 2 {
-                        self.b
-                            .curve(&pts, true, Label::plain("B"), Role::Construction, N_CURVE_B);
+                        self.b.curve(
+                            &pts,
+                            Trace::Smooth,
+                            Label::plain("B"),
+                            Role::Construction,
+                            N_CURVE_B,
+                        );
                     }
                 }
                 Some([out, ret])
@@ -388,7 +395,10 @@ impl Builder<'_> {
         let rp = self.b.transfer(
             &pp,
             &ord,
-            (&bval, -self.dr.force_scale),
+            Reading {
+                value: &bval,
+                per_mm: -self.dr.force_scale,
+            },
             Label::NONE,
             Role::Construction,
             N_B_TRANSFER,
@@ -435,10 +445,16 @@ impl Builder<'_> {
             let p: Vec<H<Point>> = rays.iter().map(|r| r.p_point).collect();
             let r: Vec<H<Point>> = rays.iter().map(|r| r.r_point).collect();
             if p.len() >= 2 {
-                self.b
-                    .curve(&p, true, Label::plain("P"), Role::Result, N_CURVE_P);
+                self.b.curve(
+                    &p,
+                    Trace::Smooth,
+                    Label::plain("P"),
+                    Role::Result,
+                    N_CURVE_P,
+                );
                 if self.cyl(c).mass > 0.0 {
-                    self.b.curve(&r, true, Label::NONE, Role::Result, N_CURVE_R);
+                    self.b
+                        .curve(&r, Trace::Smooth, Label::NONE, Role::Result, N_CURVE_R);
                 }
             }
         }

@@ -13,7 +13,9 @@
 //! = 0 every value is the straight slider-crank's ([`crate::crank`]).
 
 use crate::kernel::{Branch, Circle, Line, Point, Vector};
-use crate::protocol::{Board, ConstructionError, Drawn, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{
+    Board, ConstructionError, Drawn, Label, Note, Reading, Role, Scale, Topic, H,
+};
 
 fn n(caption: &'static str, term: Option<&'static str>) -> Note {
     crate::protocol::note(
@@ -619,7 +621,10 @@ fn tangential(
     let carried = b.transfer(
         &at.pin,
         &at.rod,
-        (s, sc.force),
+        Reading {
+            value: s,
+            per_mm: sc.force,
+        },
         Label::NONE,
         Role::Force,
         n("S carried to the pin", None),

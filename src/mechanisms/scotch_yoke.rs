@@ -11,7 +11,9 @@
 
 use crate::crank::{self, Angles, CrankDrive, CrankResults, Drawing, PistonForce, Request};
 use crate::kernel::Point;
-use crate::protocol::{Board, ConstructionError, Drawn, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{
+    Board, ConstructionError, Drawn, Label, Note, Reading, Role, Scale, Topic, Trace, H,
+};
 
 fn n(caption: &'static str, term: Option<&'static str>) -> Note {
     crate::protocol::note(
@@ -132,7 +134,7 @@ pub fn construct(
         if pts.len() > 1 {
             b.curve(
                 pts,
-                true,
+                Trace::Smooth,
                 Label::plain(label),
                 Role::Result,
                 n("the yoke’s curve over the stroke", None),
@@ -427,7 +429,10 @@ fn ordinate(
     b.transfer(
         &at,
         &up,
-        (v, -per_mm),
+        Reading {
+            value: v,
+            per_mm: -per_mm,
+        },
         Label::NONE,
         Role::Result,
         n("the value laid off as an ordinate", None),
@@ -512,7 +517,13 @@ fn compare(
             )?);
         }
         if pts.len() > 1 {
-            b.curve(&pts, true, Label::NONE, Role::Auxiliary, note.clone());
+            b.curve(
+                &pts,
+                Trace::Smooth,
+                Label::NONE,
+                Role::Auxiliary,
+                note.clone(),
+            );
         }
     }
     Ok(res)

@@ -15,7 +15,9 @@
 //! start of the working stroke, where ψ is the lever's angle from MD.
 
 use crate::kernel::{Circle, Line, Point};
-use crate::protocol::{Board, ConstructionError, Drawn, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{
+    Board, ConstructionError, Drawn, Label, Note, Reading, Role, Scale, Topic, Trace, Weighted, H,
+};
 
 fn n(caption: &'static str, term: Option<&'static str>) -> Note {
     crate::protocol::note(
@@ -251,7 +253,7 @@ pub fn construct(
     if curve.len() > 1 {
         b.curve(
             &curve,
-            true,
+            Trace::Smooth,
             Label::plain("c"),
             Role::Result,
             n(
@@ -420,8 +422,12 @@ fn outer_positions(
     let alpha = 180.0 - beta;
     let ratio = b.reckon(
         beta / alpha,
-        ("", Label::quiet("β/α", 0)),
-        (&[two_beta.id], 90.0 / (alpha * alpha)),
+        "",
+        Label::quiet("β/α", 0),
+        Weighted {
+            inputs: &[two_beta.id],
+            weight: 90.0 / (alpha * alpha),
+        },
         n("the mean speeds v_a/v_r = β/α", None),
     );
     b.check(
@@ -646,7 +652,10 @@ fn swing(
     let f2 = b.transfer(
         &fr.d,
         &across,
-        (&df, 1.0),
+        Reading {
+            value: &df,
+            per_mm: 1.0,
+        },
         Label::quiet("F′", lv.k),
         Role::Construction,
         carry.clone(),
@@ -654,7 +663,10 @@ fn swing(
     let c2 = b.transfer(
         &fr.d,
         &across,
-        (&dc, 1.0),
+        Reading {
+            value: &dc,
+            per_mm: 1.0,
+        },
         Label::quiet("C′", lv.k),
         Role::Construction,
         carry,
@@ -716,7 +728,10 @@ fn ordinate(
     b.transfer(
         &at,
         &up,
-        (c, -per_mm),
+        Reading {
+            value: c,
+            per_mm: -per_mm,
+        },
         Label::NONE,
         Role::Result,
         n("the speed laid off as an ordinate", None),

@@ -39,6 +39,44 @@ pub enum Cut {
     Coincident,
 }
 
+/// A value read earlier (a force, a velocity measured elsewhere) and its scale, as the
+/// dividers carry it to be laid off ([`Board::transfer`]).
+#[derive(Debug, Clone, Copy)]
+pub struct Reading<'a> {
+    /// The value.
+    pub value: &'a H<f64>,
+    /// Its units per mm of the sheet.
+    pub per_mm: f64,
+}
+
+/// The objects a number is reckoned from and how much it moves when one of them moves by one
+/// unit (a number) or one mm (a point): `1/n` for a mean of n ordinates ([`Board::reckon`]).
+#[derive(Debug, Clone, Copy)]
+pub struct Weighted<'a> {
+    /// The objects.
+    pub inputs: &'a [ObjId],
+    /// The weight of each.
+    pub weight: f64,
+}
+
+/// How a circle is divided: the sense in which its points follow each other.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Turning {
+    /// Clockwise on the sheet.
+    Clockwise,
+    /// Anticlockwise on the sheet.
+    Anticlockwise,
+}
+
+/// How a curve is drawn through its points.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Trace {
+    /// A smooth curve through them (the French curve).
+    Smooth,
+    /// The polygon through them.
+    Polygon,
+}
+
 /// How a measured length is converted to a quantity: `value = mm on the sheet × per_mm`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Scale {
@@ -963,10 +1001,11 @@ impl Board {
         circle: &H<Circle>,
         start_deg: f64,
         n: usize,
-        clockwise: bool,
+        turning: Turning,
         label: &'static str,
         note: Note,
     ) -> Vec<H<Point>> {
+        let clockwise = turning == Turning::Clockwise;
         let mut pts = construct::divide_circle(&circle.g, start_deg, n, clockwise);
         pts.iter_mut().for_each(|p| *p = self.mark(*p));
         self.begin(StepKind::Divide, &note, &[circle.id]);
@@ -1026,11 +1065,12 @@ impl Board {
         &mut self,
         from: &H<Point>,
         along: &H<Line>,
-        (value, per_mm): (&H<f64>, f64),
+        reading: Reading<'_>,
         label: Label,
         role: Role,
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
+        let Reading { value, per_mm } = reading;
         let length = value.g / per_mm;
         self.lay_off_carried(
             from,
@@ -1378,7 +1418,11 @@ impl Board {
         inputs: &[ObjId],
         note: Note,
     ) -> H<f64> {
-        self.reckon(value, (unit, label), (inputs, 1.0), note)
+        let inputs = Weighted {
+            inputs,
+            weight: 1.0,
+        };
+        self.reckon(value, unit, label, inputs, note)
     }
 
     /// [`Board::tally`] with the weight of its inputs: `weight` is how much the number
@@ -1388,10 +1432,12 @@ impl Board {
     pub fn reckon(
         &mut self,
         value: f64,
-        (unit, label): (&'static str, Label),
-        (inputs, weight): (&[ObjId], f64),
+        unit: &'static str,
+        label: Label,
+        weighted: Weighted<'_>,
         note: Note,
     ) -> H<f64> {
+        let Weighted { inputs, weight } = weighted;
         self.begin(StepKind::Tally, &note, inputs);
         let id = self.add(label, Role::Result, || Geom::Scalar { value, unit });
         self.set_tr(id, |b| {
@@ -1418,11 +1464,11 @@ impl Board {
         self.add(Label::NONE, Role::Result, || Geom::Table { at, rows });
     }
 
-    /// Draws a curve through points (`smooth`) or the polygon through them.
+    /// Draws a curve through points, smooth or as their polygon ([`Trace`]).
     pub fn curve(
         &mut self,
         points: &[H<Point>],
-        smooth: bool,
+        trace: Trace,
         label: Label,
         role: Role,
         note: Note,
@@ -1438,7 +1484,7 @@ impl Board {
         let pts: Vec<Point> = points.iter().map(|p| p.g).collect();
         let id = self.add(label, role, || Geom::Curve {
             points: pts,
-            smooth,
+            smooth: trace == Trace::Smooth,
         });
         H { id, g: id }
     }

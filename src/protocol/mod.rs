@@ -14,7 +14,7 @@ mod summary;
 mod tracks;
 
 pub use accuracy::{ErrorModel, WorstCut};
-pub use board::{Board, CheckEntry, Cut, Scale, H};
+pub use board::{Board, CheckEntry, Cut, Reading, Scale, Trace, Turning, Weighted, H};
 pub use config::{BoardConfig, Hand, Mode};
 pub use error::{ConstructionError, CutOutcome};
 pub use figure::{nice_at_least, FigureMeta, ScaleBar};

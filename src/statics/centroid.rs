@@ -11,7 +11,7 @@
 use super::funicular::{construct_system, Force, SystemDrawing};
 use crate::kernel::tolerance::REL_AREA_EPS;
 use crate::kernel::{Line, Point, Vector};
-use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Scale, Topic, Trace, H};
 use serde::Serialize;
 
 const N_VERTEX: Note = note(
@@ -280,7 +280,13 @@ fn draw_polygon(b: &mut Board, pts: &[Point], k: f64) -> Vec<H<Point>> {
         .collect();
     let mut outline = vs.clone();
     outline.push(vs[0]);
-    b.curve(&outline, false, Label::NONE, Role::Result, N_OUTLINE);
+    b.curve(
+        &outline,
+        Trace::Polygon,
+        Label::NONE,
+        Role::Result,
+        N_OUTLINE,
+    );
     vs
 }
 

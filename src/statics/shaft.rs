@@ -18,7 +18,7 @@ use super::beam::{construct_beam_at, BeamDrawing, BeamRequest, BeamResults};
 use super::{Beam, PointLoad};
 use crate::kernel::tolerance::REL_POSITION_EPS;
 use crate::kernel::{Point, Vector};
-use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Scale, Topic};
+use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Scale, Topic, Trace};
 use serde::Serialize;
 
 const N_BASE: Note = note(
@@ -356,7 +356,7 @@ fn torque_rectangle(
     let g = b.meet_point(&top, &up_h, Label::plain("G"), N_TQ_CORNER)?;
     b.curve(
         &[c, f, g, h, c],
-        false,
+        Trace::Polygon,
         Label::NONE,
         Role::Result,
         N_TQ_RECT,

@@ -4,7 +4,7 @@ use super::super::closed_form as cf;
 use super::super::tolle;
 use super::{Builder, Tolle};
 use crate::kernel::Point;
-use crate::protocol::{note, ConstructionError, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{note, ConstructionError, Label, Note, Role, Scale, Topic, Trace, H};
 
 const N_TOLLE_OC: Note = note(
     "OC read off where the chord cuts the axis",
@@ -64,8 +64,13 @@ impl Builder<'_> {
                 tolle::balance(self.b, &ax, &c);
                 let pts = tolle::envelope(self.b, &c, ENVELOPE_PARTS);
                 if pts.len() >= 2 {
-                    self.b
-                        .curve(&pts, true, Label::plain("b"), Role::Result, N_TOLLE_CURVE);
+                    self.b.curve(
+                        &pts,
+                        Trace::Smooth,
+                        Label::plain("b"),
+                        Role::Result,
+                        N_TOLLE_CURVE,
+                    );
                 }
                 curves.push(c);
             }

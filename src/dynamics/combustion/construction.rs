@@ -7,7 +7,9 @@ use super::{turning_force, GasCylinder};
 use crate::crank::{self, Angles, CrankDrive, Drawing, PistonForce, Request};
 use crate::dynamics::model::Kinematics;
 use crate::kernel::{Line, Point, Vector};
-use crate::protocol::{Board, ConstructionError, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{
+    Board, ConstructionError, Label, Note, Role, Scale, Topic, Trace, Weighted, H,
+};
 
 fn n(caption: &'static str, term: Option<&'static str>) -> Note {
     crate::protocol::note(
@@ -167,7 +169,7 @@ fn force_diagram(
     b.clear_context();
     b.curve(
         &gas_pts,
-        false,
+        Trace::Polygon,
         Label::plain("a"),
         Role::Result,
         n("the gas force over the cycle (a-a)", None),
@@ -175,7 +177,7 @@ fn force_diagram(
     if cyl.mass > 0.0 {
         b.curve(
             &res_pts,
-            false,
+            Trace::Polygon,
             Label::plain("b"),
             Role::Result,
             n("the resulting force over the cycle (b-b)", None),
@@ -361,7 +363,7 @@ fn turning_diagram(
     b.clear_context();
     b.curve(
         &pts,
-        false,
+        Trace::Polygon,
         Label::plain("T"),
         Role::Result,
         n("the turning force over the cycle", Some("Drehkraftlinie")),
@@ -384,8 +386,12 @@ fn mean_of_ordinates(
     let mean = rows.iter().map(|r| r.turning).sum::<f64>() / count;
     let tm = b.reckon(
         mean,
-        ("kg", Label::quiet("T_m", 0)),
-        (ids, 1.0 / count),
+        "kg",
+        Label::quiet("T_m", 0),
+        Weighted {
+            inputs: ids,
+            weight: 1.0 / count,
+        },
         n(
             "the mean turning force: the mean of the ordinates over the cycle",
             Some("mittlere Drehkraft"),

@@ -6,7 +6,7 @@ use super::super::{
     model, DynamicsDrawing, DynamicsRequest, DynamicsResults, Engine, Flywheel, MeanHeight, Power,
 };
 use crate::kernel::Point;
-use crate::protocol::{note, Board, Label, Note, Topic};
+use crate::protocol::{note, Board, Label, Note, Topic, Weighted};
 
 const N_MEAN: Note = note(
     "mean height of the turning-force diagram: T_m",
@@ -102,7 +102,10 @@ fn mean_heights(
 ) -> Vec<MeanHeight> {
     // Each rule is a weighted mean of the ordinates read off the diagram: their bounds
     // follow into it, each with the weight 1/n.
-    let ords_read = (ids, 1.0 / ids.len().max(1) as f64);
+    let ords_read = Weighted {
+        inputs: ids,
+        weight: 1.0 / ids.len().max(1) as f64,
+    };
     let mut ords: Vec<f64> = turning.iter().map(|p| p.1).collect();
     ords.push(ords[0]);
     let equal = equal_strips(turning);
@@ -124,7 +127,7 @@ fn mean_heights(
         t_m: rules::trapezoid_xy(&xy),
         error: 0.0,
     }];
-    let trap = b.reckon(out[0].t_m, ("kg", Label::plain("T_m")), ords_read, N_MEAN);
+    let trap = b.reckon(out[0].t_m, "kg", Label::plain("T_m"), ords_read, N_MEAN);
     b.check(
         &trap,
         "T_m by the trapezoid rule = drawn polygon’s area / 2πr",
@@ -148,7 +151,7 @@ fn mean_heights(
         });
     }
     let squares = rules::count_squares(&pts, CELL_MM);
-    let sq = b.reckon(to_tm(squares), ("kg", Label::NONE), ords_read, N_MEAN);
+    let sq = b.reckon(to_tm(squares), "kg", Label::NONE, ords_read, N_MEAN);
     let columns = (length / CELL_MM).ceil();
     b.check_within(
         &sq,
@@ -184,7 +187,7 @@ fn planimeter(
     polygon: f64,
     exact: f64,
     to_tm: &dyn Fn(f64) -> f64,
-    ords_read: (&[crate::protocol::ObjId], f64),
+    ords_read: Weighted<'_>,
 ) -> Option<MeanHeight> {
     let length = pts.last().map_or(0.0, |p| p.0);
     let ymax = pts.iter().fold(0.0f64, |m, p| m.max(p.1.abs()));
@@ -196,7 +199,7 @@ fn planimeter(
         wheel: 0.4 * (depth + 0.5 * length),
     };
     let area = instrument.trace(closed, TRACE_STEP_MM)?;
-    let pl = b.reckon(to_tm(-area), ("kg", Label::NONE), ords_read, N_MEAN);
+    let pl = b.reckon(to_tm(-area), "kg", Label::NONE, ords_read, N_MEAN);
     // The vernier's resolution over the diagram's rectangle, and the rounding of the trace
     // (some 1e-12 of the arm's square per step) where the diagram is flat.
     let steps = closed.len() as f64 + 2.0 * length / TRACE_STEP_MM;

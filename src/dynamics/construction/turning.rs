@@ -5,7 +5,7 @@
 use super::super::model;
 use super::Builder;
 use crate::kernel::{Line, Point, Vector};
-use crate::protocol::{note, ConstructionError, Label, Note, Role, Topic, H};
+use crate::protocol::{note, ConstructionError, Label, Note, Role, Topic, Trace, H};
 
 const N_AXIS_O: Note = note(
     "start of the developed crank circle",
@@ -97,8 +97,13 @@ impl Builder<'_> {
             }
         }
         self.b.clear_context();
-        self.b
-            .curve(&pts, false, Label::plain("T"), Role::Result, N_CURVE);
+        self.b.curve(
+            &pts,
+            Trace::Polygon,
+            Label::plain("T"),
+            Role::Result,
+            N_CURVE,
+        );
         self.mean_line(&frame, &out)?;
         Ok((out, ids))
     }

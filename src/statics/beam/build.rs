@@ -7,7 +7,7 @@ use super::types::{
     SUPPORT_MM,
 };
 use crate::kernel::{Line, Point, Vector};
-use crate::protocol::{Board, ConstructionError, Label, Role, Scale, H};
+use crate::protocol::{Board, ConstructionError, Label, Role, Scale, Trace, H};
 use crate::statics::closed_form as cf;
 use crate::statics::funicular::polygon::{self, StringStyle};
 use crate::statics::Beam;
@@ -308,7 +308,7 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
         let a = b.point(corners[0], Label::NONE, Role::Given, N_UNIFORM);
         let bb = b.point(corners[3], Label::NONE, Role::Given, N_UNIFORM);
         let q = Label::indexed("q", i as u32 + 1);
-        b.curve(&outline, false, q, Role::Given, N_UNIFORM);
+        b.curve(&outline, Trace::Polygon, q, Role::Given, N_UNIFORM);
         let label = Label::indexed("Q", i as u32 + 1);
         let tail = b.point(
             Point::new(at.g.x, ytail),

@@ -5,7 +5,7 @@ use super::notes::*;
 use super::types::{BeamDrawing, BeamRequest, BeamResults, ARROW_MM};
 use crate::kernel::tolerance::REL_POSITION_EPS;
 use crate::kernel::Point;
-use crate::protocol::{Board, ConstructionError, Label, Role, H};
+use crate::protocol::{Board, ConstructionError, Label, Role, Trace, H};
 use crate::statics::closed_form as cf;
 use crate::statics::Beam;
 
@@ -163,7 +163,7 @@ fn draw_stringers(b: &mut Board, beam: &Beam, panel_points: &[f64], dr: &BeamDra
             .collect();
         b.curve(
             &outline,
-            false,
+            Trace::Polygon,
             Label::indexed("q", i as u32 + 1),
             Role::Given,
             N_PANEL_LOAD,

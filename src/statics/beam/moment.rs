@@ -6,7 +6,7 @@ use super::build::{BeamConstruction, Kind, Parabola};
 use super::notes::*;
 use super::types::SectionRow;
 use crate::kernel::{Line, Point, Vector};
-use crate::protocol::{ConstructionError, Cut, Label, Role, Scale, H};
+use crate::protocol::{ConstructionError, Cut, Label, Role, Scale, Trace, H};
 
 impl BeamConstruction<'_, '_> {
     /// How many forces of the polygon lie left of x: the string active at x.
@@ -149,7 +149,13 @@ impl BeamConstruction<'_, '_> {
             )?);
         }
         points.push(t2);
-        b.curve(&points, true, Label::NONE, Role::Result, N_PARABOLA);
+        b.curve(
+            &points,
+            Trace::Smooth,
+            Label::NONE,
+            Role::Result,
+            N_PARABOLA,
+        );
         let u = self.beam.uniform_loads[i];
         for (kk, pt) in points.iter().enumerate() {
             let x = u.from + (u.to - u.from) * kk as f64 / m as f64;

@@ -7,7 +7,7 @@ use super::notes::*;
 use super::types::{MaxMoment, ShearRow, GAP_MM};
 use crate::kernel::tolerance::REL_POSITION_EPS;
 use crate::kernel::{Line, Point, Vector};
-use crate::protocol::{ConstructionError, Label, Role, Scale, H};
+use crate::protocol::{ConstructionError, Label, Role, Scale, Trace, H};
 
 /// Where the force plan's corners stand for the shear: the loads left of a section are a
 /// prefix of the load line (no point load lies inside a uniform load), counted by binary
@@ -172,7 +172,7 @@ impl BeamConstruction<'_, '_> {
         }
         let v = Label::plain("V");
         self.b
-            .curve(&ordinates, false, v, Role::Result, N_SHEAR_DIAGRAM);
+            .curve(&ordinates, Trace::Polygon, v, Role::Result, N_SHEAR_DIAGRAM);
         self.shear_diagram = Some(ShearDiagram {
             base0,
             base,
