@@ -478,53 +478,68 @@ fn compare(
         Some("Schubkurbel"),
     );
     for (k, scale) in [(0, dr.velocity_scale), (1, dr.acceleration_scale)] {
-        let Some((base, _)) = &fr.bases[k] else {
-            continue;
-        };
-        let mut pts = Vec::new();
-        let foot = b.foot(base, &fr.t, Label::NONE, Role::Auxiliary, note.clone());
-        for row in &res.rows {
-            // The books give b in the direction of motion (positive while the piston speeds
-            // up); the diagram reads it along the line of the stroke, as the yoke's b′.
-            let sign = match row.stroke {
-                crate::crank::closed_form::Stroke::Out => 1.0,
-                crate::crank::closed_form::Stroke::Return => -1.0,
-            };
-            let value = if k == 0 {
-                row.c_parallel
-            } else {
-                row.acceleration.map(|a| sign * a)
-            };
-            let (Some(x), Some(v)) = (row.x, value) else {
-                continue;
-            };
-            let at = b.lay_off(
-                &foot,
-                base,
-                x / dr.length_scale,
-                Label::NONE,
-                Role::Auxiliary,
-                note.clone(),
-            )?;
-            let up = b.perpendicular(base, &at, Label::NONE, Role::Auxiliary, note.clone());
-            pts.push(b.lay_off(
-                &at,
-                &up,
-                -v / scale,
-                Label::NONE,
-                Role::Auxiliary,
-                note.clone(),
-            )?);
-        }
-        if pts.len() > 1 {
-            b.curve(
-                &pts,
-                Trace::Smooth,
-                Label::NONE,
-                Role::Auxiliary,
-                note.clone(),
-            );
-        }
+        compare_curve(b, fr, &res, dr, k, scale, &note)?;
     }
     Ok(res)
+}
+
+/// The slider-crank's curve `k` (0: velocity, 1: acceleration, at `scale` per mm) laid over
+/// the yoke's base line of the same diagram, where it is drawn.
+fn compare_curve(
+    b: &mut Board,
+    fr: &Frame,
+    res: &CrankResults,
+    dr: &Drawing,
+    k: usize,
+    scale: f64,
+    note: &Note,
+) -> Result<(), ConstructionError> {
+    let Some((base, _)) = &fr.bases[k] else {
+        return Ok(());
+    };
+    let mut pts = Vec::new();
+    let foot = b.foot(base, &fr.t, Label::NONE, Role::Auxiliary, note.clone());
+    for row in &res.rows {
+        // The books give b in the direction of motion (positive while the piston speeds
+        // up); the diagram reads it along the line of the stroke, as the yoke's b′.
+        let sign = match row.stroke {
+            crate::crank::closed_form::Stroke::Out => 1.0,
+            crate::crank::closed_form::Stroke::Return => -1.0,
+        };
+        let value = if k == 0 {
+            row.c_parallel
+        } else {
+            row.acceleration.map(|a| sign * a)
+        };
+        let (Some(x), Some(v)) = (row.x, value) else {
+            continue;
+        };
+        let at = b.lay_off(
+            &foot,
+            base,
+            x / dr.length_scale,
+            Label::NONE,
+            Role::Auxiliary,
+            note.clone(),
+        )?;
+        let up = b.perpendicular(base, &at, Label::NONE, Role::Auxiliary, note.clone());
+        pts.push(b.lay_off(
+            &at,
+            &up,
+            -v / scale,
+            Label::NONE,
+            Role::Auxiliary,
+            note.clone(),
+        )?);
+    }
+    if pts.len() > 1 {
+        b.curve(
+            &pts,
+            Trace::Smooth,
+            Label::NONE,
+            Role::Auxiliary,
+            note.clone(),
+        );
+    }
+    Ok(())
 }

@@ -136,19 +136,8 @@ fn mean_heights(
         exact.abs(),
         || to_tm(polygon),
     );
-    if let Some(s) = rules::simpson(&ords).filter(|_| equal) {
-        out.push(MeanHeight {
-            rule: "Simpson (Gl. 58)".into(),
-            t_m: s,
-            error: 0.0,
-        });
-    }
-    if let Some(s) = rules::three_eighths(&ords).filter(|_| equal) {
-        out.push(MeanHeight {
-            rule: "3/8 rule (Gl. 59)".into(),
-            t_m: s,
-            error: 0.0,
-        });
+    if equal {
+        out.extend(equal_strip_rules(&ords));
     }
     let squares = rules::count_squares(&pts, CELL_MM);
     let sq = b.reckon(to_tm(squares), "kg", Label::NONE, ords_read, N_MEAN);
@@ -173,6 +162,20 @@ fn mean_heights(
         m.error = m.t_m - exact;
     }
     out
+}
+
+/// Simpson's rule and the 3/8 rule over ordinates at equal strips, where their count allows.
+fn equal_strip_rules(ords: &[f64]) -> impl Iterator<Item = MeanHeight> {
+    let simpson = rules::simpson(ords).map(|t_m| ("Simpson (Gl. 58)", t_m));
+    let eighths = rules::three_eighths(ords).map(|t_m| ("3/8 rule (Gl. 59)", t_m));
+    [simpson, eighths]
+        .into_iter()
+        .flatten()
+        .map(|(rule, t_m)| MeanHeight {
+            rule: rule.into(),
+            t_m,
+            error: 0.0,
+        })
 }
 
 /// T_m by a simulated polar planimeter traced round the drawn outline (pole below the
