@@ -1,9 +1,10 @@
 //! One SVG figure of a recorded construction.
 
+use super::labels::{self, Placement};
 use super::style::class as class_of;
 use super::style::*;
 use crate::fmt::{num, sheet_text};
-use crate::kernel::tolerance::{MIN_DRAWN_MM, NICE_SCALE_SLACK, REL_LAYOUT_EPS};
+use crate::kernel::tolerance::{MIN_DRAWN_MM, NICE_SCALE_SLACK};
 use crate::kernel::{Point, Vector};
 use crate::protocol::{
     Board, FigureMeta, Geom, Label, Object, Role, Step, StepId, TABLE_BLOCK_ROWS,
@@ -16,6 +17,7 @@ use svg::Document;
 /// Sheet coordinates (mm, y up) to SVG user units (mm, y down), and the drawn region.
 struct Frame {
     min_x: f64,
+    min_y: f64,
     max_y: f64,
     width: f64,
     height: f64,
@@ -197,6 +199,49 @@ fn bounds(pts: &[Point]) -> [f64; 4] {
     [min_x, min_y, max_x, max_y]
 }
 
+/// The labels of a figure placed on its frame.
+fn placed(board: &Board, f: &Frame) -> Placement {
+    labels::place(board, label_region(f), strokes(board, f), &|p| {
+        f.contains(p)
+    })
+}
+
+/// The labels of a figure as [`figure`] places them.
+#[cfg(test)]
+pub(crate) fn placement(meta: &FigureMeta, board: &Board) -> Placement {
+    placed(board, &frame_of(board, meta))
+}
+
+/// The straight strokes the figure draws (lines as clipped, segments, vectors, the sides of
+/// curves and of whole circles), for the lettering to keep clear of.
+fn strokes(board: &Board, f: &Frame) -> Vec<(Point, Point)> {
+    let mut out = Vec::new();
+    for o in board.objects() {
+        match &o.geom {
+            Geom::Line { .. } => out.extend(line_ends(o).and_then(|(a, b)| f.clip_segment(a, b))),
+            Geom::Segment { segment } | Geom::Vector { segment } => {
+                out.push((segment.a, segment.b))
+            }
+            Geom::Curve { points, .. } => out.extend(points.windows(2).map(|w| (w[0], w[1]))),
+            Geom::Circle {
+                circle, full: true, ..
+            } => {
+                let at = |k: usize| circle.point_at_deg(7.5 * k as f64);
+                out.extend((0..48).map(|k| (at(k), at(k + 1))));
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// The part of the sheet lettering may use (`[x0, y0, x1, y1]`, mm of the figure): the
+/// figure and its margins, not the title block above nor the scale rows below.
+fn label_region(f: &Frame) -> [f64; 4] {
+    let x0 = f.min_x - MARGIN;
+    [x0, f.min_y - MARGIN, x0 + f.width, f.max_y + MARGIN]
+}
+
 fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
     // The solid parts (circles, segments, vectors, curves, given points such as a pole) span
     // the figure; lines and constructed points are drawn within reach of them.
@@ -224,6 +269,7 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
     let clip = [sx0 - reach, sy0 - reach, sx1 + reach, sy1 + reach];
     let probe = Frame {
         min_x: 0.0,
+        min_y: 0.0,
         max_y: 0.0,
         width: 0.0,
         height: 0.0,
@@ -267,6 +313,7 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
         (max_y - min_y) + 2.0 * MARGIN + TITLE_BLOCK + SCALE_ROW * meta.scales.len() as f64;
     Frame {
         min_x,
+        min_y,
         max_y,
         width,
         height,
@@ -286,24 +333,6 @@ fn label_text(f: &Frame, at: &Point, label: &Label) -> Text {
         );
     }
     t
-}
-
-/// Where to write a point's label: radially outward if the point lies on a whole circle
-/// drawn in the figure, otherwise up and to the right.
-fn label_position(board: &Board, p: &Point) -> Point {
-    for o in board.objects() {
-        if let Geom::Circle {
-            circle, full: true, ..
-        } = &o.geom
-        {
-            let v = p - circle.center;
-            let d = v.norm();
-            if d > 0.0 && (d - circle.radius).abs() <= REL_LAYOUT_EPS * circle.radius {
-                return p + v * ((LABEL_OFFSET + 1.2) / d) + Vector::new(-1.0, -1.2);
-            }
-        }
-    }
-    p + Vector::new(LABEL_OFFSET * 0.6, LABEL_OFFSET * 0.6)
 }
 
 /// A circle: whole, or only the short compass arcs at the points constructed on it.
@@ -340,7 +369,19 @@ fn draw_circle(
     }
 }
 
-fn draw_object(board: &Board, f: &Frame, obj: &Object, g: Group) -> Group {
+/// The label of `obj` where the placement put it, with its leader where it stands off.
+fn draw_label(f: &Frame, obj: &Object, labels: &Placement, g: Group) -> Group {
+    let Some(pl) = labels.get(obj.id) else {
+        return g;
+    };
+    let mut g = g.add(label_text(f, &pl.at, &obj.label));
+    if let Some((a, b)) = pl.leader {
+        g = g.add(sheet_line(f, "leader", a, b));
+    }
+    g
+}
+
+fn draw_object(f: &Frame, obj: &Object, labels: &Placement, g: Group) -> Group {
     let class = class(obj.role);
     let mut g = g;
     match &obj.geom {
@@ -352,10 +393,7 @@ fn draw_object(board: &Board, f: &Frame, obj: &Object, g: Group) -> Group {
                     .set("cy", f.y(at))
                     .set("r", num(DOT, 3)),
             );
-            if !obj.label.is_empty() {
-                let lp = label_position(board, at);
-                g = g.add(label_text(f, &lp, &obj.label));
-            }
+            g = draw_label(f, obj, labels, g);
         }
         Geom::Point { .. } => {}
         Geom::Line { .. } => {
@@ -396,11 +434,7 @@ fn draw_object(board: &Board, f: &Frame, obj: &Object, g: Group) -> Group {
                 polygon_path(f, points)
             };
             g = g.add(Path::new().set("class", class).set("d", d));
-            if !obj.label.is_empty() {
-                if let Some(top) = points.iter().max_by(|a, b| a.y.total_cmp(&b.y)) {
-                    g = g.add(label_text(f, &(top + Vector::new(1.0, 1.5)), &obj.label));
-                }
-            }
+            g = draw_label(f, obj, labels, g);
         }
         Geom::Table { at, rows } => {
             for (block, corner) in table_blocks(*at, rows) {
@@ -633,7 +667,7 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> Group {
     g
 }
 
-fn layer(board: &Board, f: &Frame, step: &Step, current: bool) -> Group {
+fn layer(board: &Board, f: &Frame, labels: &Placement, step: &Step, current: bool) -> Group {
     let id = step.id.to_string();
     let mut g = Group::new()
         .set("id", format!("step-{id}"))
@@ -645,7 +679,7 @@ fn layer(board: &Board, f: &Frame, step: &Step, current: bool) -> Group {
     }
     for oid in &step.outputs {
         if let Some(obj) = board.object(*oid) {
-            g = draw_object(board, f, obj, g);
+            g = draw_object(f, obj, labels, g);
         }
     }
     g
@@ -659,6 +693,7 @@ fn layer(board: &Board, f: &Frame, step: &Step, current: bool) -> Group {
 /// Deterministic: the same board gives the same bytes (numbers rounded to 0.001 mm).
 pub fn figure(meta: &FigureMeta, board: &Board, upto: Option<StepId>) -> String {
     let f = frame_of(board, meta);
+    let labels = placed(board, &f);
     let mut doc = Document::new()
         .set(
             "xmlns:inkscape",
@@ -680,7 +715,7 @@ pub fn figure(meta: &FigureMeta, board: &Board, upto: Option<StepId>) -> String 
                 break;
             }
         }
-        doc = doc.add(layer(board, &f, step, Some(step.id) == upto));
+        doc = doc.add(layer(board, &f, &labels, step, Some(step.id) == upto));
     }
     let mut s = doc.to_string();
     s.push('\n');

@@ -7,6 +7,7 @@ mod drafting;
 pub mod export;
 mod figure;
 pub mod forces;
+mod labels;
 mod plot;
 mod style;
 mod table;

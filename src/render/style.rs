@@ -65,6 +65,7 @@ pub fn css() -> String {
 .velocity{{stroke-width:0.35;marker-end:url(#arrow-open)}}\
 .guide{{stroke-width:0.6}}\
 .hatch{{stroke-width:0.18}}\
+.leader{{stroke-width:0.12}}\
 circle.pt{{fill:#000;stroke:none}}\
 text{{font-family:'Times New Roman',Times,'Liberation Serif',serif;font-style:italic;font-size:3.5px;fill:#000;stroke:none}}\
 text.title{{font-style:normal;font-size:6px}}\
