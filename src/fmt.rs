@@ -320,6 +320,81 @@ pub fn sheet_text(s: &str) -> std::borrow::Cow<'_, str> {
     }
 }
 
+/// The subscript form of a character, where Unicode has one that the sheet's DejaVu Serif
+/// sets (figures, and a e h k l m n o p s t x, i r u v j).
+pub fn subscript_of(c: char) -> Option<char> {
+    const LETTERS: [(char, char); 17] = [
+        ('a', 'ₐ'),
+        ('e', 'ₑ'),
+        ('h', 'ₕ'),
+        ('i', 'ᵢ'),
+        ('j', 'ⱼ'),
+        ('k', 'ₖ'),
+        ('l', 'ₗ'),
+        ('m', 'ₘ'),
+        ('n', 'ₙ'),
+        ('o', 'ₒ'),
+        ('p', 'ₚ'),
+        ('r', 'ᵣ'),
+        ('s', 'ₛ'),
+        ('t', 'ₜ'),
+        ('u', 'ᵤ'),
+        ('v', 'ᵥ'),
+        ('x', 'ₓ'),
+    ];
+    match c {
+        '0'..='9' => char::from_u32('₀' as u32 + (c as u32 - '0' as u32)),
+        _ => LETTERS.iter().find(|(l, _)| *l == c).map(|(_, s)| *s),
+    }
+}
+
+/// The books' subscripts where a text writes them with an underscore: `T_m` is set `Tₘ`,
+/// `c_max` `cₘₐₓ`, `N_i` `Nᵢ`. Only a symbol is set so: one or two letters standing as a word
+/// of their own, an underscore, and one to four letters or figures that end the word, each
+/// with a subscript form. Anything else (`slider_crank`, `length_mm`, `_x`, `a_b_c`) stays as
+/// written. For the lettering of a figure, not for messages that quote a scene's fields.
+///
+/// ```
+/// use graphostatik::fmt::subscripts;
+/// assert_eq!(subscripts("T_m = 12900 kg"), "Tₘ = 12900 kg");
+/// assert_eq!(subscripts("c_max and N_i"), "cₘₐₓ and Nᵢ");
+/// assert_eq!(subscripts("length_mm, slider_crank, _x, a_b_c"), "length_mm, slider_crank, _x, a_b_c");
+/// ```
+pub fn subscripts(s: &str) -> std::borrow::Cow<'_, str> {
+    if !s.contains('_') {
+        return s.into();
+    }
+    let chars: Vec<char> = s.chars().collect();
+    let mut out = String::with_capacity(s.len());
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        // The symbol before: one or two letters from the start of a word.
+        let symbol = (1..=2).any(|n| {
+            i >= n
+                && chars[i - n..i].iter().all(|c| c.is_alphabetic())
+                && (i == n || !chars[i - n - 1].is_alphanumeric())
+        });
+        if c == '_' && symbol {
+            let run: Vec<char> = chars[i + 1..]
+                .iter()
+                .take_while(|c| c.is_alphanumeric() || **c == '_')
+                .copied()
+                .collect();
+            let subs: Option<String> = run.iter().map(|c| subscript_of(*c)).collect();
+            let whole = !run.contains(&'_');
+            if let Some(subs) = subs.filter(|_| whole && (1..=4).contains(&run.len())) {
+                out.push_str(&subs);
+                i += 1 + run.len();
+                continue;
+            }
+        }
+        out.push(c);
+        i += 1;
+    }
+    out.into()
+}
+
 /// A text cell of a CSV file, quoted, that a spreadsheet will not run as a formula: a cell
 /// starting with `=`, `+`, `-`, `@`, a tab or a carriage return gets a leading apostrophe
 /// (numbers are written as numbers, not through here).

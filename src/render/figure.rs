@@ -3,7 +3,7 @@
 use super::labels::{self, Placement};
 use super::style::class as class_of;
 use super::style::*;
-use crate::fmt::{num, sheet_text};
+use crate::fmt::{num, sheet_text, subscripts};
 use crate::kernel::tolerance::{MIN_DRAWN_MM, NICE_SCALE_SLACK};
 use crate::kernel::{Point, Vector};
 use crate::protocol::{
@@ -322,7 +322,7 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
 }
 
 fn label_text(f: &Frame, at: &Point, label: &Label) -> Text {
-    let mut t = Text::new(sheet_text(&label.base).into_owned())
+    let mut t = Text::new(sheet_text(&subscripts(&label.base)).into_owned())
         .set("x", f.x(at))
         .set("y", f.y(at));
     if let Some(i) = label.index {
@@ -467,7 +467,7 @@ fn draw_table(f: &Frame, at: Point, rows: &[Vec<String>], g: Group) -> Group {
                 (x, "start")
             };
             g = g.add(
-                Text::new(sheet_text(cell).into_owned())
+                Text::new(sheet_text(&subscripts(cell)).into_owned())
                     .set("class", "small")
                     .set("x", f.x(&Point::new(px, y)))
                     .set("y", f.y(&Point::new(px, y)))

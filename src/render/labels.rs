@@ -88,7 +88,9 @@ struct Request<'a> {
 
 /// The size of a label's text (width, depth below the baseline).
 fn extent(label: &Label) -> (f64, f64) {
-    let letters = label.base.chars().count() as f64;
+    let text = crate::fmt::subscripts(&label.base);
+    let small = text.chars().filter(|c| is_subscript(*c)).count() as f64;
+    let letters = text.chars().count() as f64 - small + small * INDEX_CHAR / CHAR;
     match label.index {
         Some(i) => (
             letters * CHAR + INDEX_GAP + i.to_string().len() as f64 * INDEX_CHAR,
@@ -96,6 +98,11 @@ fn extent(label: &Label) -> (f64, f64) {
         ),
         None => (letters * CHAR, DESCENT),
     }
+}
+
+/// Whether a character is one of the subscripts the sheet sets for `_m`.
+fn is_subscript(c: char) -> bool {
+    ('\u{2080}'..='\u{209c}').contains(&c) || matches!(c, 'ᵢ' | 'ⱼ' | 'ᵣ' | 'ᵤ' | 'ᵥ')
 }
 
 /// The box of a label whose baseline starts at `at`.
