@@ -519,6 +519,9 @@ struct Builder<'a> {
     d: &'a CrankDrive,
     scales: &'a Drawing,
     thetas: Vec<f64>,
+    /// The position drawn in the result pen; the others are drawn thin, as the plates
+    /// draw one position of a mechanism heavy and the rest as construction.
+    shown: Option<usize>,
     divisions: Option<usize>,
     /// The stroke divided into this many parts (LH Abb. 59), when the rays are found so.
     stroke_parts: Option<usize>,
@@ -555,6 +558,12 @@ pub fn construct(
     construct_at(board, drive, drawing, angles, request, Point::origin())
 }
 
+/// The position a figure of several crank angles draws in the result pen: the first off the
+/// dead centres (where crank and rod lie on the piston line and show nothing).
+pub fn shown_position(thetas: &[f64]) -> Option<usize> {
+    (thetas.iter()).position(|t| crate::kernel::angle::wrap_360(*t) % 180.0 != 0.0)
+}
+
 /// [`construct`] with the shaft centre O at `origin` on the sheet: several drives on one
 /// sheet (the cylinders of an engine, each with its polar force figure).
 pub fn construct_at(
@@ -579,6 +588,7 @@ pub fn construct_at(
             Angles::StrokeParts(n) => Some(*n),
             _ => None,
         },
+        shown: shown_position(&thetas),
         thetas,
         r: drive.crank_radius / drawing.length_scale,
         l: drive.rod_length / drawing.length_scale,
@@ -696,8 +706,8 @@ impl Builder<'_> {
                 )?
             }
         };
-        self.b
-            .segment(&o, &pin, Label::NONE, Role::Result, N_CRANK_AT);
+        let pen = self.pen(i);
+        self.b.segment(&o, &pin, Label::NONE, pen, N_CRANK_AT);
         Ok(pin)
     }
 
@@ -857,6 +867,16 @@ impl Builder<'_> {
         Ok(())
     }
 
+    /// The pen of the crank and rod at the i-th angle: heavy for the position shown, thin for
+    /// the others.
+    fn pen(&self, i: usize) -> Role {
+        if self.shown == Some(i) {
+            Role::Result
+        } else {
+            Role::Construction
+        }
+    }
+
     fn pin(&mut self, i: usize) -> Result<H<Point>, ConstructionError> {
         if let Some(p) = self.cache[i].pin {
             return Ok(p);
@@ -880,18 +900,19 @@ impl Builder<'_> {
                     .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
             }
             let pin = self.divided.as_ref().expect("divided above")[i];
-            self.b
-                .segment(&o, &pin, Label::NONE, Role::Result, N_CRANK_AT);
+            let pen = self.pen(i);
+            self.b.segment(&o, &pin, Label::NONE, pen, N_CRANK_AT);
             pin
         } else {
             // The pin at 180° − θ on the sheet, by the sine and cosine of θ itself: forming
             // 180 − θ would round a small θ (1e-9° came out 1e-5 relative off).
             let (s, c) = crate::kernel::angle::sin_cos_deg(self.thetas[i]);
+            let pen = self.pen(i);
             self.b.point_on_circle_dir(
                 &circle,
                 SinCos { sin: s, cos: -c },
                 Label::indexed("A", i as u32),
-                Role::Result,
+                pen,
                 N_CRANK_AT,
             )
         };
@@ -921,7 +942,8 @@ impl Builder<'_> {
                 Label::quiet("B", i as u32),
                 N_CROSSHEAD,
             )?;
-            self.b.segment(&b, &pin, Label::NONE, Role::Result, N_ROD);
+            let pen = self.pen(i);
+            self.b.segment(&b, &pin, Label::NONE, pen, N_ROD);
             b
         } else {
             self.b.foot(

@@ -37,7 +37,9 @@ pub mod closed_form;
 mod construction;
 pub(crate) mod tolle;
 
-pub use construction::{construct, construct_at, AngleRow, CrankResults, MaxVelocity};
+pub use construction::{
+    construct, construct_at, shown_position, AngleRow, CrankResults, MaxVelocity,
+};
 
 use serde::Serialize;
 

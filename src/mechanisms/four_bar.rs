@@ -294,9 +294,16 @@ pub fn construct(
     };
     let mut rows = Vec::with_capacity(thetas.len());
     let mut flagged = Vec::new();
+    // One position in the result pen, the others thin (the plates' way).
+    let shown = crate::crank::shown_position(thetas);
     for (i, &theta) in thetas.iter().enumerate() {
         b.set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
-        let row = position(b, &fr, (fb, length_scale), (i as u32, theta, rq))?;
+        let pen = if shown == Some(i) {
+            Role::Result
+        } else {
+            Role::Construction
+        };
+        let row = position(b, &fr, (fb, length_scale), (i as u32, theta, rq), pen)?;
         if row.flagged {
             flagged.push(row);
         }
@@ -430,12 +437,13 @@ fn position(
     fr: &Frame,
     (fb, ls): (&FourBar, f64),
     (i, theta, rq): (u32, f64, FourBarRequest),
+    pen: Role,
 ) -> Result<FourBarRow, ConstructionError> {
     let pin = b.point_on_circle(
         &fr.crank,
         theta,
         Label::indexed("P", i),
-        Role::Result,
+        pen,
         n("the crank pin at θ", Some("Kurbelzapfen")),
     );
     let arc = b.circle(
@@ -459,14 +467,14 @@ fn position(
         &pin,
         &joint,
         Label::NONE,
-        Role::Result,
+        pen,
         n("the coupler", Some("Koppel")),
     );
     b.segment(
         &fr.a,
         &joint,
         Label::NONE,
-        Role::Result,
+        pen,
         n("the rocker", Some("Schwinge")),
     );
     let (_, psi, mu) = fb.exact(theta);
