@@ -31,8 +31,9 @@ const CHAR: f64 = 2.17;
 /// Advance of one figure of a label's subscript (mm): 0.64 em of its 2.4 mm.
 const INDEX_CHAR: f64 = 1.54;
 /// The space the sheet's text sets between a letter and its subscript (mm): the SVG puts
-/// the subscript on a line of its own, which a renderer reads as one word space.
-const INDEX_GAP: f64 = 1.1;
+/// the subscript on a line of its own, which a renderer reads as one word space (with the
+/// italic capitals' overhang, 1.6 mm as usvg lays out "A 3" in DejaVu Serif).
+const INDEX_GAP: f64 = 1.6;
 /// Height of a label above its baseline (mm): the capitals of 3.5 mm type.
 const ASCENT: f64 = 2.5;
 /// Depth below the baseline (mm): descenders, or a subscript set 0.9 mm lower.
