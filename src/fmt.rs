@@ -320,32 +320,42 @@ pub fn sheet_text(s: &str) -> std::borrow::Cow<'_, str> {
     }
 }
 
+/// The letters Unicode sets as subscripts that the sheet's DejaVu Serif has, with their
+/// subscripts.
+const SUBSCRIPT_LETTERS: [(char, char); 17] = [
+    ('a', 'ₐ'),
+    ('e', 'ₑ'),
+    ('h', 'ₕ'),
+    ('i', 'ᵢ'),
+    ('j', 'ⱼ'),
+    ('k', 'ₖ'),
+    ('l', 'ₗ'),
+    ('m', 'ₘ'),
+    ('n', 'ₙ'),
+    ('o', 'ₒ'),
+    ('p', 'ₚ'),
+    ('r', 'ᵣ'),
+    ('s', 'ₛ'),
+    ('t', 'ₜ'),
+    ('u', 'ᵤ'),
+    ('v', 'ᵥ'),
+    ('x', 'ₓ'),
+];
+
 /// The subscript form of a character, where Unicode has one that the sheet's DejaVu Serif
 /// sets (figures, and a e h k l m n o p s t x, i r u v j).
 pub fn subscript_of(c: char) -> Option<char> {
-    const LETTERS: [(char, char); 17] = [
-        ('a', 'ₐ'),
-        ('e', 'ₑ'),
-        ('h', 'ₕ'),
-        ('i', 'ᵢ'),
-        ('j', 'ⱼ'),
-        ('k', 'ₖ'),
-        ('l', 'ₗ'),
-        ('m', 'ₘ'),
-        ('n', 'ₙ'),
-        ('o', 'ₒ'),
-        ('p', 'ₚ'),
-        ('r', 'ᵣ'),
-        ('s', 'ₛ'),
-        ('t', 'ₜ'),
-        ('u', 'ᵤ'),
-        ('v', 'ᵥ'),
-        ('x', 'ₓ'),
-    ];
     match c {
         '0'..='9' => char::from_u32('₀' as u32 + (c as u32 - '0' as u32)),
-        _ => LETTERS.iter().find(|(l, _)| *l == c).map(|(_, s)| *s),
+        _ => (SUBSCRIPT_LETTERS.iter())
+            .find(|(l, _)| *l == c)
+            .map(|(_, s)| *s),
     }
+}
+
+/// Whether a character is one of the subscripts [`subscript_of`] gives.
+pub fn is_subscript(c: char) -> bool {
+    ('₀'..='₉').contains(&c) || SUBSCRIPT_LETTERS.iter().any(|(_, s)| *s == c)
 }
 
 /// The books' subscripts where a text writes them with an underscore: `T_m` is set `Tₘ`,

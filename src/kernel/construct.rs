@@ -141,6 +141,41 @@ pub fn divide_circle(circle: &Circle, start_deg: f64, n: usize, clockwise: bool)
         .collect()
 }
 
+/// The parameters (0 at `a`, 1 at `b`) between which the segment a–b lies in the rectangle
+/// `[x0, y0, x1, y1]` (Liang–Barsky); `None` where it misses it.
+///
+/// ```
+/// use graphostatik::kernel::{construct::clip_to_rect, Point};
+/// let t = clip_to_rect(Point::new(-1.0, 0.5), Point::new(3.0, 0.5), [0.0, 0.0, 1.0, 1.0]);
+/// assert_eq!(t, Some((0.25, 0.5)));
+/// assert_eq!(clip_to_rect(Point::new(-1.0, 2.0), Point::new(3.0, 2.0), [0.0, 0.0, 1.0, 1.0]), None);
+/// ```
+pub fn clip_to_rect(a: Point, b: Point, rect: [f64; 4]) -> Option<(f64, f64)> {
+    let [x0, y0, x1, y1] = rect;
+    let d = b - a;
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [
+        (-d.x, a.x - x0),
+        (d.x, x1 - a.x),
+        (-d.y, a.y - y0),
+        (d.y, y1 - a.y),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return None;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+        }
+    }
+    (t0 <= t1).then_some((t0, t1))
+}
+
 /// The signed ordinate of `p` measured along `axis` from the axis origin (mm on the sheet):
 /// the drafter's "cut off on the vertical centre line".
 pub fn ordinate(axis: &Line, p: &Point) -> f64 {

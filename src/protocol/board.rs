@@ -283,44 +283,13 @@ impl Board {
         }
     }
 
-    /// This board, with every step evaluated a second time in double-double from its inputs'
-    /// reference values (a recording board only): [`Board::reference_report`] then sets what
-    /// f64 lost beside what the propagated bound predicted.
-    ///
-    /// ```
-    /// use graphostatik::prelude::*;
-    /// let mut b = Board::recording().with_reference();
-    /// let n = Note::new("a glancing cut", Topic::Custom("demo"));
-    /// let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, n.clone());
-    /// let a = b.point(Point::new(0.0, 1.0), Label::plain("A"), Role::Given, n.clone());
-    /// let x = b.line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, n.clone())?;
-    /// let y = b.line_dir(&a, Vector::new(1.0, -1e-6), Label::NONE, Role::Construction, n.clone())?;
-    /// let p = b.meet_point(&x, &y, Label::plain("P"), n)?;
-    /// let row = b.reference_report().into_iter().find(|r| r.step == b.steps()[4].id).unwrap();
-    /// assert!(row.observed <= row.bound);       // f64 kept within the bound ...
-    /// assert!(row.bound > 1e5 * 1e6 * 1e-16);  // ... which the 1e-6 rad cut amplified
-    /// # Ok::<(), ConstructionError>(())
-    /// ```
-    pub fn with_reference(mut self) -> Board {
-        if self.recording {
-            self.shadows = Some(Vec::new());
-        }
-        self
-    }
-
-    /// This board, its error bounds following `model` instead of f64's rounding (a
-    /// draftsman's pencil and set squares: [`ErrorModel::drafting`]).
-    pub fn with_error_model(mut self, model: ErrorModel) -> Board {
-        self.model = model;
-        self
-    }
-
     /// The error model the bounds follow.
     pub fn error_model(&self) -> ErrorModel {
         self.model
     }
 
-    /// Whether the board replays its steps in double-double ([`Board::with_reference`]).
+    /// Whether the board replays its steps in double-double
+    /// ([`BoardConfig::with_reference`]).
     pub fn has_reference(&self) -> bool {
         self.shadows.is_some()
     }
@@ -1666,7 +1635,7 @@ impl Board {
 
     /// Per step with a point or a number among its results: how far f64 strayed from the
     /// double-double replay and what the propagated bound predicted (empty unless the board
-    /// was made [`Board::with_reference`]).
+    /// was made with [`BoardConfig::with_reference`]).
     pub fn reference_report(&self) -> Vec<ReferenceRow> {
         let figure = self.tolerance.length / crate::kernel::tolerance::REL_LENGTH_EPS;
         let mut rows = Vec::new();

@@ -89,7 +89,26 @@ impl BoardConfig {
         }
     }
 
-    /// This setup with a double-double reference replay (kept on a drawing board only).
+    /// This setup with a double-double reference replay (kept on a drawing board only):
+    /// every step is evaluated a second time in double-double from its inputs' reference
+    /// values, and [`Board::reference_report`](super::Board::reference_report) then sets
+    /// what f64 lost beside what the propagated bound predicted.
+    ///
+    /// ```
+    /// use graphostatik::prelude::*;
+    /// use graphostatik::protocol::BoardConfig;
+    /// let mut b = Board::new(BoardConfig::DRAWING.with_reference());
+    /// let n = Note::new("a glancing cut", Topic::Custom("demo"));
+    /// let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, n.clone());
+    /// let a = b.point(Point::new(0.0, 1.0), Label::plain("A"), Role::Given, n.clone());
+    /// let x = b.line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, n.clone())?;
+    /// let y = b.line_dir(&a, Vector::new(1.0, -1e-6), Label::NONE, Role::Construction, n.clone())?;
+    /// let p = b.meet_point(&x, &y, Label::plain("P"), n)?;
+    /// let row = b.reference_report().into_iter().find(|r| r.step == b.steps()[4].id).unwrap();
+    /// assert!(row.observed <= row.bound);       // f64 kept within the bound ...
+    /// assert!(row.bound > 1e5 * 1e6 * 1e-16);  // ... which the 1e-6 rad cut amplified
+    /// # Ok::<(), ConstructionError>(())
+    /// ```
     pub const fn with_reference(self) -> BoardConfig {
         BoardConfig {
             reference: true,

@@ -3,7 +3,7 @@
 //! double-double values.
 //!
 //! The procedures are not forked: the same procedure code drives a board, and a board made
-//! with [`Board::with_reference`](super::Board::with_reference) evaluates each kernel step
+//! with [`BoardConfig::with_reference`](super::BoardConfig::with_reference) evaluates each kernel step
 //! twice, in f64 (the result the procedure goes on with) and in double-double from the
 //! reference values of the step's inputs. The decisions (which branch of a cut, which case)
 //! are taken once, in f64; the numbers a procedure hands a step (a length to lay off, a

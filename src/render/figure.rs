@@ -4,10 +4,11 @@ use super::labels::{self, Placement};
 use super::style::class as class_of;
 use super::style::*;
 use crate::fmt::{num, sheet_text, subscripts};
+use crate::kernel::construct::clip_to_rect;
 use crate::kernel::tolerance::{MIN_DRAWN_MM, NICE_SCALE_SLACK};
 use crate::kernel::{Point, Vector};
 use crate::protocol::{
-    Board, FigureMeta, Geom, Label, Object, Role, Step, StepId, TABLE_BLOCK_ROWS,
+    Board, FigureMeta, Geom, Label, Object, Role, ScaleBar, Step, StepId, TABLE_BLOCK_ROWS,
 };
 use svg::node::element::{
     Circle as SCircle, Definitions, Group, Line as SLine, Marker, Path, Style, TSpan, Text, Title,
@@ -41,31 +42,11 @@ impl Frame {
         let [x0, y0, x1, y1] = self.clip;
         p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1
     }
-    /// Clips the segment a–b to the drawn region (Liang–Barsky); `None` if it lies outside.
+    /// Clips the segment a–b to the drawn region; `None` if it lies outside.
     fn clip_segment(&self, a: Point, b: Point) -> Option<(Point, Point)> {
-        let [x0, y0, x1, y1] = self.clip;
+        let (t0, t1) = clip_to_rect(a, b, self.clip)?;
         let d = b - a;
-        let (mut t0, mut t1) = (0.0f64, 1.0f64);
-        for (p, q) in [
-            (-d.x, a.x - x0),
-            (d.x, x1 - a.x),
-            (-d.y, a.y - y0),
-            (d.y, y1 - a.y),
-        ] {
-            if p == 0.0 {
-                if q < 0.0 {
-                    return None;
-                }
-            } else {
-                let r = q / p;
-                if p < 0.0 {
-                    t0 = t0.max(r);
-                } else {
-                    t1 = t1.min(r);
-                }
-            }
-        }
-        (t0 <= t1).then(|| (a + d * t0, a + d * t1))
+        Some((a + d * t0, a + d * t1))
     }
 }
 
@@ -235,12 +216,31 @@ fn strokes(board: &Board, f: &Frame) -> Vec<(Point, Point)> {
     out
 }
 
-/// How far a scale bar's name stands from the bar's end (mm): 12, or past the quantity
-/// written under the end (`2500 kg·m`, set from 1 mm before it at 0.6 em of 2.8 mm a
-/// character, the width DejaVu Serif gives such a label) where that is longer.
-fn scale_name_gap(end: &str) -> f64 {
-    let width = end.chars().count() as f64 * 1.7;
-    12.0f64.max(width + 1.0)
+/// One scale bar's row: its length on the sheet (mm) and the round quantity written under
+/// its end (`2500 kg·m`).
+struct ScaleRow {
+    len: f64,
+    end: String,
+}
+
+/// The rows of the scale bars, and how far right of the bars' start their names stand (mm),
+/// in one column: 12 mm past the longest bar, or past the longest quantity written under a
+/// bar's end where that reaches farther (set from 1 mm before the end, at 1.7 mm a
+/// character: 0.6 em of 2.8 mm, the width DejaVu Serif gives such a label).
+fn scale_rows(scales: &[ScaleBar]) -> (Vec<ScaleRow>, f64) {
+    let rows: Vec<ScaleRow> = (scales.iter())
+        .map(|s| {
+            let q = nice_below(SCALE_BAR * s.per_mm);
+            ScaleRow {
+                len: q / s.per_mm,
+                end: format!("{} {}", num(q, 6), s.unit),
+            }
+        })
+        .collect();
+    let names_at = (rows.iter())
+        .map(|r| r.len + 12.0f64.max(r.end.chars().count() as f64 * 1.7 + 1.0))
+        .fold(0.0, f64::max);
+    (rows, names_at)
 }
 
 /// The part of the sheet lettering may use (`[x0, y0, x1, y1]`, mm of the figure): the
@@ -310,10 +310,11 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
         meta.source.chars().count() as f64 * TEXT_CHAR,
     ]
     .into_iter()
-    .chain(meta.scales.iter().map(|s| {
-        let end = format!("{} {}", num(nice_below(SCALE_BAR * s.per_mm), 6), s.unit);
-        SCALE_BAR + scale_name_gap(&end) + 2.0 + s.name.chars().count() as f64 * SMALL_CHAR
-    }))
+    .chain({
+        let names_at = scale_rows(&meta.scales).1;
+        (meta.scales.iter())
+            .map(move |s| names_at + 2.0 + s.name.chars().count() as f64 * SMALL_CHAR)
+    })
     .fold(0.0, f64::max);
     let width = (max_x - min_x).max(text_width) + 2.0 * MARGIN;
     let height =
@@ -628,19 +629,11 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> Group {
     }
     // Scale bars, one to a row, under the figure.
     let y0 = f.height - MARGIN - SCALE_ROW * meta.scales.len() as f64 + 4.0;
-    // The names in one column, past the longest bar and the longest quantity at an end.
-    let names_at = MARGIN
-        + (meta.scales.iter())
-            .map(|s| {
-                let q = nice_below(SCALE_BAR * s.per_mm);
-                q / s.per_mm + scale_name_gap(&format!("{} {}", num(q, 6), s.unit))
-            })
-            .fold(0.0, f64::max);
-    for (k, s) in meta.scales.iter().enumerate() {
+    let (rows, names_at) = scale_rows(&meta.scales);
+    for (k, (s, row)) in meta.scales.iter().zip(rows).enumerate() {
         let x = MARGIN;
         let y = y0 + k as f64 * SCALE_ROW;
-        let q = nice_below(SCALE_BAR * s.per_mm);
-        let len = q / s.per_mm;
+        let len = row.len;
         let mut d = format!(
             "M{},{} L{},{}",
             num(x, 3),
@@ -666,9 +659,8 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> Group {
                 .set("x", num(x - 0.7, 3))
                 .set("y", num(y + 3.2, 3)),
         );
-        let end = format!("{} {}", num(q, 6), s.unit);
         g = g.add(
-            Text::new(end)
+            Text::new(row.end)
                 .set("class", "small")
                 .set("x", num(x + len - 1.0, 3))
                 .set("y", num(y + 3.2, 3)),
@@ -676,7 +668,7 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> Group {
         g = g.add(
             Text::new(sheet_text(&s.name).into_owned())
                 .set("class", "small")
-                .set("x", num(names_at, 3))
+                .set("x", num(MARGIN + names_at, 3))
                 .set("y", num(y + 1.0, 3)),
         );
     }

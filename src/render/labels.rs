@@ -3,22 +3,21 @@
 //!
 //! The cartographers' model of point labels: each label tries a list of candidate positions
 //! around its point, the one the figure has always used first (up and to the right of the
-//! point, or radially outward on a whole circle), then the seven others of the eight around
-//! it; the first position that is free is taken. Where none is, rings farther out are tried,
-//! and a short leader joins the label to its point. Only where even those are taken does a
-//! label keep its first position. Labels are placed in the order their objects were made, so
-//! that the construction's early letters keep their places.
-//!
-//! Of the free positions near the point, the one that crosses the fewest drawn strokes is
-//! taken (the first of equals): a label in the gap between a joint's members reads better
-//! than one across them, and a label on a line is still legible where one on another label
-//! is not. The rings farther out are tried only where no position near is free.
+//! point, or radially outward on a whole circle), then the eight around it. Of those that are
+//! free, the one that crosses the fewest drawn strokes is taken (the first of equals): a
+//! label in the gap between a joint's members reads better than one across them, and a label
+//! on a line is still legible where one on another label is not. Where none near is free,
+//! rings farther out are tried the same way, and a short leader joins the label to its point.
+//! Only where even those are taken does a label keep its first position. Labels are placed
+//! in the order their objects were made, so that the construction's early letters keep their
+//! places.
 //!
 //! What is placed is kept in bounding-volume hierarchies (parry2d's [`Bvh`]): each candidate
 //! is a query, so a figure of thousands of labels is placed in time n log n.
 
 use super::style::{DOT, LABEL_OFFSET};
-use crate::kernel::{Point, Vector};
+use crate::kernel::construct::clip_to_rect;
+use crate::kernel::{Circle, Point, Vector};
 use crate::protocol::{Board, Geom, Label, ObjId};
 use parry2d_f64::bounding_volume::{Aabb, BoundingVolume};
 use parry2d_f64::math::Point as PPoint;
@@ -79,18 +78,22 @@ impl Placement {
     }
 }
 
-/// A label to place: its object, the point it letters, where it has always stood, its text.
-struct Request<'a> {
+/// A label to place: its object, the point it letters, where it has always stood, the size of
+/// its text ([`extent`], reckoned once for all its candidates).
+struct Request {
     id: ObjId,
     anchor: Point,
     first: Point,
-    label: &'a Label,
+    size: (f64, f64),
 }
 
 /// The size of a label's text (width, depth below the baseline).
 fn extent(label: &Label) -> (f64, f64) {
     let text = crate::fmt::subscripts(&label.base);
-    let small = text.chars().filter(|c| is_subscript(*c)).count() as f64;
+    let small = text
+        .chars()
+        .filter(|c| crate::fmt::is_subscript(*c))
+        .count() as f64;
     let letters = text.chars().count() as f64 - small + small * INDEX_CHAR / CHAR;
     match label.index {
         Some(i) => (
@@ -101,24 +104,17 @@ fn extent(label: &Label) -> (f64, f64) {
     }
 }
 
-/// Whether a character is one of the subscripts the sheet sets for `_m`.
-fn is_subscript(c: char) -> bool {
-    ('\u{2080}'..='\u{209c}').contains(&c) || matches!(c, 'ᵢ' | 'ⱼ' | 'ᵣ' | 'ᵤ' | 'ᵥ')
-}
-
-/// The box of a label whose baseline starts at `at`.
-fn text_box(at: Point, label: &Label) -> Aabb {
-    let (w, depth) = extent(label);
+/// The box of a label of `size` ([`extent`]) whose baseline starts at `at`.
+fn text_box(at: Point, (w, depth): (f64, f64)) -> Aabb {
     Aabb::new(
         PPoint::new(at.x - PAD, at.y - depth - PAD),
         PPoint::new(at.x + w + PAD, at.y + ASCENT + PAD),
     )
 }
 
-/// The baseline-left points of the eight positions around `p` at distance `d` (mm), the
-/// first position given first: NE, NW, SE, SW, E, W, N, S.
-fn around(p: Point, d: f64, label: &Label) -> [Point; 8] {
-    let (w, depth) = extent(label);
+/// The baseline-left points of the eight positions around `p` at distance `d` (mm) of a
+/// label of `size` ([`extent`]), the first position given first: NE, NW, SE, SW, E, W, N, S.
+fn around(p: Point, d: f64, (w, depth): (f64, f64)) -> [Point; 8] {
     let up = p.y + d + depth;
     let down = p.y - d - ASCENT;
     let mid = p.y - (ASCENT - depth) / 2.0;
@@ -178,7 +174,7 @@ impl Taken {
         (self.stroke_bvh.intersect_aabb(b))
             .filter(|&i| {
                 let (p, q) = self.strokes[i as usize];
-                crosses(b, p, q)
+                clip_to_rect(p, q, rect(b)).is_some()
             })
             .count()
     }
@@ -189,58 +185,46 @@ fn unplaced(board: &Board) -> Placement {
     let circles = full_circles(board);
     let mut out = Placement::default();
     for o in board.objects() {
-        let at = match &o.geom {
-            Geom::Point { at } if !o.label.is_empty() => first_position(&circles, at),
-            Geom::Curve { points, .. } if !o.label.is_empty() => {
-                match points.iter().max_by(|a, b| a.y.total_cmp(&b.y)) {
-                    Some(top) => top + Vector::new(1.0, 1.5),
-                    None => continue,
-                }
-            }
-            _ => continue,
-        };
-        out.placed.insert(o.id, Placed { at, leader: None });
+        if let Some((_, first)) = where_first(o, &circles) {
+            out.placed.insert(
+                o.id,
+                Placed {
+                    at: first,
+                    leader: None,
+                },
+            );
+        }
     }
     out
+}
+
+/// The point a label letters and where it has always stood: a point's, radially outward on
+/// a whole circle or up and to the right; a curve's, over its highest point. `None` for an
+/// object without a drawn label.
+fn where_first(o: &crate::protocol::Object, circles: &[Circle]) -> Option<(Point, Point)> {
+    if o.label.is_empty() {
+        return None;
+    }
+    match &o.geom {
+        Geom::Point { at } => Some((*at, first_position(circles, at))),
+        Geom::Curve { points, .. } => (points.iter())
+            .max_by(|a, b| a.y.total_cmp(&b.y))
+            .map(|top| (*top, top + Vector::new(1.0, 1.5))),
+        _ => None,
+    }
+}
+
+/// The corners of a box as `[x0, y0, x1, y1]`.
+fn rect(b: &Aabb) -> [f64; 4] {
+    [b.mins.x, b.mins.y, b.maxs.x, b.maxs.y]
 }
 
 /// The part of the segment p–q within the box, if any (finite points only).
 fn clipped(b: &Aabb, p: Point, q: Point) -> Option<(Point, Point)> {
     let finite = p.x.is_finite() && p.y.is_finite() && q.x.is_finite() && q.y.is_finite();
-    let (t0, t1) = clip_params(b, p, q).filter(|_| finite)?;
+    let (t0, t1) = clip_to_rect(p, q, rect(b)).filter(|_| finite)?;
     let d = q - p;
     Some((p + d * t0, p + d * t1))
-}
-
-/// Whether the segment p–q passes through the box.
-fn crosses(b: &Aabb, p: Point, q: Point) -> bool {
-    clip_params(b, p, q).is_some()
-}
-
-/// The parameters on p–q (0 at p, 1 at q) between which it lies in the box (Liang–Barsky).
-fn clip_params(b: &Aabb, p: Point, q: Point) -> Option<(f64, f64)> {
-    let d = q - p;
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    for (dp, gap) in [
-        (-d.x, p.x - b.mins.x),
-        (d.x, b.maxs.x - p.x),
-        (-d.y, p.y - b.mins.y),
-        (d.y, b.maxs.y - p.y),
-    ] {
-        if dp == 0.0 {
-            if gap < 0.0 {
-                return None;
-            }
-        } else {
-            let t = gap / dp;
-            if dp < 0.0 {
-                t0 = t0.max(t);
-            } else {
-                t1 = t1.min(t);
-            }
-        }
-    }
-    (t0 <= t1).then_some((t0, t1))
 }
 
 /// The labels of `board`'s drawn points and curves placed on a sheet whose drawable region
@@ -290,7 +274,7 @@ pub(crate) fn place(
                 leader: None,
             }
         });
-        taken.add(text_box(placed.at, r.label));
+        taken.add(text_box(placed.at, r.size));
         out.placed.insert(r.id, placed);
     }
     out
@@ -298,46 +282,32 @@ pub(crate) fn place(
 
 /// The labels to place, in the order their objects were made; every drawn point's dot is
 /// put on the sheet as it is met.
-fn requests<'a>(
-    board: &'a Board,
+fn requests(
+    board: &Board,
     region: &Aabb,
     drawn: &dyn Fn(&Point) -> bool,
     taken: &mut Taken,
-) -> Vec<Request<'a>> {
+) -> Vec<Request> {
     let circles = full_circles(board);
+    let inside = |p: &Point| region.contains_local_point(&PPoint::new(p.x, p.y));
     let mut requests = Vec::new();
     for o in board.objects() {
-        match &o.geom {
-            Geom::Point { at }
-                if drawn(at) && region.contains_local_point(&PPoint::new(at.x, at.y)) =>
-            {
-                let dot = Aabb::new(
-                    PPoint::new(at.x - DOT - PAD, at.y - DOT - PAD),
-                    PPoint::new(at.x + DOT + PAD, at.y + DOT + PAD),
-                );
-                taken.add(dot);
-                if !o.label.is_empty() {
-                    requests.push(Request {
-                        id: o.id,
-                        anchor: *at,
-                        first: first_position(&circles, at),
-                        label: &o.label,
-                    });
-                }
+        if let Geom::Point { at } = &o.geom {
+            if !(drawn(at) && inside(at)) {
+                continue;
             }
-            Geom::Curve { points, .. } if !o.label.is_empty() => {
-                let top = points.iter().max_by(|a, b| a.y.total_cmp(&b.y));
-                let inside = |p: &&Point| region.contains_local_point(&PPoint::new(p.x, p.y));
-                if let Some(top) = top.filter(inside) {
-                    requests.push(Request {
-                        id: o.id,
-                        anchor: *top,
-                        first: top + Vector::new(1.0, 1.5),
-                        label: &o.label,
-                    });
-                }
-            }
-            _ => {}
+            taken.add(Aabb::new(
+                PPoint::new(at.x - DOT - PAD, at.y - DOT - PAD),
+                PPoint::new(at.x + DOT + PAD, at.y + DOT + PAD),
+            ));
+        }
+        if let Some((anchor, first)) = where_first(o, &circles).filter(|(a, _)| inside(a)) {
+            requests.push(Request {
+                id: o.id,
+                anchor,
+                first,
+                size: extent(&o.label),
+            });
         }
     }
     requests
@@ -347,17 +317,14 @@ fn requests<'a>(
 /// eight around it), the one that crosses the fewest strokes (the first of equals); only
 /// where none near is free, the same on the rings farther out, with a leader.
 fn place_one(taken: &mut Taken, r: &Request) -> Option<Placed> {
-    let near = std::iter::once(r.first).chain(around(r.anchor, 0.6 * LABEL_OFFSET, r.label));
-    if let Some(at) = least_crossed(taken, r.label, near) {
+    let near = std::iter::once(r.first).chain(around(r.anchor, 0.6 * LABEL_OFFSET, r.size));
+    if let Some(at) = least_crossed(taken, r.size, near) {
         return Some(Placed { at, leader: None });
     }
     RINGS.iter().find_map(|k| {
-        let at = least_crossed(
-            taken,
-            r.label,
-            around(r.anchor, k * LABEL_OFFSET, r.label).into_iter(),
-        )?;
-        let end = nearest_on(&text_box(at, r.label), r.anchor);
+        let ring = around(r.anchor, k * LABEL_OFFSET, r.size);
+        let at = least_crossed(taken, r.size, ring.into_iter())?;
+        let end = nearest_on(&text_box(at, r.size), r.anchor);
         Some(Placed {
             at,
             leader: Some((r.anchor, end)),
@@ -368,12 +335,12 @@ fn place_one(taken: &mut Taken, r: &Request) -> Option<Placed> {
 /// Of the candidates whose box is free, the first that crosses the fewest strokes.
 fn least_crossed(
     taken: &Taken,
-    label: &Label,
+    size: (f64, f64),
     candidates: impl Iterator<Item = Point>,
 ) -> Option<Point> {
     let mut best: Option<(usize, Point)> = None;
     for at in candidates {
-        let b = text_box(at, label);
+        let b = text_box(at, size);
         if !taken.free(&b) {
             continue;
         }
@@ -396,8 +363,8 @@ fn nearest_on(b: &Aabb, p: Point) -> Point {
     )
 }
 
-/// The whole circles of the figure, binned by centre, for the radial first position.
-fn full_circles(board: &Board) -> Vec<crate::kernel::Circle> {
+/// The whole circles of the figure, for the radial first position.
+fn full_circles(board: &Board) -> Vec<Circle> {
     board
         .objects()
         .iter()
@@ -412,7 +379,7 @@ fn full_circles(board: &Board) -> Vec<crate::kernel::Circle> {
 
 /// Where a point's label has always stood: radially outward if the point lies on a whole
 /// circle drawn in the figure, otherwise up and to the right.
-fn first_position(circles: &[crate::kernel::Circle], p: &Point) -> Point {
+fn first_position(circles: &[Circle], p: &Point) -> Point {
     for circle in circles {
         let v = p - circle.center;
         let d = v.norm();
@@ -445,7 +412,7 @@ mod tests {
                 ));
             }
             if let Some(p) = at(o) {
-                boxes.push(tight(text_box(p, &o.label)));
+                boxes.push(tight(text_box(p, extent(&o.label))));
             }
         }
         let bvh = Bvh::from_leaves(Default::default(), &boxes);

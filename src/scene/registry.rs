@@ -230,7 +230,7 @@ impl AnyScene {
 
     /// Reads a scene file of any procedure ([`AnyScene::from_json`]).
     pub fn load(path: &std::path::Path) -> Result<AnyScene, SceneError> {
-        Self::load_with(path, None)
+        Self::load_with(path, false, None)
     }
 
     /// Reads a scene file for its checks alone ([`ReadContext::checks`]), which may be
@@ -239,23 +239,24 @@ impl AnyScene {
         path: &std::path::Path,
         free_memory: Option<u64>,
     ) -> Result<AnyScene, SceneError> {
-        Self::load_with(path, Some(free_memory))
+        Self::load_with(path, true, free_memory)
     }
 
-    /// A scene file read for a figure (`checks`: `None`) or for its checks alone with the
-    /// memory free.
+    /// A scene file read for a figure or for its checks alone ([`ReadContext`]).
     fn load_with(
         path: &std::path::Path,
-        checks: Option<Option<u64>>,
+        checks_only: bool,
+        free_memory: Option<u64>,
     ) -> Result<AnyScene, SceneError> {
         let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
             path: path.display().to_string(),
             message: e.to_string(),
         })?;
         let origin = path.display().to_string();
-        let ctx = match checks {
-            None => ReadContext::figure(&origin),
-            Some(free) => ReadContext::checks(&origin, free),
+        let ctx = ReadContext {
+            origin: &origin,
+            checks_only,
+            free_memory,
         };
         AnyScene::read(&text, &ctx)
     }

@@ -145,7 +145,7 @@ fn near_a_rod_as_short_as_the_crank_the_bound_follows_the_squared_amplification(
 
 /// A board built by hand: a chain of glancing cuts, each point carried into the next cut.
 fn chain(angles: &[f64], offsets: &[f64]) -> Board {
-    let mut b = Board::recording().with_reference();
+    let mut b = Board::new(BoardConfig::DRAWING.with_reference());
     let n = Note::new("chain", Topic::Custom("chain"));
     let o = b.point(Point::new(0.3, 0.7), Label::NONE, Role::Given, n.clone());
     let mut base = b
