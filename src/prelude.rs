@@ -10,7 +10,7 @@
 
 pub use crate::kernel::{Branch, Circle, Line, Point, Segment, Vector};
 pub use crate::protocol::{
-    note, Board, Check, ConstructionError, Cut, Drawn, FigureMeta, Label, Note, Role, Scale,
+    note, Board, Check, ConstructionError, Cut, Drawn, FigureMeta, Label, Mark, Note, Role, Scale,
     ScaleBar, Topic, H,
 };
 pub use crate::render::figure;

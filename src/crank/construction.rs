@@ -640,14 +640,9 @@ impl Builder<'_> {
         let (circle, o, axis, dead, x0) = (f.crank_circle, f.o, f.piston_line, f.dead, f.x0);
         if self.stroke_points.is_none() {
             self.b.clear_context();
-            let end = self.b.lay_off(
-                &x0,
-                &axis,
-                2.0 * self.r,
-                Label::NONE,
-                Role::Construction,
-                N_STROKE_END,
-            )?;
+            let end = self
+                .b
+                .lay_off(&x0, &axis, 2.0 * self.r, Role::Construction, N_STROKE_END)?;
             let pts = self.b.divide_segment(&x0, &end, n, "X", N_STROKE_DIVIDE);
             self.stroke_points = Some(pts);
             let theta = self.thetas[i];
@@ -662,26 +657,15 @@ impl Builder<'_> {
         let pin = if k == 0 {
             dead
         } else if k == n {
-            self.b.lay_off(
-                &dead,
-                &axis,
-                2.0 * self.r,
-                Label::NONE,
-                Role::Construction,
-                N_OUTER_DEAD,
-            )?
+            self.b
+                .lay_off(&dead, &axis, 2.0 * self.r, Role::Construction, N_OUTER_DEAD)?
         } else {
             let xk = self.stroke_points.as_ref().expect("divided above")[k];
             let side = o.g + Vector::new(0.0, if out { self.r } else { -self.r });
             if self.d.finite_rod {
-                let arc = self.b.circle(
-                    &xk,
-                    self.l,
-                    Drawn::Marks,
-                    Label::NONE,
-                    Role::Construction,
-                    N_STROKE_ARC,
-                )?;
+                let arc =
+                    self.b
+                        .circle(&xk, self.l, Drawn::Marks, Role::Construction, N_STROKE_ARC)?;
                 self.b.cut_circle_circle(
                     &circle,
                     &arc,
@@ -690,13 +674,9 @@ impl Builder<'_> {
                     N_STROKE_PIN,
                 )?
             } else {
-                let perp = self.b.perpendicular(
-                    &axis,
-                    &xk,
-                    Label::NONE,
-                    Role::Construction,
-                    N_STROKE_PERP,
-                );
+                let perp = self
+                    .b
+                    .perpendicular(&axis, &xk, Role::Construction, N_STROKE_PERP);
                 self.b.cut_line_circle(
                     &perp,
                     &circle,
@@ -707,7 +687,7 @@ impl Builder<'_> {
             }
         };
         let pen = self.pen(i);
-        self.b.segment(&o, &pin, Label::NONE, pen, N_CRANK_AT);
+        self.b.segment(&o, &pin, pen, N_CRANK_AT);
         Ok(pin)
     }
 
@@ -794,29 +774,10 @@ impl Builder<'_> {
     fn build_frame(&mut self) -> Result<(), ConstructionError> {
         {
             let b = &mut *self.b;
-            let o = b.point(self.origin, Label::plain("O"), Role::Given, N_CENTRE);
-            let piston_line = b.line_dir(
-                &o,
-                Vector::new(1.0, 0.0),
-                Label::NONE,
-                Role::Axis,
-                N_PISTON_LINE,
-            )?;
-            let vertical = b.line_dir(
-                &o,
-                Vector::new(0.0, 1.0),
-                Label::NONE,
-                Role::Axis,
-                N_VERTICAL,
-            )?;
-            let crank_circle = b.circle(
-                &o,
-                self.r,
-                Drawn::Whole,
-                Label::NONE,
-                Role::Given,
-                N_CRANK_CIRCLE,
-            )?;
+            let o = b.point(self.origin, Role::Given.named("O"), N_CENTRE);
+            let piston_line = b.line_dir(&o, Vector::new(1.0, 0.0), Role::Axis, N_PISTON_LINE)?;
+            let vertical = b.line_dir(&o, Vector::new(0.0, 1.0), Role::Axis, N_VERTICAL)?;
+            let crank_circle = b.circle(&o, self.r, Drawn::Whole, Role::Given, N_CRANK_CIRCLE)?;
             let dead = b.cut_line_circle(
                 &piston_line,
                 &crank_circle,
@@ -826,14 +787,7 @@ impl Builder<'_> {
             )?;
             let dead_pin = dead;
             let x0 = if self.d.finite_rod {
-                let arc = b.circle(
-                    &dead,
-                    self.l,
-                    Drawn::Marks,
-                    Label::NONE,
-                    Role::Construction,
-                    N_DEAD_ARC,
-                )?;
+                let arc = b.circle(&dead, self.l, Drawn::Marks, Role::Construction, N_DEAD_ARC)?;
                 b.cut_line_circle(
                     &piston_line,
                     &arc,
@@ -846,14 +800,7 @@ impl Builder<'_> {
             };
             // The crosshead guide over the stroke; an infinitely long rod has none to draw.
             if self.d.finite_rod {
-                b.lay_off(
-                    &x0,
-                    &piston_line,
-                    2.0 * self.r,
-                    Label::NONE,
-                    Role::Guide,
-                    N_GUIDE,
-                )?;
+                b.lay_off(&x0, &piston_line, 2.0 * self.r, Role::Guide, N_GUIDE)?;
             }
             self.frame = Some(Frame {
                 o,
@@ -901,7 +848,7 @@ impl Builder<'_> {
             }
             let pin = self.divided.as_ref().expect("divided above")[i];
             let pen = self.pen(i);
-            self.b.segment(&o, &pin, Label::NONE, pen, N_CRANK_AT);
+            self.b.segment(&o, &pin, pen, N_CRANK_AT);
             pin
         } else {
             // The pin at 180° − θ on the sheet, by the sine and cosine of θ itself: forming
@@ -911,8 +858,7 @@ impl Builder<'_> {
             self.b.point_on_circle_dir(
                 &circle,
                 SinCos { sin: s, cos: -c },
-                Label::indexed("A", i as u32),
-                pen,
+                pen.labelled(Label::indexed("A", i as u32)),
                 N_CRANK_AT,
             )
         };
@@ -927,14 +873,9 @@ impl Builder<'_> {
         let pin = self.pin(i)?;
         let piston_line = self.frame()?.piston_line;
         let b = if self.d.finite_rod {
-            let arc = self.b.circle(
-                &pin,
-                self.l,
-                Drawn::Marks,
-                Label::NONE,
-                Role::Construction,
-                N_ROD_ARC,
-            )?;
+            let arc = self
+                .b
+                .circle(&pin, self.l, Drawn::Marks, Role::Construction, N_ROD_ARC)?;
             let b = self.b.cut_line_circle(
                 &piston_line,
                 &arc,
@@ -943,14 +884,13 @@ impl Builder<'_> {
                 N_CROSSHEAD,
             )?;
             let pen = self.pen(i);
-            self.b.segment(&b, &pin, Label::NONE, pen, N_ROD);
+            self.b.segment(&b, &pin, pen, N_ROD);
             b
         } else {
             self.b.foot(
                 &piston_line,
                 &pin,
-                Label::quiet("B", i as u32),
-                Role::Construction,
+                Role::Construction.labelled(Label::quiet("B", i as u32)),
                 N_PIN_VERTICAL,
             )
         };
@@ -998,11 +938,11 @@ impl Builder<'_> {
         let line = if self.d.finite_rod {
             let b = self.crosshead(i)?;
             self.b
-                .line_through(&b, &pin, Label::NONE, Role::Construction, N_ROD_LINE)?
+                .line_through(&b, &pin, Role::Construction, N_ROD_LINE)?
         } else {
             let axis = self.frame()?.piston_line;
             self.b
-                .parallel(&axis, &pin, Label::NONE, Role::Construction, N_ROD_LINE_INF)
+                .parallel(&axis, &pin, Role::Construction, N_ROD_LINE_INF)
         };
         self.cache[i].rod_line = Some(line);
         Ok(line)
@@ -1016,7 +956,7 @@ impl Builder<'_> {
         let o = self.frame()?.o;
         let line = self
             .b
-            .line_through(&o, &pin, Label::NONE, Role::Construction, N_CRANK_RAY)?;
+            .line_through(&o, &pin, Role::Construction, N_CRANK_RAY)?;
         self.cache[i].crank_ray = Some(line);
         Ok(line)
     }
@@ -1034,13 +974,10 @@ impl Builder<'_> {
             &o,
             &ray,
             v_mm,
-            Label::quiet("V", i as u32),
-            Role::Velocity,
+            Role::Velocity.labelled(Label::quiet("V", i as u32)),
             N_V_ON_RAY,
         )?;
-        let par = self
-            .b
-            .parallel(&rod, &e, Label::NONE, Role::Auxiliary, N_V_PARALLEL);
+        let par = self.b.parallel(&rod, &e, Role::Auxiliary, N_V_PARALLEL);
         let fpt = self
             .b
             .meet_point(&par, &vertical, Label::quiet("F", i as u32), N_V_CUT)?;
@@ -1081,9 +1018,9 @@ impl Builder<'_> {
             // parallel to the normal and the centre lies at infinity (the rod translates).
             let ray = self.crank_ray(i)?;
             let b = self.crosshead(i)?;
-            let normal =
-                self.b
-                    .perpendicular(&piston_line, &b, Label::NONE, Role::Auxiliary, N_IC_NORMAL);
+            let normal = self
+                .b
+                .perpendicular(&piston_line, &b, Role::Auxiliary, N_IC_NORMAL);
             match self
                 .b
                 .meet(&ray, &normal, Label::quiet("C", i as u32), N_IC_POINT)
@@ -1134,9 +1071,7 @@ impl Builder<'_> {
         };
         let b = self.crosshead(i)?;
         let axis = self.frame()?.piston_line;
-        let normal = self
-            .b
-            .perpendicular(&axis, &b, Label::NONE, Role::Auxiliary, N_C_NORMAL);
+        let normal = self.b.perpendicular(&axis, &b, Role::Auxiliary, N_C_NORMAL);
         let q = self.b.transfer(
             &b,
             &normal,
@@ -1144,8 +1079,7 @@ impl Builder<'_> {
                 value: &c,
                 per_mm: self.scales.velocity_scale,
             },
-            Label::quiet("Q", i as u32),
-            Role::Construction,
+            Role::Construction.labelled(Label::quiet("Q", i as u32)),
             N_C_ORDINATE,
         )?;
         self.cache[i].c_point = Some(q);
@@ -1161,13 +1095,8 @@ impl Builder<'_> {
             pts.push(pts[0]);
         }
         if pts.len() >= 2 {
-            self.b.curve(
-                &pts,
-                Trace::Smooth,
-                Label::plain("c"),
-                Role::Result,
-                N_C_CURVE,
-            );
+            self.b
+                .curve(&pts, Trace::Smooth, Role::Result.named("c"), N_C_CURVE);
         }
         Ok(())
     }
@@ -1190,13 +1119,10 @@ impl Builder<'_> {
             &b,
             &axis,
             p_mm,
-            Label::quiet("P", i as u32),
-            Role::Force,
+            Role::Force.labelled(Label::quiet("P", i as u32)),
             N_P_AT_CROSSHEAD,
         )?;
-        let normal = self
-            .b
-            .perpendicular(&axis, &e, Label::NONE, Role::Auxiliary, N_P_NORMAL);
+        let normal = self.b.perpendicular(&axis, &e, Role::Auxiliary, N_P_NORMAL);
         let fpt = self
             .b
             .meet_point(&rod, &normal, Label::quiet("S", i as u32), N_S_CUT)?;
@@ -1217,8 +1143,8 @@ impl Builder<'_> {
             Label::quiet("N", i as u32),
             N_N_MEASURE,
         );
-        self.b.segment(&b, &fpt, Label::NONE, Role::Force, N_S_VEC);
-        self.b.segment(&e, &fpt, Label::NONE, Role::Force, N_N_VEC);
+        self.b.segment(&b, &fpt, Role::Force, N_S_VEC);
+        self.b.segment(&e, &fpt, Role::Force, N_N_VEC);
         let (p, lam, theta) = (self.d.piston_force.at(i), self.lambda(), self.thetas[i]);
         let pref = p.abs();
         self.b
@@ -1247,9 +1173,9 @@ impl Builder<'_> {
         let pin = self.pin(i)?;
         let o = self.frame()?.o;
         // The crank line directed from the pin to O: its left normal is the sense of rotation.
-        let crank =
-            self.b
-                .line_through(&pin, &o, Label::NONE, Role::Construction, N_CRANK_LINE_F)?;
+        let crank = self
+            .b
+            .line_through(&pin, &o, Role::Construction, N_CRANK_LINE_F)?;
         let g = self.b.transfer(
             &pin,
             &rod,
@@ -1257,19 +1183,16 @@ impl Builder<'_> {
                 value: &s,
                 per_mm: self.scales.force_scale,
             },
-            Label::quiet("G", i as u32),
-            Role::Force,
+            Role::Force.labelled(Label::quiet("G", i as u32)),
             N_S_AT_PIN,
         )?;
-        let tangent =
-            self.b
-                .perpendicular(&crank, &pin, Label::NONE, Role::Construction, N_TANGENT);
-        let par_crank = self
+        let tangent = self
             .b
-            .parallel(&crank, &g, Label::NONE, Role::Auxiliary, N_PAR_CRANK);
+            .perpendicular(&crank, &pin, Role::Construction, N_TANGENT);
+        let par_crank = self.b.parallel(&crank, &g, Role::Auxiliary, N_PAR_CRANK);
         let par_tan = self
             .b
-            .parallel(&tangent, &g, Label::NONE, Role::Auxiliary, N_PAR_TANGENT);
+            .parallel(&tangent, &g, Role::Auxiliary, N_PAR_TANGENT);
         let tp = self
             .b
             .meet_point(&par_crank, &tangent, Label::quiet("T", i as u32), N_T_CUT)?;
@@ -1293,8 +1216,8 @@ impl Builder<'_> {
             Label::quiet("K", i as u32),
             N_K_MEASURE,
         );
-        self.b.segment(&pin, &tp, Label::NONE, Role::Force, N_T_VEC);
-        self.b.segment(&pin, &kp, Label::NONE, Role::Force, N_K_VEC);
+        self.b.segment(&pin, &tp, Role::Force, N_T_VEC);
+        self.b.segment(&pin, &kp, Role::Force, N_K_VEC);
         let (p, lam, theta) = (self.d.piston_force.at(i), self.lambda(), self.thetas[i]);
         let pref = p.abs();
         self.b.check(
@@ -1327,14 +1250,10 @@ impl Builder<'_> {
             self.b.clear_context();
             let o = self
                 .b
-                .point(centre, Label::plain("O'"), Role::Given, N_POLAR_CENTRE);
-            let vertical = self.b.line_dir(
-                &o,
-                Vector::new(0.0, 1.0),
-                Label::NONE,
-                Role::Axis,
-                N_POLAR_VERTICAL,
-            )?;
+                .point(centre, Role::Given.named("O'"), N_POLAR_CENTRE);
+            let vertical =
+                self.b
+                    .line_dir(&o, Vector::new(0.0, 1.0), Role::Axis, N_POLAR_VERTICAL)?;
             self.polar = Some(PolarFrame { o, vertical });
         }
         Ok(self.polar.as_ref().expect("set above"))
@@ -1355,21 +1274,16 @@ impl Builder<'_> {
             self.b
                 .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
         }
-        let ray_f = self
-            .b
-            .parallel(&ray, &o, Label::NONE, Role::Auxiliary, N_POLAR_RAY);
+        let ray_f = self.b.parallel(&ray, &o, Role::Auxiliary, N_POLAR_RAY);
         let p_mm = self.p_x(i) / self.scales.force_scale;
         let bp = self.b.lay_off(
             &o,
             &ray_f,
             p_mm,
-            Label::quiet("P", i as u32),
-            Role::Force,
+            Role::Force.labelled(Label::quiet("P", i as u32)),
             N_POLAR_P,
         )?;
-        let par = self
-            .b
-            .parallel(&rod, &bp, Label::NONE, Role::Auxiliary, N_POLAR_PAR);
+        let par = self.b.parallel(&rod, &bp, Role::Auxiliary, N_POLAR_PAR);
         let cpt = self
             .b
             .meet_point(&par, &vertical, Label::quiet("C", i as u32), N_POLAR_CUT)?;
@@ -1382,8 +1296,7 @@ impl Builder<'_> {
             Label::quiet("T", i as u32),
             N_POLAR_MEASURE,
         );
-        self.b
-            .segment(&o, &cpt, Label::NONE, Role::Force, N_POLAR_MEASURE);
+        self.b.segment(&o, &cpt, Role::Force, N_POLAR_MEASURE);
         let (p, lam, theta) = (self.d.piston_force.at(i), self.lambda(), self.thetas[i]);
         self.b.check(
             &t,
@@ -1406,14 +1319,9 @@ impl Builder<'_> {
         };
         let o = pf.o;
         self.b.clear_context();
-        let circle = self.b.circle(
-            &o,
-            self.r,
-            Drawn::Whole,
-            Label::NONE,
-            Role::Construction,
-            N_POLAR_ZERO,
-        )?;
+        let circle = self
+            .b
+            .circle(&o, self.r, Drawn::Whole, Role::Construction, N_POLAR_ZERO)?;
         let mut idx: Vec<usize> = (0..self.thetas.len()).collect();
         idx.sort_by(|a, b| self.thetas[*a].total_cmp(&self.thetas[*b]));
         let mut p_pts = Vec::with_capacity(idx.len() + 1);
@@ -1428,7 +1336,6 @@ impl Builder<'_> {
                 &o,
                 &ray,
                 self.r + t.g / self.scales.force_scale,
-                Label::NONE,
                 Role::Construction,
                 N_POLAR_T,
             )?;
@@ -1445,15 +1352,13 @@ impl Builder<'_> {
             self.b.curve(
                 &p_pts,
                 Trace::Polygon,
-                Label::plain("P"),
-                Role::Result,
+                Role::Result.named("P"),
                 N_POLAR_P_CURVE,
             );
             self.b.curve(
                 &t_pts,
                 Trace::Polygon,
-                Label::plain("T"),
-                Role::Result,
+                Role::Result.named("T"),
                 N_POLAR_T_CURVE,
             );
         }

@@ -69,8 +69,7 @@ pub(crate) fn axis(
 ) -> Result<TolleAxis, ConstructionError> {
     let o = b.point(
         middle,
-        Label::plain("O"),
-        Role::Given,
+        Role::Given.named("O"),
         nt(
             topic,
             "middle of the stroke on the diagram axis",
@@ -81,7 +80,6 @@ pub(crate) fn axis(
     let axis = b.line_dir(
         &o,
         Vector::new(1.0, 0.0),
-        Label::NONE,
         Role::Axis,
         nt(
             topic,
@@ -93,7 +91,6 @@ pub(crate) fn axis(
     let vertical = b.perpendicular(
         &axis,
         &o,
-        Label::NONE,
         Role::Axis,
         nt(
             topic,
@@ -123,8 +120,7 @@ pub(crate) fn point_c(
         &ax.o,
         &ax.axis,
         lambda * half,
-        Label::plain("C"),
-        Role::Construction,
+        Role::Construction.named("C"),
         n(
             "OC = λ·r towards the outer dead centre",
             "Strecke OC (Tolle)",
@@ -134,7 +130,6 @@ pub(crate) fn point_c(
     let ord = b.perpendicular(
         &ax.axis,
         &c,
-        Label::NONE,
         Role::Construction,
         n("ordinate through C", "Lot in C", "LH Abb. 55"),
     );
@@ -167,15 +162,8 @@ fn ends(
     let mut pts = [*o; 2];
     let mut lines = [*axis; 2];
     for (k, sign) in [-1.0, 1.0].into_iter().enumerate() {
-        let e = b.lay_off(
-            o,
-            axis,
-            sign * half,
-            Label::NONE,
-            Role::Construction,
-            ends_note.clone(),
-        )?;
-        lines[k] = b.perpendicular(axis, &e, Label::NONE, Role::Construction, ord_note.clone());
+        let e = b.lay_off(o, axis, sign * half, Role::Construction, ends_note.clone())?;
+        lines[k] = b.perpendicular(axis, &e, Role::Construction, ord_note.clone());
         pts[k] = e;
     }
     Ok((pts, lines))
@@ -197,8 +185,7 @@ pub(crate) fn curve(
         &ax.ends[0],
         &ax.ordinates[0],
         sense * (1.0 + lambda) * a_mm,
-        Label::plain(name),
-        Role::Construction,
+        Role::Construction.labelled(Label::plain(name)),
         n(
             "(1 + λ)·v²/r at the inner dead centre",
             "Beschleunigung im Totpunkt",
@@ -209,7 +196,6 @@ pub(crate) fn curve(
         &ax.ends[1],
         &ax.ordinates[1],
         -sense * (1.0 - lambda) * a_mm,
-        Label::NONE,
         Role::Construction,
         n(
             "(1 − λ)·v²/r at the outer dead centre",
@@ -221,8 +207,7 @@ pub(crate) fn curve(
         &c.c,
         &c.ord,
         -sense * 3.0 * lambda * a_mm,
-        Label::plain("D"),
-        Role::Construction,
+        Role::Construction.named("D"),
         n(
             "CD = 3λ·v²/r: the tangents meet in D",
             "Strecke CD (Tolle)",
@@ -234,12 +219,11 @@ pub(crate) fn curve(
         "Parabeltangente",
         "LH Abb. 55",
     );
-    b.segment(&t, &d, Label::NONE, Role::Construction, tan.clone());
-    b.segment(&d, &t1, Label::NONE, Role::Construction, tan.clone());
+    b.segment(&t, &d, Role::Construction, tan.clone());
+    b.segment(&d, &t1, Role::Construction, tan.clone());
     let chord = b.line_through(
         &t,
         &t1,
-        Label::NONE,
         Role::Auxiliary,
         n(
             "chord TT₁ (control: it passes through C)",
@@ -337,7 +321,7 @@ pub(crate) fn envelope(b: &mut Board, c: &TolleCurve, parts: usize) -> Vec<H<Poi
     );
     let mut out = vec![c.t];
     for k in 1..parts {
-        b.segment(&p[k], &q[k], Label::NONE, Role::Construction, join.clone());
+        b.segment(&p[k], &q[k], Role::Construction, join.clone());
         let s = k as f64 / parts as f64;
         if let Ok(pt) = b.divide_at(&p[k], &q[k], s, Label::NONE, touch.clone()) {
             out.push(pt);
@@ -365,7 +349,6 @@ pub(crate) fn point_at(
     b.segment(
         &p,
         &q,
-        Label::NONE,
         Role::Construction,
         n(
             "the joining line touches the parabola",
@@ -399,7 +382,6 @@ pub(crate) fn read(
     let foot = b.foot(
         &ax.axis,
         q,
-        Label::NONE,
         Role::Construction,
         n("ordinate of the curve point", "Ordinate", "LH Abb. 55"),
     );
@@ -444,12 +426,7 @@ mod tests {
         assert!(balance(&mut b, &ax, &good).g.abs() < 1e-12);
         // D at 2λ·a instead of 3λ·a: the lobes no longer balance, and the check says so.
         let note = n("test", "test", "test");
-        let d = b.point(
-            Point::new(lam * half, -2.0 * lam * a),
-            Label::NONE,
-            Role::Given,
-            note,
-        );
+        let d = b.point(Point::new(lam * half, -2.0 * lam * a), Role::Given, note);
         let wrong = TolleCurve { d, ..good };
         let area = balance(&mut b, &ax, &wrong);
         assert!(area.g.abs() > 1.0, "{}", area.g);

@@ -238,8 +238,7 @@ impl Builder<'_> {
                         self.b.curve(
                             &pts,
                             Trace::Smooth,
-                            Label::plain("B"),
-                            Role::Construction,
+                            Role::Construction.named("B"),
                             N_CURVE_B,
                         );
                     }
@@ -271,13 +270,12 @@ impl Builder<'_> {
             &axis.ends[0],
             &axis.axis,
             x * 2.0 * self.r_mm,
-            Label::NONE,
             Role::Construction,
             N_FOOT,
         )?;
         let ord = self
             .b
-            .perpendicular(&axis.axis, &foot, Label::NONE, Role::Construction, N_ORD);
+            .perpendicular(&axis.axis, &foot, Role::Construction, N_ORD);
         let (p_point, p) = self.net_pressure(c, theta, x, foot, ord, axis.vertical)?;
         let (r_point, b, r) = match curves {
             Some(cv) => self.resulting(c, theta, (foot, p_point, ord), &axis, &cv)?,
@@ -319,27 +317,15 @@ impl Builder<'_> {
         let k = self.dr.force_scale;
         let pump = cyl.pump;
         let eta = pump.map_or(1.0, |p| p.efficiency);
-        let w = self.b.lay_off(
-            &foot,
-            &ord,
-            eta * work / k,
-            Label::NONE,
-            Role::Force,
-            N_WORK,
-        )?;
-        let mut pp = self.b.lay_off(
-            &w,
-            &ord,
-            -eta * back / k,
-            Label::NONE,
-            Role::Construction,
-            N_BACK,
-        )?;
+        let w = self
+            .b
+            .lay_off(&foot, &ord, eta * work / k, Role::Force, N_WORK)?;
+        let mut pp = self
+            .b
+            .lay_off(&w, &ord, -eta * back / k, Role::Construction, N_BACK)?;
         let load = pump.map_or(0.0, |p| p.force(stroke));
         if pump.is_some() {
-            pp = self
-                .b
-                .lay_off(&pp, &ord, -load / k, Label::NONE, Role::Force, N_PUMP)?;
+            pp = self.b.lay_off(&pp, &ord, -load / k, Role::Force, N_PUMP)?;
         }
         let p = self
             .b
@@ -399,7 +385,6 @@ impl Builder<'_> {
                 value: &bval,
                 per_mm: -self.dr.force_scale,
             },
-            Label::NONE,
             Role::Construction,
             N_B_TRANSFER,
         )?;
@@ -445,16 +430,10 @@ impl Builder<'_> {
             let p: Vec<H<Point>> = rays.iter().map(|r| r.p_point).collect();
             let r: Vec<H<Point>> = rays.iter().map(|r| r.r_point).collect();
             if p.len() >= 2 {
-                self.b.curve(
-                    &p,
-                    Trace::Smooth,
-                    Label::plain("P"),
-                    Role::Result,
-                    N_CURVE_P,
-                );
+                self.b
+                    .curve(&p, Trace::Smooth, Role::Result.named("P"), N_CURVE_P);
                 if self.cyl(c).mass > 0.0 {
-                    self.b
-                        .curve(&r, Trace::Smooth, Label::NONE, Role::Result, N_CURVE_R);
+                    self.b.curve(&r, Trace::Smooth, Role::Result, N_CURVE_R);
                 }
             }
         }

@@ -322,27 +322,14 @@ fn frame(b: &mut Board, fb: &FourBar, ls: f64) -> Result<Frame, ConstructionErro
         "the pivots O and A, the crank circle and the rocker’s circle",
         Some("Gestell"),
     );
-    let o = b.point(
-        Point::origin(),
-        Label::plain("O"),
-        Role::Given,
-        setup.clone(),
-    );
+    let o = b.point(Point::origin(), Role::Given.named("O"), setup.clone());
     let a = b.point(
         Point::new(fb.frame / ls, 0.0),
-        Label::plain("A"),
-        Role::Given,
+        Role::Given.named("A"),
         setup.clone(),
     );
-    b.segment(&o, &a, Label::NONE, Role::Given, setup.clone());
-    let crank = b.circle(
-        &o,
-        fb.crank / ls,
-        Drawn::Whole,
-        Label::NONE,
-        Role::Given,
-        setup.clone(),
-    )?;
+    b.segment(&o, &a, Role::Given, setup.clone());
+    let crank = b.circle(&o, fb.crank / ls, Drawn::Whole, Role::Given, setup.clone())?;
     let rocker = b.circle(
         &a,
         fb.rocker / ls,
@@ -351,7 +338,6 @@ fn frame(b: &mut Board, fb: &FourBar, ls: f64) -> Result<Frame, ConstructionErro
         } else {
             Drawn::Whole
         },
-        Label::NONE,
         Role::Given,
         setup,
     )?;
@@ -389,14 +375,13 @@ fn dead_positions(
             &fr.o,
             reach / ls,
             Drawn::Marks,
-            Label::NONE,
             Role::Construction,
             note.clone(),
         )?;
         let branch = fb.branch(fr.o.g, fr.a.g);
         let end =
             b.cut_circle_circle(&arc, &fr.rocker, branch, Label::plain(name), note.clone())?;
-        b.segment(&fr.a, &end, Label::NONE, Role::Result, note);
+        b.segment(&fr.a, &end, Role::Result, note);
         ends.push(end);
     }
     let (swing, theta) = fb.dead_positions();
@@ -442,15 +427,13 @@ fn position(
     let pin = b.point_on_circle(
         &fr.crank,
         theta,
-        Label::indexed("P", i),
-        pen,
+        pen.labelled(Label::indexed("P", i)),
         n("the crank pin at θ", Some("Kurbelzapfen")),
     );
     let arc = b.circle(
         &pin,
         fb.coupler / ls,
         Drawn::Marks,
-        Label::NONE,
         Role::Construction,
         n("the coupler’s length about the pin", Some("Koppel")),
     )?;
@@ -463,20 +446,8 @@ fn position(
         n("B where the coupler’s circle cuts the rocker’s", None),
     )?;
     let change_point = b.last_cut_touched();
-    b.segment(
-        &pin,
-        &joint,
-        Label::NONE,
-        pen,
-        n("the coupler", Some("Koppel")),
-    );
-    b.segment(
-        &fr.a,
-        &joint,
-        Label::NONE,
-        pen,
-        n("the rocker", Some("Schwinge")),
-    );
+    b.segment(&pin, &joint, pen, n("the coupler", Some("Koppel")));
+    b.segment(&fr.a, &joint, pen, n("the rocker", Some("Schwinge")));
     let (_, psi, mu) = fb.exact(theta);
     let angle = b.measure_angle(
         &fr.a,

@@ -253,40 +253,17 @@ fn frame(
         "the shaft O, the crank circle, the line of the stroke at the offset a",
         Some("Schränkung"),
     );
-    let o = b.point(
-        Point::origin(),
-        Label::plain("O"),
-        Role::Given,
-        setup.clone(),
-    );
+    let o = b.point(Point::origin(), Role::Given.named("O"), setup.clone());
     let circle = b.circle(
         &o,
         k.crank_radius / ls,
         Drawn::Whole,
-        Label::NONE,
         Role::Given,
         setup.clone(),
     )?;
-    let across = b.line_dir(
-        &o,
-        Vector::new(0.0, 1.0),
-        Label::NONE,
-        Role::Axis,
-        setup.clone(),
-    )?;
-    let foot = b.point(
-        Point::new(0.0, k.offset / ls),
-        Label::NONE,
-        Role::Axis,
-        setup.clone(),
-    );
-    let path = b.line_dir(
-        &foot,
-        Vector::new(-1.0, 0.0),
-        Label::NONE,
-        Role::Axis,
-        setup,
-    )?;
+    let across = b.line_dir(&o, Vector::new(0.0, 1.0), Role::Axis, setup.clone())?;
+    let foot = b.point(Point::new(0.0, k.offset / ls), Role::Axis, setup.clone());
+    let path = b.line_dir(&foot, Vector::new(-1.0, 0.0), Role::Axis, setup)?;
     let (inner, res) = dead_centres(b, (&o, &path), k, ls)?;
     Ok((
         Frame {
@@ -325,7 +302,6 @@ fn dead_centres(
             o,
             reach / ls,
             Drawn::Marks,
-            Label::NONE,
             Role::Construction,
             n(caption, Some("Totpunkt")),
         )?;
@@ -392,15 +368,13 @@ fn crosshead(
     let pin = b.point_on_circle(
         &fr.circle,
         theta,
-        Label::indexed("P", i),
-        Role::Result,
+        Role::Result.labelled(Label::indexed("P", i)),
         n("the crank pin at θ", Some("Kurbelzapfen")),
     );
     let arc = b.circle(
         &pin,
         k.rod_length / ls,
         Drawn::Marks,
-        Label::NONE,
         Role::Construction,
         n("the arc of the rod length about the pin", None),
     )?;
@@ -417,17 +391,10 @@ fn crosshead(
     let rod = b.line_through(
         &head,
         &pin,
-        Label::NONE,
         Role::Construction,
         n("the line of the rod", None),
     )?;
-    b.segment(
-        &head,
-        &pin,
-        Label::NONE,
-        Role::Result,
-        n("the rod", Some("Schubstange")),
-    );
+    b.segment(&head, &pin, Role::Result, n("the rod", Some("Schubstange")));
     Ok(At {
         pin,
         head,
@@ -550,7 +517,6 @@ fn forces(
         &at.head,
         &fr.path,
         along * p / sc.force,
-        Label::NONE,
         Role::Force,
         n(
             "the piston force P at the crosshead, along the motion",
@@ -560,7 +526,6 @@ fn forces(
     let cross = b.perpendicular(
         &fr.path,
         &tip,
-        Label::NONE,
         Role::Construction,
         n("across the stroke through P’s tip", None),
     );
@@ -625,28 +590,24 @@ fn tangential(
             value: s,
             per_mm: sc.force,
         },
-        Label::NONE,
         Role::Force,
         n("S carried to the pin", None),
     )?;
     let crank = b.line_through(
         &fr.o,
         &at.pin,
-        Label::NONE,
         Role::Construction,
         n("the crank line", None),
     )?;
     let tangent = b.perpendicular(
         &crank,
         &at.pin,
-        Label::NONE,
         Role::Construction,
         n("the tangent at the pin", None),
     );
     let t_foot = b.foot(
         &tangent,
         &carried,
-        Label::NONE,
         Role::Construction,
         n("S dropped onto the tangent", None),
     );

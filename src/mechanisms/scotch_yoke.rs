@@ -135,8 +135,7 @@ pub fn construct(
             b.curve(
                 pts,
                 Trace::Smooth,
-                Label::plain(label),
-                Role::Result,
+                Role::Result.labelled(Label::plain(label)),
                 n("the yoke’s curve over the stroke", None),
             );
         }
@@ -160,15 +159,10 @@ fn frame(
         "centre O, the line of the stroke, the crank circle",
         Some("Kurbelkreis"),
     );
-    let o = b.point(
-        Point::origin(),
-        Label::plain("O"),
-        Role::Given,
-        setup.clone(),
-    );
-    let circle = b.circle(&o, r, Drawn::Whole, Label::NONE, Role::Given, setup.clone())?;
-    let t = b.point_on_circle(&circle, 0.0, Label::plain("T"), Role::Axis, setup.clone());
-    let axis = b.line_through(&t, &o, Label::NONE, Role::Axis, setup.clone())?;
+    let o = b.point(Point::origin(), Role::Given.named("O"), setup.clone());
+    let circle = b.circle(&o, r, Drawn::Whole, Role::Given, setup.clone())?;
+    let t = b.point_on_circle(&circle, 0.0, Role::Axis.named("T"), setup.clone());
+    let axis = b.line_through(&t, &o, Role::Axis, setup.clone())?;
     let c_mm = yoke.crank_pin_speed / dr.velocity_scale;
     let a_mm = yoke.v2_over_r() / dr.acceleration_scale;
     let mut depth = r + 12.0;
@@ -182,13 +176,8 @@ fn frame(
         }
         depth += up;
         let base_note = n("base line of the diagram over the stroke", None);
-        let at = b.point(
-            Point::new(r, -depth),
-            Label::NONE,
-            Role::Axis,
-            base_note.clone(),
-        );
-        let base = b.parallel(&axis, &at, Label::NONE, Role::Axis, base_note);
+        let at = b.point(Point::new(r, -depth), Role::Axis, base_note.clone());
+        let base = b.parallel(&axis, &at, Role::Axis, base_note);
         bases[k] = Some((base, at));
         depth += down + 12.0;
     }
@@ -214,15 +203,13 @@ fn position(
     let pin = b.point_on_circle(
         &fr.circle,
         phi,
-        Label::indexed("P", k),
-        Role::Result,
+        Role::Result.labelled(Label::indexed("P", k)),
         n("the crank at φ", Some("Kurbel")),
     );
     let f = b.foot(
         &fr.axis,
         &pin,
-        Label::indexed("F", k),
-        Role::Given,
+        Role::Given.labelled(Label::indexed("F", k)),
         n(
             "the slot at right angles to the stroke: the yoke at F",
             Some("Kurbelschleife"),
@@ -257,7 +244,6 @@ fn position(
     let along = b.parallel(
         &fr.axis,
         &pin,
-        Label::NONE,
         Role::Auxiliary,
         n("parallel to the stroke through the pin", None),
     );
@@ -279,18 +265,11 @@ fn vectors(
     let (s, c) = crate::kernel::angle::sin_cos_deg(phi);
     let pin = at.pin;
     let mut pts = [None, None];
-    let crank = b.line_through(
-        &fr.o,
-        &pin,
-        Label::NONE,
-        Role::Construction,
-        n("the crank line", None),
-    )?;
+    let crank = b.line_through(&fr.o, &pin, Role::Construction, n("the crank line", None))?;
     if rq.velocity {
         let tangent = b.perpendicular(
             &crank,
             &pin,
-            Label::NONE,
             Role::Construction,
             n("tangent at the pin", None),
         );
@@ -298,7 +277,6 @@ fn vectors(
             &pin,
             &tangent,
             v / dr.velocity_scale,
-            Label::NONE,
             Role::Velocity,
             n(
                 "the pin’s velocity v on the tangent",
@@ -320,7 +298,6 @@ fn vectors(
             &pin,
             &crank,
             -a / dr.acceleration_scale,
-            Label::NONE,
             Role::Velocity,
             n(
                 "the pin’s acceleration v²/R towards O",
@@ -372,7 +349,6 @@ fn project(
     let w = b.foot(
         &at.along,
         tip,
-        Label::NONE,
         Role::Auxiliary,
         n("projected on the line of the stroke", None),
     );
@@ -412,17 +388,10 @@ fn ordinate(
     let at = b.foot(
         base,
         f,
-        Label::NONE,
         Role::Auxiliary,
         n("the yoke’s place carried down to the diagram", None),
     );
-    let up = b.perpendicular(
-        base,
-        &at,
-        Label::NONE,
-        Role::Construction,
-        n("ordinate", None),
-    );
+    let up = b.perpendicular(base, &at, Role::Construction, n("ordinate", None));
     // The base runs from T through O (towards −x): its normal points down the sheet, and a
     // positive value is laid off upwards, against it.
     let (v, per_mm) = value;
@@ -433,7 +402,6 @@ fn ordinate(
             value: v,
             per_mm: -per_mm,
         },
-        Label::NONE,
         Role::Result,
         n("the value laid off as an ordinate", None),
     )
@@ -498,7 +466,7 @@ fn compare_curve(
         return Ok(());
     };
     let mut pts = Vec::new();
-    let foot = b.foot(base, &fr.t, Label::NONE, Role::Auxiliary, note.clone());
+    let foot = b.foot(base, &fr.t, Role::Auxiliary, note.clone());
     for row in &res.rows {
         // The books give b in the direction of motion (positive while the piston speeds
         // up); the diagram reads it along the line of the stroke, as the yoke's b′.
@@ -518,28 +486,14 @@ fn compare_curve(
             &foot,
             base,
             x / dr.length_scale,
-            Label::NONE,
             Role::Auxiliary,
             note.clone(),
         )?;
-        let up = b.perpendicular(base, &at, Label::NONE, Role::Auxiliary, note.clone());
-        pts.push(b.lay_off(
-            &at,
-            &up,
-            -v / scale,
-            Label::NONE,
-            Role::Auxiliary,
-            note.clone(),
-        )?);
+        let up = b.perpendicular(base, &at, Role::Auxiliary, note.clone());
+        pts.push(b.lay_off(&at, &up, -v / scale, Role::Auxiliary, note.clone())?);
     }
     if pts.len() > 1 {
-        b.curve(
-            &pts,
-            Trace::Smooth,
-            Label::NONE,
-            Role::Auxiliary,
-            note.clone(),
-        );
+        b.curve(&pts, Trace::Smooth, Role::Auxiliary, note.clone());
     }
     Ok(())
 }

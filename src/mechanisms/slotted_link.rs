@@ -254,8 +254,7 @@ pub fn construct(
         b.curve(
             &curve,
             Trace::Smooth,
-            Label::plain("c"),
-            Role::Result,
+            Role::Result.named("c"),
             n(
                 "the table speed over the stroke",
                 Some("Geschwindigkeitsriß"),
@@ -281,47 +280,29 @@ fn frame(
         "the lever’s pivot D, the crank’s centre M, the crank circle",
         Some("Kurbelkreis"),
     );
-    let d = b.point(
-        Point::origin(),
-        Label::plain("D"),
-        Role::Given,
-        setup.clone(),
-    );
+    let d = b.point(Point::origin(), Role::Given.named("D"), setup.clone());
     let e = link.centre_distance / ls;
-    let m = b.point(
-        Point::new(0.0, e),
-        Label::plain("M"),
-        Role::Given,
-        setup.clone(),
-    );
-    let axis = b.line_through(&d, &m, Label::NONE, Role::Axis, setup.clone())?;
-    let circle = b.circle(
-        &m,
-        link.crank_radius / ls,
-        Drawn::Whole,
-        Label::NONE,
-        Role::Given,
-        setup,
-    )?;
+    let m = b.point(Point::new(0.0, e), Role::Given.named("M"), setup.clone());
+    let axis = b.line_through(&d, &m, Role::Axis, setup.clone())?;
+    let circle = b.circle(&m, link.crank_radius / ls, Drawn::Whole, Role::Given, setup)?;
     let top = link.lever_length / ls;
     let guide_note = n(
         "the table’s guide at right angles to MD, through the top of E’s arc",
         Some("Tischführung"),
     );
-    let e0 = b.lay_off(&d, &axis, top, Label::NONE, Role::Axis, guide_note.clone())?;
+    let e0 = b.lay_off(&d, &axis, top, Role::Axis, guide_note.clone())?;
     // The working stroke runs from right to left (the crank turns counter-clockwise).
     let guide = b.line_dir(
         &e0,
         crate::kernel::Vector::new(-1.0, 0.0),
-        Label::NONE,
         Role::Axis,
         guide_note,
     )?;
     let base = if velocity {
         let up = 12.0 + link.c2().max(link.c1()) / u.velocity_scale;
         let note = n("base line of the velocity diagram over the stroke", None);
-        let at = b.lay_off(&d, &axis, top + up, Label::NONE, Role::Axis, note.clone())?;
-        Some(b.parallel(&guide, &at, Label::NONE, Role::Axis, note))
+        let at = b.lay_off(&d, &axis, top + up, Role::Axis, note.clone())?;
+        Some(b.parallel(&guide, &at, Role::Axis, note))
     } else {
         None
     };
@@ -350,14 +331,7 @@ fn tangents(
     let thales_note = n("the circle over MD", Some("Thaleskreis"));
     let mid = b.divide_at(&fr.d, &fr.m, 0.5, Label::NONE, thales_note.clone())?;
     let e = link.centre_distance / ls;
-    let thales = b.circle(
-        &mid,
-        e / 2.0,
-        Drawn::Whole,
-        Label::NONE,
-        Role::Construction,
-        thales_note,
-    )?;
+    let thales = b.circle(&mid, e / 2.0, Drawn::Whole, Role::Construction, thales_note)?;
     let mut ends = Vec::with_capacity(2);
     let mut touch = Vec::with_capacity(2);
     for (name, branch) in [
@@ -368,7 +342,6 @@ fn tangents(
         let lever = b.line_through(
             &fr.d,
             &t,
-            Label::NONE,
             Role::Construction,
             n("the lever in its outer position", Some("Schwinghebel")),
         )?;
@@ -376,14 +349,12 @@ fn tangents(
             &fr.d,
             &lever,
             link.lever_length / ls,
-            Label::plain(name),
-            Role::Result,
+            Role::Result.labelled(Label::plain(name)),
             n("E’s outer position on its arc", None),
         )?;
         ends.push(b.foot(
             &fr.guide,
             &end,
-            Label::NONE,
             Role::Auxiliary,
             n("E’s outer position carried onto the guide", None),
         ));
@@ -488,14 +459,12 @@ fn lever_at(
     let c = b.point_on_circle(
         &fr.circle,
         theta,
-        Label::indexed("C", k),
-        Role::Result,
+        Role::Result.labelled(Label::indexed("C", k)),
         n("the crank pin C at φ", Some("Kurbelzapfen")),
     );
     let lever = b.line_through(
         &fr.d,
         &c,
-        Label::NONE,
         Role::Result,
         n("the slotted lever through D and C", Some("Kurbelschleife")),
     )?;
@@ -503,8 +472,7 @@ fn lever_at(
         &fr.d,
         &lever,
         link.lever_length / u.length_scale,
-        Label::quiet("E", k),
-        Role::Result,
+        Role::Result.labelled(Label::quiet("E", k)),
         n("E at the lever’s length from D", None),
     )?;
     Ok(Lever { k, c, lever, e })
@@ -522,8 +490,7 @@ fn position(
     let place = b.foot(
         &fr.guide,
         &lv.e,
-        Label::quiet("S", k),
-        Role::Result,
+        Role::Result.labelled(Label::quiet("S", k)),
         n("the table’s place: E on the guide", Some("Tisch")),
     );
     let s = b.measure(
@@ -582,8 +549,7 @@ fn table_speed(
     let f = b.foot(
         &lv.lever,
         &fr.m,
-        Label::quiet("F", lv.k),
-        Role::Construction,
+        Role::Construction.labelled(Label::quiet("F", lv.k)),
         n(
             "F, the foot of the perpendicular from M on DC, on the circle over MD",
             None,
@@ -592,8 +558,7 @@ fn table_speed(
     let g = b.foot(
         &fr.axis,
         &lv.e,
-        Label::quiet("G", lv.k),
-        Role::Construction,
+        Role::Construction.labelled(Label::quiet("G", lv.k)),
         n("G, E’s foot on MD", None),
     );
     let sin_direct = sin_to(&fr.axis, lv.c.g, g.g);
@@ -639,13 +604,7 @@ fn swing(
         "DF and DC carried onto the perpendicular to MD at D (the lever lies too close to MD for the cut)",
         None,
     );
-    let across = b.perpendicular(
-        &fr.axis,
-        &fr.d,
-        Label::NONE,
-        Role::Construction,
-        carry.clone(),
-    );
+    let across = b.perpendicular(&fr.axis, &fr.d, Role::Construction, carry.clone());
     let sheet = Scale::new(1.0, "mm");
     let df = b.measure(&fr.d, f, &lv.lever, sheet, Label::NONE, carry.clone());
     let dc = b.measure(&fr.d, &lv.c, &lv.lever, sheet, Label::NONE, carry.clone());
@@ -656,8 +615,7 @@ fn swing(
             value: &df,
             per_mm: 1.0,
         },
-        Label::quiet("F′", lv.k),
-        Role::Construction,
+        Role::Construction.labelled(Label::quiet("F′", lv.k)),
         carry.clone(),
     )?;
     let c2 = b.transfer(
@@ -667,8 +625,7 @@ fn swing(
             value: &dc,
             per_mm: 1.0,
         },
-        Label::quiet("C′", lv.k),
-        Role::Construction,
+        Role::Construction.labelled(Label::quiet("C′", lv.k)),
         carry,
     )?;
     Ok((c2, f2))
@@ -681,17 +638,10 @@ fn cg_parallel(
     (c, g, f): (&H<Point>, &H<Point>, &H<Point>),
     k: u32,
 ) -> Result<H<Point>, ConstructionError> {
-    let cg = b.line_through(
-        c,
-        g,
-        Label::NONE,
-        Role::Construction,
-        n("C joined with G", None),
-    )?;
+    let cg = b.line_through(c, g, Role::Construction, n("C joined with G", None))?;
     let fh = b.parallel(
         &cg,
         f,
-        Label::NONE,
         Role::Construction,
         n("the parallel to CG through F", None),
     );
@@ -715,14 +665,8 @@ fn ordinate(
         return Ok(None);
     };
     let note = n("the table’s place carried up to the diagram", None);
-    let at = b.foot(base, place, Label::NONE, Role::Auxiliary, note);
-    let up = b.perpendicular(
-        base,
-        &at,
-        Label::NONE,
-        Role::Construction,
-        n("ordinate", None),
-    );
+    let at = b.foot(base, place, Role::Auxiliary, note);
+    let up = b.perpendicular(base, &at, Role::Construction, n("ordinate", None));
     // The base runs towards −x: its normal points down the sheet, so a working speed
     // (positive) is laid off against it, upwards.
     b.transfer(
@@ -732,7 +676,6 @@ fn ordinate(
             value: c,
             per_mm: -per_mm,
         },
-        Label::NONE,
         Role::Result,
         n("the speed laid off as an ordinate", None),
     )

@@ -108,8 +108,8 @@ impl Scale {
 /// use graphostatik::kernel::{Point, Vector};
 /// const N: Note = note("given", None, "", Topic::Setup);
 /// let mut b = Board::recording();
-/// let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, N);
-/// let axis = b.line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, N).unwrap();
+/// let o = b.point(Point::new(0.0, 0.0), Role::Given.named("O"), N);
+/// let axis = b.line_dir(&o, Vector::new(1.0, 0.0), Role::Axis, N).unwrap();
 /// assert_eq!(b.steps().len(), 2);
 /// assert_eq!(b.steps()[1].inputs.as_slice(), &[o.id]);
 /// assert_eq!(axis.g.dir, Vector::new(1.0, 0.0));
@@ -457,9 +457,9 @@ impl Board {
     /// use graphostatik::prelude::*;
     /// let mut b = Board::recording();
     /// let n = Note::new("a length", Topic::Custom("demo"));
-    /// let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, n.clone());
-    /// let a = b.point(Point::new(3.0, 4.0), Label::plain("A"), Role::Given, n.clone());
-    /// let x = b.line_through(&o, &a, Label::NONE, Role::Construction, n.clone())?;
+    /// let o = b.point(Point::new(0.0, 0.0), Role::Given.named("O"), n.clone());
+    /// let a = b.point(Point::new(3.0, 4.0), Role::Given.named("A"), n.clone());
+    /// let x = b.line_through(&o, &a, Role::Construction, n.clone())?;
     /// let d = b.measure(&o, &a, &x, Scale::new(1.0, "mm"), Label::plain("d"), n);
     /// b.check(&d, "OA", "mm", "Pythagoras", 5.0, || 5.0);
     /// assert_eq!(b.checks().count(), 1);
@@ -746,7 +746,8 @@ impl Board {
     }
 
     /// A given point.
-    pub fn point(&mut self, p: Point, label: Label, role: Role, note: Note) -> H<Point> {
+    pub fn point(&mut self, p: Point, mark: impl Into<Mark>, note: Note) -> H<Point> {
+        let Mark { label, role } = mark.into();
         let p = self.mark(p);
         self.grow(&p);
         self.begin(StepKind::Given, &note, &[]);
@@ -762,10 +763,10 @@ impl Board {
         &mut self,
         p: &H<Point>,
         dir: Vector,
-        label: Label,
-        role: Role,
+        mark: impl Into<Mark>,
         note: Note,
     ) -> Result<H<Line>, ConstructionError> {
+        let Mark { label, role } = mark.into();
         let line = self.prim(Line::new(p.g, dir), &note)?;
         let line = self.rule(line);
         let kind = if p.id == ObjId::NONE || note.topic == Topic::Setup {
@@ -791,10 +792,10 @@ impl Board {
         &mut self,
         a: &H<Point>,
         b: &H<Point>,
-        label: Label,
-        role: Role,
+        mark: impl Into<Mark>,
         note: Note,
     ) -> Result<H<Line>, ConstructionError> {
+        let Mark { label, role } = mark.into();
         let line = self.prim(Line::through(a.g, b.g, self.tolerance.length), &note)?;
         let line = self.rule(line);
         self.begin(StepKind::Line, &note, &[a.id, b.id]);
@@ -822,19 +823,11 @@ impl Board {
         &mut self,
         line: &H<Line>,
         p: &H<Point>,
-        label: Label,
-        role: Role,
+        mark: impl Into<Mark>,
         note: Note,
     ) -> H<Line> {
         let g = construct::parallel_through(&line.g, p.g);
-        let g = self.rule(g);
-        self.begin(StepKind::Parallel, &note, &[line.id, p.id]);
-        let id = self.add(label, role, || Geom::Line {
-            line: g,
-            extent: [0.0, 0.0],
-        });
-        self.slid(id, line, p, false);
-        H { id, g }
+        self.slide(StepKind::Parallel, line, p, g, mark.into(), note)
     }
 
     /// The perpendicular to `line` through `p`.
@@ -842,18 +835,31 @@ impl Board {
         &mut self,
         line: &H<Line>,
         p: &H<Point>,
-        label: Label,
-        role: Role,
+        mark: impl Into<Mark>,
         note: Note,
     ) -> H<Line> {
         let g = construct::perpendicular_through(&line.g, p.g);
+        self.slide(StepKind::Perpendicular, line, p, g, mark.into(), note)
+    }
+
+    /// The set square slid along `line` to `p`, ruling `g` (the parallel, or the
+    /// perpendicular: [`StepKind::Perpendicular`]).
+    fn slide(
+        &mut self,
+        kind: StepKind,
+        line: &H<Line>,
+        p: &H<Point>,
+        g: Line,
+        mark: Mark,
+        note: Note,
+    ) -> H<Line> {
         let g = self.rule(g);
-        self.begin(StepKind::Perpendicular, &note, &[line.id, p.id]);
-        let id = self.add(label, role, || Geom::Line {
+        self.begin(kind, &note, &[line.id, p.id]);
+        let id = self.add(mark.label, mark.role, || Geom::Line {
             line: g,
             extent: [0.0, 0.0],
         });
-        self.slid(id, line, p, true);
+        self.slid(id, line, p, kind == StepKind::Perpendicular);
         H { id, g }
     }
 
@@ -880,10 +886,10 @@ impl Board {
         center: &H<Point>,
         radius: f64,
         drawn: Drawn,
-        label: Label,
-        role: Role,
+        mark: impl Into<Mark>,
         note: Note,
     ) -> Result<H<Circle>, ConstructionError> {
+        let Mark { label, role } = mark.into();
         let radius = self.read(radius);
         let c = self.prim(Circle::new(center.g, radius), &note)?;
         self.grow(&(c.center + Vector::new(c.radius, c.radius)));
@@ -915,12 +921,11 @@ impl Board {
         &mut self,
         circle: &H<Circle>,
         deg: f64,
-        label: Label,
-        role: Role,
+        mark: impl Into<Mark>,
         note: Note,
     ) -> H<Point> {
         let dir = SinCos::of_deg(deg);
-        self.point_on_circle_dir(circle, dir, label, role, note)
+        self.point_on_circle_dir(circle, dir, mark, note)
     }
 
     /// The point of a circle in the direction given by its sine and cosine ([`SinCos`]), for an
@@ -930,10 +935,10 @@ impl Board {
         &mut self,
         circle: &H<Circle>,
         dir: SinCos,
-        label: Label,
-        role: Role,
+        mark: impl Into<Mark>,
         note: Note,
     ) -> H<Point> {
+        let Mark { label, role } = mark.into();
         let SinCos { sin: s, cos: c } = dir;
         let g = &circle.g;
         let p = Point::new(g.center.x + g.radius * c, g.center.y + g.radius * s);
@@ -999,10 +1004,10 @@ impl Board {
         &mut self,
         a: &H<Point>,
         b: &H<Point>,
-        label: Label,
-        role: Role,
+        mark: impl Into<Mark>,
         note: Note,
     ) -> H<Segment> {
+        let Mark { label, role } = mark.into();
         let s = Segment { a: a.g, b: b.g };
         self.begin(StepKind::LayOff, &note, &[a.id, b.id]);
         let id = self.add(label, role, || match role {
@@ -1019,12 +1024,11 @@ impl Board {
         from: &H<Point>,
         along: &H<Line>,
         length: f64,
-        label: Label,
-        role: Role,
+        mark: impl Into<Mark>,
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
         // The line's direction is a unit vector already: no normalisation needed.
-        self.lay_off_carried(from, along, (length, None), label, role, note)
+        self.lay_off_carried(from, along, (length, None), mark.into(), note)
     }
 
     /// Lays off a value read earlier (a force, a velocity measured elsewhere) at `per_mm`
@@ -1035,8 +1039,7 @@ impl Board {
         from: &H<Point>,
         along: &H<Line>,
         reading: Reading<'_>,
-        label: Label,
-        role: Role,
+        mark: impl Into<Mark>,
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
         let Reading { value, per_mm } = reading;
@@ -1045,8 +1048,7 @@ impl Board {
             from,
             along,
             (length, Some((value, per_mm))),
-            label,
-            role,
+            mark.into(),
             note,
         )
     }
@@ -1056,10 +1058,10 @@ impl Board {
         from: &H<Point>,
         along: &H<Line>,
         (length, carried): (f64, Option<(&H<f64>, f64)>),
-        label: Label,
-        role: Role,
+        mark: Mark,
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
+        let Mark { label, role } = mark;
         self.finite(length, &note)?;
         let length = self.read(length);
         let p = from.g + along.g.dir * length;
@@ -1099,10 +1101,10 @@ impl Board {
         &mut self,
         line: &H<Line>,
         p: &H<Point>,
-        label: Label,
-        role: Role,
+        mark: impl Into<Mark>,
         note: Note,
     ) -> H<Point> {
+        let Mark { label, role } = mark.into();
         let f = construct::foot_on_line(&line.g, &p.g);
         let f = self.mark(f);
         self.begin(StepKind::Foot, &note, &[line.id, p.id]);
@@ -1124,7 +1126,8 @@ impl Board {
     }
 
     /// Intersects two lines; a parallel or coincident pair is recorded as its named case.
-    pub fn meet(&mut self, a: &H<Line>, b: &H<Line>, label: Label, note: Note) -> Cut {
+    pub fn meet(&mut self, a: &H<Line>, b: &H<Line>, label: impl Into<Label>, note: Note) -> Cut {
+        let label = label.into();
         let r = intersect_line_line(&a.g, &b.g, &self.tolerance);
         self.begin(StepKind::IntersectLineLine, &note, &[a.id, b.id]);
         match r {
@@ -1188,9 +1191,10 @@ impl Board {
         &mut self,
         a: &H<Line>,
         b: &H<Line>,
-        label: Label,
+        label: impl Into<Label>,
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
+        let label = label.into();
         let step = self.step_id_next();
         let caption = note.caption.clone();
         match self.meet(a, b, label, note) {
@@ -1214,9 +1218,10 @@ impl Board {
         line: &H<Line>,
         circle: &H<Circle>,
         branch: Branch,
-        label: Label,
+        label: impl Into<Label>,
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
+        let label = label.into();
         let r = intersect_line_circle(&line.g, &circle.g, &self.tolerance);
         let step = self.step_id_next();
         self.begin(StepKind::IntersectLineCircle, &note, &[line.id, circle.id]);
@@ -1301,9 +1306,10 @@ impl Board {
         a: &H<Circle>,
         b: &H<Circle>,
         branch: Branch,
-        label: Label,
+        label: impl Into<Label>,
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
+        let label = label.into();
         let r = intersect_circle_circle(&a.g, &b.g, &self.tolerance);
         let step = self.step_id_next();
         self.begin(StepKind::IntersectCircleCircle, &note, &[a.id, b.id]);
@@ -1354,9 +1360,10 @@ impl Board {
         to: &H<Point>,
         axis: &H<Line>,
         scale: Scale,
-        label: Label,
+        label: impl Into<Label>,
         note: Note,
     ) -> H<f64> {
+        let label = label.into();
         let mm = (to.g - from.g).dot(&axis.g.dir);
         let mm = self.read(mm);
         let value = mm * scale.per_mm;
@@ -1383,10 +1390,11 @@ impl Board {
         &mut self,
         value: f64,
         unit: &'static str,
-        label: Label,
+        label: impl Into<Label>,
         inputs: &[ObjId],
         note: Note,
     ) -> H<f64> {
+        let label = label.into();
         let inputs = Weighted {
             inputs,
             weight: 1.0,
@@ -1402,10 +1410,11 @@ impl Board {
         &mut self,
         value: f64,
         unit: &'static str,
-        label: Label,
+        label: impl Into<Label>,
         weighted: Weighted<'_>,
         note: Note,
     ) -> H<f64> {
+        let label = label.into();
         let Weighted { inputs, weight } = weighted;
         self.begin(StepKind::Tally, &note, inputs);
         let id = self.add(label, Role::Result, || Geom::Scalar { value, unit });
@@ -1438,10 +1447,10 @@ impl Board {
         &mut self,
         points: &[H<Point>],
         trace: Trace,
-        label: Label,
-        role: Role,
+        mark: impl Into<Mark>,
         note: Note,
     ) -> H<ObjId> {
+        let Mark { label, role } = mark.into();
         if !self.recording {
             return H {
                 id: ObjId::NONE,
@@ -1499,9 +1508,10 @@ impl Board {
         a: &H<Point>,
         b: &H<Point>,
         t: f64,
-        label: Label,
+        label: impl Into<Label>,
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
+        let label = label.into();
         self.finite(t, &note)?;
         let p = construct::point_at_ratio(&Segment { a: a.g, b: b.g }, t);
         let p = self.mark(p);
@@ -1525,9 +1535,10 @@ impl Board {
         vertex: &H<Point>,
         from: &H<Point>,
         to: &H<Point>,
-        label: Label,
+        label: impl Into<Label>,
         note: Note,
     ) -> H<f64> {
+        let label = label.into();
         let (u, v) = (from.g - vertex.g, to.g - vertex.g);
         // atan2 of cross and dot keeps every digit near 0° and 180°, where acos loses half.
         let value = u.perp(&v).abs().atan2(u.dot(&v)).to_degrees();

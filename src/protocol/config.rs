@@ -99,10 +99,10 @@ impl BoardConfig {
     /// use graphostatik::protocol::BoardConfig;
     /// let mut b = Board::new(BoardConfig::DRAWING.with_reference());
     /// let n = Note::new("a glancing cut", Topic::Custom("demo"));
-    /// let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, n.clone());
-    /// let a = b.point(Point::new(0.0, 1.0), Label::plain("A"), Role::Given, n.clone());
-    /// let x = b.line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, n.clone())?;
-    /// let y = b.line_dir(&a, Vector::new(1.0, -1e-6), Label::NONE, Role::Construction, n.clone())?;
+    /// let o = b.point(Point::new(0.0, 0.0), Role::Given.named("O"), n.clone());
+    /// let a = b.point(Point::new(0.0, 1.0), Role::Given.named("A"), n.clone());
+    /// let x = b.line_dir(&o, Vector::new(1.0, 0.0), Role::Axis, n.clone())?;
+    /// let y = b.line_dir(&a, Vector::new(1.0, -1e-6), Role::Construction, n.clone())?;
     /// let p = b.meet_point(&x, &y, Label::plain("P"), n)?;
     /// let row = b.reference_report().into_iter().find(|r| r.step == b.steps()[4].id).unwrap();
     /// assert!(row.observed <= row.bound);       // f64 kept within the bound ...

@@ -12,11 +12,11 @@ use crate::kernel::PrimitiveError;
 /// use graphostatik::protocol::CutOutcome;
 /// let mut b = Board::recording();
 /// let n = Note::new("two parallels", Topic::Custom("demo"));
-/// let o = b.point(Point::new(0.0, 0.0), Label::NONE, Role::Given, n.clone());
-/// let p = b.point(Point::new(0.0, 5.0), Label::NONE, Role::Given, n.clone());
+/// let o = b.point(Point::new(0.0, 0.0), Role::Given, n.clone());
+/// let p = b.point(Point::new(0.0, 5.0), Role::Given, n.clone());
 /// let x = Vector::new(1.0, 0.0);
-/// let l1 = b.line_dir(&o, x, Label::NONE, Role::Given, n.clone())?;
-/// let l2 = b.line_dir(&p, x, Label::NONE, Role::Given, n.clone())?;
+/// let l1 = b.line_dir(&o, x, Role::Given, n.clone())?;
+/// let l2 = b.line_dir(&p, x, Role::Given, n.clone())?;
 /// match b.meet_point(&l1, &l2, Label::NONE, n) {
 ///     Err(ConstructionError::NoIntersection { outcome: CutOutcome::Parallel { distance }, .. }) => {
 ///         assert_eq!(distance, 5.0)

@@ -147,6 +147,54 @@ pub enum Role {
     Guide,
 }
 
+/// What a step's object is drawn as: its pen ([`Role`]) and the name written at it
+/// ([`Label`]). A role alone is an unlettered object, so that a step call reads one step per
+/// line: `b.parallel(&l, &p, Role::Construction, n)`, `b.point(p, Role::Given.named("A"), n)`.
+///
+/// ```
+/// use graphostatik::protocol::{Label, Mark, Role};
+/// let m: Mark = Role::Construction.into();
+/// assert_eq!(m.label, Label::NONE);
+/// assert_eq!(Role::Given.named("A").label, Label::plain("A"));
+/// assert_eq!(Role::Result.labelled(Label::indexed("B", 3)).role, Role::Result);
+/// ```
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Mark {
+    /// The name written at the object.
+    pub label: Label,
+    /// The pen it is drawn with.
+    pub role: Role,
+}
+
+impl From<Role> for Mark {
+    fn from(role: Role) -> Mark {
+        Mark {
+            label: Label::NONE,
+            role,
+        }
+    }
+}
+
+impl Role {
+    /// This pen with a plain name written at the object (`Role::Given.named("A")`).
+    pub const fn named(self, base: &'static str) -> Mark {
+        Mark {
+            label: Label::plain(base),
+            role: self,
+        }
+    }
+    /// This pen with a label made elsewhere (an index, a scene's name).
+    pub fn labelled(self, label: Label) -> Mark {
+        Mark { label, role: self }
+    }
+}
+
+impl From<&'static str> for Label {
+    fn from(base: &'static str) -> Label {
+        Label::plain(base)
+    }
+}
+
 /// The name written at an object: `base` with an optional index (`B₃`).
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
 pub struct Label {

@@ -15,10 +15,10 @@
 //! use graphostatik::protocol::{BoardConfig, LISTED_CHECKS};
 //! let mut b = Board::new(BoardConfig::CHECKS);
 //! let n = Note::new("lengths", Topic::Custom("demo"));
-//! let o = b.point(Point::new(0.0, 0.0), Label::plain("O"), Role::Given, n.clone());
+//! let o = b.point(Point::new(0.0, 0.0), Role::Given.named("O"), n.clone());
 //! for i in 1..=LISTED_CHECKS + 1 {
-//!     let a = b.point(Point::new(3.0 * i as f64, 4.0 * i as f64), Label::NONE, Role::Given, n.clone());
-//!     let x = b.line_through(&o, &a, Label::NONE, Role::Construction, n.clone())?;
+//!     let a = b.point(Point::new(3.0 * i as f64, 4.0 * i as f64), Role::Given, n.clone());
+//!     let x = b.line_through(&o, &a, Role::Construction, n.clone())?;
 //!     let d = b.measure(&o, &a, &x, Scale::new(1.0, "mm"), Label::NONE, n.clone());
 //!     b.check(&d, "OA", "mm", "Pythagoras", 5.0, || 5.0 * i as f64);
 //! }

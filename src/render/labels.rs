@@ -489,13 +489,13 @@ mod tests {
 
     #[test]
     fn degenerate_and_absurd_sheets_are_placed_without_a_panic() {
-        use crate::protocol::{Label, Note, Role, Topic};
+        use crate::protocol::{Note, Role, Topic};
         let n = Note::new("p", Topic::Custom("t"));
         let mut b = Board::recording();
         let mut strokes = Vec::new();
         for k in 0..12 {
             let at = Point::new(k as f64 * 1e-310, 0.0);
-            b.point(at, Label::plain("P"), Role::Given, n.clone());
+            b.point(at, Role::Given.named("P"), n.clone());
             strokes.push((at, Point::new(at.x, 1e-310)));
         }
         let placed = place(&b, [-50.0, -50.0, 50.0, 50.0], strokes.clone(), &|_| true);

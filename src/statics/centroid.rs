@@ -220,9 +220,9 @@ pub fn construct_centroid(
     }
     let (l1, l2) = two_funiculars(b, &vs, &parts, dr)?;
     let s = b.meet_point(&l1, &l2, Label::plain("S"), N_CENTROID)?;
-    let o = b.point(Point::origin(), Label::NONE, Role::Given, N_ORIGIN);
-    let ax = b.line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, N_AXIS)?;
-    let ay = b.line_dir(&o, Vector::new(0.0, 1.0), Label::NONE, Role::Axis, N_AXIS)?;
+    let o = b.point(Point::origin(), Role::Given, N_ORIGIN);
+    let ax = b.line_dir(&o, Vector::new(1.0, 0.0), Role::Axis, N_AXIS)?;
+    let ay = b.line_dir(&o, Vector::new(0.0, 1.0), Role::Axis, N_AXIS)?;
     let m = Scale::new(1.0 / k, "m");
     let xs = b.measure(&o, &s, &ax, m, Label::quiet("x", 0), N_COORD);
     b.check(&xs, "centroid x", "m", "shoelace formula", size, || {
@@ -275,18 +275,16 @@ fn draw_polygon(b: &mut Board, pts: &[Point], k: f64) -> Vec<H<Point>> {
             } else {
                 Label::indexed("P", i as u32)
             };
-            b.point(Point::new(p.x * k, p.y * k), label, Role::Given, N_VERTEX)
+            b.point(
+                Point::new(p.x * k, p.y * k),
+                Role::Given.labelled(label),
+                N_VERTEX,
+            )
         })
         .collect();
     let mut outline = vs.clone();
     outline.push(vs[0]);
-    b.curve(
-        &outline,
-        Trace::Polygon,
-        Label::NONE,
-        Role::Result,
-        N_OUTLINE,
-    );
+    b.curve(&outline, Trace::Polygon, Role::Result, N_OUTLINE);
     vs
 }
 
@@ -311,12 +309,12 @@ fn triangle_centroids(
             continue;
         }
         if t + 1 < n - 1 {
-            b.segment(&apex, &v2, Label::NONE, Role::Construction, N_DIAGONAL);
+            b.segment(&apex, &v2, Role::Construction, N_DIAGONAL);
         }
         let m1 = b.divide_segment(&v1, &v2, 2, "m", N_MIDPOINT)[1];
         let m2 = b.divide_segment(&apex, &v1, 2, "m", N_MIDPOINT)[1];
-        let med1 = b.line_through(&apex, &m1, Label::NONE, Role::Auxiliary, N_MEDIAN)?;
-        let med2 = b.line_through(&v2, &m2, Label::NONE, Role::Auxiliary, N_MEDIAN)?;
+        let med1 = b.line_through(&apex, &m1, Role::Auxiliary, N_MEDIAN)?;
+        let med2 = b.line_through(&v2, &m2, Role::Auxiliary, N_MEDIAN)?;
         let label = Label::indexed("S", t as u32);
         let g = b.meet_point(&med1, &med2, label, N_TRIANGLE_CENTROID)?;
         parts.push((g.g / k, signed));

@@ -264,32 +264,24 @@ fn torque_ordinate(
     let p_mm = t.md.abs() / r / dr.force_scale;
     let h_mm = dr.pole_distance / dr.force_scale;
     let r_mm = r * 1000.0 / dr.length_scale;
-    let o = b.point(pole_at, Label::plain("O"), Role::Given, N_TQ_POLE);
+    let o = b.point(pole_at, Role::Given.named("O"), N_TQ_POLE);
     let down = Vector::new(0.0, -1.0);
     let top = b.point(
         pole_at + Vector::new(h_mm, 0.5 * p_mm),
-        Label::quiet("P", 0),
-        Role::Given,
+        Role::Given.labelled(Label::quiet("P", 0)),
         N_TQ_FORCE,
     );
-    let line_p = b.line_dir(&top, down, Label::NONE, Role::Construction, N_TQ_FORCE)?;
-    let bottom = b.lay_off(
-        &top,
-        &line_p,
-        p_mm,
-        Label::plain("P"),
-        Role::Force,
-        N_TQ_FORCE,
-    )?;
-    let ray_top = b.line_through(&o, &top, Label::NONE, Role::Construction, N_TQ_RAY)?;
-    let ray_bottom = b.line_through(&o, &bottom, Label::NONE, Role::Construction, N_TQ_RAY)?;
-    let axis = b.perpendicular(&line_p, &o, Label::NONE, Role::Auxiliary, N_TQ_AXIS);
+    let line_p = b.line_dir(&top, down, Role::Construction, N_TQ_FORCE)?;
+    let bottom = b.lay_off(&top, &line_p, p_mm, Role::Force.named("P"), N_TQ_FORCE)?;
+    let ray_top = b.line_through(&o, &top, Role::Construction, N_TQ_RAY)?;
+    let ray_bottom = b.line_through(&o, &bottom, Role::Construction, N_TQ_RAY)?;
+    let axis = b.perpendicular(&line_p, &o, Role::Auxiliary, N_TQ_AXIS);
     let cut_off = |b: &mut Board, dist: f64, n_r: Note, n_x: Note, weight: f64| {
-        let foot = b.lay_off(&o, &axis, dist, Label::NONE, Role::Construction, n_r)?;
-        let par = b.parallel(&line_p, &foot, Label::NONE, Role::Construction, N_TQ_PAR);
+        let foot = b.lay_off(&o, &axis, dist, Role::Construction, n_r)?;
+        let par = b.parallel(&line_p, &foot, Role::Construction, N_TQ_PAR);
         let c1 = b.meet_point(&ray_top, &par, Label::NONE, N_TQ_CUT)?;
         let c2 = b.meet_point(&ray_bottom, &par, Label::NONE, N_TQ_CUT)?;
-        b.segment(&c1, &c2, Label::NONE, Role::Result, n_x.clone());
+        b.segment(&c1, &c2, Role::Result, n_x.clone());
         let x = b.measure(&c1, &c2, &line_p, mscale, Label::quiet("Md", 0), n_x);
         b.check(
             &x,
@@ -321,46 +313,25 @@ fn torque_rectangle(
     let k = 1000.0 / dr.length_scale;
     let c = b.point(
         Point::new(t.from * k + dr.origin.x, base_y),
-        Label::plain("C"),
-        Role::Given,
+        Role::Given.named("C"),
         N_TQ_CORNER,
     );
-    let base = b.line_dir(
-        &c,
-        Vector::new(1.0, 0.0),
-        Label::NONE,
-        Role::Axis,
-        N_TQ_CORNER,
-    )?;
+    let base = b.line_dir(&c, Vector::new(1.0, 0.0), Role::Axis, N_TQ_CORNER)?;
     let h = b.lay_off(
         &c,
         &base,
         (t.to - t.from) * k,
-        Label::plain("H"),
-        Role::Construction,
+        Role::Construction.named("H"),
         N_TQ_CORNER,
     )?;
-    let up_c = b.perpendicular(&base, &c, Label::NONE, Role::Construction, N_TQ_CORNER);
-    let up_h = b.perpendicular(&base, &h, Label::NONE, Role::Construction, N_TQ_CORNER);
+    let up_c = b.perpendicular(&base, &c, Role::Construction, N_TQ_CORNER);
+    let up_h = b.perpendicular(&base, &h, Role::Construction, N_TQ_CORNER);
     // x is laid off upwards: the perpendicular's direction may point either way.
     let sx = if up_c.g.dir.y >= 0.0 { x } else { -x };
-    let f = b.lay_off(
-        &c,
-        &up_c,
-        sx,
-        Label::plain("F"),
-        Role::Construction,
-        N_TQ_CORNER,
-    )?;
-    let top = b.parallel(&base, &f, Label::NONE, Role::Construction, N_TQ_CORNER);
+    let f = b.lay_off(&c, &up_c, sx, Role::Construction.named("F"), N_TQ_CORNER)?;
+    let top = b.parallel(&base, &f, Role::Construction, N_TQ_CORNER);
     let g = b.meet_point(&top, &up_h, Label::plain("G"), N_TQ_CORNER)?;
-    b.curve(
-        &[c, f, g, h, c],
-        Trace::Polygon,
-        Label::NONE,
-        Role::Result,
-        N_TQ_RECT,
-    );
+    b.curve(&[c, f, g, h, c], Trace::Polygon, Role::Result, N_TQ_RECT);
     Ok(())
 }
 
@@ -579,17 +550,17 @@ impl Combine<'_> {
         let (ms, mscale) = (self.ms, Scale::new(self.ms, "kg·m"));
         let (sin_a, cos_a) = crate::kernel::angle::sin_cos_deg(self.shaft.angle_deg);
         let at = Point::new(x * self.k + self.dr.origin.x, self.y0);
-        let q = b.point(at, Label::quiet("Q", 0), Role::Given, N_BASE);
+        let q = b.point(at, Role::Given.labelled(Label::quiet("Q", 0)), N_BASE);
         let (aux, con) = (Role::Auxiliary, Role::Construction);
-        let dir1 = b.line_dir(&q, Vector::new(0.0, 1.0), Label::NONE, aux, N_DIR1)?;
-        let e1 = b.lay_off(&q, &dir1, m1 / ms, Label::NONE, con, N_Y1)?;
+        let dir1 = b.line_dir(&q, Vector::new(0.0, 1.0), aux, N_DIR1)?;
+        let e1 = b.lay_off(&q, &dir1, m1 / ms, con, N_Y1)?;
         // The second plane turned through α from the first (counter-clockwise from "up").
-        let dir2 = b.line_dir(&e1, Vector::new(-sin_a, cos_a), Label::NONE, aux, N_DIR2)?;
-        let e2 = b.lay_off(&e1, &dir2, m2 / ms, Label::NONE, con, N_Y2)?;
+        let dir2 = b.line_dir(&e1, Vector::new(-sin_a, cos_a), aux, N_DIR2)?;
+        let e2 = b.lay_off(&e1, &dir2, m2 / ms, con, N_Y2)?;
         if (e2.g - q.g).norm() <= b.tolerance().length {
             return Ok(0.0);
         }
-        let yl = b.line_through(&q, &e2, Label::NONE, Role::Result, N_Y)?;
+        let yl = b.line_through(&q, &e2, Role::Result, N_Y)?;
         let h = b.measure(&q, &e2, &yl, mscale, Label::quiet("Mb", 0), N_MB);
         let formula = "LH C.7: √(M1² + M2² + 2 M1 M2 cos α)";
         let what = "resultant bending moment M_b";
@@ -603,21 +574,21 @@ impl Combine<'_> {
     fn ideal(&self, b: &mut Board, x: f64, mb: f64, md: f64) -> Result<f64, ConstructionError> {
         let (ms, mscale) = (self.ms, Scale::new(self.ms, "kg·m"));
         let at = Point::new(x * self.k + self.dr.origin.x + 4.0, self.y0 - 10.0);
-        let base = b.point(at, Label::quiet("R", 0), Role::Given, N_BASE);
+        let base = b.point(at, Role::Given.labelled(Label::quiet("R", 0)), N_BASE);
         let (aux, con) = (Role::Auxiliary, Role::Construction);
-        let leg = b.line_dir(&base, Vector::new(1.0, 0.0), Label::NONE, aux, N_LEG_Y)?;
-        let ey = b.lay_off(&base, &leg, mb / ms, Label::NONE, con, N_LEG_Y)?;
-        let normal = b.perpendicular(&leg, &ey, Label::NONE, aux, N_NORMAL);
+        let leg = b.line_dir(&base, Vector::new(1.0, 0.0), aux, N_LEG_Y)?;
+        let ey = b.lay_off(&base, &leg, mb / ms, con, N_LEG_Y)?;
+        let normal = b.perpendicular(&leg, &ey, aux, N_NORMAL);
         let alpha0 = self.shaft.alpha0;
         let tx = self.torque_mm.unwrap_or(alpha0 * md.abs() / ms);
-        let ex = b.lay_off(&ey, &normal, tx, Label::NONE, con, N_LEG_X)?;
+        let ex = b.lay_off(&ey, &normal, tx, con, N_LEG_X)?;
         // The hypotenuse drawn; its five eighths are taken off it below.
-        b.line_through(&base, &ex, Label::NONE, con, N_HYP)?;
+        b.line_through(&base, &ex, con, N_HYP)?;
         let y8 = b.divide_segment(&base, &ey, 8, "y", N_EIGHTHS);
         let h8 = b.divide_segment(&base, &ex, 8, "h", N_EIGHTHS);
         // 3/8 y along the leg, then 5/8 of the hypotenuse further along the same line.
         let five = (h8[5].g - base.g).norm();
-        let sum = b.lay_off(&y8[3], &leg, five, Label::NONE, Role::Result, N_ADD)?;
+        let sum = b.lay_off(&y8[3], &leg, five, Role::Result, N_ADD)?;
         let yi = b.measure(&base, &sum, &leg, mscale, Label::quiet("Mi", 0), N_MI);
         b.check(
             &yi,

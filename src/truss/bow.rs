@@ -224,20 +224,26 @@ fn external_polygon(
     bx: &mut [f64; 4],
 ) -> Result<(), ConstructionError> {
     let (at, fs) = (ctx.at, ctx.dr.force_scale);
-    let start = b.point(at, space_label(0), Role::Given, N_START);
+    let start = b.point(at, Role::Given.labelled(space_label(0)), N_START);
     grow(bx, at, at);
     pt[0] = Some(start);
     let mut cur = start;
     for (i, &fi) in order.iter().enumerate() {
         let f = ctx.ext.forces[fi].1;
-        let along = b.line_dir(&cur, f, Label::NONE, Role::Auxiliary, N_EXT)?;
+        let along = b.line_dir(&cur, f, Role::Auxiliary, N_EXT)?;
         let last = i + 1 == order.len();
         let lab = if last {
             Label::NONE
         } else {
             space_label(i + 1)
         };
-        let next = b.lay_off(&cur, &along, f.norm() / fs, lab, Role::Force, N_EXT)?;
+        let next = b.lay_off(
+            &cur,
+            &along,
+            f.norm() / fs,
+            Role::Force.labelled(lab),
+            N_EXT,
+        )?;
         grow(bx, next.g, at);
         if !last {
             pt[i + 1] = Some(next);
@@ -287,7 +293,12 @@ impl<'a> Found<'a> {
             }
             let (l, r) = (self.space_of_half[2 * m], self.space_of_half[2 * m + 1]);
             if let (Some(pl), Some(pr)) = (pt[l], pt[r]) {
-                b.segment(&pl, &pr, member_label(b, t, m), Role::Result, N_FORCE);
+                b.segment(
+                    &pl,
+                    &pr,
+                    Role::Result.labelled(member_label(b, t, m)),
+                    N_FORCE,
+                );
                 let v = b.measure(&pl, &pr, &mline[m], kg, member_label(b, t, m), N_FORCE);
                 check_member(b, &v, m, sol, self.reference);
                 self.forces[m] = Some(v.g);
@@ -347,8 +358,8 @@ pub(super) fn joint_polygon(
     let (px, py) = (pt[sp.of_half[ha ^ 1]]?, pt[sp.of_half[hb]]?);
     let name = &t.joints[v].name;
     b.set_context(|| format!("{}: joint {name}", case.name));
-    let la = b.parallel(&mline[ha / 2], &px, Label::NONE, Role::Construction, N_PAR);
-    let lb = b.parallel(&mline[hb / 2], &py, Label::NONE, Role::Construction, N_PAR);
+    let la = b.parallel(&mline[ha / 2], &px, Role::Construction, N_PAR);
+    let lb = b.parallel(&mline[hb / 2], &py, Role::Construction, N_PAR);
     match b.meet(&la, &lb, space_label(u), N_SPACE) {
         Cut::Point(p, _) => {
             pt[u] = Some(p);

@@ -301,27 +301,32 @@ fn draw_truss(
         .map(|(i, j)| {
             let p = at.truss + j.at.coords * k;
             grow(&mut boxes[0], p, at.truss);
-            b.point(p, joint_label(t, i), Role::Given, N_JOINT)
+            b.point(p, Role::Given.labelled(joint_label(t, i)), N_JOINT)
         })
         .collect();
     let mut mline = Vec::with_capacity(t.members.len());
     for (m, mem) in t.members.iter().enumerate() {
         let [i, j] = mem.ends;
-        mline.push(b.line_through(&jp[i], &jp[j], member_label(b, t, m), Role::Given, N_MEMBER)?);
+        mline.push(b.line_through(
+            &jp[i],
+            &jp[j],
+            Role::Given.labelled(member_label(b, t, m)),
+            N_MEMBER,
+        )?);
     }
     for &[i, j] in slack {
-        b.segment(&jp[i], &jp[j], Label::NONE, Role::Auxiliary, N_SLACK);
+        b.segment(&jp[i], &jp[j], Role::Auxiliary, N_SLACK);
     }
     let mut rlines: Vec<Option<H<Line>>> = vec![None; t.supports.len()];
     for (si, s) in t.supports.iter().enumerate() {
         let label = support_label(t, si);
         match s.kind {
             SupportKind::Roller { dir } => {
-                let line = b.line_dir(&jp[s.joint], dir, label, Role::Guide, N_SUPPORT)?;
+                let line = b.line_dir(&jp[s.joint], dir, Role::Guide.labelled(label), N_SUPPORT)?;
                 rlines[si] = Some(line);
             }
             SupportKind::Pinned => {
-                b.point(jp[s.joint].g, label, Role::Guide, N_SUPPORT);
+                b.point(jp[s.joint].g, Role::Guide.labelled(label), N_SUPPORT);
             }
         }
     }
@@ -351,14 +356,14 @@ fn draw_loads(
     });
     for l in &loads {
         let head = jp[l.joint];
-        let tail = b.point(
-            head.g - l.force / dr.force_scale,
-            Label::NONE,
-            Role::Given,
+        let tail = b.point(head.g - l.force / dr.force_scale, Role::Given, N_LOAD);
+        grow(&mut boxes[0], tail.g, at.truss);
+        b.segment(
+            &tail,
+            &head,
+            Role::Force.labelled(Label::indexed("P", 0)),
             N_LOAD,
         );
-        grow(&mut boxes[0], tail.g, at.truss);
-        b.segment(&tail, &head, Label::indexed("P", 0), Role::Force, N_LOAD);
     }
     loads
 }
@@ -436,7 +441,7 @@ fn mark_zero_members(b: &mut Board, t: &Truss, result: &CaseResult, jp: &[H<Poin
     for (m, f) in result.members.iter().enumerate() {
         if f.force.abs() <= zero_kg {
             let [i, j] = t.members[m].ends;
-            b.segment(&jp[i], &jp[j], Label::plain("0"), Role::Auxiliary, N_ZERO);
+            b.segment(&jp[i], &jp[j], Role::Auxiliary.named("0"), N_ZERO);
         }
     }
 }

@@ -153,13 +153,7 @@ pub(super) fn culmann(
         ));
     }
     let on_r = b.meet_point(first, last_string, Label::quiet("R", 0), N_RESULTANT)?;
-    let rl = b.line_dir(
-        &on_r,
-        rv,
-        Label::plain("R"),
-        Role::Construction,
-        N_RESULTANT,
-    )?;
+    let rl = b.line_dir(&on_r, rv, Role::Construction.named("R"), N_RESULTANT)?;
     let sin = |a: Vector, c: Vector| (a.x * c.y - a.y * c.x).abs() / (a.norm() * c.norm());
     let mut best = (0, -1.0);
     for k in 0..3 {
@@ -175,13 +169,13 @@ pub(super) fn culmann(
     let (lk, li, lj) = (line(k), line(i), line(j));
     let p = b.meet_point(&rl, &lk, Label::quiet("P", 0), N_CULMANN_P)?;
     let q = b.meet_point(&li, &lj, Label::quiet("Q", 0), N_CULMANN_Q)?;
-    let c = b.line_through(&p, &q, Label::plain("c"), Role::Construction, N_CULMANN)?;
+    let c = b.line_through(&p, &q, Role::Construction.named("c"), N_CULMANN)?;
     let (f0, last) = (fh[0], fh[n]);
-    let along_k = b.parallel(&lk, &last, Label::NONE, Role::Auxiliary, N_CULMANN_PLAN);
-    let along_c = b.parallel(&c, &f0, Label::NONE, Role::Auxiliary, N_CULMANN_PLAN);
+    let along_k = b.parallel(&lk, &last, Role::Auxiliary, N_CULMANN_PLAN);
+    let along_c = b.parallel(&c, &f0, Role::Auxiliary, N_CULMANN_PLAN);
     let x = b.meet_point(&along_k, &along_c, Label::quiet("X", 0), N_CULMANN_PLAN)?;
-    let along_i = b.parallel(&li, &x, Label::NONE, Role::Auxiliary, N_CULMANN_PLAN);
-    let along_j = b.parallel(&lj, &f0, Label::NONE, Role::Auxiliary, N_CULMANN_PLAN);
+    let along_i = b.parallel(&li, &x, Role::Auxiliary, N_CULMANN_PLAN);
+    let along_j = b.parallel(&lj, &f0, Role::Auxiliary, N_CULMANN_PLAN);
     let y = b.meet_point(&along_i, &along_j, Label::quiet("Y", 0), N_CULMANN_PLAN)?;
     Ok(vec![
         (support_index(t, r[k].0), last, x),
@@ -270,8 +264,8 @@ impl Reader<'_> {
     ) -> Result<(), ConstructionError> {
         let reference = self.inp.maxload;
         let aux = Role::Auxiliary;
-        let xa = b.line_dir(&from, Vector::new(1.0, 0.0), Label::NONE, aux, N_AXIS)?;
-        let ya = b.line_dir(&from, Vector::new(0.0, 1.0), Label::NONE, aux, N_AXIS)?;
+        let xa = b.line_dir(&from, Vector::new(1.0, 0.0), aux, N_AXIS)?;
+        let ya = b.line_dir(&from, Vector::new(0.0, 1.0), aux, N_AXIS)?;
         let ax = b.measure(&from, &to, &xa, self.kg, Label::quiet("Ax", 0), N_REACT);
         let ay = b.measure(&from, &to, &ya, self.kg, Label::quiet("Ay", 0), N_REACT);
         if let Some(m) = self.by_moments {
@@ -358,7 +352,7 @@ pub(super) fn draw_reactions(
         StringStyle::CONSTRUCTION,
         |b, j| {
             let l = &loads[j];
-            b.line_dir(&jp[l.joint], l.force, Label::NONE, Role::Auxiliary, N_LOA)
+            b.line_dir(&jp[l.joint], l.force, Role::Auxiliary, N_LOA)
         },
     )?;
     for c in &strings.corners {
@@ -382,7 +376,12 @@ pub(super) fn draw_reactions(
     // horizontal and vertical parts.
     for (si, seg) in segs.iter().enumerate() {
         if let Some((from, to)) = seg {
-            b.segment(from, to, support_label(t, si), Role::Force, N_REACT);
+            b.segment(
+                from,
+                to,
+                Role::Force.labelled(support_label(t, si)),
+                N_REACT,
+            );
             reactions[si] = (to.g - from.g) * fs;
         }
     }
@@ -412,12 +411,16 @@ fn loads_polygon(
         Supports::Rollers(r) => r[0].1,
     };
     let pole = choose_pole(&corners, &dirs, last_dir);
-    let f0 = b.point(corners[0], Label::indexed("F", 0), Role::Given, N_FP);
+    let f0 = b.point(
+        corners[0],
+        Role::Given.labelled(Label::indexed("F", 0)),
+        N_FP,
+    );
     let mut fh = vec![f0];
     for (i, l) in loads.iter().enumerate() {
-        let along = b.line_dir(&fh[i], l.force, Label::NONE, Role::Auxiliary, N_FP)?;
+        let along = b.line_dir(&fh[i], l.force, Role::Auxiliary, N_FP)?;
         let len = l.force.norm() / fs;
-        fh.push(b.lay_off(&fh[i], &along, len, Label::NONE, Role::Force, N_FP)?);
+        fh.push(b.lay_off(&fh[i], &along, len, Role::Force, N_FP)?);
     }
     let polygon::Rays { pole: o, rays } = polygon::pole_and_rays(b, pole, &fh)?;
     for p in fh.iter().map(|h| h.g).chain([pole]) {
@@ -453,7 +456,7 @@ fn pin_and_roller(
     grow(&mut boxes[0], bcut.g, at.truss);
     let con = Role::Construction;
     let closing = polygon::closing(b, &jp[pin], &bcut, pole, Label::NONE, con, con)?;
-    let bl = b.parallel(&rline, &last, Label::NONE, Role::Auxiliary, N_B_DIR);
+    let bl = b.parallel(&rline, &last, Role::Auxiliary, N_B_DIR);
     let x = b.meet_point(&closing.ray, &bl, Label::quiet("X", 0), N_SPLIT)?;
     grow(&mut boxes[1], x.g, at.polygon);
     segs[ri] = Some((last, x));

@@ -244,12 +244,12 @@ impl<'a> Polygons<'a> {
         let name = &t.joints[v].name;
         b.set_context(|| format!("{}: joint polygon {name}", case.name));
         let at_start = Point::new(self.cursor - lo, at.y);
-        let start = b.point(at_start, Label::NONE, Role::Given, N_START);
+        let start = b.point(at_start, Role::Given, N_START);
         let mut cur = start;
         for i in &known {
-            let along = b.line_dir(&cur, i.force, Label::NONE, Role::Auxiliary, N_KNOWN)?;
+            let along = b.line_dir(&cur, i.force, Role::Auxiliary, N_KNOWN)?;
             let len = i.force.norm() / fs;
-            cur = b.lay_off(&cur, &along, len, Label::NONE, Role::Force, N_KNOWN)?;
+            cur = b.lay_off(&cur, &along, len, Role::Force, N_KNOWN)?;
             grow(&mut self.bx, cur.g, at);
         }
         grow(&mut self.bx, start.g, at);
@@ -266,8 +266,8 @@ impl<'a> Polygons<'a> {
         let (m1, m2) = (order[0], order[1]);
         let mline = self.ctx.mline;
         let con = Role::Construction;
-        let l1 = b.parallel(&mline[m1], &cur, Label::NONE, con, N_PAR);
-        let l2 = b.parallel(&mline[m2], &start, Label::NONE, con, N_PAR);
+        let l1 = b.parallel(&mline[m1], &cur, con, N_PAR);
+        let l2 = b.parallel(&mline[m2], &start, con, N_PAR);
         let Cut::Point(mid, _) = b.meet(&l1, &l2, Label::NONE, N_CLOSE) else {
             return Ok(None);
         };
@@ -285,7 +285,12 @@ impl<'a> Polygons<'a> {
     fn read(&self, b: &mut Board, v: usize, from: &H<Point>, to: &H<Point>, m: usize) -> H<f64> {
         let t = self.ctx.t;
         let kg = Scale::kg(self.ctx.dr.force_scale);
-        b.segment(from, to, member_label(b, t, m), Role::Result, N_FORCE);
+        b.segment(
+            from,
+            to,
+            Role::Result.labelled(member_label(b, t, m)),
+            N_FORCE,
+        );
         let on_v = t.members[m].ends[0] == v;
         let (p, q) = if on_v { (from, to) } else { (to, from) };
         b.measure(p, q, &self.ctx.mline[m], kg, member_label(b, t, m), N_FORCE)

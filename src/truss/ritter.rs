@@ -43,13 +43,7 @@ pub(super) fn ritter(
     );
     let m = cut[sec.k];
     let px = pt[sec.known].expect("known space");
-    let par = b.parallel(
-        &mline[m],
-        &px,
-        Label::NONE,
-        Role::Construction,
-        N_RITTER_PAR,
-    );
+    let par = b.parallel(&mline[m], &px, Role::Construction, N_RITTER_PAR);
     // P[right of a→b] − P[left of a→b] = t·(a→b).
     let sign = if sp.of_half[2 * m] == sec.known {
         1.0
@@ -59,7 +53,9 @@ pub(super) fn ritter(
     let len = sign * sec.force / dr.force_scale;
     let label = space_label(sec.unknown);
     let con = Role::Construction;
-    let p = b.lay_off(&px, &par, len, label, con, N_RITTER_FORCE).ok()?;
+    let p = b
+        .lay_off(&px, &par, len, con.labelled(label), N_RITTER_FORCE)
+        .ok()?;
     pt[sec.unknown] = Some(p);
     Some(sec.unknown)
 }

@@ -147,30 +147,22 @@ fn near_a_rod_as_short_as_the_crank_the_bound_follows_the_squared_amplification(
 fn chain(angles: &[f64], offsets: &[f64]) -> Board {
     let mut b = Board::new(BoardConfig::DRAWING.with_reference());
     let n = Note::new("chain", Topic::Custom("chain"));
-    let o = b.point(Point::new(0.3, 0.7), Label::NONE, Role::Given, n.clone());
+    let o = b.point(Point::new(0.3, 0.7), Role::Given, n.clone());
     let mut base = b
-        .line_dir(
-            &o,
-            Vector::new(1.0, 0.1),
-            Label::NONE,
-            Role::Given,
-            n.clone(),
-        )
+        .line_dir(&o, Vector::new(1.0, 0.1), Role::Given, n.clone())
         .unwrap();
     for (a, off) in angles.iter().zip(offsets) {
-        let p = b.point(Point::new(0.1, *off), Label::NONE, Role::Given, n.clone());
+        let p = b.point(Point::new(0.1, *off), Role::Given, n.clone());
         // Turned by `a` from the base line's first direction (0.1 rad up).
         let t = 0.1f64.atan() + a;
         let dir = Vector::new(t.cos(), t.sin());
-        let l = b
-            .line_dir(&p, dir, Label::NONE, Role::Construction, n.clone())
-            .unwrap();
+        let l = b.line_dir(&p, dir, Role::Construction, n.clone()).unwrap();
         let Ok(x) = b.meet_point(&base, &l, Label::NONE, n.clone()) else {
             break;
         };
-        let q = b.point(Point::new(-0.2, 1.3), Label::NONE, Role::Given, n.clone());
+        let q = b.point(Point::new(-0.2, 1.3), Role::Given, n.clone());
         base = b
-            .line_through(&q, &x, Label::NONE, Role::Construction, n.clone())
+            .line_through(&q, &x, Role::Construction, n.clone())
             .unwrap();
     }
     b

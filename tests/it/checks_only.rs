@@ -130,18 +130,13 @@ fn lengths_checked(n: usize, wrong: &[usize], every_check: bool) -> Board {
         ..BoardConfig::DRAWING
     });
     let note = Note::new("lengths", Topic::Custom("test"));
-    let o = b.point(
-        Point::new(0.0, 0.0),
-        Label::plain("O"),
-        Role::Given,
-        note.clone(),
-    );
+    let o = b.point(Point::new(0.0, 0.0), Role::Given.named("O"), note.clone());
     for i in 1..=n {
         b.set_context(|| format!("length {i}"));
         let at = Point::new(3.0 * i as f64, 4.0 * i as f64);
-        let a = b.point(at, Label::NONE, Role::Given, note.clone());
+        let a = b.point(at, Role::Given, note.clone());
         let x = b
-            .line_through(&o, &a, Label::NONE, Role::Construction, note.clone())
+            .line_through(&o, &a, Role::Construction, note.clone())
             .unwrap();
         let d = b.measure(&o, &a, &x, Scale::new(1.0, "mm"), Label::NONE, note.clone());
         let off = if wrong.contains(&i) { 1.0 } else { 0.0 };

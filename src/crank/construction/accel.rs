@@ -64,13 +64,8 @@ impl Builder<'_> {
                 tolle::balance(self.b, &ax, &c);
                 let pts = tolle::envelope(self.b, &c, ENVELOPE_PARTS);
                 if pts.len() >= 2 {
-                    self.b.curve(
-                        &pts,
-                        Trace::Smooth,
-                        Label::plain("b"),
-                        Role::Result,
-                        N_TOLLE_CURVE,
-                    );
+                    self.b
+                        .curve(&pts, Trace::Smooth, Role::Result.named("b"), N_TOLLE_CURVE);
                 }
                 curves.push(c);
             }

@@ -163,7 +163,7 @@ impl Builder<'_> {
         dead: H<Point>,
     ) -> Result<Position, ConstructionError> {
         let b = &mut *self.b;
-        let perp = b.perpendicular(&axis, &dead, Label::NONE, Role::Construction, N_PERP);
+        let perp = b.perpendicular(&axis, &dead, Role::Construction, N_PERP);
         // Upwards: the pin runs over the upper half on the outstroke.
         let up = if perp.g.dir.dot(&Vector::new(0.0, 1.0)) >= 0.0 {
             1.0
@@ -174,31 +174,22 @@ impl Builder<'_> {
             &dead,
             &perp,
             up * self.l,
-            Label::plain("B₁"),
-            Role::Construction,
+            Role::Construction.named("B₁"),
             N_B1,
         )?;
         let swing = b.circle(
             &o,
             (b1.g - o.g).norm(),
             Drawn::Marks,
-            Label::NONE,
             Role::Construction,
             N_SWING,
         )?;
         let bp = b.cut_line_circle(&axis, &swing, Branch::First, Label::plain("B"), N_B)?;
-        let arc = b.circle(
-            &bp,
-            self.l,
-            Drawn::Marks,
-            Label::NONE,
-            Role::Construction,
-            N_ROD_ARC,
-        )?;
+        let arc = b.circle(&bp, self.l, Drawn::Marks, Role::Construction, N_ROD_ARC)?;
         let a = b.cut_circle_circle(&circle, &arc, Branch::Near(b1.g), Label::plain("A"), N_A)?;
-        b.segment(&o, &a, Label::NONE, Role::Result, N_CRANK);
-        b.segment(&a, &bp, Label::NONE, Role::Result, N_CRANK);
-        let rod = b.line_through(&bp, &a, Label::NONE, Role::Construction, N_CRANK)?;
+        b.segment(&o, &a, Role::Result, N_CRANK);
+        b.segment(&a, &bp, Role::Result, N_CRANK);
+        let rod = b.line_through(&bp, &a, Role::Construction, N_CRANK)?;
         Ok((bp, a, rod))
     }
 
@@ -220,9 +211,9 @@ impl Builder<'_> {
             Label::plain("A"),
             N_A_INF,
         )?;
-        b.segment(&o, &a, Label::NONE, Role::Result, N_CRANK);
-        let rod = b.parallel(&axis, &a, Label::NONE, Role::Construction, N_ROD_INF);
-        let bp = b.lay_off(&a, &rod, -self.r, Label::NONE, Role::Result, N_ROD_INF)?;
+        b.segment(&o, &a, Role::Result, N_CRANK);
+        let rod = b.parallel(&axis, &a, Role::Construction, N_ROD_INF);
+        let bp = b.lay_off(&a, &rod, -self.r, Role::Result, N_ROD_INF)?;
         Ok((bp, a, rod))
     }
 
@@ -235,10 +226,10 @@ impl Builder<'_> {
         rod: H<Line>,
     ) -> Result<H<f64>, ConstructionError> {
         let b = &mut *self.b;
-        let ray = b.line_through(&o, &a, Label::NONE, Role::Construction, N_V)?;
+        let ray = b.line_through(&o, &a, Role::Construction, N_V)?;
         let v_mm = self.d.crank_pin_speed / self.scales.velocity_scale;
-        let e = b.lay_off(&o, &ray, v_mm, Label::NONE, Role::Velocity, N_V)?;
-        let par = b.parallel(&rod, &e, Label::NONE, Role::Auxiliary, N_PAR);
+        let e = b.lay_off(&o, &ray, v_mm, Role::Velocity, N_V)?;
+        let par = b.parallel(&rod, &e, Role::Auxiliary, N_PAR);
         let fpt = b.meet_point(&par, &vertical, Label::NONE, N_PAR)?;
         let scale = Scale {
             per_mm: self.scales.velocity_scale,

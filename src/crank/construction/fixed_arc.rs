@@ -60,42 +60,24 @@ impl Builder<'_> {
                 &x0,
                 &axis,
                 2.0 * self.r,
-                Label::plain("T₁"),
-                Role::Construction,
+                Role::Construction.named("T₁"),
                 N_OUTER,
             )?;
-            let a0 = self.b.circle(
-                &x0,
-                self.l,
-                Drawn::Marks,
-                Label::NONE,
-                Role::Construction,
-                N_ARC,
-            )?;
-            let a1 = self.b.circle(
-                &x1,
-                self.l,
-                Drawn::Marks,
-                Label::NONE,
-                Role::Construction,
-                N_ARC,
-            )?;
+            let a0 = self
+                .b
+                .circle(&x0, self.l, Drawn::Marks, Role::Construction, N_ARC)?;
+            let a1 = self
+                .b
+                .circle(&x1, self.l, Drawn::Marks, Role::Construction, N_ARC)?;
             Fixed::Arcs([a0, a1])
         } else {
-            let d1 = self.b.lay_off(
-                &dead,
-                &axis,
-                2.0 * self.r,
-                Label::NONE,
-                Role::Construction,
-                N_OUTER,
-            )?;
+            let d1 = self
+                .b
+                .lay_off(&dead, &axis, 2.0 * self.r, Role::Construction, N_OUTER)?;
             let l0 = self
                 .b
-                .perpendicular(&axis, &dead, Label::NONE, Role::Construction, N_LINE);
-            let l1 = self
-                .b
-                .perpendicular(&axis, &d1, Label::NONE, Role::Construction, N_LINE);
+                .perpendicular(&axis, &dead, Role::Construction, N_LINE);
+            let l1 = self.b.perpendicular(&axis, &d1, Role::Construction, N_LINE);
             Fixed::Lines([l0, l1])
         };
         self.fixed = Some(fixed);
@@ -120,9 +102,9 @@ impl Builder<'_> {
         let axis = self.frame()?.piston_line;
         let (stroke, phi) = cf::book_angle(theta);
         let k = (stroke == cf::Stroke::Return) as usize;
-        let horizontal =
-            self.b
-                .parallel(&axis, &pin, Label::NONE, Role::Construction, N_HORIZONTAL);
+        let horizontal = self
+            .b
+            .parallel(&axis, &pin, Role::Construction, N_HORIZONTAL);
         let label = Label::quiet("C", i as u32);
         let c = match fixed {
             // The branch towards the crank: the second point along the piston line.

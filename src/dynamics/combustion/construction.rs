@@ -107,8 +107,8 @@ pub fn construct(
 
 /// A base line over the developed cycle at `y`, from x = 0 to the right.
 fn base(b: &mut Board, y: f64, note: Note) -> Result<(H<Point>, H<Line>), ConstructionError> {
-    let start = b.point(Point::new(0.0, y), Label::NONE, Role::Axis, note.clone());
-    let line = b.line_dir(&start, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, note)?;
+    let start = b.point(Point::new(0.0, y), Role::Axis, note.clone());
+    let line = b.line_dir(&start, Vector::new(1.0, 0.0), Role::Axis, note)?;
     Ok((start, line))
 }
 
@@ -122,17 +122,10 @@ fn ordinate(
         start,
         line,
         at_mm,
-        Label::NONE,
         Role::Construction,
         n("the shaft angle on the developed cycle", None),
     )?;
-    let up = b.perpendicular(
-        line,
-        &foot,
-        Label::NONE,
-        Role::Construction,
-        n("ordinate", None),
-    );
+    let up = b.perpendicular(line, &foot, Role::Construction, n("ordinate", None));
     Ok((foot, up))
 }
 
@@ -170,16 +163,14 @@ fn force_diagram(
     b.curve(
         &gas_pts,
         Trace::Polygon,
-        Label::plain("a"),
-        Role::Result,
+        Role::Result.named("a"),
         n("the gas force over the cycle (a-a)", None),
     );
     if cyl.mass > 0.0 {
         b.curve(
             &res_pts,
             Trace::Polygon,
-            Label::plain("b"),
-            Role::Result,
+            Role::Result.named("b"),
             n("the resulting force over the cycle (b-b)", None),
         );
     }
@@ -206,7 +197,6 @@ fn force_ray(
         &foot,
         &up,
         p / dr.force_scale,
-        Label::NONE,
         Role::Force,
         n(
             "the gas force from the pressure above the atmosphere",
@@ -234,7 +224,6 @@ fn force_ray(
         &tip,
         &up,
         -mb / dr.force_scale,
-        Label::NONE,
         Role::Construction,
         n("the inertia M·b laid against it", Some("Massendruck")),
     )?;
@@ -334,7 +323,6 @@ fn turning_diagram(
             &foot,
             &up,
             r.turning / dr.force_scale,
-            Label::NONE,
             Role::Force,
             n(
                 "the cylinders’ tangential forces added on the ordinate",
@@ -364,8 +352,7 @@ fn turning_diagram(
     b.curve(
         &pts,
         Trace::Polygon,
-        Label::plain("T"),
-        Role::Result,
+        Role::Result.named("T"),
         n("the turning force over the cycle", Some("Drehkraftlinie")),
     );
     let mean = mean_of_ordinates(b, e, rows, (&ids, top));

@@ -72,18 +72,13 @@ impl Builder<'_> {
     /// The diagram: the sum of the cylinders' T at every shaft angle and at 360°, read off and
     /// checked against [`model::turning_force`]. Returns (θ, T) per shaft angle.
     pub(super) fn turning_diagram(&mut self) -> Result<Ordinates, ConstructionError> {
-        let o = self.b.point(
-            self.turning_origin(),
-            Label::plain("0"),
-            Role::Given,
-            N_AXIS_O,
-        );
+        let o = self
+            .b
+            .point(self.turning_origin(), Role::Given.named("0"), N_AXIS_O);
         let axis = self
             .b
-            .line_dir(&o, Vector::new(1.0, 0.0), Label::NONE, Role::Axis, N_AXIS)?;
-        let up = self
-            .b
-            .perpendicular(&axis, &o, Label::NONE, Role::Axis, N_ORD);
+            .line_dir(&o, Vector::new(1.0, 0.0), Role::Axis, N_AXIS)?;
+        let up = self.b.perpendicular(&axis, &o, Role::Axis, N_ORD);
         let frame = TurningFrame { o, axis, up };
         let n = self.thetas.len();
         let mut pts: Vec<H<Point>> = Vec::with_capacity(n + 1);
@@ -97,13 +92,8 @@ impl Builder<'_> {
             }
         }
         self.b.clear_context();
-        self.b.curve(
-            &pts,
-            Trace::Polygon,
-            Label::plain("T"),
-            Role::Result,
-            N_CURVE,
-        );
+        self.b
+            .curve(&pts, Trace::Polygon, Role::Result.named("T"), N_CURVE);
         self.mean_line(&frame, &out)?;
         Ok((out, ids))
     }
@@ -123,17 +113,15 @@ impl Builder<'_> {
         let arc = self.r_mm * theta.to_radians();
         let a = self
             .b
-            .lay_off(&fr.o, &fr.axis, arc, Label::NONE, Role::Construction, N_ARC)?;
+            .lay_off(&fr.o, &fr.axis, arc, Role::Construction, N_ARC)?;
         let ord = self
             .b
-            .perpendicular(&fr.axis, &a, Label::NONE, Role::Construction, N_ORD);
+            .perpendicular(&fr.axis, &a, Role::Construction, N_ORD);
         let mut end = a;
         for c in 0..self.e.cylinders.len() {
             let t = self.tangential[c].as_ref().map_or(0.0, |t| t[kk]);
             let len = self.e.efficiency * t / self.dr.force_scale;
-            end = self
-                .b
-                .lay_off(&end, &ord, len, Label::NONE, Role::Force, N_T_EACH)?;
+            end = self.b.lay_off(&end, &ord, len, Role::Force, N_T_EACH)?;
         }
         let sum = self
             .b
@@ -168,18 +156,14 @@ impl Builder<'_> {
             &fr.o,
             &fr.up,
             mean / self.dr.force_scale,
-            Label::plain("T_m"),
-            Role::Construction,
+            Role::Construction.named("T_m"),
             N_MEAN_AT,
         )?;
-        let line = self
-            .b
-            .parallel(&fr.axis, &m, Label::NONE, Role::Auxiliary, N_MEAN_LINE);
+        let line = self.b.parallel(&fr.axis, &m, Role::Auxiliary, N_MEAN_LINE);
         self.b.lay_off(
             &m,
             &line,
             self.r_mm * std::f64::consts::TAU,
-            Label::NONE,
             Role::Auxiliary,
             N_MEAN_LINE,
         )?;

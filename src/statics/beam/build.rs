@@ -190,16 +190,10 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
         let (beam, y0) = (self.beam, self.sy(0.0));
         let (x0, x1) = (self.sx(beam.ends[0]), self.sx(beam.ends[1]));
         let b = &mut *self.b;
-        let left = b.point(Point::new(x0, y0), Label::NONE, Role::Given, N_BEAM_START);
-        let axis = b.line_dir(
-            &left,
-            Vector::new(1.0, 0.0),
-            Label::NONE,
-            Role::Axis,
-            N_BEAM_AXIS,
-        )?;
-        let right = b.point(Point::new(x1, y0), Label::NONE, Role::Given, N_BEAM_END);
-        b.segment(&left, &right, Label::NONE, Role::Result, N_BEAM);
+        let left = b.point(Point::new(x0, y0), Role::Given, N_BEAM_START);
+        let axis = b.line_dir(&left, Vector::new(1.0, 0.0), Role::Axis, N_BEAM_AXIS)?;
+        let right = b.point(Point::new(x1, y0), Role::Given, N_BEAM_END);
+        b.segment(&left, &right, Role::Result, N_BEAM);
         let mut supports = Vec::new();
         let mut support_verticals = Vec::new();
         for (i, &x) in beam.supports.iter().enumerate() {
@@ -231,21 +225,14 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
         let b = &mut *self.b;
         let p = b.point(
             Point::new(xs, y0),
-            Label::plain(name),
-            Role::Given,
+            Role::Given.labelled(Label::plain(name)),
             N_SUPPORT,
         );
         let l = b_point(b, xs - SUPPORT_MM, yl, N_SUPPORT_SYMBOL);
         let r = b_point(b, xs + SUPPORT_MM, yl, N_SUPPORT_SYMBOL);
-        b.segment(&l, &r, Label::NONE, Role::Guide, N_SUPPORT_SYMBOL);
+        b.segment(&l, &r, Role::Guide, N_SUPPORT_SYMBOL);
         let down = Vector::new(0.0, -1.0);
-        let v = b.line_dir(
-            &p,
-            down,
-            Label::NONE,
-            Role::Construction,
-            N_SUPPORT_VERTICAL,
-        )?;
+        let v = b.line_dir(&p, down, Role::Construction, N_SUPPORT_VERTICAL)?;
         Ok((p, v))
     }
 
@@ -260,8 +247,7 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
         let down = Vector::new(0.0, -1.0);
         let at = self.b.point(
             Point::new(xs, y0),
-            Label::quiet("L", j as u32 + 1),
-            Role::Given,
+            Role::Given.labelled(Label::quiet("L", j as u32 + 1)),
             N_LOAD,
         );
         let ends = match f.kind {
@@ -269,15 +255,15 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
                 let y = self.sy(ARROW_MM * f.p.signum());
                 let b = &mut *self.b;
                 let label = Label::indexed("P", i as u32 + 1);
-                let tail = b.point(Point::new(xs, y), label, Role::Given, N_LOAD_ARROW);
-                b.segment(&tail, &at, Label::NONE, Role::Force, N_LOAD_ARROW);
+                let tail = b.point(Point::new(xs, y), Role::Given.labelled(label), N_LOAD_ARROW);
+                b.segment(&tail, &at, Role::Force, N_LOAD_ARROW);
                 None
             }
             Kind::Uniform(i) => Some(self.draw_uniform(i, &at)?),
         };
         let v = self
             .b
-            .line_dir(&at, down, Label::NONE, Role::Construction, N_LOAD_VERTICAL)?;
+            .line_dir(&at, down, Role::Construction, N_LOAD_VERTICAL)?;
         Ok((v, ends))
     }
 
@@ -305,21 +291,20 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
             .collect();
         let ytail = self.sy(ARROW_MM * 1.4);
         let b = &mut *self.b;
-        let a = b.point(corners[0], Label::NONE, Role::Given, N_UNIFORM);
-        let bb = b.point(corners[3], Label::NONE, Role::Given, N_UNIFORM);
+        let a = b.point(corners[0], Role::Given, N_UNIFORM);
+        let bb = b.point(corners[3], Role::Given, N_UNIFORM);
         let q = Label::indexed("q", i as u32 + 1);
-        b.curve(&outline, Trace::Polygon, q, Role::Given, N_UNIFORM);
+        b.curve(&outline, Trace::Polygon, Role::Given.labelled(q), N_UNIFORM);
         let label = Label::indexed("Q", i as u32 + 1);
         let tail = b.point(
             Point::new(at.g.x, ytail),
-            label,
-            Role::Given,
+            Role::Given.labelled(label),
             N_UNIFORM_RESULTANT,
         );
-        b.segment(&tail, at, Label::NONE, Role::Auxiliary, N_UNIFORM_RESULTANT);
+        b.segment(&tail, at, Role::Auxiliary, N_UNIFORM_RESULTANT);
         let down = Vector::new(0.0, -1.0);
-        let va = b.line_dir(&a, down, Label::NONE, Role::Construction, N_END_VERTICAL)?;
-        let vb = b.line_dir(&bb, down, Label::NONE, Role::Construction, N_END_VERTICAL)?;
+        let va = b.line_dir(&a, down, Role::Construction, N_END_VERTICAL)?;
+        let vb = b.line_dir(&bb, down, Role::Construction, N_END_VERTICAL)?;
         Ok((va, vb))
     }
 
@@ -342,16 +327,21 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
         let b = &mut *self.b;
         let p0 = b.point(
             Point::new(x_fp, top),
-            Label::plain("0"),
-            Role::Given,
+            Role::Given.named("0"),
             N_LOAD_LINE_START,
         );
         let down = Vector::new(0.0, -1.0);
-        let load_line = b.line_dir(&p0, down, Label::NONE, Role::Construction, N_LOAD_LINE)?;
+        let load_line = b.line_dir(&p0, down, Role::Construction, N_LOAD_LINE)?;
         let mut pts = vec![p0];
         for (j, f) in self.forces.iter().enumerate() {
             let label = Label::indexed("", j as u32 + 1);
-            let next = b.lay_off(&pts[j], &load_line, f.p / fs, label, Role::Force, N_LAY_OFF)?;
+            let next = b.lay_off(
+                &pts[j],
+                &load_line,
+                f.p / fs,
+                Role::Force.labelled(label),
+                N_LAY_OFF,
+            )?;
             pts.push(next);
         }
         let pole_at = Point::new(
@@ -380,8 +370,7 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
                 .min(self.beam.supports[0]);
             let start = self.b.point(
                 Point::new(self.sx(x_first), y_f),
-                Label::plain("I"),
-                Role::Given,
+                Role::Given.named("I"),
                 N_START,
             );
             let s = polygon::strings(self.b, &rays, &start, false, StringStyle::RESULT, |_, j| {
@@ -430,15 +419,8 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
         for (i, s) in supports.iter().enumerate() {
             let r = if i == 0 { a_val.g } else { b_val.g };
             let len = ARROW_MM * r.signum();
-            let tail = b.lay_off(
-                s,
-                &sv[i],
-                len,
-                Label::NONE,
-                Role::Construction,
-                N_REACTION_ARROW,
-            )?;
-            b.segment(&tail, s, Label::NONE, Role::Force, N_REACTION_ARROW);
+            let tail = b.lay_off(s, &sv[i], len, Role::Construction, N_REACTION_ARROW)?;
+            b.segment(&tail, s, Role::Force, N_REACTION_ARROW);
         }
         let r = Reacted {
             ia,
@@ -514,8 +496,7 @@ fn polygon_forces(beam: &Beam) -> Vec<Force> {
 pub(super) fn b_point(b: &mut Board, x: f64, y: f64, note: crate::protocol::Note) -> H<Point> {
     b.point(
         Point::new(x, y),
-        crate::protocol::Label::NONE,
-        crate::protocol::Role::Given,
+        crate::protocol::Role::Given.labelled(crate::protocol::Label::NONE),
         note,
     )
 }

@@ -119,38 +119,30 @@ fn draw_stringers(b: &mut Board, beam: &Beam, panel_points: &[f64], dr: &BeamDra
     // Stringers and cross beams above the beam, the given loads on the stringers.
     let mut tops = Vec::new();
     for &x in panel_points {
-        let foot = b.point(
-            Point::new(sx(x), oy),
-            Label::NONE,
-            Role::Given,
-            N_CROSS_BEAM,
-        );
+        let foot = b.point(Point::new(sx(x), oy), Role::Given, N_CROSS_BEAM);
         let top = b.point(
             Point::new(sx(x), oy + STRINGER_MM),
-            Label::NONE,
             Role::Given,
             N_CROSS_BEAM,
         );
-        b.segment(&foot, &top, Label::NONE, Role::Given, N_CROSS_BEAM);
+        b.segment(&foot, &top, Role::Given, N_CROSS_BEAM);
         tops.push(top);
     }
     for w in tops.windows(2) {
-        b.segment(&w[0], &w[1], Label::NONE, Role::Given, N_STRINGER);
+        b.segment(&w[0], &w[1], Role::Given, N_STRINGER);
     }
     for l in &beam.point_loads {
         let at = b.point(
             Point::new(sx(l.x), oy + STRINGER_MM),
-            Label::NONE,
             Role::Given,
             N_PANEL_LOAD,
         );
         let tail = b.point(
             Point::new(sx(l.x), oy + STRINGER_MM + ARROW_MM * l.p.signum()),
-            Label::NONE,
             Role::Given,
             N_PANEL_LOAD,
         );
-        b.segment(&tail, &at, Label::NONE, Role::Force, N_PANEL_LOAD);
+        b.segment(&tail, &at, Role::Force, N_PANEL_LOAD);
     }
     for (i, u) in beam.uniform_loads.iter().enumerate() {
         let h = 0.5 * ARROW_MM;
@@ -164,8 +156,7 @@ fn draw_stringers(b: &mut Board, beam: &Beam, panel_points: &[f64], dr: &BeamDra
         b.curve(
             &outline,
             Trace::Polygon,
-            Label::indexed("q", i as u32 + 1),
-            Role::Given,
+            Role::Given.labelled(Label::indexed("q", i as u32 + 1)),
             N_PANEL_LOAD,
         );
     }

@@ -40,7 +40,7 @@ impl BeamConstruction<'_, '_> {
         let (scale, mref, cf) = (self.moment_scale, self.mref, &self.cf);
         let b = &mut *self.b;
         let z = b.meet_point(&refl, vertical, Label::NONE, N_REF_AT)?;
-        b.segment(poly, &z, Label::NONE, Role::Construction, N_ORDINATE);
+        b.segment(poly, &z, Role::Construction, N_ORDINATE);
         let up = H {
             id: vertical.id,
             g: Line {
@@ -131,31 +131,12 @@ impl BeamConstruction<'_, '_> {
         let d2 = b.divide_segment(&corner, &t2, m, "u", N_DIVIDE_TANGENT);
         let mut points = vec![t1];
         for kk in 1..m {
-            let join = b.line_through(
-                &d1[kk],
-                &d2[kk],
-                Label::NONE,
-                Role::Construction,
-                N_ENVELOPE,
-            )?;
+            let join = b.line_through(&d1[kk], &d2[kk], Role::Construction, N_ENVELOPE)?;
             let len = (d2[kk].g - d1[kk].g).norm() * kk as f64 / m as f64;
-            points.push(b.lay_off(
-                &d1[kk],
-                &join,
-                len,
-                Label::NONE,
-                Role::Construction,
-                N_TOUCH,
-            )?);
+            points.push(b.lay_off(&d1[kk], &join, len, Role::Construction, N_TOUCH)?);
         }
         points.push(t2);
-        b.curve(
-            &points,
-            Trace::Smooth,
-            Label::NONE,
-            Role::Result,
-            N_PARABOLA,
-        );
+        b.curve(&points, Trace::Smooth, Role::Result, N_PARABOLA);
         let u = self.beam.uniform_loads[i];
         for (kk, pt) in points.iter().enumerate() {
             let x = u.from + (u.to - u.from) * kk as f64 / m as f64;
@@ -182,7 +163,7 @@ impl BeamConstruction<'_, '_> {
     pub(super) fn section_vertical(&mut self, pt: &H<Point>) -> H<Line> {
         let axis = self.drawn().0.axis;
         self.b
-            .perpendicular(&axis, pt, Label::NONE, Role::Auxiliary, N_SECTION_VERTICAL)
+            .perpendicular(&axis, pt, Role::Auxiliary, N_SECTION_VERTICAL)
     }
 
     /// The moment at a section asked for besides the loads and supports (LH Abb. 24, section
@@ -202,9 +183,13 @@ impl BeamConstruction<'_, '_> {
         let at = Point::new(self.sx(x), self.sy(0.0));
         let s = self.drawn().2.strings[self.string_at(x)];
         let b = &mut *self.b;
-        let on = b.point(at, Label::quiet("x", 0), Role::Given, N_SECTION_VERTICAL);
+        let on = b.point(
+            at,
+            Role::Given.labelled(Label::quiet("x", 0)),
+            N_SECTION_VERTICAL,
+        );
         let d = Vector::new(0.0, -1.0);
-        let vertical = b.line_dir(&on, d, Label::NONE, Role::Auxiliary, N_SECTION_VERTICAL)?;
+        let vertical = b.line_dir(&on, d, Role::Auxiliary, N_SECTION_VERTICAL)?;
         let poly = b.meet_point(&s, &vertical, Label::NONE, N_POLY_AT)?;
         let m = self.moment_at(x, &poly, &vertical)?;
         self.push_section(x, "x".into(), m);

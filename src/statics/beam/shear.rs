@@ -79,9 +79,9 @@ impl BeamConstruction<'_, '_> {
         let v_max = self.ra.abs().max(self.rb.abs()).max(self.total.abs()) / fs;
         let at = Point::new(self.sx(self.beam.ends[0]), lowest - GAP_MM - v_max);
         let b = &mut *self.b;
-        let base0 = b.point(at, Label::plain("V"), Role::Given, N_SHEAR_BASE_START);
+        let base0 = b.point(at, Role::Given.named("V"), N_SHEAR_BASE_START);
         let x = Vector::new(1.0, 0.0);
-        let base = b.line_dir(&base0, x, Label::NONE, Role::Axis, N_SHEAR_BASE)?;
+        let base = b.line_dir(&base0, x, Role::Axis, N_SHEAR_BASE)?;
         Ok((base0, base))
     }
 
@@ -127,13 +127,9 @@ impl BeamConstruction<'_, '_> {
             let (sx, sy) = (self.sx(x), self.sy(0.0));
             let on_beam = b_point(self.b, sx, sy, N_SHEAR_FOOT);
             let down = Vector::new(0.0, -1.0);
-            let foot_v = self.b.line_dir(
-                &on_beam,
-                down,
-                Label::NONE,
-                Role::Auxiliary,
-                N_SECTION_VERTICAL,
-            )?;
+            let foot_v = self
+                .b
+                .line_dir(&on_beam, down, Role::Auxiliary, N_SECTION_VERTICAL)?;
             let foot = self
                 .b
                 .meet_point(&foot_v, &base, Label::NONE, N_SHEAR_FOOT)?;
@@ -158,21 +154,20 @@ impl BeamConstruction<'_, '_> {
             };
             let fs = self.dr.force_scale;
             for v in [left, right] {
-                let o = self.b.lay_off(
-                    &foot,
-                    &up,
-                    v / fs,
-                    Label::NONE,
-                    Role::Construction,
-                    N_SHEAR_ORDINATE,
-                )?;
+                let o = self
+                    .b
+                    .lay_off(&foot, &up, v / fs, Role::Construction, N_SHEAR_ORDINATE)?;
                 ordinates.push(o);
             }
             rows.push(ShearRow { x, left, right });
         }
         let v = Label::plain("V");
-        self.b
-            .curve(&ordinates, Trace::Polygon, v, Role::Result, N_SHEAR_DIAGRAM);
+        self.b.curve(
+            &ordinates,
+            Trace::Polygon,
+            Role::Result.labelled(v),
+            N_SHEAR_DIAGRAM,
+        );
         self.shear_diagram = Some(ShearDiagram {
             base0,
             base,
@@ -252,7 +247,7 @@ impl BeamConstruction<'_, '_> {
         let (pa, pb) = (d.ordinates[2 * ea + 1], d.ordinates[2 * eb]);
         let metres = Scale::new(1.0 / self.k, "m");
         let b = &mut *self.b;
-        let sl = b.line_through(&pa, &pb, Label::NONE, Role::Construction, N_SHEAR_ZERO)?;
+        let sl = b.line_through(&pa, &pb, Role::Construction, N_SHEAR_ZERO)?;
         let z = b.meet_point(&sl, &d.base, Label::plain("x0"), N_SHEAR_ZERO)?;
         let xm = b.measure(&d.base0, &z, &d.base, metres, Label::NONE, N_SHEAR_ZERO_X);
         let x0 = self.beam.ends[0] + xm.g;
@@ -276,27 +271,13 @@ impl BeamConstruction<'_, '_> {
         let (t1, d, t2) = (p.t1, p.corner, p.t2);
         let (con, aux) = (Role::Construction, Role::Auxiliary);
         let b = &mut *self.b;
-        let l1 = b.line_through(&t1, &d, Label::NONE, aux, N_RATIO_1)?;
-        let q1 = b.lay_off(
-            &t1,
-            &l1,
-            t * (d.g - t1.g).norm(),
-            Label::NONE,
-            con,
-            N_RATIO_1,
-        )?;
-        let l2 = b.line_through(&d, &t2, Label::NONE, aux, N_RATIO_2)?;
-        let q2 = b.lay_off(
-            &d,
-            &l2,
-            t * (t2.g - d.g).norm(),
-            Label::NONE,
-            con,
-            N_RATIO_2,
-        )?;
-        let lj = b.line_through(&q1, &q2, Label::NONE, con, N_RATIO_JOIN)?;
+        let l1 = b.line_through(&t1, &d, aux, N_RATIO_1)?;
+        let q1 = b.lay_off(&t1, &l1, t * (d.g - t1.g).norm(), con, N_RATIO_1)?;
+        let l2 = b.line_through(&d, &t2, aux, N_RATIO_2)?;
+        let q2 = b.lay_off(&d, &l2, t * (t2.g - d.g).norm(), con, N_RATIO_2)?;
+        let lj = b.line_through(&q1, &q2, con, N_RATIO_JOIN)?;
         let len = t * (q2.g - q1.g).norm();
-        b.lay_off(&q1, &lj, len, Label::plain("M"), con, N_RATIO_POINT)
+        b.lay_off(&q1, &lj, len, con.named("M"), N_RATIO_POINT)
     }
 }
 

@@ -102,9 +102,9 @@ fn lever_arm(
     (m1, m2): (f64, f64),
     (dist, m_per_mm): (f64, f64),
 ) -> Result<f64, ConstructionError> {
-    let r_line = b.parallel(&partial[0].along, x, Label::NONE, Role::Result, N_AUX_LINE);
+    let r_line = b.parallel(&partial[0].along, x, Role::Result, N_AUX_LINE);
     let (a1, a2) = (partial[0].at, partial[1].at);
-    let join = b.line_through(&a1, &a2, Label::NONE, Role::Construction, N_AUX_FOOT)?;
+    let join = b.line_through(&a1, &a2, Role::Construction, N_AUX_FOOT)?;
     let c = b.meet_point(&r_line, &join, Label::plain("R"), N_AUX_FOOT)?;
     let metres = Scale::new(m_per_mm, "m");
     let a = b.measure(&a1, &c, &join, metres, Label::quiet("a", 0), N_AUX_A);
@@ -143,26 +143,18 @@ fn partial_resultant(
     let at = Point::new(f.at.x * k, f.at.y * k);
     let a = b.point(
         at,
-        Label::indexed("K", i as u32 + 1),
-        Role::Given,
+        Role::Given.labelled(Label::indexed("K", i as u32 + 1)),
         N_APPLICATION,
     );
-    let along = b.line_dir(&a, dir, Label::NONE, Role::Construction, N_LINE)?;
+    let along = b.line_dir(&a, dir, Role::Construction, N_LINE)?;
     let fv = f.f;
-    let e = b.lay_off(
-        &a,
-        &along,
-        fv.dot(&dir) / fs,
-        Label::NONE,
-        Role::Force,
-        N_AUX_FORCE,
-    )?;
-    let cross_line = b.line_dir(&a, across, Label::NONE, Role::Auxiliary, N_AUX)?;
-    let h = b.lay_off(&a, &cross_line, aux / fs, Label::NONE, Role::Force, N_AUX)?;
-    let p1 = b.parallel(&cross_line, &e, Label::NONE, Role::Auxiliary, N_AUX_PAR);
-    let p2 = b.parallel(&along, &h, Label::NONE, Role::Auxiliary, N_AUX_PAR);
+    let e = b.lay_off(&a, &along, fv.dot(&dir) / fs, Role::Force, N_AUX_FORCE)?;
+    let cross_line = b.line_dir(&a, across, Role::Auxiliary, N_AUX)?;
+    let h = b.lay_off(&a, &cross_line, aux / fs, Role::Force, N_AUX)?;
+    let p1 = b.parallel(&cross_line, &e, Role::Auxiliary, N_AUX_PAR);
+    let p2 = b.parallel(&along, &h, Role::Auxiliary, N_AUX_PAR);
     let r_end = b.meet_point(&p1, &p2, Label::NONE, N_AUX_PAR)?;
-    let r_part = b.line_through(&a, &r_end, Label::NONE, Role::Construction, N_AUX_R)?;
+    let r_part = b.line_through(&a, &r_end, Role::Construction, N_AUX_R)?;
     Ok(Partial {
         at: a,
         along,

@@ -11,15 +11,15 @@
 //! let mut b = Board::recording();
 //! let n = Note::new("given", Topic::Loads);
 //! let down = Vector::new(0.0, -1.0);
-//! let a1 = b.point(Point::new(0.0, 0.0), Label::NONE, Role::Given, n.clone());
-//! let a2 = b.point(Point::new(3.0, 0.0), Label::NONE, Role::Given, n.clone());
+//! let a1 = b.point(Point::new(0.0, 0.0), Role::Given, n.clone());
+//! let a2 = b.point(Point::new(3.0, 0.0), Role::Given, n.clone());
 //! let lines = [
-//!     b.line_dir(&a1, down, Label::NONE, Role::Construction, n.clone())?,
-//!     b.line_dir(&a2, down, Label::NONE, Role::Construction, n.clone())?,
+//!     b.line_dir(&a1, down, Role::Construction, n.clone())?,
+//!     b.line_dir(&a2, down, Role::Construction, n.clone())?,
 //! ];
 //! let plan: Vec<_> = [20.0, 10.0, -10.0]
 //!     .iter()
-//!     .map(|&y| b.point(Point::new(10.0, y), Label::NONE, Role::Given, n.clone()))
+//!     .map(|&y| b.point(Point::new(10.0, y), Role::Given, n.clone()))
 //!     .collect();
 //! let rays = pole_and_rays(&mut b, Point::new(25.0, 0.0), &plan)?;
 //! let s = strings(&mut b, &rays.rays, &a1, true, StringStyle::RESULT, |_, j| Ok(lines[j]))?;
@@ -83,11 +83,11 @@ pub fn pole_and_rays(
     pole_at: Point,
     corners: &[H<Point>],
 ) -> Result<Rays, ConstructionError> {
-    let pole = b.point(pole_at, Label::plain("O"), Role::Given, N_POLE);
+    let pole = b.point(pole_at, Role::Given.named("O"), N_POLE);
     let mut rays = Vec::with_capacity(corners.len());
     for (i, p) in corners.iter().enumerate() {
         let ray = b
-            .line_through(&pole, p, Label::NONE, Role::Construction, N_RAY)
+            .line_through(&pole, p, Role::Construction, N_RAY)
             .map_err(|_| {
                 ConstructionError::unsupported(
                     "pole",
@@ -148,7 +148,7 @@ pub fn strings(
     let n = rays.len().saturating_sub(1);
     let mut strings = Vec::with_capacity(n + 1);
     let mut corners = Vec::with_capacity(n);
-    strings.push(b.parallel(&rays[0], start, Label::NONE, style.role, N_STRING));
+    strings.push(b.parallel(&rays[0], start, style.role, N_STRING));
     for j in 0..n {
         let corner = if j == 0 && start_on_first {
             *start
@@ -166,7 +166,7 @@ pub fn strings(
                 })?
         };
         corners.push(corner);
-        strings.push(b.parallel(&rays[j + 1], &corner, Label::NONE, style.role, N_STRING));
+        strings.push(b.parallel(&rays[j + 1], &corner, style.role, N_STRING));
     }
     Ok(Strings { strings, corners })
 }
@@ -193,8 +193,8 @@ pub fn closing(
     role: Role,
     ray_role: Role,
 ) -> Result<Closing, ConstructionError> {
-    let line = b.line_through(a, z, label, role, N_CLOSING)?;
-    let ray = b.parallel(&line, pole, Label::NONE, ray_role, N_CLOSING_RAY);
+    let line = b.line_through(a, z, role.labelled(label), N_CLOSING)?;
+    let ray = b.parallel(&line, pole, ray_role, N_CLOSING_RAY);
     Ok(Closing { line, ray })
 }
 
@@ -206,7 +206,6 @@ mod tests {
     fn given(b: &mut Board, x: f64, y: f64) -> H<Point> {
         b.point(
             Point::new(x, y),
-            Label::NONE,
             Role::Given,
             Note::new("given", Topic::Loads),
         )
@@ -233,22 +232,10 @@ mod tests {
         let r = pole_and_rays(&mut b, Point::new(20.0, 0.0), &c).unwrap();
         let a = given(&mut b, 0.0, 0.0);
         let horizontal = b
-            .line_dir(
-                &a,
-                Vector::new(1.0, 0.0),
-                Label::NONE,
-                Role::Given,
-                N_STRING,
-            )
+            .line_dir(&a, Vector::new(1.0, 0.0), Role::Given, N_STRING)
             .unwrap();
         let vertical = b
-            .line_dir(
-                &a,
-                Vector::new(0.0, 1.0),
-                Label::NONE,
-                Role::Given,
-                N_STRING,
-            )
+            .line_dir(&a, Vector::new(0.0, 1.0), Role::Given, N_STRING)
             .unwrap();
         let lines = [vertical, horizontal];
         let e = strings(&mut b, &r.rays, &a, true, StringStyle::RESULT, |_, j| {

@@ -148,12 +148,8 @@ fn build(
         ),
     };
     let rays = polygon::pole_and_rays(s.b, pole_at, &poly.pts)?;
-    let start = s.b.point(
-        lines[0].g.origin,
-        Label::plain("I"),
-        Role::Given,
-        N_STRING_START,
-    );
+    let start =
+        s.b.point(lines[0].g.origin, Role::Given.named("I"), N_STRING_START);
     let strings = polygon::strings(
         s.b,
         &rays.rays,
@@ -202,14 +198,17 @@ impl System<'_, '_> {
             let b = &mut *self.b;
             let a = b.point(
                 at,
-                Label::quiet("a", i as u32 + 1),
-                Role::Given,
+                Role::Given.labelled(Label::quiet("a", i as u32 + 1)),
                 N_APPLICATION,
             );
             let label = Label::indexed("F", i as u32 + 1);
-            let tail = b.point(a.g - v * (ARROW_MM / len), label, Role::Given, N_ARROW);
-            b.segment(&tail, &a, Label::NONE, Role::Force, N_ARROW);
-            lines.push(b.line_dir(&a, v, Label::NONE, Role::Construction, N_LINE)?);
+            let tail = b.point(
+                a.g - v * (ARROW_MM / len),
+                Role::Given.labelled(label),
+                N_ARROW,
+            );
+            b.segment(&tail, &a, Role::Force, N_ARROW);
+            lines.push(b.line_dir(&a, v, Role::Construction, N_LINE)?);
             xmax = xmax.max(a.g.x);
         }
         Ok((lines, xmax))
@@ -228,23 +227,28 @@ impl System<'_, '_> {
             None => Point::new(xmax + GAP_MM + self.fmax / fs, 0.0),
         };
         let b = &mut *self.b;
-        let p0 = b.point(origin, Label::plain("0"), Role::Given, N_START);
+        let p0 = b.point(origin, Role::Given.named("0"), N_START);
         let mut pts = vec![p0];
         for (i, f) in self.forces.iter().enumerate() {
             let prev = pts[i];
-            let dir = b.parallel(&lines[i], &prev, Label::NONE, Role::Auxiliary, N_DIRECTION);
+            let dir = b.parallel(&lines[i], &prev, Role::Auxiliary, N_DIRECTION);
             let len = f.f.x.hypot(f.f.y) / fs;
             let label = Label::indexed("", i as u32 + 1);
-            pts.push(b.lay_off(&prev, &dir, len, label, Role::Force, N_LAY_OFF)?);
+            pts.push(b.lay_off(&prev, &dir, len, Role::Force.labelled(label), N_LAY_OFF)?);
         }
         let end = pts[self.forces.len()];
         let r_len = (end.g - p0.g).norm();
         let tol = b.tolerance().length;
         let (aux, none) = (Role::Auxiliary, Label::NONE);
-        let axis_x = b.line_dir(&p0, Vector::new(1.0, 0.0), none.clone(), aux, N_AXIS_X)?;
-        let axis_y = b.line_dir(&p0, Vector::new(0.0, 1.0), none, aux, N_AXIS_Y)?;
+        let axis_x = b.line_dir(
+            &p0,
+            Vector::new(1.0, 0.0),
+            aux.labelled(none.clone()),
+            N_AXIS_X,
+        )?;
+        let axis_y = b.line_dir(&p0, Vector::new(0.0, 1.0), aux.labelled(none), N_AXIS_Y)?;
         if r_len > tol {
-            b.segment(&p0, &end, Label::plain("R"), Role::Force, N_RESULTANT);
+            b.segment(&p0, &end, Role::Force.named("R"), N_RESULTANT);
         }
         let (kg, unit, fmax, r_cf) = (self.kg, self.dr.unit, self.fmax, self.r_cf);
         let rx = b.measure(&p0, &end, &axis_x, kg, Label::quiet("Rx", 0), N_RX);
@@ -335,10 +339,10 @@ impl System<'_, '_> {
         let (mref, m_cf) = (self.fmax * self.reach, self.m_cf);
         let b = &mut *self.b;
         // The direction of R in the force plan, carried over through X.
-        let r_dir = b.line_through(&p0, &end, Label::NONE, Role::Auxiliary, N_RESULTANT)?;
-        let r_line = b.parallel(&r_dir, x, Label::NONE, Role::Result, N_R_LINE);
-        let o = b.point(Point::origin(), Label::NONE, Role::Given, N_R_MOMENT);
-        let foot = b.foot(&r_line, &o, Label::NONE, Role::Construction, N_R_MOMENT);
+        let r_dir = b.line_through(&p0, &end, Role::Auxiliary, N_RESULTANT)?;
+        let r_line = b.parallel(&r_dir, x, Role::Result, N_R_LINE);
+        let o = b.point(Point::origin(), Role::Given, N_R_MOMENT);
+        let foot = b.foot(&r_line, &o, Role::Construction, N_R_MOMENT);
         let normal = H {
             id: r_line.id,
             g: Line {
@@ -371,13 +375,7 @@ impl System<'_, '_> {
         let (k, fs) = (self.k, self.dr.force_scale);
         let (mref, m_cf) = (self.fmax * self.reach, self.m_cf);
         let b = &mut *self.b;
-        let foot = b.foot(
-            &strings[n],
-            start,
-            Label::NONE,
-            Role::Construction,
-            N_COUPLE_FOOT,
-        );
+        let foot = b.foot(&strings[n], start, Role::Construction, N_COUPLE_FOOT);
         let ray0 = (poly.pts[0].g - pole.g).norm();
         let normal = H {
             id: strings[0].id,
@@ -427,8 +425,8 @@ impl System<'_, '_> {
         let (kg, unit, fmax) = (self.kg, self.dr.unit, self.fmax);
         let b = &mut *self.b;
         let aux = Role::Auxiliary;
-        let l1 = b.line_dir(&tail, Vector::new(c1, s1), Label::NONE, aux, N_RESOLVE_LINE)?;
-        let l2 = b.line_dir(&head, Vector::new(c2, s2), Label::NONE, aux, N_RESOLVE_LINE)?;
+        let l1 = b.line_dir(&tail, Vector::new(c1, s1), aux, N_RESOLVE_LINE)?;
+        let l2 = b.line_dir(&head, Vector::new(c2, s2), aux, N_RESOLVE_LINE)?;
         let cpt = b
             .meet_point(&l1, &l2, Label::quiet("K", j as u32), N_RESOLVE_CUT)
             .map_err(|_| {
@@ -451,8 +449,8 @@ impl System<'_, '_> {
         if let Some(e) = exact {
             b.check(&k2, second, unit, "2×2 solve", fmax, || e.second);
         }
-        b.segment(&tail, &cpt, Label::NONE, Role::Force, N_COMPONENT);
-        b.segment(&cpt, &head, Label::NONE, Role::Force, N_COMPONENT);
+        b.segment(&tail, &cpt, Role::Force, N_COMPONENT);
+        b.segment(&cpt, &head, Role::Force, N_COMPONENT);
         Ok(Components {
             first: k1.g,
             second: k2.g,

@@ -258,56 +258,23 @@ fn at_the_dead_positions_the_circles_touch() {
             graphostatik::protocol::Topic::Custom("test"),
         );
         let mut b = Board::recording();
-        let o = b.point(Point::origin(), Label::NONE, Role::Given, note.clone());
-        let a = b.point(
-            Point::new(fb.frame, 0.0),
-            Label::NONE,
-            Role::Given,
-            note.clone(),
-        );
+        let o = b.point(Point::origin(), Role::Given, note.clone());
+        let a = b.point(Point::new(fb.frame, 0.0), Role::Given, note.clone());
         let crank = b
-            .circle(
-                &o,
-                fb.crank,
-                Drawn::Whole,
-                Label::NONE,
-                Role::Given,
-                note.clone(),
-            )
+            .circle(&o, fb.crank, Drawn::Whole, Role::Given, note.clone())
             .unwrap();
         let rock = b
-            .circle(
-                &a,
-                fb.rocker,
-                Drawn::Whole,
-                Label::NONE,
-                Role::Given,
-                note.clone(),
-            )
+            .circle(&a, fb.rocker, Drawn::Whole, Role::Given, note.clone())
             .unwrap();
         let arc = b
-            .circle(
-                &o,
-                reach,
-                Drawn::Marks,
-                Label::NONE,
-                Role::Given,
-                note.clone(),
-            )
+            .circle(&o, reach, Drawn::Marks, Role::Given, note.clone())
             .unwrap();
         let dead = b
             .cut_circle_circle(&arc, &rock, Branch::Second, Label::NONE, note.clone())
             .unwrap();
         assert!(!b.last_cut_touched());
         let coupler = b
-            .circle(
-                &dead,
-                fb.coupler,
-                Drawn::Marks,
-                Label::NONE,
-                Role::Given,
-                note.clone(),
-            )
+            .circle(&dead, fb.coupler, Drawn::Marks, Role::Given, note.clone())
             .unwrap();
         let pin = b
             .cut_circle_circle(&coupler, &crank, Branch::Second, Label::NONE, note)
