@@ -55,14 +55,29 @@ impl SinCos {
     }
 }
 
-/// `deg.rem_euclid(360.0)`, the same bits, without the division where the angle is in
-/// [0°, 360°) already (as nearly every angle of a construction is): `fmod` was 2 % of the
-/// crank construction's instructions.
+/// The angle in [0°, 360°): `deg.rem_euclid(360.0)`, without the division where the angle is
+/// in range already (as nearly every angle of a construction is: `fmod` was 2 % of the crank
+/// construction's instructions), and never 360° itself, which `rem_euclid` gives for a tiny
+/// negative angle (−1e-15° rounds to 360°, and the quadrant reduction of [`sin_cos_deg`]
+/// then read it as 270°).
+///
+/// ```
+/// use graphostatik::kernel::angle::{sin_cos_deg, wrap_360};
+/// assert_eq!(wrap_360(-1e-15), 0.0);
+/// assert_eq!(wrap_360(-90.0), 270.0);
+/// let (s, c) = sin_cos_deg(-1e-15);
+/// assert!(s.abs() < 1e-16 && c == 1.0);
+/// ```
 #[inline]
 pub fn wrap_360(deg: f64) -> f64 {
     if (0.0..360.0).contains(&deg) {
         deg
     } else {
-        deg.rem_euclid(360.0)
+        let r = deg.rem_euclid(360.0);
+        if r < 360.0 {
+            r
+        } else {
+            0.0
+        }
     }
 }
