@@ -127,6 +127,9 @@ pub struct Board {
     extent: Option<[f64; 4]>,
     #[serde(skip)]
     context: Option<std::sync::Arc<str>>,
+    /// The part of the figure the next steps draw in.
+    #[serde(skip)]
+    part: Part,
     #[serde(skip)]
     next_step: u32,
     /// Whether the last cut found only one double point (a tangency).
@@ -237,6 +240,7 @@ impl Board {
             extent: None,
             recording,
             context: None,
+            part: Part::default(),
             next_step: 0,
             last_touched: false,
             model: config.model,
@@ -587,6 +591,31 @@ impl Board {
         }
     }
 
+    /// Sets the part of the figure the following steps draw in ([`Part`]): the sheet layout
+    /// sets the parts out in rows and columns.
+    pub fn set_part(&mut self, part: Part) {
+        self.part = part;
+    }
+
+    /// The part the next steps draw in.
+    pub fn part(&self) -> Part {
+        self.part
+    }
+
+    /// Moves each part's drawing on the sheet by `by(part)`: the sheet layout. The steps,
+    /// numbers and checks stay as they are; only where the objects are drawn changes.
+    pub fn move_parts(&mut self, by: impl Fn(Part) -> Vector) {
+        let steps = &self.steps;
+        for o in &mut self.objects {
+            if let Some(st) = steps.get((o.step.0 as usize).wrapping_sub(1)) {
+                let v = by(st.part);
+                if v != Vector::zeros() {
+                    o.geom.translate(v);
+                }
+            }
+        }
+    }
+
     /// Clears the context.
     pub fn clear_context(&mut self) {
         if let Some(l) = self.ledger.as_mut() {
@@ -625,6 +654,7 @@ impl Board {
                 branch: None,
                 outcome: None,
                 checks: Vec::new(),
+                part: self.part,
             });
         }
     }

@@ -20,7 +20,7 @@ pub use error::{ConstructionError, CutOutcome};
 pub use figure::{nice_at_least, FigureMeta, ScaleBar};
 pub use reference::ReferenceRow;
 pub use step::{
-    note, Check, Drawn, Geom, Ids, Label, Mark, Note, ObjId, Object, Role, Step, StepId, StepKind,
-    Text, Topic, TABLE_BLOCK_ROWS,
+    note, Check, Drawn, Geom, Ids, Label, Mark, Note, ObjId, Object, Part, Role, Step, StepId,
+    StepKind, Text, Topic, TABLE_BLOCK_ROWS,
 };
 pub use summary::{CheckKind, CheckSummary, LISTED_CHECKS, LISTED_FAILURES};

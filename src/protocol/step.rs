@@ -1,6 +1,6 @@
 //! The data of the construction protocol: objects, steps, checks.
 
-use crate::kernel::{Arc, Circle, Conditioning, Line, Point, Segment};
+use crate::kernel::{Arc, Circle, Conditioning, Line, Point, Segment, Vector};
 use serde::{Serialize, Serializer};
 use std::borrow::Cow;
 
@@ -145,6 +145,38 @@ pub enum Role {
     Velocity,
     /// A guide or support: heavy with hatching.
     Guide,
+}
+
+/// Where a part of a figure stands on the sheet: its row (down the sheet) and column
+/// (across). A procedure names the part each step draws in (a cylinder's crank figure in row
+/// c, column 1; its piston-force diagram in row c, column 0); the sheet layout then sets the
+/// rows under one another and the columns side by side, a fixed gap apart, each moved as a
+/// whole, so that what one row or column shares (a diagram's base line through the crank's
+/// centre, the crank angle's axis) stays shared. A figure that names no part is drawn where
+/// it was constructed.
+///
+/// ```
+/// use graphostatik::protocol::Part;
+/// assert!(Part::default().is_first());
+/// assert!(Part::at(1, 0) > Part::at(0, 3));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Default, Serialize)]
+pub struct Part {
+    /// The row, from the top of the sheet.
+    pub row: u16,
+    /// The column, from the left.
+    pub col: u16,
+}
+
+impl Part {
+    /// The part in row `row` and column `col`.
+    pub const fn at(row: u16, col: u16) -> Part {
+        Part { row, col }
+    }
+    /// Whether it is the first row's first column (where a figure that names no part is).
+    pub fn is_first(&self) -> bool {
+        *self == Part::default()
+    }
 }
 
 /// What a step's object is drawn as: its pen ([`Role`]) and the name written at it
@@ -506,6 +538,28 @@ pub struct Step {
     /// Analytic checks attached to this step.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub checks: Vec<Check>,
+    /// The part of the figure it draws in ([`Part`]).
+    #[serde(skip_serializing_if = "Part::is_first")]
+    pub part: Part,
+}
+
+impl Geom {
+    /// Moves the drawing by `by` (mm on the sheet): the sheet layout setting a part out.
+    /// Numbers stay as they are.
+    pub fn translate(&mut self, by: Vector) {
+        match self {
+            Geom::Point { at } | Geom::Table { at, .. } => *at += by,
+            Geom::Line { line, .. } => line.origin += by,
+            Geom::Segment { segment } | Geom::Vector { segment } => {
+                segment.a += by;
+                segment.b += by;
+            }
+            Geom::Circle { circle, .. } => circle.center += by,
+            Geom::Arc { arc } => arc.circle.center += by,
+            Geom::Curve { points, .. } => points.iter_mut().for_each(|p| *p += by),
+            Geom::Scalar { .. } => {}
+        }
+    }
 }
 
 impl Step {

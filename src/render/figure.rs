@@ -76,7 +76,7 @@ fn compass_arc_half_angle(radius: f64) -> f64 {
 }
 
 /// The points that bound an object's drawing.
-fn extent_points(obj: &Object, out: &mut Vec<Point>) {
+pub(crate) fn extent_points(obj: &Object, out: &mut Vec<Point>) {
     match &obj.geom {
         Geom::Point { at } => out.push(*at),
         Geom::Line { .. } => {
@@ -190,6 +190,8 @@ fn placed(board: &Board, f: &Frame) -> Placement {
 /// The labels of a figure as [`figure`] places them.
 #[cfg(test)]
 pub(crate) fn placement(meta: &FigureMeta, board: &Board) -> Placement {
+    let laid = super::layout::laid_out(board);
+    let board = laid.as_ref().unwrap_or(board);
     placed(board, &frame_of(board, meta))
 }
 
@@ -700,6 +702,8 @@ fn layer(board: &Board, f: &Frame, labels: &Placement, step: &Step, current: boo
 ///
 /// Deterministic: the same board gives the same bytes (numbers rounded to 0.001 mm).
 pub fn figure(meta: &FigureMeta, board: &Board, upto: Option<StepId>) -> String {
+    let laid = super::layout::laid_out(board);
+    let board = laid.as_ref().unwrap_or(board);
     let f = frame_of(board, meta);
     let labels = placed(board, &f);
     let mut doc = Document::new()

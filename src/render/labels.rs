@@ -447,6 +447,7 @@ mod tests {
             let scene = crate::scene::AnyScene::load(p).unwrap();
             let problem = scene.problem();
             let board = problem.construct(BoardConfig::DRAWING).unwrap();
+            let board = crate::render::layout::laid_out(&board).unwrap_or(board);
             let circles = full_circles(&board);
             let first = |o: &crate::protocol::Object| match &o.geom {
                 Geom::Point { at } if !o.label.is_empty() => Some(first_position(&circles, at)),

@@ -8,6 +8,7 @@ pub mod export;
 mod figure;
 pub mod forces;
 mod labels;
+pub mod layout;
 mod plot;
 mod style;
 mod table;

@@ -8,7 +8,7 @@ use crate::crank::{self, Angles, CrankDrive, Drawing, PistonForce, Request};
 use crate::dynamics::model::Kinematics;
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{
-    Board, ConstructionError, Label, Note, Role, Scale, Topic, Trace, Weighted, H,
+    Board, ConstructionError, Label, Note, Part, Role, Scale, Topic, Trace, Weighted, H,
 };
 
 fn n(caption: &'static str, term: Option<&'static str>) -> Note {
@@ -88,8 +88,12 @@ pub fn construct(
         })
         .collect();
     let mut depth = 0.0;
+    // Each cylinder's row: its piston-force diagram, and beside it its crank figure with
+    // the polar force plan; the turning-force diagram under them, the table under that.
     for c in 0..e.cylinders.len() {
+        b.set_part(Part::at(c as u16, 0));
         let forces = force_diagram(b, e, dr, (c, &shafts), &mut depth)?;
+        b.set_part(Part::at(c as u16, 1));
         let t = tangential(b, e, dr, (c, &shafts, &forces), depth)?;
         for (row, (f, t)) in rows.iter_mut().zip(forces.iter().zip(t)) {
             row.cylinders.push([f.0, f.1, t]);
@@ -97,7 +101,9 @@ pub fn construct(
         }
     }
     let t_m_exact = super::mean_turning_force(&e.kinematics, &e.cylinders, e.cycle_deg);
+    b.set_part(Part::at(e.cylinders.len() as u16, 0));
     let t_m = turning_diagram(b, e, dr, (&rows, t_m_exact), depth)?;
+    b.set_part(Part::default());
     Ok(GasResults {
         rows,
         t_m,
@@ -356,6 +362,8 @@ fn turning_diagram(
         n("the turning force over the cycle", Some("Drehkraftlinie")),
     );
     let mean = mean_of_ordinates(b, e, rows, (&ids, top));
+    let row = b.part().row;
+    b.set_part(Part::at(row + 1, 0));
     mean_table(b, e, (mean, exact, &ids), y - top / dr.force_scale - 15.0);
     Ok(mean)
 }
