@@ -418,15 +418,24 @@ impl Exports {
         Ok(Exports { formats, dpi })
     }
 
-    /// The files of one constructed scene, by extension.
+    /// The files of one constructed scene, by extension, and what is to be said of its
+    /// lettering once they are written (the labels the crowd rule left out).
     fn files(
         &self,
         f: &Path,
         p: &AnyProblem,
         board: &graphostatik::protocol::Board,
-    ) -> Result<Vec<(&'static str, Vec<u8>)>, Fail> {
+    ) -> Result<Written, Fail> {
         let meta = p.figure_meta();
-        let svg = render::figure(&meta, board, None);
+        let (svg, lettering) = render::figure_lettered(&meta, board, None);
+        let note = (lettering.left_out > 0).then(|| {
+            format!(
+                "{}: {} of {} labels left out, no room for them on the sheet",
+                f.display(),
+                lettering.left_out,
+                lettering.labels
+            )
+        });
         let failed = |e: render::export::ExportError| Fail(format!("{}: {e}", f.display()));
         let mut out = Vec::new();
         for &fmt in &self.formats {
@@ -440,7 +449,7 @@ impl Exports {
             };
             out.push((fmt.extension(), bytes));
         }
-        Ok(out)
+        Ok(Written { files: out, note })
     }
 }
 
@@ -467,9 +476,12 @@ fn render_cmd(
         }
     }
     let mut batch = Batch::default();
+    let mut notes = Vec::new();
     for (f, written) in files.iter().zip(render_all(&files, jobs, exports)) {
         let stem = f.file_stem().map(|s| s.to_string_lossy().into_owned());
-        for (ext, bytes) in written? {
+        let written = written?;
+        notes.extend(written.note);
+        for (ext, bytes) in written.files {
             batch.add_bytes(
                 out.join(format!("{}.{ext}", stem.as_deref().unwrap_or_default())),
                 bytes,
@@ -482,11 +494,18 @@ fn render_cmd(
     for path in paths {
         chatter(&format!("{}\n", path.display()))?;
     }
+    for note in notes {
+        eprintln!("{note}");
+    }
     Ok(ExitCode::SUCCESS)
 }
 
-/// The files of one scene: its format and bytes, in the order of the formats.
-type Written = Vec<(&'static str, Vec<u8>)>;
+/// The files of one scene (its format and bytes, in the order of the formats) and a note for
+/// stderr once they are written.
+struct Written {
+    files: Vec<(&'static str, Vec<u8>)>,
+    note: Option<String>,
+}
 
 /// Renders each scene in every format asked for on every core the machine offers. The scenes are
 /// handed out one at a time (a large truss does not hold up the small ones behind it) and the

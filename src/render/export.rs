@@ -389,8 +389,7 @@ mod tests {
     }
 
     /// No lettering of a bundled figure overprints other lettering, measured with the real
-    /// font through usvg (the label placer works from estimates), but in the crane bridge,
-    /// whose crowded labels are reported by the placer's own test.
+    /// font through usvg (the label placer works from estimates).
     #[test]
     fn no_lettering_overprints_other_lettering() {
         let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/figures");
@@ -404,7 +403,7 @@ mod tests {
             let svg = std::fs::read_to_string(p).unwrap();
             let n = overlapping(&mut ink_boxes(&svg), 0.05);
             let name = p.file_stem().unwrap().to_string_lossy().into_owned();
-            if n > 0 && !name.contains("crane_bridge") {
+            if n > 0 {
                 report.push(format!("{name}: {n}"));
             }
         }

@@ -702,10 +702,34 @@ fn layer(board: &Board, f: &Frame, labels: &Placement, step: &Step, current: boo
 ///
 /// Deterministic: the same board gives the same bytes (numbers rounded to 0.001 mm).
 pub fn figure(meta: &FigureMeta, board: &Board, upto: Option<StepId>) -> String {
+    figure_lettered(meta, board, upto).0
+}
+
+/// How a figure's lettering went: how many labels it was to write, and how many the crowd
+/// rule left out for want of room (each label that is written overprints nothing).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Lettering {
+    /// The labels of the figure's points and curves.
+    pub labels: usize,
+    /// Those left out: no free place near their point, nor farther out with a leader.
+    pub left_out: usize,
+}
+
+/// [`figure`], with how its lettering went: the command line says on stderr when labels
+/// were left out.
+pub fn figure_lettered(
+    meta: &FigureMeta,
+    board: &Board,
+    upto: Option<StepId>,
+) -> (String, Lettering) {
     let laid = super::layout::laid_out(board);
     let board = laid.as_ref().unwrap_or(board);
     let f = frame_of(board, meta);
     let labels = placed(board, &f);
+    let lettering = Lettering {
+        labels: labels.labels,
+        left_out: labels.crowded,
+    };
     let mut doc = Document::new()
         .set(
             "xmlns:inkscape",
@@ -731,5 +755,5 @@ pub fn figure(meta: &FigureMeta, board: &Board, upto: Option<StepId>) -> String 
     }
     let mut s = doc.to_string();
     s.push('\n');
-    s
+    (s, lettering)
 }

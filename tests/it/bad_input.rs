@@ -860,3 +860,25 @@ fn quiet_and_verbose() {
     assert!(String::from_utf8_lossy(&o.stdout).contains("3 checks, 3 passed"));
     std::fs::remove_dir_all(&d).unwrap();
 }
+
+#[test]
+fn render_names_a_scene_whose_labels_were_left_out_in_one_line_after_writing() {
+    // The crane bridge's nineteen crane positions over one girder leave no room for some
+    // labels: the figure is written, and stderr says how many were left out.
+    let dir = tmp("crowd");
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lh_aufgabe5_crane_bridge.json");
+    let o = Command::new(bin())
+        .arg("render")
+        .arg(&scene)
+        .arg("--out")
+        .arg(&dir)
+        .arg("-q")
+        .output()
+        .unwrap();
+    assert!(o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("lh_aufgabe5_crane_bridge.json: ") && err.contains("labels left out"));
+    assert!(dir.join("lh_aufgabe5_crane_bridge.svg").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
