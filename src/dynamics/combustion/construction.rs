@@ -111,9 +111,15 @@ pub fn construct(
     })
 }
 
-/// A base line over the developed cycle at `y`, from x = 0 to the right.
-fn base(b: &mut Board, y: f64, note: Note) -> Result<(H<Point>, H<Line>), ConstructionError> {
-    let start = b.point(Point::new(0.0, y), Role::Axis, note.clone());
+/// A base line over the developed cycle at `y`, from x = 0 to the right, its start lettered
+/// with `name` (the cylinder's, where the engine has several).
+fn base(
+    b: &mut Board,
+    y: f64,
+    name: Label,
+    note: Note,
+) -> Result<(H<Point>, H<Line>), ConstructionError> {
+    let start = b.point(Point::new(0.0, y), Role::Axis.labelled(name), note.clone());
     let line = b.line_dir(&start, Vector::new(1.0, 0.0), Role::Axis, note)?;
     Ok((start, line))
 }
@@ -149,9 +155,14 @@ fn force_diagram(
     let peak = cyl.area_cm2 * (cyl.cycle.peak_at - super::ATMOSPHERE_AT);
     *depth += peak / dr.force_scale + 15.0;
     let name = cyl.name.clone();
+    let lettered = match e.cylinders.len() {
+        1 => Label::NONE,
+        _ => Label::named(format!("cylinder {name}")),
+    };
     let axis = base(
         b,
         -*depth,
+        lettered,
         n(
             "the piston-force diagram over the cycle",
             Some("Kolbenüberdrucklinie"),
@@ -315,6 +326,7 @@ fn turning_diagram(
     let axis = base(
         b,
         y,
+        Label::NONE,
         n(
             "the turning-force diagram over the cycle",
             Some("Drehkraftlinie"),
