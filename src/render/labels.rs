@@ -524,6 +524,34 @@ mod tests {
         assert!(b.objects().iter().all(|o| huge.get(o.id).is_some()));
     }
 
+    /// The placer's cost per label, on the bundled figure with the most labels (the crane
+    /// bridge's 953): its placement timed alone, the best of five.
+    #[test]
+    #[ignore = "a report: cargo test --release --lib labels -- --ignored --nocapture"]
+    fn report_the_cost_per_label() {
+        let dir = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/scenes/lh_aufgabe5_crane_bridge.json"
+        );
+        let scene = crate::scene::AnyScene::load(std::path::Path::new(dir)).unwrap();
+        let problem = scene.problem();
+        let board = problem.construct(BoardConfig::DRAWING).unwrap();
+        let meta = problem.figure_meta();
+        let mut best = f64::MAX;
+        let mut labels = 0;
+        for _ in 0..5 {
+            let t = std::time::Instant::now();
+            let placed = crate::render::figure::placement(&meta, &board);
+            best = best.min(t.elapsed().as_secs_f64());
+            labels = placed.labels;
+        }
+        println!(
+            "{labels} labels placed in {:.1} ms: {:.1} µs a label",
+            best * 1e3,
+            best * 1e6 / labels as f64
+        );
+    }
+
     #[test]
     #[ignore = "a report: cargo test --lib labels -- --ignored --nocapture"]
     fn report_overprints_of_the_bundled_figures() {
