@@ -715,6 +715,74 @@ pub struct Lettering {
     pub left_out: usize,
 }
 
+/// What the figure test measures of a figure, on the boxes the label placer works with: a
+/// figure reads like a plate when [`FigureReport::is_clean`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct FigureReport {
+    /// The labels of its points and curves.
+    pub labels: usize,
+    /// Those the crowd rule left out.
+    pub left_out: usize,
+    /// Pairs of written labels that overprint each other.
+    pub overprints: usize,
+    /// Labels over a point's dot.
+    pub on_dots: usize,
+    /// Labels that cross the sheet's edge.
+    pub off_sheet: usize,
+    /// Pairs of parts ([`crate::protocol::Part`]) that overlap once the sheet is laid out.
+    pub part_overlaps: usize,
+}
+
+impl FigureReport {
+    /// Nothing overprints, nothing leaves the sheet, no parts overlap.
+    pub fn is_clean(&self) -> bool {
+        self.overprints == 0 && self.on_dots == 0 && self.off_sheet == 0 && self.part_overlaps == 0
+    }
+}
+
+/// The figure test of one figure: its sheet laid out and its labels placed as [`figure`]
+/// does, then measured ([`FigureReport`]).
+///
+/// ```
+/// use graphostatik::prelude::*;
+/// use graphostatik::render::inspect;
+/// let mut b = Board::recording();
+/// let n = Note::new("given", Topic::Custom("demo"));
+/// for (k, x) in [0.0, 1.0, 2.0].into_iter().enumerate() {
+///     let name = ["A", "B", "C"][k];
+///     b.point(Point::new(x, 0.0), Role::Given.named(name), n.clone());
+/// }
+/// let report = inspect(&FigureMeta::titled("Three points 1 mm apart"), &b);
+/// assert!(report.is_clean(), "{report:?}");
+/// assert_eq!(report.labels, 3);
+/// ```
+pub fn inspect(meta: &FigureMeta, board: &Board) -> FigureReport {
+    let laid = super::layout::laid_out(board);
+    let board = laid.as_ref().unwrap_or(board);
+    let f = frame_of(board, meta);
+    let placed = placed(board, &f);
+    let at = |o: &Object| placed.get(o.id).map(|p| p.at);
+    let o = labels::overprints(board, &at, Some(label_region(&f)));
+    let parts = super::layout::part_boxes(board);
+    let overlap =
+        |a: &[f64; 4], b: &[f64; 4]| a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
+    let part_overlaps = (parts.iter().enumerate())
+        .map(|(i, a)| {
+            (parts[i + 1..].iter())
+                .filter(|b| overlap(&a.bounds, &b.bounds))
+                .count()
+        })
+        .sum();
+    FigureReport {
+        labels: placed.labels,
+        left_out: placed.crowded,
+        overprints: o.pairs,
+        on_dots: o.on_dots,
+        off_sheet: o.off_sheet,
+        part_overlaps,
+    }
+}
+
 /// [`figure`], with how its lettering went: the command line says on stderr when labels
 /// were left out.
 pub fn figure_lettered(

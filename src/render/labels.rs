@@ -403,44 +403,93 @@ fn first_position(circles: &[Circle], p: &Point) -> Point {
     p + Vector::new(LABEL_OFFSET * 0.6, LABEL_OFFSET * 0.6)
 }
 
+/// What a figure's lettering overprints, measured on the boxes the placer works with
+/// (without their clear space).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(crate) struct Overprints {
+    /// Pairs of labels whose boxes overlap.
+    pub pairs: usize,
+    /// Labels over a point's dot.
+    pub on_dots: usize,
+    /// Labels that cross the edge of `sheet` (where one was given).
+    pub off_sheet: usize,
+}
+
+impl Overprints {
+    #[cfg(test)]
+    fn pairs_and_dots(&self) -> (usize, usize) {
+        (self.pairs, self.on_dots)
+    }
+}
+
+/// The overprints of labels standing where `at` says (`None`: not written), on a figure
+/// whose lettering may use `sheet` (`[x0, y0, x1, y1]`, mm). The pairs are found by a
+/// bounding-volume hierarchy, in time n log n.
+pub(crate) fn overprints(
+    board: &Board,
+    at: &dyn Fn(&crate::protocol::Object) -> Option<Point>,
+    sheet: Option<[f64; 4]>,
+) -> Overprints {
+    let tight = |b: Aabb| Aabb::new(b.mins + Vector::repeat(PAD), b.maxs - Vector::repeat(PAD));
+    let mut boxes = Vec::new();
+    let mut dots = Vec::new();
+    for o in board.objects() {
+        if let Geom::Point { at: p } = &o.geom {
+            let inside = sheet
+                .is_none_or(|[x0, y0, x1, y1]| p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1);
+            if inside && p.x.is_finite() && p.y.is_finite() {
+                dots.push(gridded(&Aabb::new(
+                    PPoint::new(p.x - DOT, p.y - DOT),
+                    PPoint::new(p.x + DOT, p.y + DOT),
+                )));
+            }
+        }
+        if let Some(p) = at(o) {
+            boxes.push(tight(text_box(p, extent(&o.label))));
+        }
+    }
+    // Beyond the placer's largest sheet the hierarchy's binning is not to be trusted: every
+    // pair is tested instead (only absurd scenes come here).
+    let huge = (boxes.iter().chain(&dots)).any(|b| {
+        !(b.mins.coords.amax() <= MAX_SHEET_COORD && b.maxs.coords.amax() <= MAX_SHEET_COORD)
+    });
+    let leaves: Vec<Aabb> = boxes.iter().map(gridded).collect();
+    let (bvh, dot_bvh) = match huge {
+        true => (Bvh::new(), Bvh::new()),
+        false => (
+            Bvh::from_leaves(Default::default(), &leaves),
+            Bvh::from_leaves(Default::default(), &dots),
+        ),
+    };
+    let near = |tree: &Bvh, n: usize, i: usize| -> Vec<usize> {
+        match huge {
+            true => (0..n).collect(),
+            false => tree
+                .intersect_aabb(&leaves[i])
+                .map(|j| j as usize)
+                .collect(),
+        }
+    };
+    let mut out = Overprints::default();
+    for (i, b) in boxes.iter().enumerate() {
+        out.pairs += (near(&bvh, boxes.len(), i).into_iter())
+            .filter(|&j| j > i && boxes[j].intersects(b))
+            .count();
+        if (near(&dot_bvh, dots.len(), i).into_iter()).any(|j| dots[j].intersects(b)) {
+            out.on_dots += 1;
+        }
+        if let Some([x0, y0, x1, y1]) = sheet {
+            let within = b.mins.x >= x0 && b.mins.y >= y0 && b.maxs.x <= x1 && b.maxs.y <= y1;
+            out.off_sheet += usize::from(!within);
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::protocol::BoardConfig;
-
-    /// Pairs of label boxes that overlap (without their clear space), labels on a dot.
-    fn overprints(
-        board: &Board,
-        at: &dyn Fn(&crate::protocol::Object) -> Option<Point>,
-    ) -> (usize, usize) {
-        let tight = |b: Aabb| Aabb::new(b.mins + Vector::repeat(PAD), b.maxs - Vector::repeat(PAD));
-        let mut boxes = Vec::new();
-        let mut dots = Vec::new();
-        for o in board.objects() {
-            if let Geom::Point { at: p } = &o.geom {
-                dots.push(Aabb::new(
-                    PPoint::new(p.x - DOT, p.y - DOT),
-                    PPoint::new(p.x + DOT, p.y + DOT),
-                ));
-            }
-            if let Some(p) = at(o) {
-                boxes.push(tight(text_box(p, extent(&o.label))));
-            }
-        }
-        let bvh = Bvh::from_leaves(Default::default(), &boxes);
-        let mut pairs = 0;
-        for (i, b) in boxes.iter().enumerate() {
-            pairs += bvh
-                .intersect_aabb(b)
-                .filter(|&j| (j as usize) > i && boxes[j as usize].intersects(b))
-                .count();
-        }
-        let on_dot = boxes
-            .iter()
-            .filter(|b| dots.iter().any(|d| d.intersects(b)))
-            .count();
-        (pairs, on_dot)
-    }
 
     /// A figure's name, its overprints before and after (pairs, on dots), its labels left out
     /// and its labels.
@@ -471,8 +520,8 @@ mod tests {
             let name = p.file_stem().unwrap().to_string_lossy().into_owned();
             out.push((
                 name,
-                overprints(&board, &first),
-                overprints(&board, &now),
+                overprints(&board, &first, None).pairs_and_dots(),
+                overprints(&board, &now, None).pairs_and_dots(),
                 placed.crowded,
                 placed.labels,
             ));

@@ -155,36 +155,6 @@ mod tests {
         assert!((gap - PART_GAP).abs() < 1e-9, "{gap}");
     }
 
-    /// No two parts of a bundled figure overlap once the sheet is laid out.
-    #[test]
-    fn no_two_parts_of_a_bundled_figure_overlap() {
-        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes");
-        let mut paths: Vec<_> = (std::fs::read_dir(dir).unwrap())
-            .map(|e| e.unwrap().path())
-            .filter(|p| p.extension().is_some_and(|e| e == "json"))
-            .collect();
-        paths.sort();
-        let mut parted = 0;
-        for p in &paths {
-            let scene = crate::scene::AnyScene::load(p).unwrap();
-            let board = (scene.problem())
-                .construct(crate::protocol::BoardConfig::DRAWING)
-                .unwrap();
-            let Some(moved) = laid_out(&board) else {
-                continue;
-            };
-            parted += 1;
-            let boxes = part_boxes(&moved);
-            for (i, a) in boxes.iter().enumerate() {
-                for c in &boxes[i + 1..] {
-                    let overlap = boxes_overlap(&a.bounds, &c.bounds);
-                    assert!(!overlap, "{}: {a:?} on {c:?}", p.display());
-                }
-            }
-        }
-        assert!(parted >= 3, "{parted} figures set out in parts");
-    }
-
     #[test]
     fn a_figure_of_one_part_is_drawn_as_constructed() {
         let n = Note::new("p", Topic::Custom("layout"));

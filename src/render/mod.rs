@@ -16,7 +16,7 @@ mod walkthrough;
 
 pub use crate::protocol::{FigureMeta, ScaleBar};
 pub use drafting::drafting_table_text;
-pub use figure::{figure, figure_lettered, Lettering};
+pub use figure::{figure, figure_lettered, inspect, FigureReport, Lettering};
 pub use plot::{accuracy_plot_svg, accuracy_table_text};
 pub use table::{
     check_rows, check_table_json, check_table_text, reference_rows, reference_table_json,

@@ -14,6 +14,7 @@ mod combustion;
 mod crank_closed_form;
 mod dynamics;
 mod export;
+mod figures;
 mod force_system;
 mod fuzz_scenes;
 mod inkscape;

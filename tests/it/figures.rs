@@ -1,0 +1,101 @@
+//! The figure test: a figure reads like a book's plate when none of its labels overprints
+//! another label, a point's dot or the sheet's edge, and none of its parts lies on another
+//! ([`graphostatik::render::inspect`]). It holds for every bundled figure, and for figures of
+//! random scenes (the bundled ones with their numbers changed, as a user varies a book's
+//! example), so that a user's scene gets the same guarantee. The real font's layout of the
+//! bundled figures is measured as well (`render::export`'s unit test).
+
+use graphostatik::protocol::BoardConfig;
+use graphostatik::render::{inspect, FigureReport};
+use graphostatik::scene::{AnyScene, ReadContext};
+use serde_json::Value;
+use std::path::PathBuf;
+
+fn bundled() -> Vec<PathBuf> {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes");
+    let mut paths: Vec<_> = (std::fs::read_dir(dir).unwrap())
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .collect();
+    paths.sort();
+    paths
+}
+
+/// The figure test of a scene's text; `None` where the scene is refused or does not
+/// construct (bad input, which the fuzz tests hold to one line).
+fn report(text: &str, origin: &str) -> Option<FigureReport> {
+    let scene = AnyScene::read(text, &ReadContext::figure(origin)).ok()?;
+    let problem = scene.problem();
+    let board = problem.construct(BoardConfig::DRAWING).ok()?;
+    Some(inspect(&problem.figure_meta(), &board))
+}
+
+#[test]
+fn every_bundled_figure_reads_like_a_plate() {
+    for p in bundled() {
+        let text = std::fs::read_to_string(&p).unwrap();
+        let name = p.display().to_string();
+        let r = report(&text, &name).expect("a bundled scene constructs");
+        assert!(r.is_clean(), "{name}: {r:?}");
+        assert!(r.left_out * 10 < r.labels.max(1), "{name}: {r:?}");
+    }
+}
+
+/// A small deterministic generator (xorshift64*): the same scenes on every machine.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
+    }
+    /// A factor in [0.8, 1.25].
+    fn factor(&mut self) -> f64 {
+        0.8 + 0.45 * (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// A third of the scene's numbers, each scaled by a factor of its own; whole numbers (counts,
+/// firing orders, divisions) stay as they are.
+fn vary(v: &mut Value, rng: &mut Rng) {
+    match v {
+        Value::Number(n) if n.is_f64() || n.as_u64().is_some_and(|k| k > 12) => {
+            let picked = rng.next() % 3 == 0;
+            let x = n.as_f64().unwrap_or(0.0) * rng.factor();
+            *v = if picked { Value::from(x) } else { v.clone() };
+        }
+        Value::Array(a) => a.iter_mut().for_each(|x| vary(x, rng)),
+        Value::Object(m) => m.values_mut().for_each(|x| vary(x, rng)),
+        _ => {}
+    }
+}
+
+#[test]
+fn figures_of_random_scenes_read_like_plates() {
+    let mut rng = Rng(0x6772_6170_686f);
+    let (mut drawn, mut refused) = (0, 0);
+    for p in bundled() {
+        // The crane bridge's 25 load positions take most of a second each in a debug build.
+        if p.to_string_lossy().contains("crane_bridge") {
+            continue;
+        }
+        let doc: Value = serde_json::from_str(&std::fs::read_to_string(&p).unwrap()).unwrap();
+        for k in 0..6 {
+            let mut v = doc.clone();
+            vary(&mut v, &mut rng);
+            let name = format!("{} variant {k}", p.display());
+            match report(&v.to_string(), &name) {
+                Some(r) => {
+                    assert!(r.is_clean(), "{name}: {r:?}\n{v}");
+                    drawn += 1;
+                }
+                None => refused += 1,
+            }
+        }
+    }
+    // Most variants are scenes a user could write; the test says little if few construct.
+    println!("{drawn} variants drawn, {refused} refused");
+    assert!(drawn >= 3 * refused, "{drawn} drawn, {refused} refused");
+}
