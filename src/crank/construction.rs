@@ -824,6 +824,17 @@ impl Builder<'_> {
         }
     }
 
+    /// The name of a force's end at the i-th angle: written (S, N, T, K, as the plates
+    /// letter the one position they draw in full) at the position shown, kept in the
+    /// protocol only at the others.
+    fn force_name(&self, base: &'static str, i: usize) -> Label {
+        if self.shown == Some(i) {
+            Label::plain(base)
+        } else {
+            Label::quiet(base, i as u32)
+        }
+    }
+
     fn pin(&mut self, i: usize) -> Result<H<Point>, ConstructionError> {
         if let Some(p) = self.cache[i].pin {
             return Ok(p);
@@ -1115,17 +1126,18 @@ impl Builder<'_> {
             axis
         };
         let p_mm = self.p_x(i) / self.scales.force_scale;
+        let p_name = self.force_name("P", i);
         let e = self.b.lay_off(
             &b,
             &axis,
             p_mm,
-            Role::Force.labelled(Label::quiet("P", i as u32)),
+            Role::Force.labelled(p_name),
             N_P_AT_CROSSHEAD,
         )?;
         let normal = self.b.perpendicular(&axis, &e, Role::Auxiliary, N_P_NORMAL);
         let fpt = self
             .b
-            .meet_point(&rod, &normal, Label::quiet("S", i as u32), N_S_CUT)?;
+            .meet_point(&rod, &normal, self.force_name("S", i), N_S_CUT)?;
         let scale = Scale::kg(self.scales.force_scale);
         let s = self.b.measure(
             &b,
@@ -1195,10 +1207,10 @@ impl Builder<'_> {
             .parallel(&tangent, &g, Role::Auxiliary, N_PAR_TANGENT);
         let tp = self
             .b
-            .meet_point(&par_crank, &tangent, Label::quiet("T", i as u32), N_T_CUT)?;
+            .meet_point(&par_crank, &tangent, self.force_name("T", i), N_T_CUT)?;
         let kp = self
             .b
-            .meet_point(&par_tan, &crank, Label::quiet("K", i as u32), N_K_CUT)?;
+            .meet_point(&par_tan, &crank, self.force_name("K", i), N_K_CUT)?;
         let scale = Scale::kg(self.scales.force_scale);
         let t = self.b.measure(
             &pin,
@@ -1275,7 +1287,12 @@ impl Builder<'_> {
                 .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
         }
         let ray_f = self.b.parallel(&ray, &o, Role::Auxiliary, N_POLAR_RAY);
-        let p_mm = self.p_x(i) / self.scales.force_scale;
+        // P on the crank ray of its own stroke, outward where it drives (LH Abb. 59: the
+        // outstroke's diagram on one half of the crank circle, the return's on the other).
+        // On the stroke whose driving sense is −x, P so laid is −P along +x: the parallel to
+        // the rod then cuts the vertical on the other side of O, and T is read from C to O.
+        let along_x = cf::book_angle(self.thetas[i]).0.sign();
+        let p_mm = self.d.piston_force.at(i) / self.scales.force_scale;
         let bp = self.b.lay_off(
             &o,
             &ray_f,
@@ -1288,9 +1305,14 @@ impl Builder<'_> {
             .b
             .meet_point(&par, &vertical, Label::quiet("C", i as u32), N_POLAR_CUT)?;
         let scale = Scale::kg(self.scales.force_scale);
+        let (from, to) = if along_x < 0.0 {
+            (&cpt, &o)
+        } else {
+            (&o, &cpt)
+        };
         let t = self.b.measure(
-            &o,
-            &cpt,
+            from,
+            to,
             &vertical,
             scale,
             Label::quiet("T", i as u32),

@@ -7,7 +7,7 @@ use crate::crank::tolle::{self, TolleAxis, TolleCurve};
 use crate::crank::{self, Angles, CrankDrive, Drawing, PistonForce, Request};
 use crate::kernel::{Line, Point};
 use crate::protocol::{
-    note, Board, ConstructionError, Label, Note, Reading, Role, Scale, Topic, Trace, H,
+    note, Board, ConstructionError, Label, Note, Part, Reading, Role, Scale, Topic, Trace, H,
 };
 
 mod summary;
@@ -154,8 +154,12 @@ pub fn construct(
     );
     let mut res = DynamicsResults::default();
     let want_t = request.turning_force || request.mean_height || request.power || request.flywheel;
+    // The sheet: each cylinder a row (its indicator diagrams, its crank figure, its polar
+    // diagrams), the turning-force diagram under them, the table under that.
+    let row = |c: usize| Part::at(c as u16, 0);
     if request.net_pressure || want_t {
         for c in 0..nc {
+            bl.b.set_part(row(c));
             for k in 0..divisions {
                 bl.ray(c, k)?;
             }
@@ -164,15 +168,19 @@ pub fn construct(
     }
     if want_t {
         for c in 0..nc {
+            bl.b.set_part(row(c));
             bl.tangential(c)?;
         }
+        bl.b.set_part(row(nc));
         (res.turning, res.turning_ids) = bl.turning_diagram()?;
     }
     res.rays = bl.rows();
     bl.b.clear_context();
     let lowest = res.turning.iter().fold(0.0f64, |m, p| m.max(p.1.abs())) / drawing.force_scale;
     let table_at = bl.turning_origin() - crate::kernel::Vector::new(0.0, lowest + 15.0);
+    bl.b.set_part(row(nc + 1));
     summary::finish(bl.b, engine, drawing, request, &mut res, table_at);
+    bl.b.set_part(Part::default());
     Ok(res)
 }
 
