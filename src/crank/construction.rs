@@ -558,6 +558,32 @@ pub fn construct(
     construct_at(board, drive, drawing, angles, request, Point::origin())
 }
 
+/// Whether the crank angles are a full turn in equal steps (0°, 30°, …, 330° in any order):
+/// then a curve over them closes on its first point.
+///
+/// ```
+/// use graphostatik::crank::spans_full_turn;
+/// assert!(spans_full_turn(&[0.0, 90.0, 180.0, 270.0]));
+/// assert!(spans_full_turn(&[90.0, 210.0, 330.0]));
+/// assert!(!spans_full_turn(&[0.0, 30.0, 60.0, 90.0, 120.0, 150.0, 180.0]));
+/// assert!(!spans_full_turn(&[0.0, 180.0]));
+/// ```
+pub fn spans_full_turn(thetas: &[f64]) -> bool {
+    let n = thetas.len();
+    if n < 3 {
+        return false;
+    }
+    let mut t: Vec<f64> = thetas
+        .iter()
+        .map(|x| crate::kernel::angle::wrap_360(*x))
+        .collect();
+    t.sort_by(f64::total_cmp);
+    let step = 360.0 / n as f64;
+    let tol = crate::kernel::tolerance::REL_LAYOUT_EPS * 360.0;
+    (t.windows(2).all(|w| (w[1] - w[0] - step).abs() <= tol))
+        && ((t[0] + 360.0 - t[n - 1]) - step).abs() <= tol
+}
+
 /// The position a figure of several crank angles draws in the result pen: the first off the
 /// dead centres (where crank and rod lie on the piston line and show nothing).
 pub fn shown_position(thetas: &[f64]) -> Option<usize> {
@@ -1102,7 +1128,7 @@ impl Builder<'_> {
         let mut idx: Vec<usize> = (0..self.thetas.len()).collect();
         idx.sort_by(|a, b| self.thetas[*a].total_cmp(&self.thetas[*b]));
         let mut pts: Vec<H<Point>> = idx.iter().filter_map(|&i| self.cache[i].c_point).collect();
-        if self.divisions.is_some() && pts.len() > 2 {
+        if (self.divisions.is_some() || spans_full_turn(&self.thetas)) && pts.len() > 2 {
             pts.push(pts[0]);
         }
         if pts.len() >= 2 {
@@ -1364,7 +1390,8 @@ impl Builder<'_> {
             t_pts.push(at);
         }
         let _ = circle;
-        if self.divisions.is_some() || self.stroke_parts.is_some() {
+        if self.divisions.is_some() || self.stroke_parts.is_some() || spans_full_turn(&self.thetas)
+        {
             if let (Some(&p0), Some(&t0)) = (p_pts.first(), t_pts.first()) {
                 p_pts.push(p0);
                 t_pts.push(t0);

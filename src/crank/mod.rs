@@ -38,7 +38,7 @@ mod construction;
 pub(crate) mod tolle;
 
 pub use construction::{
-    construct, construct_at, shown_position, AngleRow, CrankResults, MaxVelocity,
+    construct, construct_at, shown_position, spans_full_turn, AngleRow, CrankResults, MaxVelocity,
 };
 
 use serde::Serialize;

@@ -24,6 +24,13 @@ const N_B1: Note = note(
     "LH Abb. 52",
     Topic::Velocity,
 );
+const N_OB1: Note = note(
+    "join B₁ with O: the triangle OT₁B₁, turned about O until OB₁ falls on the piston line, \
+     gives B",
+    Some("B₁ mit O verbinden"),
+    "LH Abb. 52",
+    Topic::Velocity,
+);
 const N_SWING: Note = note(
     "swing B₁ about O (the triangle OT₁B₁ turned about O)",
     Some("Drehung um O"),
@@ -177,6 +184,7 @@ impl Builder<'_> {
             Role::Construction.named("B₁"),
             N_B1,
         )?;
+        b.segment(&o, &b1, Role::Construction, N_OB1);
         let swing = b.circle(
             &o,
             (b1.g - o.g).norm(),
