@@ -161,8 +161,18 @@ fn table_blocks(at: Point, rows: &[Vec<String>]) -> Vec<(Vec<Vec<String>>, Point
     out
 }
 
+/// Whether a table is a heading: one row of one cell (a load case's name over its row),
+/// set larger and without a rule.
+fn is_heading(rows: &[Vec<String>]) -> bool {
+    rows.len() == 1 && rows[0].len() == 1
+}
+
 /// Width and height of a table (mm).
 fn table_size(rows: &[Vec<String>]) -> (f64, f64) {
+    if is_heading(rows) {
+        let n = rows[0][0].chars().count() as f64;
+        return (n * HEADING_CHAR, HEADING_ROW);
+    }
     (
         table_columns(rows).iter().sum(),
         rows.len() as f64 * TABLE_ROW,
@@ -458,6 +468,15 @@ fn draw_object(f: &Frame, obj: &Object, labels: &Placement, g: Group) -> Group {
 
 /// One block of a table, its top-left corner at `at`.
 fn draw_table(f: &Frame, at: Point, rows: &[Vec<String>], g: Group) -> Group {
+    if is_heading(rows) {
+        let p = Point::new(at.x, at.y - 0.8 * HEADING_ROW);
+        return g.add(
+            Text::new(sheet_text(&subscripts(&rows[0][0])).into_owned())
+                .set("class", "heading")
+                .set("x", f.x(&p))
+                .set("y", f.y(&p)),
+        );
+    }
     let mut g = g;
     let at = &at;
     let cols = table_columns(rows);

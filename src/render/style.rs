@@ -27,6 +27,11 @@ pub const TABLE_GAP: f64 = 3.0;
 /// Estimated advance of one character in a table (mm), a little wider than
 /// [`SMALL_CHAR`] so that columns never touch.
 pub const TABLE_CHAR: f64 = 1.7;
+/// Advance of one character of a heading (a table of one cell: a load case's name), 4 mm
+/// upright type (mm).
+pub const HEADING_CHAR: f64 = 2.45;
+/// Height of a heading's line (mm).
+pub const HEADING_ROW: f64 = 5.0;
 /// How far a construction line runs past the last point constructed on it (mm).
 pub const LINE_OVERSHOOT: f64 = 3.0;
 /// Length of the short compass arc drawn through a point cut on a circle (mm of arc).
@@ -73,6 +78,7 @@ circle.pt{{fill:#000;stroke:none}}\
 text{{font-family:'Times New Roman',Times,'Liberation Serif',serif;font-style:italic;font-size:3.5px;fill:#000;stroke:none}}\
 text.title{{font-style:normal;font-size:6px}}\
 text.small{{font-style:normal;font-size:2.8px}}\
+text.heading{{font-style:normal;font-size:4px}}\
 .current path,.current line,.current circle{{stroke:{c}}}\
 .current circle.pt,.current text{{fill:{c}}}",
         c = CURRENT

@@ -151,6 +151,13 @@ fn construct(
             sup,
             slack,
         };
+        // Several cases: each row under its case's name (dead load, wind, snow), as the
+        // plates head their plans.
+        if cases.len() > 1 {
+            let name = vec![vec![case.name.clone()]];
+            b.table(Point::new(0.0, *row_top), name, &[], N_CASE_NAME);
+            *row_top -= HEADING_MM;
+        }
         // A scratch run fixes where the blocks go; the real run draws them there.
         let dry = construct_case(&mut b.scratch(), &c)?;
         let (at, height) = Layout::row(&dry.boxes, *row_top);

@@ -36,6 +36,8 @@ pub(crate) const EMPTY: [f64; 4] = [
 /// Gap between the truss drawing, the reactions' force polygon and the plan, and between
 /// rows (mm).
 const GAP_MM: f64 = 30.0;
+/// Room for a load case's name over its row (mm).
+pub(super) const HEADING_MM: f64 = 8.0;
 
 impl Layout {
     /// Every part at the origin: the dry run's layout.

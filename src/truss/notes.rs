@@ -111,6 +111,12 @@ pub(super) const N_BALANCE: Note = note(
     Topic::Cremona,
 );
 
+pub(super) const N_CASE_NAME: Note = note(
+    "the load case’s name over its row",
+    Some("Belastungsfall"),
+    "LH B.4, Aufgabe 4",
+    Topic::Cremona,
+);
 pub(super) const N_TABLE: Note = note(
     "table of member forces read off the plan",
     Some("Auswertung"),
