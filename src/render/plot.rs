@@ -52,33 +52,75 @@ fn seconds(s: f64) -> String {
     }
 }
 
-/// The plot's frame: decades spanned on each axis and the mapping to the drawing.
+/// The plot's frame: decades spanned on each axis, whether a row for exact zeros is drawn
+/// under them, and the size of the sheet (the legend's column as wide as its longest line).
 struct Frame {
     x: [f64; 2],
     y: [f64; 2],
+    zeros: bool,
+    width: f64,
+    height: f64,
+    title: Vec<String>,
 }
 
-const W: f64 = 640.0;
-const H: f64 = 420.0;
+/// The plotting area (px) and the margins around it.
+const PLOT_W: f64 = 360.0;
+const PLOT_H: f64 = 340.0;
 const LEFT: f64 = 70.0;
-const RIGHT: f64 = 250.0;
-const TOP: f64 = 30.0;
 const BOTTOM: f64 = 50.0;
+/// The gap between the plot and the legend, and the legend's line height (px).
+const LEGEND_GAP: f64 = 16.0;
+const LINE: f64 = 13.0;
+/// Advance of a character of the 11 px and 8 px sans-serif text (px, DejaVu Sans's mean).
+const CHAR_11: f64 = 6.4;
+const CHAR_8: f64 = 4.7;
+/// The longest line of the title and of a legend entry (characters); longer text is wrapped
+/// at a space, never cut off.
+const TITLE_COLUMNS: usize = 90;
+const LEGEND_COLUMNS: usize = 44;
+
+/// `text` broken at spaces into lines of at most `columns` characters (a longer word stands
+/// on a line of its own).
+fn wrap(text: &str, columns: usize) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split_whitespace() {
+        match lines.last_mut() {
+            Some(l) if l.chars().count() + 1 + word.chars().count() <= columns => {
+                l.push(' ');
+                l.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
+}
+
+/// The legend of one sweep: the knob, then its quantity (subscripts set as such), wrapped.
+fn legend_lines(s: &Sweep) -> (Vec<String>, Vec<String>) {
+    (
+        wrap(&s.knob, LEGEND_COLUMNS),
+        wrap(&crate::fmt::subscripts(&s.quantity), LEGEND_COLUMNS),
+    )
+}
 
 impl Frame {
-    fn new(sweeps: &[Sweep]) -> Frame {
+    fn new(title: &str, sweeps: &[Sweep]) -> Frame {
         let (mut x, mut y) = (
             [f64::INFINITY, f64::NEG_INFINITY],
             [f64::INFINITY, f64::NEG_INFINITY],
         );
+        let mut zeros = false;
         for s in sweeps {
             for p in &s.points {
-                let (tx, ty) = (
-                    p.seconds.max(1e-9).log10(),
-                    s.relative(p).max(FLOOR).log10(),
-                );
+                let tx = p.seconds.max(1e-9).log10();
                 x = [x[0].min(tx), x[1].max(tx)];
-                y = [y[0].min(ty), y[1].max(ty)];
+                let rel = s.relative(p);
+                if rel > 0.0 {
+                    let ty = rel.max(FLOOR).log10();
+                    y = [y[0].min(ty), y[1].max(ty)];
+                } else {
+                    zeros = true;
+                }
             }
         }
         let span = |r: [f64; 2]| {
@@ -88,18 +130,55 @@ impl Frame {
                 [0.0, 1.0]
             }
         };
+        let legend_w = (sweeps.iter().map(legend_lines))
+            .flat_map(|(a, b)| {
+                let a = a.into_iter().map(|l| l.chars().count() as f64 * CHAR_11);
+                a.chain(
+                    b.into_iter()
+                        .map(|l| l.chars().count() as f64 * CHAR_8 * 9.0 / 8.0),
+                )
+            })
+            .fold(0.0, f64::max);
+        let legend_h: f64 = (sweeps.iter().map(legend_lines))
+            .map(|(a, b)| (a.len() + b.len()) as f64 * LINE + 6.0)
+            .sum();
+        let title = wrap(title, TITLE_COLUMNS);
+        let title_w = (title.iter())
+            .map(|l| l.chars().count() as f64 * CHAR_11 * 12.0 / 11.0)
+            .fold(0.0, f64::max);
+        let top = 16.0 + LINE * title.len() as f64;
+        let width =
+            (LEFT + PLOT_W + LEGEND_GAP + 24.0 + legend_w + 10.0).max(LEFT + title_w + 10.0);
+        let height = (top + PLOT_H + BOTTOM).max(top + legend_h + 10.0);
         Frame {
             x: span(x),
             y: span(y),
+            zeros,
+            width: width.ceil(),
+            height: height.ceil(),
+            title,
         }
+    }
+    fn top(&self) -> f64 {
+        16.0 + LINE * self.title.len() as f64
     }
     fn px(&self, secs: f64) -> f64 {
         let t = (secs.max(1e-9).log10() - self.x[0]) / (self.x[1] - self.x[0]);
-        LEFT + t * (W - LEFT - RIGHT)
+        LEFT + t * PLOT_W
+    }
+    /// The decades drawn, the row of exact zeros (one decade under them) included.
+    fn decades(&self) -> [f64; 2] {
+        [self.y[0] - f64::from(u8::from(self.zeros)), self.y[1]]
     }
     fn py(&self, rel: f64) -> f64 {
-        let t = (rel.max(FLOOR).log10() - self.y[0]) / (self.y[1] - self.y[0]);
-        H - BOTTOM - t * (H - TOP - BOTTOM)
+        let [y0, y1] = self.decades();
+        let v = if rel > 0.0 {
+            rel.max(FLOOR).log10()
+        } else {
+            y0
+        };
+        let t = (v - y0) / (y1 - y0);
+        self.top() + PLOT_H - t * PLOT_H
     }
 }
 
@@ -107,29 +186,40 @@ const COLOURS: [&str; 8] = [
     "#000000", "#b03030", "#3050b0", "#308030", "#a06000", "#7030a0", "#008080", "#707070",
 ];
 
-/// The sweeps as an SVG log-log plot of relative error against time per run.
+/// The sweeps as an SVG log-log plot of relative error against time per run. An exact zero
+/// (the double-double replay against itself, a rule exact for the curve) stands on a row of
+/// its own under the decades, marked "0"; the settings are written at their points where
+/// there is room, clear of each other (the table has them all).
 pub fn accuracy_plot_svg(title: &str, sweeps: &[Sweep]) -> String {
-    let f = Frame::new(sweeps);
+    let f = Frame::new(title, sweeps);
+    let (w, h) = (f.width, f.height);
     let mut o = String::new();
     let _ = write!(
         o,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {W} {H}" width="{W}" height="{H}" font-family="DejaVu Sans, sans-serif" font-size="11"><rect width="{W}" height="{H}" fill="white"/>"#
+        r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 {w} {h}" width="{w}" height="{h}" font-family="DejaVu Sans, sans-serif" font-size="11"><rect width="{w}" height="{h}" fill="white"/>"#
     );
-    let _ = write!(
-        o,
-        r#"<text x="{LEFT}" y="18" font-size="12">{}</text>"#,
-        super::walkthrough::html_text(&crate::fmt::clip(title, 80))
-    );
+    for (k, line) in f.title.iter().enumerate() {
+        let _ = write!(
+            o,
+            r#"<text x="{LEFT}" y="{}" font-size="12">{}</text>"#,
+            18.0 + LINE * k as f64,
+            super::walkthrough::html_text(line)
+        );
+    }
     axes(&mut o, &f);
+    let mut taken: Vec<[f64; 4]> = Vec::new();
+    let mut legend_y = f.top() + 14.0;
     for (k, s) in sweeps.iter().enumerate() {
-        curve(&mut o, &f, s, COLOURS[k % COLOURS.len()], k);
+        let colour = COLOURS[k % COLOURS.len()];
+        curve(&mut o, &f, s, colour, &mut taken);
+        legend_y = legend(&mut o, &f, s, colour, legend_y);
     }
     o.push_str("</svg>\n");
     o
 }
 
 fn axes(o: &mut String, f: &Frame) {
-    let (x0, x1, y0, y1) = (LEFT, W - RIGHT, H - BOTTOM, TOP);
+    let (x0, x1, y0, y1) = (LEFT, LEFT + PLOT_W, f.top() + PLOT_H, f.top());
     let _ = write!(
         o,
         r#"<path d="M{x0} {y1}V{y0}H{x1}" fill="none" stroke="black"/>"#
@@ -143,11 +233,18 @@ fn axes(o: &mut String, f: &Frame) {
             seconds(10f64.powi(d))
         );
     }
-    for d in (f.y[0] as i32)..=(f.y[1] as i32) {
-        let y = f.py(10f64.powi(d));
+    let [d0, d1] = f.decades();
+    for d in (d0 as i32)..=(d1 as i32) {
+        let zero = f.zeros && d == d0 as i32;
+        let y = if zero { f.py(0.0) } else { f.py(10f64.powi(d)) };
+        let tick = if zero {
+            "0".to_string()
+        } else {
+            format!("1e{d}")
+        };
         let _ = write!(
             o,
-            r##"<path d="M{x0} {y:.1}h-5" stroke="black"/><path d="M{x0} {y:.1}H{x1}" stroke="#ddd"/><text x="{:.1}" y="{:.1}" text-anchor="end">1e{d}</text>"##,
+            r##"<path d="M{x0} {y:.1}h-5" stroke="black"/><path d="M{x0} {y:.1}H{x1}" stroke="#ddd"/><text x="{:.1}" y="{:.1}" text-anchor="end">{tick}</text>"##,
             x0 - 8.0,
             y + 4.0
         );
@@ -156,7 +253,7 @@ fn axes(o: &mut String, f: &Frame) {
         o,
         r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">time per run (construction, recording, checks)</text>"#,
         (x0 + x1) / 2.0,
-        H - 12.0
+        y0 + 38.0
     );
     let _ = write!(
         o,
@@ -165,44 +262,179 @@ fn axes(o: &mut String, f: &Frame) {
     );
 }
 
-fn curve(o: &mut String, f: &Frame, s: &Sweep, colour: &str, k: usize) {
-    let pts: Vec<(f64, f64, &str)> = s
-        .points
-        .iter()
-        .filter(|p| s.relative(p) > 0.0 || s.knob != "precision")
-        .map(|p| (f.px(p.seconds), f.py(s.relative(p)), p.setting.as_str()))
+/// The box of a setting's text at baseline-left `(x, y)` (px).
+fn text_box(x: f64, y: f64, text: &str) -> [f64; 4] {
+    [
+        x,
+        y - 7.0,
+        x + text.chars().count() as f64 * CHAR_8,
+        y + 2.0,
+    ]
+}
+
+fn overlaps(a: &[f64; 4], b: &[f64; 4]) -> bool {
+    a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
+}
+
+/// Where a setting's text goes beside its point: the first of six places (right above,
+/// right below, left above, left below, above, below) clear of the texts and points already
+/// on the plot and inside it; `None` where none is.
+fn free_place(f: &Frame, (x, y): (f64, f64), text: &str, taken: &[[f64; 4]]) -> Option<(f64, f64)> {
+    let w = text.chars().count() as f64 * CHAR_8;
+    let places = [
+        (x + 4.0, y - 4.0),
+        (x + 4.0, y + 10.0),
+        (x - 4.0 - w, y - 4.0),
+        (x - 4.0 - w, y + 10.0),
+        (x - w / 2.0, y - 6.0),
+        (x - w / 2.0, y + 13.0),
+    ];
+    let inside =
+        |b: &[f64; 4]| b[0] >= LEFT && b[2] <= LEFT + PLOT_W + 30.0 && b[1] >= f.top() - 10.0;
+    places.into_iter().find(|&(px, py)| {
+        let b = text_box(px, py, text);
+        inside(&b) && !taken.iter().any(|t| overlaps(t, &b))
+    })
+}
+
+fn curve(o: &mut String, f: &Frame, s: &Sweep, colour: &str, taken: &mut Vec<[f64; 4]>) {
+    let pts: Vec<(f64, f64, &str, bool)> = (s.points.iter())
+        .map(|p| {
+            let rel = s.relative(p);
+            (f.px(p.seconds), f.py(rel), p.setting.as_str(), rel <= 0.0)
+        })
         .collect();
     if pts.is_empty() {
         return;
     }
-    let d: Vec<String> = pts
-        .iter()
-        .map(|(x, y, _)| format!("{x:.1} {y:.1}"))
+    // The line joins the points with an error; an exact zero is a point on its row.
+    let d: Vec<String> = (pts.iter())
+        .filter(|p| !p.3)
+        .map(|(x, y, _, _)| format!("{x:.1} {y:.1}"))
         .collect();
-    let _ = write!(
-        o,
-        r#"<polyline points="{}" fill="none" stroke="{colour}" stroke-width="1.4"/>"#,
-        d.join(" ")
-    );
-    for (x, y, label) in &pts {
+    if d.len() > 1 {
         let _ = write!(
             o,
-            r#"<circle cx="{x:.1}" cy="{y:.1}" r="2.6" fill="{colour}"/><text x="{:.1}" y="{:.1}" font-size="8" fill="{colour}">{}</text>"#,
-            x + 4.0,
-            y - 4.0,
-            super::walkthrough::html_text(label)
+            r#"<polyline points="{}" fill="none" stroke="{colour}" stroke-width="1.4"/>"#,
+            d.join(" ")
         );
     }
-    let ly = TOP + 14.0 + 30.0 * k as f64;
-    let lx = W - RIGHT + 16.0;
+    for (x, y, _, zero) in &pts {
+        let fill = if *zero { "white" } else { colour };
+        let _ = write!(
+            o,
+            r#"<circle cx="{x:.1}" cy="{y:.1}" r="2.6" fill="{fill}" stroke="{colour}"/>"#
+        );
+        taken.push([x - 3.0, y - 3.0, x + 3.0, y + 3.0]);
+    }
+    for (x, y, label, _) in &pts {
+        if let Some((lx, ly)) = free_place(f, (*x, *y), label, taken) {
+            taken.push(text_box(lx, ly, label));
+            let _ = write!(
+                o,
+                r#"<text x="{lx:.1}" y="{ly:.1}" font-size="8" fill="{colour}">{}</text>"#,
+                super::walkthrough::html_text(label)
+            );
+        }
+    }
+}
+
+/// One sweep's entry in the legend at `y` (px): its line, its knob and its quantity, each
+/// wrapped; returns where the next entry starts.
+fn legend(o: &mut String, _f: &Frame, s: &Sweep, colour: &str, y: f64) -> f64 {
+    let lx = LEFT + PLOT_W + LEGEND_GAP;
+    let (knob, quantity) = legend_lines(s);
     let _ = write!(
         o,
-        r#"<path d="M{lx} {ly}h18" stroke="{colour}" stroke-width="1.4"/><text x="{:.1}" y="{:.1}">{}</text><text x="{:.1}" y="{:.1}" font-size="9" fill="{colour}">{}</text>"#,
-        lx + 24.0,
-        ly + 4.0,
-        super::walkthrough::html_text(&crate::fmt::clip(&s.knob, 34)),
-        lx + 24.0,
-        ly + 16.0,
-        super::walkthrough::html_text(&crate::fmt::clip(&s.quantity, 40))
+        r#"<path d="M{lx} {:.1}h18" stroke="{colour}" stroke-width="1.4"/>"#,
+        y - 4.0
     );
+    let mut y = y;
+    for line in &knob {
+        let _ = write!(
+            o,
+            r#"<text x="{:.1}" y="{y:.1}">{}</text>"#,
+            lx + 24.0,
+            super::walkthrough::html_text(line)
+        );
+        y += LINE;
+    }
+    for line in &quantity {
+        let _ = write!(
+            o,
+            r#"<text x="{:.1}" y="{:.1}" font-size="9" fill="{colour}">{}</text>"#,
+            lx + 24.0,
+            y - 1.0,
+            super::walkthrough::html_text(line)
+        );
+        y += LINE;
+    }
+    y + 6.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::SweepPoint;
+
+    fn sweep(knob: &str, quantity: &str, points: &[(&str, f64, f64)]) -> Sweep {
+        Sweep {
+            knob: knob.into(),
+            quantity: quantity.into(),
+            unit: "kg".into(),
+            exact: Some(1.0),
+            scale: 1.0,
+            points: (points.iter())
+                .map(|&(s, error, seconds)| SweepPoint {
+                    setting: s.into(),
+                    value: 1.0 + error,
+                    error,
+                    seconds,
+                })
+                .collect(),
+        }
+    }
+
+    #[test]
+    fn nothing_is_cut_off_and_an_exact_zero_has_its_row() {
+        let long = "largest relative error of a step against the double-double replay";
+        let s = [
+            sweep(
+                "divisions",
+                "mean turning force T_m",
+                &[("12", 1e-2, 1e-2), ("24", 1e-3, 2e-2)],
+            ),
+            sweep(
+                "precision",
+                long,
+                &[("f64", 1e-15, 1e-2), ("double-double replay", 0.0, 5e-2)],
+            ),
+        ];
+        let svg = accuracy_plot_svg(&"a title of many words ".repeat(8), &s);
+        assert!(!svg.contains('…'), "nothing clipped");
+        assert!(
+            svg.contains(">double-double replay<"),
+            "wrapped at a space, whole"
+        );
+        assert!(svg.contains("Tₘ") && !svg.contains("T_m"));
+        assert!(
+            svg.contains(r#"text-anchor="end">0</text>"#),
+            "the zero row's tick"
+        );
+        assert!(
+            svg.contains(r##"fill="white" stroke="#b03030""##),
+            "the zero's open mark"
+        );
+    }
+
+    #[test]
+    fn settings_crowded_at_one_place_are_written_once_each_where_there_is_room() {
+        let pts: Vec<(String, f64, f64)> = (0..12)
+            .map(|k| (format!("{}", 12 * (k + 1)), 1e-3, 1e-2))
+            .collect();
+        let pts: Vec<(&str, f64, f64)> = pts.iter().map(|(s, e, t)| (s.as_str(), *e, *t)).collect();
+        let svg = accuracy_plot_svg("crowd", &[sweep("divisions", "T", &pts)]);
+        let written = svg.matches(r#"font-size="8""#).count();
+        assert!((1..=6).contains(&written), "{written} of 12 written");
+    }
 }
