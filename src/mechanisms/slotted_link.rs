@@ -243,9 +243,11 @@ pub fn construct(
     let mut fr = frame(b, link, u, rq.velocity)?;
     let mut res = outer_positions(b, &mut fr, link, u)?;
     let mut curve = Vec::with_capacity(phis.len());
+    let shown = shown_index(link, phis);
     for (k, &phi) in phis.iter().enumerate() {
         b.set_context(|| format!("φ = {}°", crate::fmt::num(phi, 3)));
-        let (row, p) = position(b, &fr, (link, u), (k as u32, phi, rq.velocity))?;
+        let at = (k as u32, phi, rq.velocity, shown == Some(k));
+        let (row, p) = position(b, &fr, (link, u), at)?;
         res.rows.push(row);
         curve.extend(p);
     }
@@ -445,6 +447,27 @@ struct Lever {
     c: H<Point>,
     lever: H<Line>,
     e: H<Point>,
+    /// The position lettered in full as the book letters Abb. 1071 (E, F, G, H).
+    shown: bool,
+}
+
+impl Lever {
+    /// The name of a point of this position: written at the position shown, kept in the
+    /// protocol only at the others.
+    fn name(&self, base: &'static str) -> Label {
+        if self.shown {
+            Label::plain(base)
+        } else {
+            Label::quiet(base, self.k)
+        }
+    }
+}
+
+/// The position lettered in full: the one nearest a quarter of the working stroke (φ = α/2),
+/// where C, F, G and H stand apart (at the stroke's middle the lever lies on MD).
+fn shown_index(link: &SlottedLink, phis: &[f64]) -> Option<usize> {
+    let want = link.alpha() / 2.0;
+    (0..phis.len()).min_by(|&a, &b| (phis[a] - want).abs().total_cmp(&(phis[b] - want).abs()))
 }
 
 /// The pin at the crank's angle `theta` (degrees from M's horizontal), the lever through it,
@@ -454,28 +477,49 @@ fn lever_at(
     fr: &Frame,
     link: &SlottedLink,
     u: Units,
-    (k, theta): (u32, f64),
+    (k, theta, shown): (u32, f64, bool),
 ) -> Result<Lever, ConstructionError> {
+    // One position in the result pen, the others thin (the plates' way); the two extra
+    // positions of the largest speeds keep their pins' names in the protocol only.
+    let pen = if shown {
+        Role::Result
+    } else {
+        Role::Construction
+    };
+    let name = if k < 90 {
+        Label::indexed("C", k)
+    } else {
+        Label::quiet("C", k)
+    };
     let c = b.point_on_circle(
         &fr.circle,
         theta,
-        Role::Result.labelled(Label::indexed("C", k)),
+        pen.labelled(name),
         n("the crank pin C at φ", Some("Kurbelzapfen")),
     );
     let lever = b.line_through(
         &fr.d,
         &c,
-        Role::Result,
+        pen,
         n("the slotted lever through D and C", Some("Kurbelschleife")),
     )?;
     let e = b.lay_off(
         &fr.d,
         &lever,
         link.lever_length / u.length_scale,
-        Role::Result.labelled(Label::quiet("E", k)),
+        pen.labelled(match shown {
+            true => Label::plain("E"),
+            false => Label::quiet("E", k),
+        }),
         n("E at the lever’s length from D", None),
     )?;
-    Ok(Lever { k, c, lever, e })
+    Ok(Lever {
+        k,
+        c,
+        lever,
+        e,
+        shown,
+    })
 }
 
 /// One crank angle: the lever, the table's place on the guide and its path checked, and the
@@ -484,13 +528,17 @@ fn position(
     b: &mut Board,
     fr: &Frame,
     (link, u): (&SlottedLink, Units),
-    (k, phi, velocity): (u32, f64, bool),
+    (k, phi, velocity, shown): (u32, f64, bool, bool),
 ) -> Result<(LinkRow, Option<H<Point>>), ConstructionError> {
-    let lv = lever_at(b, fr, link, u, (k, link.theta(phi)))?;
+    let lv = lever_at(b, fr, link, u, (k, link.theta(phi), shown))?;
     let place = b.foot(
         &fr.guide,
         &lv.e,
-        Role::Result.labelled(Label::quiet("S", k)),
+        match lv.shown {
+            true => Role::Result,
+            false => Role::Construction,
+        }
+        .labelled(Label::quiet("S", k)),
         n("the table’s place: E on the guide", Some("Tisch")),
     );
     let s = b.measure(
@@ -549,7 +597,7 @@ fn table_speed(
     let f = b.foot(
         &lv.lever,
         &fr.m,
-        Role::Construction.labelled(Label::quiet("F", lv.k)),
+        Role::Construction.labelled(lv.name("F")),
         n(
             "F, the foot of the perpendicular from M on DC, on the circle over MD",
             None,
@@ -558,7 +606,7 @@ fn table_speed(
     let g = b.foot(
         &fr.axis,
         &lv.e,
-        Role::Construction.labelled(Label::quiet("G", lv.k)),
+        Role::Construction.labelled(lv.name("G")),
         n("G, E’s foot on MD", None),
     );
     let sin_direct = sin_to(&fr.axis, lv.c.g, g.g);
@@ -569,7 +617,7 @@ fn table_speed(
     } else {
         swing(b, fr, lv, &f)?
     };
-    let h = cg_parallel(b, fr, (&c, &g, &f), lv.k)?;
+    let h = cg_parallel(b, fr, (&c, &g, &f), lv.name("H"))?;
     let per_mm = u.length_scale * link.crank_pin_speed / link.crank_radius;
     Ok(b.measure(
         &h,
@@ -636,7 +684,7 @@ fn cg_parallel(
     b: &mut Board,
     fr: &Frame,
     (c, g, f): (&H<Point>, &H<Point>, &H<Point>),
-    k: u32,
+    name: Label,
 ) -> Result<H<Point>, ConstructionError> {
     let cg = b.line_through(c, g, Role::Construction, n("C joined with G", None))?;
     let fh = b.parallel(
@@ -648,7 +696,7 @@ fn cg_parallel(
     b.meet_point(
         &fh,
         &fr.axis,
-        Label::quiet("H", k),
+        name,
         n("H, where the parallel cuts DG: GH = GD·FC/CD", None),
     )
 }
@@ -676,7 +724,7 @@ fn ordinate(
             value: c,
             per_mm: -per_mm,
         },
-        Role::Result,
+        Role::Construction,
         n("the speed laid off as an ordinate", None),
     )
     .map(Some)
@@ -709,7 +757,7 @@ fn extremes(
     ];
     for (k, (theta, sign, quantity, formula, exact)) in cases.into_iter().enumerate() {
         b.set_context(|| quantity.to_string());
-        let lv = lever_at(b, fr, link, u, (90 + k as u32, theta))?;
+        let lv = lever_at(b, fr, link, u, (90 + k as u32, theta, false))?;
         let c = table_speed(b, fr, (link, u), &lv)?;
         b.check(&c, quantity, "m/s", formula, link.c2(), || sign * exact);
         out[k] = sign * c.g;
