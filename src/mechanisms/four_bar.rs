@@ -329,6 +329,8 @@ fn frame(b: &mut Board, fb: &FourBar, ls: f64) -> Result<Frame, ConstructionErro
         setup.clone(),
     );
     b.segment(&o, &a, Role::Given, setup.clone());
+    b.ground(&o, setup.clone());
+    b.ground(&a, setup.clone());
     let crank = b.circle(&o, fb.crank / ls, Drawn::Whole, Role::Given, setup.clone())?;
     let rocker = b.circle(
         &a,

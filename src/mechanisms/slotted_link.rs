@@ -283,6 +283,7 @@ fn frame(
         Some("Kurbelkreis"),
     );
     let d = b.point(Point::origin(), Role::Given.named("D"), setup.clone());
+    b.ground(&d, setup.clone());
     let e = link.centre_distance / ls;
     let m = b.point(Point::new(0.0, e), Role::Given.named("M"), setup.clone());
     let axis = b.line_through(&d, &m, Role::Axis, setup.clone())?;

@@ -1029,6 +1029,32 @@ impl Board {
         out
     }
 
+    /// The sign of a fixed pivot under `pivot` (the frame, Gestell): a small triangle on a
+    /// hatched ground line, drawn at its size on the sheet whatever the scale.
+    pub fn ground(&mut self, pivot: &H<Point>, note: Note) {
+        if !self.recording {
+            return;
+        }
+        const HALF: f64 = 3.0;
+        const DEPTH: f64 = 4.0;
+        let p = pivot.g;
+        let (l, r) = (
+            Point::new(p.x - HALF, p.y - DEPTH),
+            Point::new(p.x + HALF, p.y - DEPTH),
+        );
+        self.begin(StepKind::Given, &note, &[pivot.id]);
+        for (a, b, role) in [(p, l, Role::Given), (p, r, Role::Given)] {
+            self.add(Label::NONE, role, || Geom::Segment {
+                segment: Segment { a, b },
+            });
+        }
+        let (a, b) = (l - Vector::new(1.5, 0.0), r + Vector::new(1.5, 0.0));
+        // Hatched on the right of a → b: below the line, as the ground is.
+        self.add(Label::NONE, Role::Guide, || Geom::Segment {
+            segment: Segment { a, b },
+        });
+    }
+
     /// A segment drawn between two points (a crank, a rod).
     pub fn segment(
         &mut self,
