@@ -34,6 +34,27 @@ pub mod model;
 pub mod rules;
 
 pub use construction::construct;
+
+/// The crank angle written under a developed diagram's base line every `every` degrees up to
+/// `until` (0° excluded: the diagram's start is lettered of its own), at `mm_per_deg` from
+/// `start` to the right: the scale of crank angles the plates write under their abscissa.
+pub(crate) fn angle_marks(
+    b: &mut crate::protocol::Board,
+    start: crate::kernel::Point,
+    (mm_per_deg, every, until): (f64, f64, f64),
+    note: crate::protocol::Note,
+) {
+    if !b.is_recording() || every <= 0.0 {
+        return;
+    }
+    let count = (until / every).floor() as usize;
+    for k in 1..=count.min(24) {
+        let deg = every * k as f64;
+        let at = crate::kernel::Point::new(start.x + deg * mm_per_deg, start.y);
+        let name = crate::protocol::Label::named(format!("{}°", crate::fmt::num(deg, 3)));
+        b.point(at, crate::protocol::Role::Axis.labelled(name), note.clone());
+    }
+}
 use model::{Cylinder, Kinematics};
 use serde::Serialize;
 

@@ -219,6 +219,12 @@ fn where_first(o: &crate::protocol::Object, circles: &[Circle]) -> Option<(Point
         return None;
     }
     match &o.geom {
+        // A mark on an axis (a crank angle under a developed diagram) is lettered under it,
+        // centred, as a scale is.
+        Geom::Point { at } if o.role == crate::protocol::Role::Axis => {
+            let w = extent(&o.label).0;
+            Some((*at, at + Vector::new(-w / 2.0, -(LABEL_OFFSET + ASCENT))))
+        }
         Geom::Point { at } => Some((*at, first_position(circles, at))),
         Geom::Curve { points, .. } => (points.iter())
             .max_by(|a, b| a.y.total_cmp(&b.y))

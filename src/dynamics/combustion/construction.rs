@@ -112,14 +112,17 @@ pub fn construct(
 }
 
 /// A base line over the developed cycle at `y`, from x = 0 to the right, its start lettered
-/// with `name` (the cylinder's, where the engine has several).
+/// with `name` (the cylinder's, where the engine has several) and the shaft angle written
+/// under it every 180°.
 fn base(
     b: &mut Board,
-    y: f64,
+    (y, mm_per_deg, cycle_deg): (f64, f64, f64),
     name: Label,
     note: Note,
 ) -> Result<(H<Point>, H<Line>), ConstructionError> {
     let start = b.point(Point::new(0.0, y), Role::Axis.labelled(name), note.clone());
+    let marks = (mm_per_deg, 180.0, cycle_deg);
+    crate::dynamics::angle_marks(b, start.g, marks, note.clone());
     let line = b.line_dir(&start, Vector::new(1.0, 0.0), Role::Axis, note)?;
     Ok((start, line))
 }
@@ -161,7 +164,7 @@ fn force_diagram(
     };
     let axis = base(
         b,
-        -*depth,
+        (-*depth, dr.mm_per_deg, e.cycle_deg),
         lettered,
         n(
             "the piston-force diagram over the cycle",
@@ -325,7 +328,7 @@ fn turning_diagram(
     let y = -depth - top / dr.force_scale - 30.0;
     let axis = base(
         b,
-        y,
+        (y, dr.mm_per_deg, e.cycle_deg),
         Label::NONE,
         n(
             "the turning-force diagram over the cycle",

@@ -19,6 +19,12 @@ const N_AXIS: Note = note(
     "LH F, Abb. 67",
     Topic::Forces,
 );
+const N_ANGLES: Note = note(
+    "the crank angles written under the developed circle",
+    Some("Kurbelwinkel"),
+    "LH F, Abb. 67",
+    Topic::Forces,
+);
 const N_ARC: Note = note(
     "the arc r·θ laid off along the developed circle",
     Some("Bogen r·α"),
@@ -79,6 +85,8 @@ impl Builder<'_> {
             .b
             .line_dir(&o, Vector::new(1.0, 0.0), Role::Axis, N_AXIS)?;
         let up = self.b.perpendicular(&axis, &o, Role::Axis, N_ORD);
+        let mm_per_deg = self.r_mm * std::f64::consts::PI / 180.0;
+        super::super::angle_marks(self.b, o.g, (mm_per_deg, 90.0, 360.0), N_ANGLES);
         let frame = TurningFrame { o, axis, up };
         let n = self.thetas.len();
         let mut pts: Vec<H<Point>> = Vec::with_capacity(n + 1);
