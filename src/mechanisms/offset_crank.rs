@@ -14,7 +14,7 @@
 
 use crate::kernel::{Branch, Circle, Line, Point, Vector};
 use crate::protocol::{
-    Board, ConstructionError, Drawn, Label, Note, Reading, Role, Scale, Topic, H,
+    Board, ConstructionError, Drawn, Label, Note, Reading, Role, Scale, Topic, Trace, H,
 };
 
 fn n(caption: &'static str, term: Option<&'static str>) -> Note {
@@ -232,13 +232,37 @@ pub fn construct(
             reason,
         })?;
     let (fr, mut res) = frame(b, k, sc)?;
+    let shown = crate::crank::shown_position(thetas);
+    let mut tips = Vec::with_capacity(thetas.len() + 1);
     for (i, &theta) in thetas.iter().enumerate() {
         b.set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
-        let row = position(b, &fr, (k, sc), (i as u32, theta, rq))?;
+        let (row, tip) = position(b, &fr, (k, sc), (i as u32, theta, rq), shown == Some(i))?;
         res.rows.push(row);
+        tips.extend(tip);
     }
     b.clear_context();
+    velocity_curve(b, thetas, tips);
     Ok(res)
+}
+
+/// The velocity diagram over the stroke (KG Abb. 1046): the tips of c laid off across the
+/// line of the stroke at the crosshead, joined in the order of the crank angles, closed over
+/// a full turn (outstroke on one side, return on the other).
+fn velocity_curve(b: &mut Board, thetas: &[f64], mut tips: Vec<H<Point>>) {
+    if crate::crank::spans_full_turn(thetas) && tips.len() > 2 {
+        tips.push(tips[0]);
+    }
+    if tips.len() > 1 {
+        b.curve(
+            &tips,
+            Trace::Smooth,
+            Role::Result.named("c"),
+            n(
+                "the piston velocity over the stroke",
+                Some("Geschwindigkeitsdiagramm"),
+            ),
+        );
+    }
 }
 
 /// O, the crank circle, the line of the stroke at the offset (directed along the outstroke),
@@ -362,13 +386,12 @@ fn crosshead(
     b: &mut Board,
     fr: &Frame,
     (k, ls): (&OffsetCrank, f64),
-    i: u32,
-    theta: f64,
+    (i, theta, pen): (u32, f64, Role),
 ) -> Result<At, ConstructionError> {
     let pin = b.point_on_circle(
         &fr.circle,
         theta,
-        Role::Result.labelled(Label::indexed("P", i)),
+        pen.labelled(Label::indexed("P", i)),
         n("the crank pin at θ", Some("Kurbelzapfen")),
     );
     let arc = b.circle(
@@ -394,7 +417,7 @@ fn crosshead(
         Role::Construction,
         n("the line of the rod", None),
     )?;
-    b.segment(&head, &pin, Role::Result, n("the rod", Some("Schubstange")));
+    b.segment(&head, &pin, pen, n("the rod", Some("Schubstange")));
     Ok(At {
         pin,
         head,
@@ -410,9 +433,16 @@ fn position(
     fr: &Frame,
     (k, sc): (&OffsetCrank, OffsetScales),
     (i, theta, rq): (u32, f64, OffsetRequest),
-) -> Result<OffsetRow, ConstructionError> {
+    shown: bool,
+) -> Result<(OffsetRow, Option<H<Point>>), ConstructionError> {
     let ls = sc.length;
-    let at = crosshead(b, fr, (k, ls), i, theta)?;
+    // One position in the result pen, the others thin (the plates' way).
+    let pen = if shown {
+        Role::Result
+    } else {
+        Role::Construction
+    };
+    let at = crosshead(b, fr, (k, ls), (i, theta, pen))?;
     let x = b.measure(
         &fr.inner,
         &at.head,
@@ -442,15 +472,44 @@ fn position(
         guide_force: None,
         tangential_force: None,
     };
+    let mut tip = None;
     if rq.velocity {
-        row.c = Some(velocity(b, fr, (k, sc), (&at.rod, i), exact.c)?);
+        let c = velocity(b, fr, (k, sc), (&at.rod, i), exact.c)?;
+        row.c = Some(c.g);
+        tip = Some(velocity_ordinate(b, fr, sc, &at.head, &c)?);
     }
     if let (true, Some(p)) = (rq.forces, k.piston_force) {
         let f = forces(b, fr, sc, &at, (p, &exact))?;
         (row.rod_force, row.guide_force, row.tangential_force) =
             (Some(f[0]), Some(f[1]), Some(f[2]));
     }
-    Ok(row)
+    Ok((row, tip))
+}
+
+/// c carried with the dividers onto the perpendicular to the line of the stroke at the
+/// crosshead, at the velocity scale: a point of the velocity diagram over the stroke.
+fn velocity_ordinate(
+    b: &mut Board,
+    fr: &Frame,
+    sc: OffsetScales,
+    head: &H<Point>,
+    c: &H<f64>,
+) -> Result<H<Point>, ConstructionError> {
+    let note = n(
+        "c laid off across the stroke at the crosshead",
+        Some("Ordinate"),
+    );
+    let up = b.perpendicular(&fr.path, head, Role::Construction, note.clone());
+    b.transfer(
+        head,
+        &up,
+        Reading {
+            value: c,
+            per_mm: sc.velocity,
+        },
+        Role::Construction,
+        note,
+    )
 }
 
 /// The piston velocity c = v·OQ/R: Q where the rod cuts the perpendicular to the stroke
@@ -461,7 +520,7 @@ fn velocity(
     (k, sc): (&OffsetCrank, OffsetScales),
     (rod, i): (&H<Line>, u32),
     exact_c: f64,
-) -> Result<f64, ConstructionError> {
+) -> Result<H<f64>, ConstructionError> {
     let ls = sc.length;
     let q = b.meet_point(
         rod,
@@ -491,7 +550,7 @@ fn velocity(
         k.crank_pin_speed,
         || exact_c,
     );
-    Ok(c.g)
+    Ok(c)
 }
 
 /// The pin, the crosshead and the rod at one crank angle, and the stroke it is on.
