@@ -569,20 +569,34 @@ fn check_cmd(scene: &Path, json: bool, reference: bool, all: bool) -> Result<Exi
     let start = std::time::Instant::now();
     // The table needs the checks, not the drawing (a reference replay needs both). The
     // scene is read for the same: what it may ask for follows what is kept.
-    let board = if reference {
-        construct_with(scene, &load(scene)?, BoardConfig::DRAWING.with_reference())?
+    let (board, book) = if reference {
+        let any = AnyScene::load(scene).map_err(|e| Fail(e.to_string()))?;
+        let config = BoardConfig::DRAWING.with_reference();
+        (construct_with(scene, any.problem(), config)?, Vec::new())
     } else {
+        let free = graphostatik::io::available_memory();
+        let any = AnyScene::load_for_checks(scene, free).map_err(|e| Fail(e.to_string()))?;
+        // Book values are matched against every check: they are all kept then.
         let config = BoardConfig {
-            mode: Mode::Checks { every: all },
+            mode: Mode::Checks {
+                every: all || !any.book().is_empty(),
+            },
             ..BoardConfig::DRAWING
         };
-        construct_with(scene, &load_for_checks(scene)?, config)?
+        let board = construct_with(scene, any.problem(), config)?;
+        let book = render::book_rows(&board, any.book());
+        (board, book)
     };
-    let text = match (reference, json) {
-        (false, false) => render::check_table_text(&board),
-        (false, true) => render::check_table_json(&board) + "\n",
-        (true, false) => render::reference_table_text(&board),
-        (true, true) => render::reference_table_json(&board) + "\n",
+    let text = match (reference, json, book.is_empty()) {
+        (false, false, _) => render::check_table_text(&board) + &render::book_table_text(&book),
+        (false, true, true) => render::check_table_json(&board) + "\n",
+        (false, true, false) => format!(
+            "{{\"checks\": {},\n\"book\": {}}}\n",
+            render::check_table_json(&board),
+            serde_json::to_string_pretty(&book).expect("rows are plain data")
+        ),
+        (true, false, _) => render::reference_table_text(&board),
+        (true, true, _) => render::reference_table_json(&board) + "\n",
     };
     if verbosity() >= 2 {
         eprintln!(
@@ -597,7 +611,7 @@ fn check_cmd(scene: &Path, json: bool, reference: bool, all: bool) -> Result<Exi
     let failed = if reference {
         render::reference_rows(&board).iter().any(|r| !r.within)
     } else {
-        !board.all_passed()
+        !board.all_passed() || book.iter().any(|r| !r.passed())
     };
     Ok(if failed {
         ExitCode::from(1)

@@ -2,6 +2,7 @@
 //! pages, and the check table. The renderer reads a recorded [`Board`](crate::protocol::Board)
 //! and computes no mechanics: the scales and title it writes come in a [`FigureMeta`].
 
+mod book;
 mod drafting;
 #[cfg(feature = "export")]
 pub mod export;
@@ -15,6 +16,7 @@ mod table;
 mod walkthrough;
 
 pub use crate::protocol::{FigureMeta, ScaleBar};
+pub use book::{book_rows, book_table_text, BookRow, Verdict};
 pub use drafting::drafting_table_text;
 pub use figure::{figure, figure_lettered, inspect, FigureReport, Lettering};
 pub use plot::{accuracy_plot_svg, accuracy_table_text};

@@ -36,6 +36,10 @@ macro_rules! scene_struct {
             /// numeric fields of this scene. Not read by the construction.
             #[serde(default, skip_serializing_if = "Option::is_none")]
             pub preview: Option<$crate::scene::Preview>,
+            /// The numbers the book prints that this scene reproduces, each beside the check
+            /// it stands for: `graphostatik check` shows them as book rows.
+            #[serde(default, skip_serializing_if = "Vec::is_empty")]
+            pub book: Vec<$crate::scene::BookValue>,
             $($(#[$fm])* pub $field: $ty,)*
         }
 
@@ -51,6 +55,9 @@ macro_rules! scene_struct {
             }
             fn notes(&self) -> Option<&str> {
                 self.notes.as_deref()
+            }
+            fn book(&self) -> &[$crate::scene::BookValue] {
+                &self.book
             }
         }
     };

@@ -21,6 +21,7 @@
 
 mod accuracy;
 mod beam;
+mod book;
 mod centroid;
 mod combustion;
 mod crank_dynamics;
@@ -50,6 +51,7 @@ pub use beam::{
     BeamDrawingSpec, BeamOutput, BeamProblem, BeamScene, BeamSpec, PointLoadSpec, UniformLoadSpec,
     MAX_LOADS,
 };
+pub use book::BookValue;
 pub use centroid::{CentroidDrawingSpec, CentroidProblem, CentroidScene};
 pub use combustion::{
     CombustionProblem, CombustionScene, GasCylindersSpec, GasDrawingSpec, GasEffects, GasSpec,

@@ -22,6 +22,10 @@ pub trait SceneHeader {
     fn source(&self) -> &str;
     /// Free notes on where the numbers come from (not drawn).
     fn notes(&self) -> Option<&str>;
+    /// The numbers the book prints that the scene reproduces ([`BookValue`]).
+    ///
+    /// [`BookValue`]: crate::scene::BookValue
+    fn book(&self) -> &[crate::scene::BookValue];
 }
 
 /// A type with a JSON Schema where the `schema` feature is on (the default, with `cli`);

@@ -88,11 +88,15 @@ fn known_names() -> String {
 trait DynScene: Debug + Send + Sync {
     fn as_any(&self) -> &dyn Any;
     fn clone_box(&self) -> Box<dyn DynScene>;
+    fn book(&self) -> &[super::BookValue];
 }
 
 impl<P: Procedure> DynScene for P {
     fn as_any(&self) -> &dyn Any {
         self
+    }
+    fn book(&self) -> &[super::BookValue] {
+        super::procedure::SceneHeader::book(self)
     }
     fn clone_box(&self) -> Box<dyn DynScene> {
         Box::new(self.clone())
@@ -226,6 +230,11 @@ impl AnyScene {
                 ),
             )),
         }
+    }
+
+    /// The numbers the book prints that the scene reproduces (its `book` field).
+    pub fn book(&self) -> &[super::BookValue] {
+        self.scene.book()
     }
 
     /// Reads a scene file of any procedure ([`AnyScene::from_json`]).

@@ -882,3 +882,26 @@ fn render_names_a_scene_whose_labels_were_left_out_in_one_line_after_writing() {
     assert!(dir.join("lh_aufgabe5_crane_bridge.svg").exists());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn check_fails_on_a_book_value_that_differs_for_no_named_cause() {
+    // Esselborn's scene with the cause of its 79°16′ taken out: the check table says the book
+    // row differs unexplained, and `check` exits 1; with the cause it passes.
+    let dir = tmp("book");
+    let good = include_str!("../../scenes/lh_abb52_esselborn.json");
+    let mut doc: serde_json::Value = serde_json::from_str(good).unwrap();
+    doc["book"][1].as_object_mut().unwrap().remove("cause");
+    let bad = dir.join("esselborn.json");
+    std::fs::write(&bad, doc.to_string()).unwrap();
+    let run = |p: &Path| Command::new(bin()).arg("check").arg(p).output().unwrap();
+    let o = run(&bad);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{out}");
+    assert!(
+        out.contains("DIFFERS, and the scene names no cause"),
+        "{out}"
+    );
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lh_abb52_esselborn.json");
+    assert_eq!(run(&scene).status.code(), Some(0));
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -543,3 +543,30 @@ fn kg_1_20_times_is_one_plus_one_fifth_not_the_ratio_of_abb_1050() {
     assert!((b0(1.0 / 2.8) - 1.357).abs() < 0.0005);
     assert!((b0(0.2) - 1.20).abs() < 1e-12);
 }
+
+/// Every book value a bundled scene carries is reproduced or differs for the cause it names;
+/// the counts are the ones README gives.
+#[test]
+fn the_book_rows_of_the_bundled_scenes_are_reproduced_or_explained() {
+    use graphostatik::protocol::{BoardConfig, Mode};
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes");
+    let (mut shown, mut explained) = (0, 0);
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        let any = graphostatik::scene::AnyScene::load(&p).unwrap();
+        if any.book().is_empty() {
+            continue;
+        }
+        let config = BoardConfig {
+            mode: Mode::Checks { every: true },
+            ..BoardConfig::DRAWING
+        };
+        let board = any.problem().construct(config).unwrap();
+        for r in graphostatik::render::book_rows(&board, any.book()) {
+            assert!(r.passed(), "{}: {r:?}", p.display());
+            shown += 1;
+            explained += usize::from(r.verdict == graphostatik::render::Verdict::Explained);
+        }
+    }
+    assert_eq!((shown, explained), (8, 2));
+}

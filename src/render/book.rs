@@ -1,0 +1,204 @@
+//! The book rows of a check table: each number a scene says its book prints, beside the
+//! check it stands for ([`BookValue`]).
+
+use crate::fmt::num;
+use crate::protocol::Board;
+use crate::scene::BookValue;
+use serde::Serialize;
+use std::fmt::Write;
+
+/// How a printed number stands against the construction.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Verdict {
+    /// Within what the printed number stands for.
+    Reproduced,
+    /// Outside it, for the cause the scene names.
+    Explained,
+    /// Outside it, and no cause is named: the check fails.
+    Unexplained,
+    /// No check of that quantity (and situation) was made: the check fails.
+    NoSuchCheck,
+}
+
+/// One book row.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BookRow {
+    /// Where the book prints it.
+    pub source: String,
+    /// The check's quantity, and its situation where one was named.
+    pub quantity: String,
+    /// The check's unit.
+    pub unit: String,
+    /// As printed.
+    pub printed: f64,
+    /// What the construction gives.
+    pub constructed: Option<f64>,
+    /// What the book's own inputs give (the check's closed form).
+    pub inputs: Option<f64>,
+    /// What the printed number stands for (±).
+    pub within: f64,
+    /// What `within` stands for.
+    pub basis: String,
+    /// How they stand.
+    pub verdict: Verdict,
+    /// The cause the scene names, where they differ.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cause: Option<String>,
+}
+
+impl BookRow {
+    /// Reproduced, or explained.
+    pub fn passed(&self) -> bool {
+        matches!(self.verdict, Verdict::Reproduced | Verdict::Explained)
+    }
+}
+
+/// The book rows of `values` against the checks on `board` (every check must be kept:
+/// a board of [`Mode::Checks`](crate::protocol::Mode) with `every`, or a drawing board).
+pub fn book_rows(board: &Board, values: &[BookValue]) -> Vec<BookRow> {
+    let entries = board.check_entries();
+    (values.iter())
+        .map(|v| {
+            let found = entries.iter().find(|e| {
+                *e.check.quantity == *v.check
+                    && v.at.as_deref().is_none_or(|at| e.context == Some(at))
+            });
+            let within = v.tolerance();
+            let verdict = match found {
+                None => Verdict::NoSuchCheck,
+                Some(e) if (e.check.constructed - v.printed).abs() <= within => Verdict::Reproduced,
+                Some(_) if v.cause.is_some() => Verdict::Explained,
+                Some(_) => Verdict::Unexplained,
+            };
+            let quantity = match &v.at {
+                Some(at) => format!("{}, {at}", v.check),
+                None => v.check.clone(),
+            };
+            BookRow {
+                source: v.source.clone(),
+                quantity,
+                unit: found.map_or(String::new(), |e| e.check.unit.to_string()),
+                printed: v.printed,
+                constructed: found.map(|e| e.check.constructed),
+                inputs: found.map(|e| e.check.closed_form),
+                within,
+                basis: (v.basis.clone())
+                    .unwrap_or_else(|| "half a unit of the printed last place".into()),
+                cause: (verdict != Verdict::Reproduced)
+                    .then(|| v.cause.clone())
+                    .flatten(),
+                verdict,
+            }
+        })
+        .collect()
+}
+
+/// The book rows as text, one block a row: the quantity and where the book prints it, then
+/// printed, constructed and the book's inputs side by side, then the verdict and its cause.
+pub fn book_table_text(rows: &[BookRow]) -> String {
+    let mut out = String::new();
+    if rows.is_empty() {
+        return out;
+    }
+    let _ = writeln!(
+        out,
+        "\nbook values: printed, constructed, the book's own inputs"
+    );
+    let value = |x: Option<f64>| x.map_or("-".to_string(), |x| num(x, 6));
+    for r in rows {
+        let _ = writeln!(out, "{} [{}] ({})", r.quantity, r.unit, r.source);
+        let _ = writeln!(
+            out,
+            "    printed {}  constructed {}  inputs {}  within ±{} ({})",
+            num(r.printed, 6),
+            value(r.constructed),
+            value(r.inputs),
+            num(r.within, 6),
+            r.basis
+        );
+        let verdict = match r.verdict {
+            Verdict::Reproduced => "reproduced".to_string(),
+            Verdict::Explained => format!(
+                "differs by {}: {}",
+                num((r.constructed.unwrap_or(0.0) - r.printed).abs(), 4),
+                r.cause.as_deref().unwrap_or("")
+            ),
+            Verdict::Unexplained => "DIFFERS, and the scene names no cause".to_string(),
+            Verdict::NoSuchCheck => "NO SUCH CHECK in the table".to_string(),
+        };
+        let _ = writeln!(out, "    {verdict}");
+    }
+    let (n, ok) = (rows.len(), rows.iter().filter(|r| r.passed()).count());
+    let explained = rows
+        .iter()
+        .filter(|r| r.verdict == Verdict::Explained)
+        .count();
+    let _ = writeln!(
+        out,
+        "{n} book values, {} reproduced, {explained} differing for a named cause, {} failed",
+        ok - explained,
+        n - ok
+    );
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::Point;
+    use crate::protocol::{Note, Role, Scale, Topic};
+
+    fn value(printed: f64, at: Option<&str>, cause: Option<&str>) -> BookValue {
+        BookValue {
+            check: "AB".into(),
+            at: at.map(str::to_string),
+            printed,
+            within: None,
+            basis: None,
+            source: "a book".into(),
+            cause: cause.map(str::to_string),
+        }
+    }
+
+    #[test]
+    fn a_printed_number_is_reproduced_explained_or_a_failure() {
+        let n = Note::new("p", Topic::Custom("book"));
+        let mut b = Board::recording();
+        let a = b.point(Point::new(0.0, 0.0), Role::Given, n.clone());
+        let c = b.point(Point::new(12.34, 0.0), Role::Given, n.clone());
+        let l = b.line_through(&a, &c, Role::Given, n.clone()).unwrap();
+        b.set_context(|| "here".into());
+        let m = b.measure(&a, &c, &l, Scale::new(1.0, "mm"), "AB", n);
+        b.check(&m, "AB", "mm", "given", 12.34, || 12.34);
+        let rows = book_rows(
+            &b,
+            &[
+                value(12.3, None, None),
+                value(12.4, Some("here"), None),
+                value(12.4, None, Some("the book rounds up")),
+                value(12.34, Some("elsewhere"), None),
+            ],
+        );
+        let verdicts: Vec<_> = rows.iter().map(|r| r.verdict.clone()).collect();
+        assert_eq!(
+            verdicts,
+            [
+                Verdict::Reproduced,
+                Verdict::Unexplained,
+                Verdict::Explained,
+                Verdict::NoSuchCheck
+            ]
+        );
+        assert_eq!(rows[0].within, 0.05);
+        assert!(rows[0].passed() && !rows[1].passed() && rows[2].passed() && !rows[3].passed());
+        let text = book_table_text(&rows);
+        assert!(
+            text.contains("differs by 0.06: the book rounds up"),
+            "{text}"
+        );
+        assert!(
+            text.contains("4 book values, 1 reproduced, 1 differing for a named cause, 2 failed")
+        );
+    }
+}
