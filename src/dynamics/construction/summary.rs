@@ -66,7 +66,7 @@ pub(super) fn finish(
     if request.flywheel {
         res.flywheel = Some(flywheel(b, e, &res.turning, exact));
     }
-    table(b, res, table_at);
+    table(b, res, table_at, e.efficiency);
 }
 
 /// The diagram as drawn: (x, y) in sheet mm, x the developed arc, closed at 360°.
@@ -304,7 +304,9 @@ fn flywheel(b: &mut Board, e: &Engine, turning: &[(f64, f64)], exact: f64) -> Fl
     }
 }
 
-fn table(b: &mut Board, res: &DynamicsResults, at: Point) {
+/// The table of the mean heights, the power and the flywheel; `eta` is the efficiency the
+/// turning force carries (the power is then η·N_i, and named so).
+fn table(b: &mut Board, res: &DynamicsResults, at: Point, eta: f64) {
     if !b.is_recording() {
         return;
     }
@@ -318,9 +320,14 @@ fn table(b: &mut Board, res: &DynamicsResults, at: Point) {
     }
     if let Some(p) = &res.power {
         let total: f64 = p.from_pressures.iter().sum();
-        rows.push(vec!["N_i from p_m [PS]".into(), num(total, 1), "".into()]);
+        let n = if eta == 1.0 {
+            "N_i".to_string()
+        } else {
+            format!("η·N_i (η = {})", num(eta, 3))
+        };
+        rows.push(vec![format!("{n} from p_m [PS]"), num(total, 1), "".into()]);
         rows.push(vec![
-            "N_i from T_m [PS]".into(),
+            format!("{n} from T_m [PS]"),
             num(p.from_t_m, 1),
             "".into(),
         ]);
