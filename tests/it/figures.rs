@@ -5,21 +5,11 @@
 //! example), so that a user's scene gets the same guarantee. The real font's layout of the
 //! bundled figures is measured as well (`render::export`'s unit test).
 
+use super::support::{bundled_scenes as bundled, Rng};
 use graphostatik::protocol::BoardConfig;
 use graphostatik::render::{inspect, FigureReport};
 use graphostatik::scene::{AnyScene, ReadContext};
 use serde_json::Value;
-use std::path::PathBuf;
-
-fn bundled() -> Vec<PathBuf> {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes");
-    let mut paths: Vec<_> = (std::fs::read_dir(dir).unwrap())
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "json"))
-        .collect();
-    paths.sort();
-    paths
-}
 
 /// The figure test of a scene's text; `None` where the scene is refused or does not
 /// construct (bad input, which the fuzz tests hold to one line).
@@ -41,29 +31,13 @@ fn every_bundled_figure_reads_like_a_plate() {
     }
 }
 
-/// A small deterministic generator (xorshift64*): the same scenes on every machine.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
-    }
-    /// A factor in [0.8, 1.25].
-    fn factor(&mut self) -> f64 {
-        0.8 + 0.45 * (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 /// A third of the scene's numbers, each scaled by a factor of its own; whole numbers (counts,
 /// firing orders, divisions) stay as they are.
 fn vary(v: &mut Value, rng: &mut Rng) {
     match v {
         Value::Number(n) if n.is_f64() || n.as_u64().is_some_and(|k| k > 12) => {
             let picked = rng.next() % 3 == 0;
-            let x = n.as_f64().unwrap_or(0.0) * rng.factor();
+            let x = n.as_f64().unwrap_or(0.0) * (0.8 + 0.45 * rng.unit());
             *v = if picked { Value::from(x) } else { v.clone() };
         }
         Value::Array(a) => a.iter_mut().for_each(|x| vary(x, rng)),

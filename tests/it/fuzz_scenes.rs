@@ -14,20 +14,7 @@ use serde_json::Value;
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
-/// A small deterministic generator (xorshift64*): the same mutations on every machine.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
-    }
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n.max(1) as u64) as usize
-    }
-}
+use super::support::Rng;
 
 /// Every path to a value in the document (object keys and array indices).
 fn paths(v: &Value, here: &mut Vec<Value>, out: &mut Vec<Vec<Value>>) {

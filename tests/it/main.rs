@@ -27,4 +27,5 @@ mod pump;
 mod schema;
 mod shaft;
 mod snapshots;
+mod support;
 mod truss;

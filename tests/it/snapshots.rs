@@ -5,19 +5,9 @@
 use graphostatik::protocol::BoardConfig;
 use graphostatik::render;
 use graphostatik::scene::AnyScene;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-fn scenes() -> Vec<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
-    let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "json"))
-        .collect();
-    v.sort();
-    assert!(v.len() >= 3, "the bundled scenes are missing");
-    v
-}
+use super::support::bundled_scenes as scenes;
 
 fn stem(p: &Path) -> String {
     p.file_stem().unwrap().to_string_lossy().into_owned()
