@@ -736,7 +736,7 @@ pub struct Lettering {
 
 /// What the figure test measures of a figure, on the boxes the label placer works with: a
 /// figure reads like a plate when [`FigureReport::is_clean`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct FigureReport {
     /// The labels of its points and curves.
     pub labels: usize,
@@ -750,6 +750,11 @@ pub struct FigureReport {
     pub off_sheet: usize,
     /// Pairs of parts ([`crate::protocol::Part`]) that overlap once the sheet is laid out.
     pub part_overlaps: usize,
+    /// The side of the largest square of the drawing area (mm) that nothing drawn or written
+    /// touches: the emptiest region of the sheet, to 2 mm.
+    pub emptiest_mm: f64,
+    /// The drawing area's width and height (mm), the title block and scale rows left out.
+    pub area_mm: [f64; 2],
 }
 
 impl FigureReport {
@@ -792,6 +797,7 @@ pub fn inspect(meta: &FigureMeta, board: &Board) -> FigureReport {
                 .count()
         })
         .sum();
+    let region = label_region(&f);
     FigureReport {
         labels: placed.labels,
         left_out: placed.crowded,
@@ -799,7 +805,86 @@ pub fn inspect(meta: &FigureMeta, board: &Board) -> FigureReport {
         on_dots: o.on_dots,
         off_sheet: o.off_sheet,
         part_overlaps,
+        emptiest_mm: emptiest(board, &f, &placed),
+        area_mm: [region[2] - region[0], region[3] - region[1]],
     }
+}
+
+/// The side (mm) of the largest square of the drawing area that no stroke, point, table or
+/// label touches: the area rasterised on a grid of 2 mm (coarser where that would exceed a
+/// million cells), the largest empty square by the usual dynamic programme over the cells.
+fn emptiest(board: &Board, f: &Frame, placed: &Placement) -> f64 {
+    let [x0, y0, x1, y1] = label_region(f);
+    let (w, h) = (x1 - x0, y1 - y0);
+    if !(w.is_finite() && h.is_finite() && w > 0.0 && h > 0.0) {
+        return 0.0;
+    }
+    let cell = 2.0f64.max((w * h / 1e6).sqrt());
+    let (nx, ny) = ((w / cell).ceil() as usize, (h / cell).ceil() as usize);
+    let mut used = vec![false; nx * ny];
+    let mut mark = |p: Point| {
+        let (i, j) = (((p.x - x0) / cell).floor(), ((p.y - y0) / cell).floor());
+        if i >= 0.0 && j >= 0.0 && (i as usize) < nx && (j as usize) < ny {
+            used[j as usize * nx + i as usize] = true;
+        }
+    };
+    let fill = |[a, b, c, d]: [f64; 4], mark: &mut dyn FnMut(Point)| {
+        let (mut y, mut rows) = (b, 0);
+        while y <= d + cell && rows < ny + 1 {
+            let (mut x, mut cols) = (a, 0);
+            while x <= c + cell && cols < nx + 1 {
+                mark(Point::new(x.min(c), y.min(d)));
+                x += cell;
+                cols += 1;
+            }
+            y += cell;
+            rows += 1;
+        }
+    };
+    for (a, b) in strokes(board, f) {
+        let n = ((b - a).norm() / (0.5 * cell)).ceil().min(1e5) as usize;
+        for k in 0..=n {
+            mark(a + (b - a) * (k as f64 / n.max(1) as f64));
+        }
+    }
+    let mut pts = Vec::new();
+    for o in board.objects() {
+        pts.clear();
+        extent_points(o, &mut pts);
+        match &o.geom {
+            Geom::Table { .. } => {
+                let [a, b, c, d] = bounds(&pts);
+                fill([a, b, c, d], &mut mark);
+            }
+            Geom::Line { .. } => {}
+            _ => pts.iter().for_each(|p| mark(*p)),
+        }
+        if let Some(pl) = placed.get(o.id) {
+            fill(labels::label_box(&o.label, pl.at), &mut mark);
+        }
+    }
+    largest_empty_square(&used, nx, ny) as f64 * cell
+}
+
+/// The side (in cells) of the largest square of `false` cells in an `nx` × `ny` grid.
+fn largest_empty_square(used: &[bool], nx: usize, ny: usize) -> usize {
+    let mut prev = vec![0usize; nx];
+    let mut best = 0;
+    for j in 0..ny {
+        let mut row = vec![0usize; nx];
+        for i in 0..nx {
+            if !used[j * nx + i] {
+                row[i] = if i == 0 {
+                    1
+                } else {
+                    1 + prev[i].min(row[i - 1]).min(prev[i - 1])
+                };
+                best = best.max(row[i]);
+            }
+        }
+        prev = row;
+    }
+    best
 }
 
 /// [`figure`], with how its lettering went: the command line says on stderr when labels
@@ -843,4 +928,20 @@ pub fn figure_lettered(
     let mut s = doc.to_string();
     s.push('\n');
     (s, lettering)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::largest_empty_square;
+
+    #[test]
+    fn the_largest_empty_square_of_a_grid() {
+        // 5 × 4 cells, one used in the middle of the top row: the empty 3 × 3 below it.
+        let mut used = vec![false; 20];
+        used[2] = true;
+        assert_eq!(largest_empty_square(&used, 5, 4), 3);
+        used[7 + 5] = true; // (2, 2) too: squares of 2 remain
+        assert_eq!(largest_empty_square(&used, 5, 4), 2);
+        assert_eq!(largest_empty_square(&[true; 6], 3, 2), 0);
+    }
 }

@@ -124,6 +124,12 @@ fn text_box(at: Point, (w, depth): (f64, f64)) -> Aabb {
     )
 }
 
+/// The box of `label` written with its baseline starting at `at` (`[x0, y0, x1, y1]`, mm).
+pub(crate) fn label_box(label: &Label, at: Point) -> [f64; 4] {
+    let b = text_box(at, extent(label));
+    [b.mins.x, b.mins.y, b.maxs.x, b.maxs.y]
+}
+
 /// The baseline-left points of the eight positions around `p` at distance `d` (mm) of a
 /// label of `size` ([`extent`]), the first position given first: NE, NW, SE, SW, E, W, N, S.
 fn around(p: Point, d: f64, (w, depth): (f64, f64)) -> [Point; 8] {

@@ -73,3 +73,25 @@ fn figures_of_random_scenes_read_like_plates() {
     println!("{drawn} variants drawn, {refused} refused");
     assert!(drawn >= 3 * refused, "{drawn} drawn, {refused} refused");
 }
+
+/// The figures' label counts and emptiest regions, as README reports them:
+/// `cargo test --test it figures::report -- --ignored --nocapture`.
+#[test]
+#[ignore = "a report"]
+fn report_labels_and_emptiest_regions() {
+    for p in bundled() {
+        let text = std::fs::read_to_string(&p).unwrap();
+        let r = report(&text, &p.display().to_string()).unwrap();
+        let [w, h] = r.area_mm;
+        println!(
+            "{:45} {:5} labels {:3} left out  area {:6.0} × {:6.0} mm  emptiest square {:5.0} mm ({:3.0} % of the shorter side)",
+            p.file_stem().unwrap().to_string_lossy(),
+            r.labels,
+            r.left_out,
+            w,
+            h,
+            r.emptiest_mm,
+            100.0 * r.emptiest_mm / w.min(h)
+        );
+    }
+}
