@@ -457,6 +457,31 @@ pub fn error_line(msg: &str) -> String {
     clip(msg, MAX_ERROR_CHARS)
 }
 
+/// `text` broken at spaces into lines of at most `columns` characters (a longer word stands
+/// on a line of its own); an empty text is one empty line.
+///
+/// ```
+/// use graphostatik::fmt::wrap;
+/// assert_eq!(wrap("a bc def", 4), ["a bc", "def"]);
+/// assert_eq!(wrap("", 4), [""]);
+/// ```
+pub fn wrap(text: &str, columns: usize) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split_whitespace() {
+        match lines.last_mut() {
+            Some(l) if l.chars().count() + 1 + word.chars().count() <= columns => {
+                l.push(' ');
+                l.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    if lines.is_empty() {
+        lines.push(String::new());
+    }
+    lines
+}
+
 #[cfg(test)]
 mod fast_tests {
     use super::*;

@@ -26,14 +26,27 @@ struct Frame {
     /// lines are clipped to it and points outside it (an instantaneous centre far away) are
     /// left undrawn, as a drafter leaves a point that falls off the sheet.
     clip: [f64; 4],
+    /// The title's lines: one, unless the title is wider than the figure would be without
+    /// it (then it is wrapped at spaces rather than widening the sheet past the drawing).
+    title: Vec<String>,
 }
 
+/// How much a title line beyond the first adds to the title block (mm).
+const TITLE_LINE: f64 = 7.5;
+/// The narrowest width (mm) a title is wrapped to: a sheet this wide takes any title on a
+/// few lines.
+const TITLE_MIN_WIDTH: f64 = 160.0;
+
 impl Frame {
+    /// The height of the title block: title lines, source line and the space under them.
+    fn title_block(&self) -> f64 {
+        TITLE_BLOCK + TITLE_LINE * self.title.len().saturating_sub(1) as f64
+    }
     fn x(&self, p: &Point) -> String {
         num(p.x - self.min_x + MARGIN, 3)
     }
     fn y(&self, p: &Point) -> String {
-        num(self.max_y - p.y + MARGIN + TITLE_BLOCK, 3)
+        num(self.max_y - p.y + MARGIN + self.title_block(), 3)
     }
     fn xy(&self, p: &Point) -> String {
         format!("{},{}", self.x(p), self.y(p))
@@ -294,6 +307,7 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
         width: 0.0,
         height: 0.0,
         clip,
+        title: Vec::new(),
     };
     let mut pts = solid;
     for o in board.objects() {
@@ -316,29 +330,34 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
     max_x += 4.0;
     max_y += 4.0;
     min_y -= 4.0;
-    // Wide enough for the title, the source line and the scale rows as well.
-    let text_width = [
-        meta.title.chars().count() as f64 * TITLE_CHAR,
-        meta.source.chars().count() as f64 * TEXT_CHAR,
-    ]
-    .into_iter()
-    .chain({
-        let names_at = scale_rows(&meta.scales).1;
-        (meta.scales.iter())
-            .map(move |s| names_at + 2.0 + s.name.chars().count() as f64 * SMALL_CHAR)
-    })
-    .fold(0.0, f64::max);
-    let width = (max_x - min_x).max(text_width) + 2.0 * MARGIN;
-    let height =
-        (max_y - min_y) + 2.0 * MARGIN + TITLE_BLOCK + SCALE_ROW * meta.scales.len() as f64;
-    Frame {
+    // Wide enough for the source line and the scale rows as well; the title is wrapped to
+    // that width (at least TITLE_MIN_WIDTH) where it is wider.
+    let text_width = [meta.source.chars().count() as f64 * TEXT_CHAR]
+        .into_iter()
+        .chain({
+            let names_at = scale_rows(&meta.scales).1;
+            (meta.scales.iter())
+                .map(move |s| names_at + 2.0 + s.name.chars().count() as f64 * SMALL_CHAR)
+        })
+        .fold(0.0, f64::max);
+    let inner = (max_x - min_x).max(text_width).max(TITLE_MIN_WIDTH);
+    let title = crate::fmt::wrap(&meta.title, (inner / TITLE_CHAR).floor() as usize);
+    let title_width = (title.iter())
+        .map(|l| l.chars().count() as f64 * TITLE_CHAR)
+        .fold(0.0, f64::max);
+    let width = (max_x - min_x).max(text_width).max(title_width) + 2.0 * MARGIN;
+    let mut f = Frame {
         min_x,
         min_y,
         max_y,
         width,
-        height,
+        height: 0.0,
         clip,
-    }
+        title,
+    };
+    f.height =
+        (max_y - min_y) + 2.0 * MARGIN + f.title_block() + SCALE_ROW * meta.scales.len() as f64;
+    f
 }
 
 fn label_text(f: &Frame, at: &Point, label: &Label) -> Text {
@@ -635,17 +654,20 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> Group {
         .set("id", "sheet")
         .set("inkscape:groupmode", "layer")
         .set("inkscape:label", "000 sheet: title and scales");
-    g = g.add(
-        Text::new(sheet_text(&meta.title).into_owned())
-            .set("class", "title")
-            .set("x", num(MARGIN, 3))
-            .set("y", num(MARGIN + 6.0, 3)),
-    );
+    for (k, line) in f.title.iter().enumerate() {
+        g = g.add(
+            Text::new(sheet_text(line).into_owned())
+                .set("class", "title")
+                .set("x", num(MARGIN, 3))
+                .set("y", num(MARGIN + 6.0 + TITLE_LINE * k as f64, 3)),
+        );
+    }
     if !meta.source.is_empty() {
+        let below = TITLE_LINE * f.title.len().saturating_sub(1) as f64;
         g = g.add(
             Text::new(sheet_text(&meta.source).into_owned())
                 .set("x", num(MARGIN, 3))
-                .set("y", num(MARGIN + 12.0, 3)),
+                .set("y", num(MARGIN + 12.0 + below, 3)),
         );
     }
     // Scale bars, one to a row, under the figure.

@@ -79,21 +79,7 @@ const CHAR_8: f64 = 4.7;
 const TITLE_COLUMNS: usize = 90;
 const LEGEND_COLUMNS: usize = 44;
 
-/// `text` broken at spaces into lines of at most `columns` characters (a longer word stands
-/// on a line of its own).
-fn wrap(text: &str, columns: usize) -> Vec<String> {
-    let mut lines: Vec<String> = Vec::new();
-    for word in text.split_whitespace() {
-        match lines.last_mut() {
-            Some(l) if l.chars().count() + 1 + word.chars().count() <= columns => {
-                l.push(' ');
-                l.push_str(word);
-            }
-            _ => lines.push(word.to_string()),
-        }
-    }
-    lines
-}
+use crate::fmt::wrap;
 
 /// The legend of one sweep: the knob, then its quantity (subscripts set as such), wrapped.
 fn legend_lines(s: &Sweep) -> (Vec<String>, Vec<String>) {
