@@ -58,10 +58,10 @@ fn every_check_passes_at_many_angles_for_every_rod_ratio() {
         let checks: Vec<_> = board.steps().iter().flat_map(|s| &s.checks).collect();
         // x, c (2 methods), S, N, T (2 constructions), K, and on Tolle's parabola x, b and
         // b against the exact value at each of 72 angles; the two chords through C and
-        // Esselborn's angle, right angle and velocity once.
+        // Esselborn's angle, right angle, velocity and c_max/c_m once.
         // The two curves' areas of acceleration and retardation balance: two more.
         // And the piston path by the arc drawn once (LH Abb. 49) at every angle.
-        assert_eq!(checks.len(), 72 * 12 + 2 + 3 + 2, "λ = {lambda}");
+        assert_eq!(checks.len(), 72 * 12 + 2 + 4 + 2, "λ = {lambda}");
         for c in &checks {
             assert!(c.constructed.is_finite() && c.closed_form.is_finite());
             assert!(

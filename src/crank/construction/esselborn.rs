@@ -10,8 +10,16 @@
 use super::super::closed_form as cf;
 use super::{Builder, MaxVelocity};
 use crate::kernel::{Branch, Circle, Line, Point, Vector};
-use crate::protocol::{note, ConstructionError, Drawn, Label, Note, Role, Scale, Topic, H};
+use crate::protocol::{
+    note, ConstructionError, Drawn, Label, Note, Role, Scale, Topic, Weighted, H,
+};
 
+const N_MEAN: Note = note(
+    "the largest piston velocity against the mean piston speed c_m = 2v/π",
+    Some("mittlere Kolbengeschwindigkeit"),
+    "LH B.2",
+    Topic::Velocity,
+);
 const N_PERP: Note = note(
     "perpendicular to the piston line at the dead centre T₁",
     Some("Lot in T₁"),
@@ -151,6 +159,7 @@ impl Builder<'_> {
             v,
             || v * cf::sin_factor(lam, phi, cf::Stroke::Out),
         );
+        self.against_mean_speed(&c, (lam, phi));
         let exact = cf::max_velocity_angle(lam);
         Ok(MaxVelocity {
             esselborn_deg: angle.g,
@@ -159,6 +168,30 @@ impl Builder<'_> {
             c_max: v * cf::sin_factor(lam, exact, cf::Stroke::Out),
             book_deg: cf::approx_zero_acceleration_angle(lam),
         })
+    }
+
+    /// The largest piston velocity against the mean piston speed c_m = 2s·n/60 = 2v/π
+    /// (LH B.2: c_max = 1.6 c_m for r/l = 1/5), reckoned from the constructed c.
+    fn against_mean_speed(&mut self, c: &H<f64>, (lam, phi): (f64, f64)) {
+        let c_m = 2.0 * self.d.crank_pin_speed / std::f64::consts::PI;
+        let ratio = self.b.reckon(
+            c.g / c_m,
+            "",
+            Label::quiet("c", 1),
+            Weighted {
+                inputs: &[c.id],
+                weight: 1.0 / c_m,
+            },
+            N_MEAN,
+        );
+        self.b.check(
+            &ratio,
+            "c_max / c_m, the mean piston speed c_m = 2v/π",
+            "",
+            "LH B.2: c_m = 2s·n/60",
+            1.0,
+            || cf::sin_factor(lam, phi, cf::Stroke::Out) * std::f64::consts::FRAC_PI_2,
+        );
     }
 
     /// The points B (crosshead) and A (crank pin) of Esselborn's figure.
