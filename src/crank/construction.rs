@@ -558,6 +558,35 @@ pub fn construct(
     construct_at(board, drive, drawing, angles, request, Point::origin())
 }
 
+/// The pen of a mechanism's links at one of several positions: the result pen for the one
+/// shown in full, thin for the others (the plates' way).
+pub fn position_pen(shown: bool) -> Role {
+    if shown {
+        Role::Result
+    } else {
+        Role::Construction
+    }
+}
+
+/// The name of a point at position `k` of several: written (`base`, as the plates letter
+/// the one position they draw in full) where it is shown, kept in the protocol only
+/// (`base` with index `k`) at the others.
+pub fn position_name(base: &'static str, k: u32, shown: bool) -> Label {
+    if shown {
+        Label::plain(base)
+    } else {
+        Label::quiet(base, k)
+    }
+}
+
+/// A curve's points over the crank angles `thetas`, closed on the first where they are a
+/// full turn ([`spans_full_turn`]).
+pub fn close_over_turn(thetas: &[f64], pts: &mut Vec<H<Point>>) {
+    if spans_full_turn(thetas) && pts.len() > 2 {
+        pts.push(pts[0]);
+    }
+}
+
 /// Whether the crank angles are a full turn in equal steps (0°, 30°, …, 330° in any order):
 /// then a curve over them closes on its first point.
 ///
@@ -843,22 +872,14 @@ impl Builder<'_> {
     /// The pen of the crank and rod at the i-th angle: heavy for the position shown, thin for
     /// the others.
     fn pen(&self, i: usize) -> Role {
-        if self.shown == Some(i) {
-            Role::Result
-        } else {
-            Role::Construction
-        }
+        position_pen(self.shown == Some(i))
     }
 
     /// The name of a force's end at the i-th angle: written (S, N, T, K, as the plates
     /// letter the one position they draw in full) at the position shown, kept in the
     /// protocol only at the others.
     fn force_name(&self, base: &'static str, i: usize) -> Label {
-        if self.shown == Some(i) {
-            Label::plain(base)
-        } else {
-            Label::quiet(base, i as u32)
-        }
+        position_name(base, i as u32, self.shown == Some(i))
     }
 
     fn pin(&mut self, i: usize) -> Result<H<Point>, ConstructionError> {

@@ -38,7 +38,8 @@ mod construction;
 pub(crate) mod tolle;
 
 pub use construction::{
-    construct, construct_at, shown_position, spans_full_turn, AngleRow, CrankResults, MaxVelocity,
+    close_over_turn, construct, construct_at, position_name, position_pen, shown_position,
+    spans_full_turn, AngleRow, CrankResults, MaxVelocity,
 };
 
 use serde::Serialize;

@@ -298,11 +298,7 @@ pub fn construct(
     let shown = crate::crank::shown_position(thetas);
     for (i, &theta) in thetas.iter().enumerate() {
         b.set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
-        let pen = if shown == Some(i) {
-            Role::Result
-        } else {
-            Role::Construction
-        };
+        let pen = crate::crank::position_pen(shown == Some(i));
         let row = position(b, &fr, (fb, length_scale), (i as u32, theta, rq), pen)?;
         if row.flagged {
             flagged.push(row);

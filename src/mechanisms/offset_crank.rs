@@ -249,9 +249,7 @@ pub fn construct(
 /// line of the stroke at the crosshead, joined in the order of the crank angles, closed over
 /// a full turn (outstroke on one side, return on the other).
 fn velocity_curve(b: &mut Board, thetas: &[f64], mut tips: Vec<H<Point>>) {
-    if crate::crank::spans_full_turn(thetas) && tips.len() > 2 {
-        tips.push(tips[0]);
-    }
+    crate::crank::close_over_turn(thetas, &mut tips);
     if tips.len() > 1 {
         b.curve(
             &tips,
@@ -437,11 +435,7 @@ fn position(
 ) -> Result<(OffsetRow, Option<H<Point>>), ConstructionError> {
     let ls = sc.length;
     // One position in the result pen, the others thin (the plates' way).
-    let pen = if shown {
-        Role::Result
-    } else {
-        Role::Construction
-    };
+    let pen = crate::crank::position_pen(shown);
     let at = crosshead(b, fr, (k, ls), (i, theta, pen))?;
     let x = b.measure(
         &fr.inner,

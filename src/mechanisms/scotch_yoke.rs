@@ -131,11 +131,8 @@ pub fn construct(
     }
     b.clear_context();
     // Over a full turn each curve closes on its first point (KG Abb. 1069's ellipse).
-    let closed = crate::crank::spans_full_turn(&thetas);
     for (pts, label) in curves.iter_mut().zip(["c′", "b′"]) {
-        if closed && pts.len() > 2 {
-            pts.push(pts[0]);
-        }
+        crate::crank::close_over_turn(&thetas, pts);
         if pts.len() > 1 {
             b.curve(
                 pts,
@@ -498,9 +495,7 @@ fn compare_curve(
         pts.push(b.lay_off(&at, &up, -v / scale, Role::Auxiliary, note.clone())?);
     }
     let angles: Vec<f64> = res.rows.iter().map(|r| r.theta).collect();
-    if crate::crank::spans_full_turn(&angles) && pts.len() > 2 {
-        pts.push(pts[0]);
-    }
+    crate::crank::close_over_turn(&angles, &mut pts);
     if pts.len() > 1 {
         b.curve(&pts, Trace::Smooth, Role::Auxiliary, note.clone());
     }

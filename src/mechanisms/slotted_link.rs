@@ -456,11 +456,7 @@ impl Lever {
     /// The name of a point of this position: written at the position shown, kept in the
     /// protocol only at the others.
     fn name(&self, base: &'static str) -> Label {
-        if self.shown {
-            Label::plain(base)
-        } else {
-            Label::quiet(base, self.k)
-        }
+        crate::crank::position_name(base, self.k, self.shown)
     }
 }
 
@@ -482,11 +478,7 @@ fn lever_at(
 ) -> Result<Lever, ConstructionError> {
     // One position in the result pen, the others thin (the plates' way); the two extra
     // positions of the largest speeds keep their pins' names in the protocol only.
-    let pen = if shown {
-        Role::Result
-    } else {
-        Role::Construction
-    };
+    let pen = crate::crank::position_pen(shown);
     let name = if k < 90 {
         Label::indexed("C", k)
     } else {
@@ -508,10 +500,7 @@ fn lever_at(
         &fr.d,
         &lever,
         link.lever_length / u.length_scale,
-        pen.labelled(match shown {
-            true => Label::plain("E"),
-            false => Label::quiet("E", k),
-        }),
+        pen.labelled(crate::crank::position_name("E", k, shown)),
         n("E at the lever’s length from D", None),
     )?;
     Ok(Lever {
@@ -535,11 +524,7 @@ fn position(
     let place = b.foot(
         &fr.guide,
         &lv.e,
-        match lv.shown {
-            true => Role::Result,
-            false => Role::Construction,
-        }
-        .labelled(Label::quiet("S", k)),
+        crate::crank::position_pen(lv.shown).labelled(Label::quiet("S", k)),
         n("the table’s place: E on the guide", Some("Tisch")),
     );
     let s = b.measure(

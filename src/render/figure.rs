@@ -1,5 +1,6 @@
 //! One SVG figure of a recorded construction.
 
+use super::extent::*;
 use super::labels::{self, Placement};
 use super::style::class as class_of;
 use super::style::*;
@@ -7,9 +8,7 @@ use crate::fmt::{num, sheet_text, subscripts};
 use crate::kernel::construct::clip_to_rect;
 use crate::kernel::tolerance::{MIN_DRAWN_MM, NICE_SCALE_SLACK};
 use crate::kernel::{Point, Vector};
-use crate::protocol::{
-    Board, FigureMeta, Geom, Label, Object, Role, ScaleBar, Step, StepId, TABLE_BLOCK_ROWS,
-};
+use crate::protocol::{Board, FigureMeta, Geom, Label, Object, Role, ScaleBar, Step, StepId};
 use svg::node::element::{
     Circle as SCircle, Definitions, Group, Line as SLine, Marker, Path, Style, TSpan, Text, Title,
 };
@@ -67,131 +66,6 @@ impl Frame {
 /// larger dimension.
 const CLIP_REACH: f64 = 0.12;
 
-fn line_ends(obj: &Object) -> Option<(Point, Point)> {
-    match &obj.geom {
-        Geom::Line { line, extent } => {
-            let (a, b) = if extent[1] - extent[0] > 0.0 {
-                (extent[0] - LINE_OVERSHOOT, extent[1] + LINE_OVERSHOOT)
-            } else {
-                (
-                    extent[0] - 2.0 * LINE_OVERSHOOT,
-                    extent[1] + 2.0 * LINE_OVERSHOOT,
-                )
-            };
-            Some((line.point_at(a), line.point_at(b)))
-        }
-        _ => None,
-    }
-}
-
-fn compass_arc_half_angle(radius: f64) -> f64 {
-    (0.5 * COMPASS_ARC / radius).min(20f64.to_radians())
-}
-
-/// The points that bound an object's drawing.
-pub(crate) fn extent_points(obj: &Object, out: &mut Vec<Point>) {
-    match &obj.geom {
-        Geom::Point { at } => out.push(*at),
-        Geom::Line { .. } => {
-            if let Some((a, b)) = line_ends(obj) {
-                out.push(a);
-                out.push(b);
-            }
-        }
-        Geom::Segment { segment } | Geom::Vector { segment } => {
-            out.push(segment.a);
-            out.push(segment.b);
-        }
-        Geom::Circle {
-            circle,
-            full,
-            marks,
-        } => {
-            if *full {
-                let r = Vector::new(circle.radius, circle.radius);
-                out.push(circle.center - r);
-                out.push(circle.center + r);
-            } else {
-                let h = compass_arc_half_angle(circle.radius).to_degrees();
-                for m in marks {
-                    for d in [-h, 0.0, h] {
-                        out.push(circle.point_at_deg(m + d));
-                    }
-                }
-            }
-        }
-        Geom::Arc { arc } => {
-            for k in 0..=8 {
-                out.push(arc.point_at_fraction(k as f64 / 8.0));
-            }
-        }
-        Geom::Curve { points, .. } => out.extend(points.iter().copied()),
-        Geom::Table { at, rows } => {
-            for (block, corner) in table_blocks(*at, rows) {
-                let (w, h) = table_size(&block);
-                out.push(corner);
-                out.push(corner + Vector::new(w, -h));
-            }
-        }
-        Geom::Scalar { .. } => {}
-    }
-}
-
-/// Column widths of a table (mm), estimated from the character counts.
-fn table_columns(rows: &[Vec<String>]) -> Vec<f64> {
-    let n = rows.iter().map(|r| r.len()).max().unwrap_or(0);
-    (0..n)
-        .map(|c| {
-            rows.iter()
-                .filter_map(|r| r.get(c))
-                .map(|s| s.chars().count())
-                .max()
-                .unwrap_or(0) as f64
-                * TABLE_CHAR
-                + TABLE_GAP
-        })
-        .collect()
-}
-
-/// A table cut into blocks of at most [`TABLE_BLOCK_ROWS`] body rows, each with the header,
-/// side by side from `at`.
-fn table_blocks(at: Point, rows: &[Vec<String>]) -> Vec<(Vec<Vec<String>>, Point)> {
-    let Some((head, body)) = rows.split_first() else {
-        return Vec::new();
-    };
-    let mut out = Vec::new();
-    let mut x = at.x;
-    for chunk in body.chunks(TABLE_BLOCK_ROWS.max(1)) {
-        let mut block = vec![head.clone()];
-        block.extend(chunk.iter().cloned());
-        let (w, _) = table_size(&block);
-        out.push((block, Point::new(x, at.y)));
-        x += w + 3.0 * TABLE_GAP;
-    }
-    if body.is_empty() {
-        out.push((vec![head.clone()], at));
-    }
-    out
-}
-
-/// Whether a table is a heading: one row of one cell (a load case's name over its row),
-/// set larger and without a rule.
-fn is_heading(rows: &[Vec<String>]) -> bool {
-    rows.len() == 1 && rows[0].len() == 1
-}
-
-/// Width and height of a table (mm).
-fn table_size(rows: &[Vec<String>]) -> (f64, f64) {
-    if is_heading(rows) {
-        let n = rows[0][0].chars().count() as f64;
-        return (n * HEADING_CHAR, HEADING_ROW);
-    }
-    (
-        table_columns(rows).iter().sum(),
-        rows.len() as f64 * TABLE_ROW,
-    )
-}
-
 fn bounds(pts: &[Point]) -> [f64; 4] {
     let (mut min_x, mut max_x, mut min_y, mut max_y) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
     for p in pts {
@@ -210,12 +84,34 @@ fn placed(board: &Board, f: &Frame) -> Placement {
     })
 }
 
+/// A board made ready to draw: its parts set out ([`super::layout`]), its frame and its
+/// lettering placed. What [`figure`] draws and [`inspect`] measures.
+struct Sheet<'a> {
+    board: std::borrow::Cow<'a, Board>,
+    frame: Frame,
+    labels: Placement,
+}
+
+impl Sheet<'_> {
+    fn of<'a>(meta: &FigureMeta, board: &'a Board) -> Sheet<'a> {
+        let board = match super::layout::laid_out(board) {
+            Some(moved) => std::borrow::Cow::Owned(moved),
+            None => std::borrow::Cow::Borrowed(board),
+        };
+        let frame = frame_of(&board, meta);
+        let labels = placed(&board, &frame);
+        Sheet {
+            board,
+            frame,
+            labels,
+        }
+    }
+}
+
 /// The labels of a figure as [`figure`] places them.
 #[cfg(test)]
 pub(crate) fn placement(meta: &FigureMeta, board: &Board) -> Placement {
-    let laid = super::layout::laid_out(board);
-    let board = laid.as_ref().unwrap_or(board);
-    placed(board, &frame_of(board, meta))
+    Sheet::of(meta, board).labels
 }
 
 /// The straight strokes the figure draws (lines as clipped, segments, vectors, the sides of
@@ -803,31 +699,22 @@ impl FigureReport {
 /// assert_eq!(report.labels, 3);
 /// ```
 pub fn inspect(meta: &FigureMeta, board: &Board) -> FigureReport {
-    let laid = super::layout::laid_out(board);
-    let board = laid.as_ref().unwrap_or(board);
-    let f = frame_of(board, meta);
-    let placed = placed(board, &f);
-    let at = |o: &Object| placed.get(o.id).map(|p| p.at);
-    let o = labels::overprints(board, &at, Some(label_region(&f)));
-    let parts = super::layout::part_boxes(board);
-    let overlap =
-        |a: &[f64; 4], b: &[f64; 4]| a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
-    let part_overlaps = (parts.iter().enumerate())
-        .map(|(i, a)| {
-            (parts[i + 1..].iter())
-                .filter(|b| overlap(&a.bounds, &b.bounds))
-                .count()
-        })
-        .sum();
+    let Sheet {
+        board,
+        frame: f,
+        labels: placed,
+    } = Sheet::of(meta, board);
     let region = label_region(&f);
+    let at = |o: &Object| placed.get(o.id).map(|p| p.at);
+    let o = labels::overprints(&board, &at, Some(region));
     FigureReport {
         labels: placed.labels,
         left_out: placed.crowded,
         overprints: o.pairs,
         on_dots: o.on_dots,
         off_sheet: o.off_sheet,
-        part_overlaps,
-        emptiest_mm: emptiest(board, &f, &placed),
+        part_overlaps: super::layout::overlapping_pairs(&super::layout::part_boxes(&board)),
+        emptiest_mm: emptiest(&board, &f, &placed),
         area_mm: [region[2] - region[0], region[3] - region[1]],
     }
 }
@@ -916,10 +803,12 @@ pub fn figure_lettered(
     board: &Board,
     upto: Option<StepId>,
 ) -> (String, Lettering) {
-    let laid = super::layout::laid_out(board);
-    let board = laid.as_ref().unwrap_or(board);
-    let f = frame_of(board, meta);
-    let labels = placed(board, &f);
+    let Sheet {
+        board,
+        frame: f,
+        labels,
+    } = Sheet::of(meta, board);
+    let board = &*board;
     let lettering = Lettering {
         labels: labels.labels,
         left_out: labels.crowded,

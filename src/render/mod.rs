@@ -6,6 +6,7 @@ mod book;
 mod drafting;
 #[cfg(feature = "export")]
 pub mod export;
+mod extent;
 mod figure;
 pub mod forces;
 mod labels;

@@ -549,10 +549,8 @@ fn kg_1_20_times_is_one_plus_one_fifth_not_the_ratio_of_abb_1050() {
 #[test]
 fn the_book_rows_of_the_bundled_scenes_are_reproduced_or_explained() {
     use graphostatik::protocol::{BoardConfig, Mode};
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes");
     let (mut shown, mut explained) = (0, 0);
-    for e in std::fs::read_dir(dir).unwrap() {
-        let p = e.unwrap().path();
+    for p in super::support::bundled_scenes() {
         let any = graphostatik::scene::AnyScene::load(&p).unwrap();
         if any.book().is_empty() {
             continue;

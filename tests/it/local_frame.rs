@@ -74,13 +74,8 @@ fn worst_relative(text: &str, name: &str) -> (f64, usize, String) {
 
 #[test]
 fn every_bundled_scene_far_from_the_origin_keeps_its_digits() {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes");
     let (mut shifted, mut worst) = (0, 0.0f64);
-    for entry in std::fs::read_dir(dir).unwrap() {
-        let path = entry.unwrap().path();
-        if path.extension().is_none_or(|e| e != "json") {
-            continue;
-        }
+    for path in super::support::bundled_scenes() {
         let text = std::fs::read_to_string(&path).unwrap();
         let base: Value = serde_json::from_str(&text).unwrap();
         for dx in [1e3, 1e6, 1e8] {
