@@ -67,3 +67,4 @@ pub mod scene;
 pub mod serve;
 pub mod statics;
 pub mod truss;
+pub mod web;

@@ -41,6 +41,13 @@ impl Frame {
     fn title_block(&self) -> f64 {
         TITLE_BLOCK + TITLE_LINE * self.title.len().saturating_sub(1) as f64
     }
+    /// Where `p` stands on the sheet (SVG user units), as [`Frame::x`] and [`Frame::y`] write it.
+    fn at(&self, p: &Point) -> [f64; 2] {
+        [
+            p.x - self.min_x + MARGIN,
+            self.max_y - p.y + MARGIN + self.title_block(),
+        ]
+    }
     fn x(&self, p: &Point) -> String {
         num(p.x - self.min_x + MARGIN, 3)
     }
@@ -803,11 +810,48 @@ pub fn figure_lettered(
     board: &Board,
     upto: Option<StepId>,
 ) -> (String, Lettering) {
+    draw(meta, Sheet::of(meta, board), upto)
+}
+
+/// The figure of `board`, as [`figure`] draws it, and where the points `ids` stand on its
+/// sheet (SVG user units, mm from the sheet's top left corner; `None` for an id that is not a
+/// point of the board): what the browser page needs to put a drag handle over a given point.
+///
+/// ```
+/// use graphostatik::protocol::{Board, FigureMeta, Note, Role, Topic};
+/// use graphostatik::kernel::Point;
+/// let mut b = Board::recording();
+/// let n = Note::new("given", Topic::Custom("demo"));
+/// let a = b.point(Point::new(0.0, 0.0), Role::Given.named("A"), n.clone());
+/// let c = b.point(Point::new(30.0, 10.0), Role::Given.named("C"), n);
+/// let (svg, at) = graphostatik::render::figure_with_points(
+///     &FigureMeta::titled("Two points"), &b, &[a.id, c.id]);
+/// let (a, c) = (at[0].unwrap(), at[1].unwrap());
+/// assert!(svg.contains("<svg"));
+/// assert!((c[0] - a[0] - 30.0).abs() < 1e-9 && (a[1] - c[1] - 10.0).abs() < 1e-9);
+/// ```
+pub fn figure_with_points(
+    meta: &FigureMeta,
+    board: &Board,
+    ids: &[crate::protocol::ObjId],
+) -> (String, Vec<Option<[f64; 2]>>) {
+    let sheet = Sheet::of(meta, board);
+    let at = (ids.iter())
+        .map(|&id| match sheet.board.object(id).map(|o| &o.geom) {
+            Some(Geom::Point { at }) => Some(sheet.frame.at(at)),
+            _ => None,
+        })
+        .collect();
+    (draw(meta, sheet, None).0, at)
+}
+
+/// Draws a sheet made ready: the title block, then one layer per step up to `upto`.
+fn draw(meta: &FigureMeta, sheet: Sheet<'_>, upto: Option<StepId>) -> (String, Lettering) {
     let Sheet {
         board,
         frame: f,
         labels,
-    } = Sheet::of(meta, board);
+    } = sheet;
     let board = &*board;
     let lettering = Lettering {
         labels: labels.labels,

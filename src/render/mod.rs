@@ -19,10 +19,13 @@ mod walkthrough;
 pub use crate::protocol::{FigureMeta, ScaleBar};
 pub use book::{book_rows, book_table_text, BookRow, Verdict};
 pub use drafting::drafting_table_text;
-pub use figure::{figure, figure_lettered, inspect, FigureReport, Lettering};
+pub use figure::{figure, figure_lettered, figure_with_points, inspect, FigureReport, Lettering};
 pub use plot::{accuracy_plot_svg, accuracy_table_text};
 pub use table::{
     check_rows, check_table_json, check_table_text, reference_rows, reference_table_json,
     reference_table_text, summary_json, CheckRow, KindJson, ReferenceTableRow, SummaryJson,
 };
-pub use walkthrough::{html_text, walkthrough, walkthrough_html, Grouping, Page, WalkOptions};
+pub use walkthrough::{
+    html_text, walkthrough, walkthrough_html, walkthrough_items, walkthrough_page, Grouping, Page,
+    WalkOptions,
+};

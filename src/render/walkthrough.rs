@@ -98,11 +98,22 @@ pub fn walkthrough(meta: &FigureMeta, board: &Board) -> Vec<Page> {
 
 /// The walk-through page of `board` with its options.
 pub fn walkthrough_html(meta: &FigureMeta, board: &Board, opts: &WalkOptions) -> String {
-    let svg = figure(meta, board, None);
+    walkthrough_page(meta, &figure(meta, board, None), board, opts)
+}
+
+/// The list of the walk-through's pages (`<li>` items of `#wt-steps`), each step's caption,
+/// German term, book and checks: what the browser page puts in place after a replay.
+pub fn walkthrough_items(board: &Board, grouping: Grouping) -> String {
     let mut items = String::new();
-    for group in page_groups(board, opts.grouping) {
+    for group in page_groups(board, grouping) {
         items.push_str(&group_item(&group));
     }
+    items
+}
+
+/// The walk-through page around a figure drawn already (`svg`, of `board`).
+pub fn walkthrough_page(meta: &FigureMeta, svg: &str, board: &Board, opts: &WalkOptions) -> String {
+    let items = walkthrough_items(board, opts.grouping);
     let error = opts
         .error
         .as_ref()

@@ -31,6 +31,7 @@ mod error;
 mod fields;
 mod force_system;
 mod four_bar;
+mod handles;
 mod header;
 mod offset_crank;
 mod procedure;
@@ -69,6 +70,7 @@ pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,
 };
 pub use four_bar::{FourBarDrawingSpec, FourBarOutput, FourBarProblem, FourBarScene, LinksSpec};
+pub use handles::{handles, Drag, Handle};
 pub use header::{Preview, Slider};
 pub use offset_crank::{OffsetDrawingSpec, OffsetOutput, OffsetProblem, OffsetScene};
 pub use procedure::{parse_scene, scene_field, Procedure, ReadContext, SceneHeader, SchemaType};

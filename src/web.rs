@@ -1,0 +1,262 @@
+//! The engine as the browser page calls it: a scene's JSON in, one JSON answer out, with
+//! everything the page shows (the figure with its step layers, the walk-through's step list,
+//! the checks with their bounds, the handles to drag, the sliders) or the one-line error of a
+//! refused scene.
+//!
+//! The same function runs natively (`graphostatik site` writes each page's first answer
+//! into it) and as WebAssembly in the page (`wasm/`, a plain C ABI over [`replay`]): it
+//! reads no file, starts no thread and asks no clock. A scene is read under the limits of a
+//! figure ([`AnyScene::from_json`]), so a dragged input the command line would refuse as too
+//! costly is refused here with the same line.
+
+use crate::protocol::{Board, BoardConfig, FigureMeta, ObjId};
+use crate::render::{figure_with_points, walkthrough_items, Grouping};
+use crate::scene::{handles, AnyScene, Handle, Preview};
+use serde::Serialize;
+
+/// The answer to the page: a construction, or why there is none.
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum Answer {
+    /// The scene was read and constructed.
+    Built(Box<Built>),
+    /// It was refused: `{"ok": false, "error": "…"}`.
+    Refused {
+        /// Always false.
+        ok: bool,
+        /// One line naming the field, as the command line gives it.
+        error: String,
+    },
+}
+
+/// A construction as the page needs it.
+#[derive(Debug, Clone, Serialize)]
+pub struct Built {
+    /// Always true.
+    pub ok: bool,
+    /// The figure's title and book reference.
+    pub title: String,
+    /// The book reference under the title.
+    pub source: String,
+    /// The figure (SVG, one `<g data-step="N">` layer per step).
+    pub svg: String,
+    /// The walk-through's step list (`<li>` items, one per step).
+    pub items: String,
+    /// Every step: number, caption, situation, German term, book.
+    pub steps: Vec<StepLine>,
+    /// Every check of every step, with its bound.
+    pub checks: Vec<CheckLine>,
+    /// How many checks failed.
+    pub failed: usize,
+    /// The given points the student can drag.
+    pub handles: Vec<PlacedHandle>,
+    /// The numbers the scene's `preview.sliders` move, with their values now.
+    pub sliders: Vec<SliderLine>,
+}
+
+/// One step of the protocol.
+#[derive(Debug, Clone, Serialize)]
+pub struct StepLine {
+    /// Its number.
+    pub id: u32,
+    /// What it draws ("pole ray").
+    pub caption: String,
+    /// The situation (load case, crank angle), if any.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub context: Option<String>,
+    /// The German term.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub term_de: Option<String>,
+    /// The book reference.
+    pub book: String,
+}
+
+/// One check: constructed value against the closed form, with its bound and tolerance.
+#[derive(Debug, Clone, Serialize)]
+pub struct CheckLine {
+    /// The step that made it.
+    pub step: u32,
+    /// What is checked.
+    pub quantity: String,
+    /// Its unit.
+    pub unit: String,
+    /// The value read off the construction.
+    pub constructed: f64,
+    /// The closed form's value.
+    pub closed_form: f64,
+    /// Their difference.
+    pub error: f64,
+    /// The propagated bound of the construction's error.
+    pub bound: f64,
+    /// What the check allows.
+    pub tolerance: f64,
+    /// Whether it passed.
+    pub passed: bool,
+}
+
+/// A handle where the figure draws its point (SVG user units, from the sheet's top left).
+#[derive(Debug, Clone, Serialize)]
+pub struct PlacedHandle {
+    /// The handle.
+    #[serde(flatten)]
+    pub handle: Handle,
+    /// Where its point stands on the sheet.
+    pub at: [f64; 2],
+    /// Where an angle's centre stands on the sheet.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub center: Option<[f64; 2]>,
+}
+
+/// A slider of `preview.sliders`, its field as a JSON pointer and its value now.
+#[derive(Debug, Clone, Serialize)]
+pub struct SliderLine {
+    /// The JSON pointer of the number (`/forces/1/angle_deg`).
+    pub field: String,
+    /// The name on the page.
+    pub label: String,
+    /// Lowest value.
+    pub min: f64,
+    /// Highest value.
+    pub max: f64,
+    /// Step between values.
+    pub step: f64,
+    /// The value in the scene now.
+    pub value: f64,
+}
+
+/// Reads `scene` (JSON text; `origin` names it in errors), constructs it for a figure and
+/// answers as [`Answer`]'s JSON. Never panics on any input text.
+///
+/// ```
+/// let scene = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"),
+///     "/scenes/lh_aufgabe4_shed_roof.json")).unwrap();
+/// let a: serde_json::Value = serde_json::from_str(
+///     &graphostatik::web::replay(&scene, "shed_roof.json")).unwrap();
+/// assert_eq!(a["ok"], true);
+/// assert_eq!(a["failed"], 0);
+/// // Each joint can be dragged: LH B.4, Aufgabe 4 draws the truss once per load case.
+/// assert!(a["handles"].as_array().unwrap().iter().any(|h| h["name"] == "joint III"));
+/// let refused = graphostatik::web::replay("{ \"title\": 3 }", "x.json");
+/// assert!(refused.starts_with("{\"ok\":false,\"error\":\"x.json"));
+/// ```
+pub fn replay(scene: &str, origin: &str) -> String {
+    let answer = match build(scene, origin) {
+        Ok(b) => Answer::Built(Box::new(b)),
+        Err(error) => Answer::Refused { ok: false, error },
+    };
+    serde_json::to_string(&answer).unwrap_or_else(|e| {
+        serde_json::json!({ "ok": false, "error": format!("{origin}: {e}") }).to_string()
+    })
+}
+
+/// The construction of `text` with everything the page shows.
+pub fn build(text: &str, origin: &str) -> Result<Built, String> {
+    let scene = AnyScene::from_json(text, origin).map_err(|e| e.to_string())?;
+    let sliders = sliders(text, origin)?;
+    let p = scene.problem();
+    let board = p
+        .construct(BoardConfig::DRAWING)
+        .map_err(|e| match p.error_field(&e) {
+            Some(f) => format!("{origin}: {f}: {e}"),
+            None => format!("{origin}: {e}"),
+        })?;
+    let meta = p.figure_meta();
+    Ok(built(&meta, &board, handles(&scene, &board), sliders))
+}
+
+/// The answer of a constructed board.
+fn built(
+    meta: &FigureMeta,
+    board: &Board,
+    handles: Vec<Handle>,
+    sliders: Vec<SliderLine>,
+) -> Built {
+    let mut ids: Vec<ObjId> = handles.iter().map(|h| h.object).collect();
+    ids.extend(handles.iter().filter_map(Handle::center));
+    let (svg, at) = figure_with_points(meta, board, &ids);
+    let n = handles.len();
+    let mut centers = at[n..].iter();
+    let placed = (handles.into_iter().zip(&at[..n]))
+        .filter_map(|(h, at)| {
+            let center = match h.center() {
+                Some(_) => Some((*centers.next()?)?),
+                None => None,
+            };
+            Some(PlacedHandle {
+                handle: h,
+                at: (*at)?,
+                center,
+            })
+        })
+        .collect();
+    let steps = board.steps();
+    let checks: Vec<CheckLine> = (steps.iter())
+        .flat_map(|s| s.checks.iter().map(move |c| (s.id.0, c)))
+        .map(|(step, c)| CheckLine {
+            step,
+            quantity: c.quantity.to_string(),
+            unit: c.unit.to_string(),
+            constructed: c.constructed,
+            closed_form: c.closed_form,
+            error: c.error,
+            bound: c.bound,
+            tolerance: c.tolerance,
+            passed: c.passed,
+        })
+        .collect();
+    Built {
+        ok: true,
+        title: meta.title.to_string(),
+        source: meta.source.to_string(),
+        svg,
+        items: walkthrough_items(board, Grouping::Step),
+        steps: (steps.iter())
+            .map(|s| StepLine {
+                id: s.id.0,
+                caption: s.caption.to_string(),
+                context: s.context.as_deref().map(str::to_string),
+                term_de: s.term_de.as_deref().map(str::to_string),
+                book: s.book.to_string(),
+            })
+            .collect(),
+        failed: checks.iter().filter(|c| !c.passed).count(),
+        checks,
+        handles: placed,
+        sliders,
+    }
+}
+
+/// The scene's `preview.sliders` with their values now; a slider that names no number of
+/// the scene is refused naming it.
+fn sliders(text: &str, origin: &str) -> Result<Vec<SliderLine>, String> {
+    let value: serde_json::Value =
+        serde_json::from_str(text).map_err(|e| format!("{origin}: {e}"))?;
+    let Some(p) = value.get("preview") else {
+        return Ok(Vec::new());
+    };
+    let preview: Preview =
+        serde_json::from_value(p.clone()).map_err(|e| format!("{origin}: preview: {e}"))?;
+    let mut out = Vec::new();
+    for (i, s) in preview.sliders.iter().enumerate() {
+        let field = format!("{origin}: preview.sliders[{i}]");
+        if let Some(why) = s.problem() {
+            return Err(format!("{field}: {why}"));
+        }
+        let ptr = s.pointer().unwrap_or_default();
+        let Some(v) = value.pointer(&ptr).and_then(serde_json::Value::as_f64) else {
+            return Err(format!(
+                "{field}.field: the scene has no number `{}`",
+                s.field
+            ));
+        };
+        out.push(SliderLine {
+            label: s.label.clone().unwrap_or_else(|| s.field.clone()),
+            field: ptr,
+            min: s.min,
+            max: s.max,
+            step: s.step(),
+            value: v,
+        });
+    }
+    Ok(out)
+}

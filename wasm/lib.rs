@@ -1,0 +1,125 @@
+//! The graphostatik engine for the browser: `graphostatik::web::replay` behind a plain C ABI,
+//! so that the page needs no generated glue (`site/engine.js` calls these five functions).
+//!
+//! The page copies the scene's name and text into buffers it asks [`gs_alloc`] for, calls
+//! [`gs_replay`] and reads the answer (JSON, UTF-8) at [`gs_out_ptr`] for the length
+//! `gs_replay` returned. A panic cannot unwind out of WebAssembly: it traps, after the hook
+//! below has kept its message, which the page reads with [`gs_panic_ptr`] and
+//! [`gs_panic_len`] before it starts a fresh instance. Nothing here uses threads, clocks or
+//! files.
+
+use std::cell::RefCell;
+
+thread_local! {
+    /// The last answer, kept until the next call.
+    static OUT: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
+    /// The message of a panic, kept for the page.
+    static PANIC: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
+}
+
+/// A buffer of `len` bytes for the page to write into; it is freed by the call it is passed
+/// to.
+#[no_mangle]
+pub extern "C" fn gs_alloc(len: usize) -> *mut u8 {
+    let mut v = Vec::<u8>::with_capacity(len.max(1));
+    let p = v.as_mut_ptr();
+    std::mem::forget(v);
+    p
+}
+
+/// Takes back a buffer of [`gs_alloc`] that was not passed to [`gs_replay`].
+///
+/// # Safety
+/// `ptr` and `len` are a buffer [`gs_alloc`] returned for `len` bytes, not freed since.
+#[no_mangle]
+pub unsafe extern "C" fn gs_free(ptr: *mut u8, len: usize) {
+    drop(Vec::from_raw_parts(ptr, 0, len.max(1)));
+}
+
+/// Replays the scene `text` (named `name` in errors): both buffers of [`gs_alloc`] filled
+/// with UTF-8, and freed here. Returns the length of the JSON answer at [`gs_out_ptr`].
+///
+/// # Safety
+/// Each pointer and length is a buffer [`gs_alloc`] returned for that many bytes, all
+/// written.
+#[no_mangle]
+pub unsafe extern "C" fn gs_replay(
+    name: *mut u8,
+    name_len: usize,
+    text: *mut u8,
+    text_len: usize,
+) -> usize {
+    install_hook();
+    let name = Vec::from_raw_parts(name, name_len, name_len.max(1));
+    let text = Vec::from_raw_parts(text, text_len, text_len.max(1));
+    let name = String::from_utf8_lossy(&name).into_owned();
+    let answer = match std::str::from_utf8(&text) {
+        Ok(t) => graphostatik::web::replay(t, &name),
+        Err(e) => {
+            // The byte offset of the first invalid byte, as a line and column.
+            let before = &text[..e.valid_up_to()];
+            let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
+            let col = before.len()
+                - before
+                    .iter()
+                    .rposition(|&b| b == b'\n')
+                    .map_or(0, |i| i + 1)
+                + 1;
+            let error = format!("{name}:{line}:{col}: the scene is not UTF-8 text");
+            format!("{{\"ok\":false,\"error\":{}}}", json_string(&error))
+        }
+    };
+    OUT.with(|o| {
+        let mut o = o.borrow_mut();
+        *o = answer.into_bytes();
+        o.len()
+    })
+}
+
+/// Where the last answer starts.
+#[no_mangle]
+pub extern "C" fn gs_out_ptr() -> *const u8 {
+    OUT.with(|o| o.borrow().as_ptr())
+}
+
+/// Where the message of the panic that trapped the last call starts.
+#[no_mangle]
+pub extern "C" fn gs_panic_ptr() -> *const u8 {
+    PANIC.with(|p| p.borrow().as_ptr())
+}
+
+/// The length of that message (0: no panic).
+#[no_mangle]
+pub extern "C" fn gs_panic_len() -> usize {
+    PANIC.with(|p| p.borrow().len())
+}
+
+/// Keeps a panic's message (one line) where the page can read it after the trap.
+fn install_hook() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        std::panic::set_hook(Box::new(|info| {
+            let msg = info.to_string().replace('\n', " ");
+            PANIC.with(|p| {
+                if let Ok(mut p) = p.try_borrow_mut() {
+                    *p = msg.into_bytes();
+                }
+            });
+        }))
+    });
+}
+
+/// `s` as a JSON string.
+fn json_string(s: &str) -> String {
+    let mut out = String::from("\"");
+    for c in s.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
