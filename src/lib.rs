@@ -46,8 +46,10 @@
 //! 4. [`scene`]: the JSON scene format, the [`scene::Procedure`] trait and its registry;
 //! 5. [`render`]: textbook-style SVG, one layer per step, the walk-through page, the check
 //!    table, the tables of member forces, and PNG, PDF and TikZ exports (feature `export`);
-//! 6. `serve`, the live preview, and the `graphostatik` command line (feature `cli`, on by
-//!    default).
+//! 6. [`web`], the engine as a browser page calls it (scene JSON in, page JSON out; the
+//!    crate `graphostatik-wasm` compiles it to WebAssembly), [`site`], the static site
+//!    around it, `serve`, the live preview, and the `graphostatik` command line (feature
+//!    `cli`, on by default).
 //!
 //! [`prelude`] gathers what a construction in Rust needs; [`fmt`] and [`io`] are helpers
 //! (fixed number formatting, atomic writes).
@@ -65,6 +67,7 @@ pub mod render;
 pub mod scene;
 #[cfg(feature = "cli")]
 pub mod serve;
+pub mod site;
 pub mod statics;
 pub mod truss;
 pub mod web;

@@ -150,6 +150,23 @@ enum Command {
         #[arg(long, value_enum, default_value_t = GroupArg::Step)]
         group: GroupArg,
     },
+    /// Write a static site of scenes that runs the engine (WebAssembly) in the page: an index
+    /// with thumbnails and, per scene, its walk-through in which the student drags the given
+    /// points (truss joints, points of application, force directions, the pole, crank pins) and
+    /// the scene's `preview.sliders`, the construction and its checks replayed as the pointer
+    /// moves. Opens from the file system; no server.
+    Site {
+        /// Scene files, or folders of scenes (every *.json in them).
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+        /// Output folder (created if missing).
+        #[arg(long)]
+        out: PathBuf,
+        /// The engine, graphostatik_wasm.wasm (default: where `cargo build -p graphostatik-wasm
+        /// --target wasm32-unknown-unknown --profile wasm` puts it beside this program's build).
+        #[arg(long)]
+        engine: Option<PathBuf>,
+    },
     /// Live preview for authors: each scene's walk-through on http://127.0.0.1:PORT/, reloaded
     /// when its file changes; a bad edit shows its error over the last good figure; the
     /// scene's `preview.sliders` move numbers and replay the construction.
@@ -299,6 +316,11 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
             all,
         } => check_cmd(&scene, json, reference, all),
         Command::Steps { scene, out, group } => steps_cmd(&scene, &out, group),
+        Command::Site {
+            scenes,
+            out,
+            engine,
+        } => site_cmd(&scenes, &out, engine),
         Command::Serve { path, port, bind } => serve_cmd(&path, port, bind),
         Command::Accuracy { scene, svg, json } => accuracy_cmd(&scene, svg.as_deref(), json),
         Command::Drafting {
@@ -734,6 +756,61 @@ fn steps_cmd(scene: &Path, out: &Path, group: GroupArg) -> Result<ExitCode, Fail
         out.join("index.html").display()
     ))?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// `site`: the scenes' pages with the engine, written all or nothing.
+fn site_cmd(scenes: &[PathBuf], out: &Path, engine: Option<PathBuf>) -> Result<ExitCode, Fail> {
+    let wasm_path = engine.or_else(default_engine).ok_or_else(|| {
+        Fail("site: no engine: give --engine FILE (graphostatik_wasm.wasm)".into())
+    })?;
+    let wasm = std::fs::read(&wasm_path).map_err(|e| {
+        Fail(format!(
+            "{}: the engine cannot be read ({e}); build it with `rustup target add \
+             wasm32-unknown-unknown && cargo build -p graphostatik-wasm --target \
+             wasm32-unknown-unknown --profile wasm`, or name it with --engine",
+            wasm_path.display()
+        ))
+    })?;
+    let mut list = Vec::new();
+    for f in scene_files(scenes)? {
+        let text =
+            std::fs::read_to_string(&f).map_err(|e| Fail(format!("{}: {e}", f.display())))?;
+        let name = f
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let origin = f.display().to_string();
+        list.push(graphostatik::site::SiteScene { name, origin, text });
+    }
+    let pages = graphostatik::site::site(&list, &wasm).map_err(|e| match e {
+        graphostatik::site::SiteError::Engine(why) => {
+            Fail(format!("{}: {why}", wasm_path.display()))
+        }
+        graphostatik::site::SiteError::Scene(line) => Fail(line),
+    })?;
+    ensure_dir(out)?;
+    ensure_dir(&out.join("thumbs"))?;
+    let mut batch = Batch::default();
+    for p in pages {
+        batch.add(out.join(&p.name), p.contents);
+    }
+    let bytes = batch.bytes();
+    commit(batch)?;
+    chatter(&format!(
+        "{} scenes in {} ({:.1} MB, open index.html)\n",
+        list.len(),
+        out.display(),
+        bytes as f64 / 1e6
+    ))?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Where `cargo build -p graphostatik-wasm --target wasm32-unknown-unknown --profile wasm`
+/// puts the engine, beside the build of this program (`target/<profile>/graphostatik`).
+fn default_engine() -> Option<PathBuf> {
+    let exe = std::env::current_exe().ok()?;
+    let target = exe.parent()?.parent()?;
+    Some(target.join("wasm32-unknown-unknown/wasm/graphostatik_wasm.wasm"))
 }
 
 /// Removes the walk-through pages (`step-NNN.svg`, files of this tool's naming only) in `dir`

@@ -10,7 +10,7 @@
 //! costly is refused here with the same line.
 
 use crate::protocol::{Board, BoardConfig, FigureMeta, ObjId};
-use crate::render::{figure_with_points, walkthrough_items, Grouping};
+use crate::render::{figure_with_points, walkthrough_item_list, Grouping};
 use crate::scene::{handles, AnyScene, Handle, Preview};
 use serde::Serialize;
 
@@ -40,8 +40,8 @@ pub struct Built {
     pub source: String,
     /// The figure (SVG, one `<g data-step="N">` layer per step).
     pub svg: String,
-    /// The walk-through's step list (`<li>` items, one per step).
-    pub items: String,
+    /// The walk-through's step list: one `<li>` item per step.
+    pub items: Vec<String>,
     /// Every step: number, caption, situation, German term, book.
     pub steps: Vec<StepLine>,
     /// Every check of every step, with its bound.
@@ -209,7 +209,7 @@ fn built(
         title: meta.title.to_string(),
         source: meta.source.to_string(),
         svg,
-        items: walkthrough_items(board, Grouping::Step),
+        items: walkthrough_item_list(board, Grouping::Step),
         steps: (steps.iter())
             .map(|s| StepLine {
                 id: s.id.0,

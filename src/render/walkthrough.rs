@@ -98,22 +98,27 @@ pub fn walkthrough(meta: &FigureMeta, board: &Board) -> Vec<Page> {
 
 /// The walk-through page of `board` with its options.
 pub fn walkthrough_html(meta: &FigureMeta, board: &Board, opts: &WalkOptions) -> String {
-    walkthrough_page(meta, &figure(meta, board, None), board, opts)
+    let items = walkthrough_items(board, opts.grouping);
+    walkthrough_page(meta, &figure(meta, board, None), &items, opts)
 }
 
 /// The list of the walk-through's pages (`<li>` items of `#wt-steps`), each step's caption,
 /// German term, book and checks: what the browser page puts in place after a replay.
 pub fn walkthrough_items(board: &Board, grouping: Grouping) -> String {
-    let mut items = String::new();
-    for group in page_groups(board, grouping) {
-        items.push_str(&group_item(&group));
-    }
-    items
+    walkthrough_item_list(board, grouping).concat()
 }
 
-/// The walk-through page around a figure drawn already (`svg`, of `board`).
-pub fn walkthrough_page(meta: &FigureMeta, svg: &str, board: &Board, opts: &WalkOptions) -> String {
-    let items = walkthrough_items(board, opts.grouping);
+/// [`walkthrough_items`] one item per page, so that a live page can show the current page's
+/// details without taking in the whole list.
+pub fn walkthrough_item_list(board: &Board, grouping: Grouping) -> Vec<String> {
+    (page_groups(board, grouping).iter())
+        .map(|group| group_item(group))
+        .collect()
+}
+
+/// The walk-through page around a figure drawn already (`svg`) and its step list
+/// ([`walkthrough_items`]).
+pub fn walkthrough_page(meta: &FigureMeta, svg: &str, items: &str, opts: &WalkOptions) -> String {
     let error = opts
         .error
         .as_ref()
@@ -270,11 +275,17 @@ main { display: flex; height: calc(100vh - 4em); }
 /// zoom to its bounding box, keys and buttons, and the print panels.
 const SCRIPT: &str = r#"(function () {
 'use strict';
-var svg = document.querySelector('#wt-figure svg');
-var layers = Array.prototype.slice.call(svg.querySelectorAll('g[data-step]'));
-var items = Array.prototype.slice.call(document.querySelectorAll('#wt-steps li'));
-var full = svg.getAttribute('viewBox');
-var k = 0, zoom = false;
+var svg, layers, items, full, k = 0, zoom = false;
+// The figure and the step list as the page holds them now (a live page puts new ones in
+// place after each replay and binds them again).
+function bind() {
+  svg = document.querySelector('#wt-figure svg');
+  layers = Array.prototype.slice.call(svg.querySelectorAll('g[data-step]'));
+  items = Array.prototype.slice.call(document.querySelectorAll('#wt-steps li'));
+  full = svg.getAttribute('viewBox');
+  items.forEach(function (li, j) { li.addEventListener('click', function () { show(j); }); });
+}
+bind();
 function range(li) { return [Number(li.getAttribute('data-first')), Number(li.getAttribute('data-last'))]; }
 function setLayers(root, r) {
   Array.prototype.forEach.call(root.querySelectorAll('g[data-step]'), function (g) {
@@ -341,7 +352,6 @@ function buildPrint() {
     out.appendChild(panel);
   });
 }
-items.forEach(function (li, j) { li.addEventListener('click', function () { show(j); }); });
 document.getElementById('wt-first').addEventListener('click', function () { show(0); });
 document.getElementById('wt-prev').addEventListener('click', function () { show(k - 1); });
 document.getElementById('wt-next').addEventListener('click', function () { show(k + 1); });
@@ -358,8 +368,33 @@ document.addEventListener('keydown', function (e) {
   else if (e.key === 'z') toggleZoom();
   else if (e.key === 'p') { buildPrint(); window.print(); }
 });
-var start = Number((window.location.hash || '#1').slice(1));
+// The step in the address, else the first (the last where the page asks to open on the
+// whole construction: <body data-wt-start="end">).
+var start = Number((window.location.hash ||
+  (document.body.getAttribute('data-wt-start') === 'end' ? '#' + items.length : '#1')).slice(1));
 show(isFinite(start) && start > 0 ? start - 1 : 0);
-window.graphostatikWalk = { show: show, step: function () { return k; }, pages: items.length };
+// A new figure of the same construction (a live page's replay while the student drags): the
+// current page's layers on the fresh figure, nothing else touched. `now` is the current
+// page's item as the replay gives it.
+function swapFigure(now) {
+  svg = document.querySelector('#wt-figure svg');
+  layers = Array.prototype.slice.call(svg.querySelectorAll('g[data-step]'));
+  full = svg.getAttribute('viewBox');
+  var r = range(items[k]);
+  layers.forEach(function (g) {
+    var s = Number(g.getAttribute('data-step'));
+    if (s > r[1]) g.style.display = 'none';
+    else if (s >= r[0]) g.classList.add('current');
+  });
+  if (now !== undefined) {
+    var list = document.createElement('ul');
+    list.innerHTML = now;
+    document.getElementById('wt-now').innerHTML = list.firstChild ? list.firstChild.innerHTML : '';
+  }
+  if (zoom) zoomTo(r);
+}
+window.graphostatikWalk = { show: show, step: function () { return k; }, pages: items.length,
+  rebind: function () { bind(); window.graphostatikWalk.pages = items.length; show(k); },
+  swapFigure: swapFigure };
 })();
 "#;

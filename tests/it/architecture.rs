@@ -154,7 +154,7 @@ fn layer(m: &Module) -> usize {
         Some("crank" | "dynamics" | "mechanisms" | "statics" | "truss") => 2,
         Some("scene") => 3,
         Some("render") => 4,
-        Some("prelude" | "serve") => 5,
+        Some("prelude" | "serve" | "web" | "site") => 5,
         Some(other) => panic!("module {other} is in no layer: add it to the layer list"),
     }
 }

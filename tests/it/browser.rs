@@ -296,3 +296,300 @@ fn an_author_edits_a_scene_and_moves_a_slider_in_the_live_preview() {
     drop(server);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The engine for the site (`target/wasm32-unknown-unknown/wasm/graphostatik_wasm.wasm`
+/// beside this build), built as `.ci/run` builds it (a no-op when fresh); `None` where the
+/// wasm target is not installed and the browser tests are not required.
+fn engine_or_skip(test: &str) -> Option<PathBuf> {
+    let target = bin().parent()?.parent()?.to_path_buf();
+    let wasm = target.join("wasm32-unknown-unknown/wasm/graphostatik_wasm.wasm");
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let built = Command::new(cargo)
+        .args(["build", "-q", "-p", "graphostatik-wasm"])
+        .args(["--target", "wasm32-unknown-unknown", "--profile", "wasm"])
+        .env("CARGO_TARGET_DIR", &target)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .status()
+        .is_ok_and(|s| s.success());
+    match (built && wasm.is_file(), webdriver::required()) {
+        (true, _) => Some(wasm),
+        (false, true) => panic!("{test}: the engine (wasm32-unknown-unknown) did not build"),
+        (false, false) => {
+            eprintln!("{test}: skipped (rustup target add wasm32-unknown-unknown)");
+            None
+        }
+    }
+}
+
+/// The screen centre of the first handle called `name` on the page.
+fn handle_at(s: &Session, name: &str) -> (f64, f64) {
+    let v = s.script(&format!(
+        "var hs = document.querySelectorAll('.gs-handle');\
+         for (var i = 0; i < hs.length; i++) {{\
+           if (hs[i].querySelector('title').textContent.split(':')[0] === {name:?}) {{\
+             var r = hs[i].getBoundingClientRect(); return [r.x + r.width / 2, r.y + r.height / 2]; }} }}\
+         return null;"
+    ));
+    let a = v.as_array().unwrap_or_else(|| panic!("no handle {name}"));
+    (a[0].as_f64().unwrap(), a[1].as_f64().unwrap())
+}
+
+/// The constructed values of the page's last construction, and how many checks failed.
+fn checks(s: &Session) -> (Vec<f64>, u64) {
+    let v = s.script(
+        "var a = window.graphostatikSite.answer();\
+         return [a.checks.map(function (c) { return c.constructed; }), a.failed];",
+    );
+    let values = (v[0].as_array().unwrap().iter())
+        .map(|x| x.as_f64().unwrap_or(f64::NAN))
+        .collect();
+    (values, v[1].as_u64().unwrap())
+}
+
+fn figure_text(s: &Session) -> String {
+    s.script("return document.querySelector('#wt-figure svg').outerHTML;")
+        .as_str()
+        .unwrap()
+        .to_string()
+}
+
+#[test]
+fn a_student_drags_a_joint_and_a_crank_pin_in_the_site() {
+    use serde_json::json;
+    let Some(browser) = browser_or_skip("site") else {
+        return;
+    };
+    let Some(_) = engine_or_skip("site") else {
+        return;
+    };
+    let dir = tmp("site");
+    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let o = Command::new(bin())
+        .arg("site")
+        .arg(manifest.join("scenes/lh_aufgabe4_shed_roof.json"))
+        .arg(manifest.join("tests/it/browser/grid_truss.json"))
+        .arg(manifest.join("scenes/lh_abb52_esselborn.json"))
+        .arg("--out")
+        .arg(dir.join("site"))
+        .output()
+        .unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let s = Session::start(&browser, &dir.join("profile"));
+    s.goto(&format!("file://{}", dir.join("site/index.html").display()));
+    assert_eq!(
+        s.script("return document.querySelectorAll('#gs-index li').length;"),
+        json!(3)
+    );
+    let link = s.find("a[href='lh_aufgabe4_shed_roof.html']");
+    s.cmd("POST", &format!("/element/{link}/click"), Some(json!({})));
+    let ready = "return !!window.graphostatikSite && window.graphostatikSite.ready;";
+    wait_for(
+        &s,
+        ready,
+        &json!(true),
+        "the engine loaded in the truss page",
+    );
+
+    // Drag joint V of LH Aufgabe 4's shed roof: the figure, the members' forces (Cremona
+    // plans of four load cases) and the scene follow; all checks pass.
+    let (before, failed) = checks(&s);
+    assert_eq!(failed, 0);
+    let fig_before = figure_text(&s);
+    let (cx, cy) = handle_at(&s, "joint V");
+    let path: Vec<(f64, f64)> = (1..=6)
+        .map(|k| (cx - 3.0 * k as f64, cy - 3.0 * k as f64))
+        .collect();
+    s.pointer(Some((cx, cy)), &path, false);
+    wait_for(
+        &s,
+        "var c = window.graphostatikSite.scene().joints[4].at_m; return c[0] < 3.3 && c[1] > 0.62;",
+        &json!(true),
+        "joint V moved left and up in the scene",
+    );
+    let png = s.screenshot();
+    keep_screenshot(&png, "site-drag.png", &dir);
+    s.pointer(None, &[], true);
+    let (after, failed) = checks(&s);
+    assert_eq!(failed, 0, "every check passes after the drag");
+    assert_eq!(after.len(), before.len());
+    assert!(
+        before.iter().zip(&after).any(|(a, b)| (a - b).abs() > 1e-6),
+        "member forces changed"
+    );
+    assert_ne!(fig_before, figure_text(&s), "the figure changed");
+
+    // A truss on a grid of 1 m, joint C onto joint B: refused with the error line over the
+    // last good figure; back: drawn again.
+    s.goto(&format!(
+        "file://{}",
+        dir.join("site/grid_truss.html").display()
+    ));
+    wait_for(
+        &s,
+        ready,
+        &json!(true),
+        "the engine loaded in the grid truss page",
+    );
+    let good = s.script("return window.graphostatikSite.good().joints[2].at_m;");
+    let (cx, cy) = handle_at(&s, "joint C");
+    let (bx, by) = handle_at(&s, "joint B");
+    s.pointer(
+        Some((cx, cy)),
+        &[((cx + bx) / 2.0, (cy + by) / 2.0), (bx, by)],
+        false,
+    );
+    wait_for(
+        &s,
+        "var e = document.getElementById('wt-error');\
+         return !!e && e.textContent.indexOf('joint `C` lies on joint `B`') >= 0\
+         && document.querySelectorAll('#wt-figure g[data-step]').length > 10;",
+        &json!(true),
+        "the refusal over the last good figure",
+    );
+    let last_good = s.script("return window.graphostatikSite.good().joints[2].at_m;");
+    assert_ne!(
+        last_good,
+        json!([2, 0]),
+        "the refused scene is not kept as good"
+    );
+    assert_ne!(last_good, good, "the good positions on the way were drawn");
+    s.pointer(None, &[(bx, by - 30.0), (cx, cy)], true);
+    wait_for(
+        &s,
+        "return !document.getElementById('wt-error');",
+        &json!(true),
+        "the error gone once the joint is back",
+    );
+    assert_eq!(checks(&s).1, 0);
+
+    // The crank page: a quarter turn of the pin at θ = 30° moves it to about 120°.
+    s.goto(&format!(
+        "file://{}",
+        dir.join("site/lh_abb52_esselborn.html").display()
+    ));
+    wait_for(
+        &s,
+        ready,
+        &json!(true),
+        "the engine loaded in the crank page",
+    );
+    let (before, _) = checks(&s);
+    let (px, py) = handle_at(&s, "crank pin at θ = 30°");
+    let (ox, oy) = s
+        .script("var h = window.graphostatikSite.answer().handles.filter(function (h) {\
+                 return h.name === 'crank pin at θ = 30°'; })[0];\
+                 var m = document.querySelector('#wt-figure svg').getScreenCTM();\
+                 var p = new DOMPoint(h.center[0], h.center[1]).matrixTransform(m); return [p.x, p.y];")
+        .as_array()
+        .map(|a| (a[0].as_f64().unwrap(), a[1].as_f64().unwrap()))
+        .unwrap();
+    let (rx, ry) = (px - ox, py - oy);
+    let arc: Vec<(f64, f64)> = (1..=8)
+        .map(|k| {
+            // A positive angle turns clockwise on the screen (y down), as the crank turns
+            // in LH Abb. 45: θ grows.
+            let a = std::f64::consts::FRAC_PI_2 * k as f64 / 8.0;
+            (
+                ox + rx * a.cos() - ry * a.sin(),
+                oy + rx * a.sin() + ry * a.cos(),
+            )
+        })
+        .collect();
+    s.pointer(Some((px, py)), &arc, true);
+    wait_for(
+        &s,
+        "var t = window.graphostatikSite.scene().angles.degrees[1]; return t > 110 && t < 130;",
+        &json!(true),
+        "the crank angle turned by about 90°",
+    );
+    let (after, failed) = checks(&s);
+    assert_eq!(failed, 0);
+    assert!(
+        before.iter().zip(&after).any(|(a, b)| (a - b).abs() > 1e-6),
+        "the velocities changed"
+    );
+    let errors = s.console_errors();
+    assert!(errors.is_empty(), "console errors: {errors:?}");
+    drop(s);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The replay latency in the browser, per bundled scene: the engine call and the page's
+/// update (figure, step list, handles) timed with performance.now, median and worst of 15
+/// replays after 3 to warm up. README's table comes from
+/// `cargo test --release --test it browser::replay_latency -- --ignored --nocapture`.
+#[test]
+#[ignore = "a measurement: prints README's latency table"]
+fn replay_latency() {
+    use serde_json::json;
+    let Some(browser) = browser_or_skip("latency") else {
+        return;
+    };
+    let Some(wasm) = engine_or_skip("latency") else {
+        return;
+    };
+    let dir = tmp("latency");
+    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let o = Command::new(bin())
+        .arg("site")
+        .arg(manifest.join("scenes"))
+        .arg("--out")
+        .arg(dir.join("site"))
+        .output()
+        .unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let s = Session::start(&browser, &dir.join("profile"));
+    let gz = {
+        let out = Command::new("gzip").arg("-9c").arg(&wasm).output().unwrap();
+        out.stdout.len()
+    };
+    println!(
+        "engine: {:.2} MB, {:.2} MB gzipped\n\n| scene | steps | engine median ms | page median ms | page worst ms | page's phases, mean ms |\n|---|---:|---:|---:|---:|---|",
+        std::fs::metadata(&wasm).unwrap().len() as f64 / 1e6,
+        gz as f64 / 1e6
+    );
+    let mut scenes: Vec<_> = std::fs::read_dir(manifest.join("scenes"))
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    scenes.sort();
+    for scene in scenes {
+        let name = scene.file_stem().unwrap().to_string_lossy().into_owned();
+        s.goto(&format!(
+            "file://{}",
+            dir.join(format!("site/{name}.html")).display()
+        ));
+        let ready = "return !!window.graphostatikSite && window.graphostatikSite.ready;";
+        wait_for(&s, ready, &json!(true), "the engine loaded");
+        let v = s.script(
+            "var S = window.graphostatikSite; S.bench(3);\
+             for (var k in S.phases) S.phases[k] = 0; var t = S.bench(15);\
+             var e = t.map(function (x) { return x.engine; }).sort(function (a, b) { return a - b; });\
+             var p = t.map(function (x) { return x.total; }).sort(function (a, b) { return a - b; });\
+             var ph = Object.keys(S.phases).map(function (k) { return k + ' ' + (S.phases[k] / 15).toFixed(1); });\
+             return [S.answer().steps, e[7], p[7], p[14], ph.join(', ')];",
+        );
+        println!(
+            "| {name} | {} | {:.1} | {:.1} | {:.1} | {} |",
+            v[0],
+            v[1].as_f64().unwrap(),
+            v[2].as_f64().unwrap(),
+            v[3].as_f64().unwrap(),
+            v[4].as_str().unwrap_or_default()
+        );
+    }
+    drop(s);
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -211,6 +211,36 @@ impl Session {
         );
     }
 
+    /// Real pointer input (WebDriver actions): `press` at the viewport's pixel `from` (or not,
+    /// when the button is held already), moves through `path` in steps of about 16 ms each,
+    /// then releases if `release`. The pointer stays held between calls without a release.
+    pub fn pointer(&self, from: Option<(f64, f64)>, path: &[(f64, f64)], release: bool) {
+        let mut actions = Vec::new();
+        if let Some((x, y)) = from {
+            actions.push(
+                json!({ "type": "pointerMove", "duration": 0, "origin": "viewport",
+                "x": x.round() as i64, "y": y.round() as i64 }),
+            );
+            actions.push(json!({ "type": "pointerDown", "button": 0 }));
+        }
+        for (x, y) in path {
+            actions.push(
+                json!({ "type": "pointerMove", "duration": 16, "origin": "viewport",
+                "x": x.round() as i64, "y": y.round() as i64 }),
+            );
+            actions.push(json!({ "type": "pause", "duration": 16 }));
+        }
+        if release {
+            actions.push(json!({ "type": "pointerUp", "button": 0 }));
+        }
+        self.cmd(
+            "POST",
+            "/actions",
+            Some(json!({ "actions": [ { "type": "pointer", "id": "mouse",
+                "parameters": { "pointerType": "mouse" }, "actions": actions } ] })),
+        );
+    }
+
     /// Runs a script in the page and returns its value.
     pub fn script(&self, js: &str) -> Value {
         self.cmd(

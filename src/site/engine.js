@@ -1,0 +1,42 @@
+// The graphostatik engine in the page: the WebAssembly module (inlined above as base64, so
+// that the page works from file:// with no server) behind a small object with one method,
+// replay(name, sceneText) → the answer of graphostatik::web::replay as an object.
+(function () {
+'use strict';
+var compiled = null;
+function bytes(b64) {
+  var s = atob(b64), a = new Uint8Array(s.length);
+  for (var i = 0; i < s.length; i++) a[i] = s.charCodeAt(i);
+  return a;
+}
+function Engine(instance) { this.x = instance.exports; }
+Engine.prototype.put = function (text) {
+  var b = new TextEncoder().encode(text), p = this.x.gs_alloc(b.length);
+  new Uint8Array(this.x.memory.buffer, p, b.length).set(b);
+  return [p, b.length];
+};
+Engine.prototype.read = function (ptr, len) {
+  return new TextDecoder().decode(new Uint8Array(this.x.memory.buffer, ptr, len));
+};
+// A panic inside the engine traps (WebAssembly.RuntimeError); its message is kept by the
+// engine's hook and thrown here as one line. The instance is not used again after a trap.
+Engine.prototype.replay = function (name, text) {
+  var n = this.put(name), t = this.put(text), len;
+  try {
+    len = this.x.gs_replay(n[0], n[1], t[0], t[1]);
+  } catch (e) {
+    var why = this.x.gs_panic_len() > 0 ? this.read(this.x.gs_panic_ptr(), this.x.gs_panic_len()) : String(e);
+    var err = new Error('the engine stopped: ' + why);
+    err.trapped = true;
+    throw err;
+  }
+  return JSON.parse(this.read(this.x.gs_out_ptr(), len));
+};
+// A fresh engine: the module is compiled once per page, instantiated per call.
+window.graphostatikEngine = function () {
+  var m = compiled ? Promise.resolve(compiled)
+    : WebAssembly.compile(bytes(window.graphostatikWasm)).then(function (c) { compiled = c; return c; });
+  return m.then(function (c) { return WebAssembly.instantiate(c, {}); })
+    .then(function (inst) { return new Engine(inst); });
+};
+})();
