@@ -10,7 +10,7 @@
 //! costly is refused here with the same line.
 
 use crate::protocol::{Board, BoardConfig, FigureMeta, ObjId};
-use crate::render::{figure_with_points, walkthrough_item_list, Grouping};
+use crate::render::{figure_with_points, step_names, walkthrough_item_list, Grouping};
 use crate::scene::{handles, AnyScene, Handle, Preview};
 use serde::Serialize;
 
@@ -61,6 +61,9 @@ pub struct StepLine {
     pub id: u32,
     /// What it draws ("pole ray").
     pub caption: String,
+    /// Its name in the walk-through: the caption with the objects it draws, and which of
+    /// several alike it is ([`crate::render::step_names`]).
+    pub name: String,
     /// The situation (load case, crank angle), if any.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub context: Option<String>,
@@ -210,10 +213,11 @@ fn built(
         source: meta.source.to_string(),
         svg,
         items: walkthrough_item_list(board, Grouping::Step),
-        steps: (steps.iter())
-            .map(|s| StepLine {
+        steps: (steps.iter().zip(step_names(board)))
+            .map(|(s, name)| StepLine {
                 id: s.id.0,
                 caption: s.caption.to_string(),
+                name,
                 context: s.context.as_deref().map(str::to_string),
                 term_de: s.term_de.as_deref().map(str::to_string),
                 book: s.book.to_string(),

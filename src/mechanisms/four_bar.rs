@@ -401,7 +401,7 @@ fn dead_positions(
         180.0,
         || swing,
     );
-    let th = b.measure_angle(&fr.o, &ends[0], &ends[1], Label::quiet("ϑ", 0), n("the angle ϑ between the crank lines of the dead positions: the crank takes 180° ± ϑ between them", None));
+    let th = b.measure_angle(&fr.o, &ends[0], &ends[1], Label::quiet("ϑ", 0), n("the angle ϑ between the crank lines of the dead positions: the crank takes 180° ± ϑ between them", Some("Winkel der Totlagen")));
     b.check(
         &th,
         "crank angle ϑ between the dead positions",
@@ -441,7 +441,10 @@ fn position(
         &fr.rocker,
         branch,
         Label::indexed("B", i),
-        n("B where the coupler’s circle cuts the rocker’s", None),
+        n(
+            "B where the coupler’s circle cuts the rocker’s",
+            Some("Gelenkpunkt B: Koppelkreis schneidet Schwingenkreis"),
+        ),
     )?;
     let change_point = b.last_cut_touched();
     b.segment(&pin, &joint, pen, n("the coupler", Some("Koppel")));
@@ -452,7 +455,7 @@ fn position(
         &fr.o,
         &joint,
         Label::quiet("ψ", 0),
-        n("the rocker’s angle ∠OAB", None),
+        n("the rocker’s angle ∠OAB", Some("Schwingenwinkel")),
     );
     b.check(
         &angle,
@@ -528,6 +531,9 @@ fn flag_table(b: &mut Board, fr: &Frame, fb: &FourBar, flagged: &[FourBarRow]) {
         at,
         rows,
         &[],
-        n("the positions with too small a transmission angle", None),
+        n(
+            "the positions with too small a transmission angle",
+            Some("Übertragungswinkel"),
+        ),
     );
 }

@@ -358,7 +358,7 @@ fn dead_centres(
         Label::quiet("δ", 0),
         n(
             "the angle δ between the dead centres’ crank lines: the outstroke takes 180° + δ",
-            None,
+            Some("Winkel zwischen den Totlagen"),
         ),
     );
     let (i, out) = k.dead_centres();
@@ -397,7 +397,10 @@ fn crosshead(
         k.rod_length / ls,
         Drawn::Marks,
         Role::Construction,
-        n("the arc of the rod length about the pin", None),
+        n(
+            "the arc of the rod length about the pin",
+            Some("Kreisbogen mit der Schubstangenlänge"),
+        ),
     )?;
     let head = b.cut_line_circle(
         &fr.path,
@@ -413,7 +416,7 @@ fn crosshead(
         &head,
         &pin,
         Role::Construction,
-        n("the line of the rod", None),
+        n("the line of the rod", Some("Schubstangenrichtung")),
     )?;
     b.segment(&head, &pin, pen, n("the rod", Some("Schubstange")));
     Ok(At {
@@ -522,7 +525,7 @@ fn velocity(
         Label::quiet("Q", i),
         n(
             "Q: the rod cuts the perpendicular to the stroke through O",
-            None,
+            Some("Schnittpunkt Q"),
         ),
     )?;
     let c = b.measure(
@@ -580,7 +583,10 @@ fn forces(
         &fr.path,
         &tip,
         Role::Construction,
-        n("across the stroke through P’s tip", None),
+        n(
+            "across the stroke through P’s tip",
+            Some("Senkrechte zur Hubrichtung durch die Spitze von P"),
+        ),
     );
     let split = b.meet_point(
         &cross,
@@ -644,25 +650,31 @@ fn tangential(
             per_mm: sc.force,
         },
         Role::Force,
-        n("S carried to the pin", None),
+        n(
+            "S carried to the pin",
+            Some("S in den Kurbelzapfen verschoben"),
+        ),
     )?;
     let crank = b.line_through(
         &fr.o,
         &at.pin,
         Role::Construction,
-        n("the crank line", None),
+        n("the crank line", Some("Kurbelstrahl")),
     )?;
     let tangent = b.perpendicular(
         &crank,
         &at.pin,
         Role::Construction,
-        n("the tangent at the pin", None),
+        n("the tangent at the pin", Some("Tangente im Kurbelzapfen")),
     );
     let t_foot = b.foot(
         &tangent,
         &carried,
         Role::Construction,
-        n("S dropped onto the tangent", None),
+        n(
+            "S dropped onto the tangent",
+            Some("S auf die Tangente gelotet"),
+        ),
     );
     let t = b.measure(
         &at.pin,

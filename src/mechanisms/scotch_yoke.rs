@@ -138,7 +138,10 @@ pub fn construct(
                 pts,
                 Trace::Smooth,
                 Role::Result.labelled(Label::plain(label)),
-                n("the yoke’s curve over the stroke", None),
+                n(
+                    "the yoke’s curve over the stroke",
+                    Some("Kurve der Schleife über dem Hub"),
+                ),
             );
         }
     }
@@ -177,7 +180,10 @@ fn frame(
             continue;
         }
         depth += up;
-        let base_note = n("base line of the diagram over the stroke", None);
+        let base_note = n(
+            "base line of the diagram over the stroke",
+            Some("Grundlinie des Diagramms"),
+        );
         let at = b.point(Point::new(r, -depth), Role::Axis, base_note.clone());
         let base = b.parallel(&axis, &at, Role::Axis, base_note);
         bases[k] = Some((base, at));
@@ -247,7 +253,10 @@ fn position(
         &fr.axis,
         &pin,
         Role::Auxiliary,
-        n("parallel to the stroke through the pin", None),
+        n(
+            "parallel to the stroke through the pin",
+            Some("Parallele zur Hubrichtung durch den Kurbelzapfen"),
+        ),
     );
     let at = At { f, pin, along };
     let pts = vectors(b, fr, (yoke, dr), (&at, phi, rq), &mut row)?;
@@ -267,13 +276,18 @@ fn vectors(
     let (s, c) = crate::kernel::angle::sin_cos_deg(phi);
     let pin = at.pin;
     let mut pts = [None, None];
-    let crank = b.line_through(&fr.o, &pin, Role::Construction, n("the crank line", None))?;
+    let crank = b.line_through(
+        &fr.o,
+        &pin,
+        Role::Construction,
+        n("the crank line", Some("Kurbelstrahl")),
+    )?;
     if rq.velocity {
         let tangent = b.perpendicular(
             &crank,
             &pin,
             Role::Construction,
-            n("tangent at the pin", None),
+            n("tangent at the pin", Some("Tangente im Kurbelzapfen")),
         );
         let tip = b.lay_off(
             &pin,
@@ -288,7 +302,12 @@ fn vectors(
         let what = Projected {
             k: 0,
             scale: Scale::new(dr.velocity_scale, "m/s"),
-            name: ("c", "yoke velocity c′", "KG Abb. 1069: c′ = v·sin φ"),
+            name: (
+                "c",
+                "yoke velocity c′",
+                "KG Abb. 1069: c′ = v·sin φ",
+                "Geschwindigkeit der Schleife",
+            ),
             exact: (v, v * s),
         };
         let (cv, p) = project(b, fr, at, &tip, what)?;
@@ -309,7 +328,12 @@ fn vectors(
         let what = Projected {
             k: 1,
             scale: Scale::new(dr.acceleration_scale, "m/s²"),
-            name: ("b", "yoke acceleration b′", "KG Abb. 1069: b′ = v²/R·cos φ"),
+            name: (
+                "b",
+                "yoke acceleration b′",
+                "KG Abb. 1069: b′ = v²/R·cos φ",
+                "Beschleunigung der Schleife",
+            ),
             exact: (a, a * c),
         };
         let (bv, p) = project(b, fr, at, &tip, what)?;
@@ -327,11 +351,11 @@ struct At {
 }
 
 /// A vector at the pin projected on the stroke: the diagram it goes into (`k`), its scale,
-/// its label, quantity and formula, and its natural magnitude and closed form.
+/// its label, quantity, formula and German term, and its natural magnitude and closed form.
 struct Projected {
     k: usize,
     scale: Scale,
-    name: (&'static str, &'static str, &'static str),
+    name: (&'static str, &'static str, &'static str, &'static str),
     exact: (f64, f64),
 }
 
@@ -347,12 +371,15 @@ fn project(
     tip: &H<Point>,
     what: Projected,
 ) -> Result<(f64, Option<H<Point>>), ConstructionError> {
-    let (label, quantity, formula) = what.name;
+    let (label, quantity, formula, term) = what.name;
     let w = b.foot(
         &at.along,
         tip,
         Role::Auxiliary,
-        n("projected on the line of the stroke", None),
+        n(
+            "projected on the line of the stroke",
+            Some("Projektion auf die Hubrichtung"),
+        ),
     );
     let value = b.measure(
         &at.pin,
@@ -360,7 +387,7 @@ fn project(
         &at.along,
         what.scale,
         Label::quiet(label, 0),
-        n(quantity, None),
+        n(quantity, Some(term)),
     );
     let (reference, closed) = what.exact;
     b.check(
@@ -391,9 +418,17 @@ fn ordinate(
         base,
         f,
         Role::Auxiliary,
-        n("the yoke’s place carried down to the diagram", None),
+        n(
+            "the yoke’s place carried down to the diagram",
+            Some("Lage der Schleife ins Diagramm übertragen"),
+        ),
     );
-    let up = b.perpendicular(base, &at, Role::Construction, n("ordinate", None));
+    let up = b.perpendicular(
+        base,
+        &at,
+        Role::Construction,
+        n("ordinate", Some("Ordinate")),
+    );
     // The base runs from T through O (towards −x): its normal points down the sheet, and a
     // positive value is laid off upwards, against it.
     let (v, per_mm) = value;
@@ -405,7 +440,10 @@ fn ordinate(
             per_mm: -per_mm,
         },
         Role::Result,
-        n("the value laid off as an ordinate", None),
+        n(
+            "the value laid off as an ordinate",
+            Some("Ordinate abgetragen"),
+        ),
     )
     .map(Some)
 }

@@ -303,7 +303,10 @@ fn frame(
     )?;
     let base = if velocity {
         let up = 12.0 + link.c2().max(link.c1()) / u.velocity_scale;
-        let note = n("base line of the velocity diagram over the stroke", None);
+        let note = n(
+            "base line of the velocity diagram over the stroke",
+            Some("Grundlinie des Geschwindigkeitsdiagramms"),
+        );
         let at = b.lay_off(&d, &axis, top + up, Role::Axis, note.clone())?;
         Some(b.parallel(&guide, &at, Role::Axis, note))
     } else {
@@ -353,13 +356,16 @@ fn tangents(
             &lever,
             link.lever_length / ls,
             Role::Result.labelled(Label::plain(name)),
-            n("E’s outer position on its arc", None),
+            n("E’s outer position on its arc", Some("äußerste Lage von E")),
         )?;
         ends.push(b.foot(
             &fr.guide,
             &end,
             Role::Auxiliary,
-            n("E’s outer position carried onto the guide", None),
+            n(
+                "E’s outer position carried onto the guide",
+                Some("äußerste Lage von E auf die Führung übertragen"),
+            ),
         ));
         touch.push(t);
     }
@@ -402,7 +408,10 @@ fn outer_positions(
             inputs: &[two_beta.id],
             weight: 90.0 / (alpha * alpha),
         },
-        n("the mean speeds v_a/v_r = β/α", None),
+        n(
+            "the mean speeds v_a/v_r = β/α",
+            Some("mittlere Geschwindigkeiten"),
+        ),
     );
     b.check(
         &ratio,
@@ -501,7 +510,10 @@ fn lever_at(
         &lever,
         link.lever_length / u.length_scale,
         pen.labelled(crate::crank::position_name("E", k, shown)),
-        n("E at the lever’s length from D", None),
+        n(
+            "E at the lever’s length from D",
+            Some("Endpunkt E des Hebels"),
+        ),
     )?;
     Ok(Lever {
         k,
@@ -586,14 +598,14 @@ fn table_speed(
         Role::Construction.labelled(lv.name("F")),
         n(
             "F, the foot of the perpendicular from M on DC, on the circle over MD",
-            None,
+            Some("Fußpunkt F (Thaleskreis über MD)"),
         ),
     );
     let g = b.foot(
         &fr.axis,
         &lv.e,
         Role::Construction.labelled(lv.name("G")),
-        n("G, E’s foot on MD", None),
+        n("G, E’s foot on MD", Some("Fußpunkt G")),
     );
     let sin_direct = sin_to(&fr.axis, lv.c.g, g.g);
     let (dc, gd) = ((lv.c.g - fr.d.g).norm(), (g.g - fr.d.g).norm());
@@ -636,7 +648,7 @@ fn swing(
 ) -> Result<(H<Point>, H<Point>), ConstructionError> {
     let carry = n(
         "DF and DC carried onto the perpendicular to MD at D (the lever lies too close to MD for the cut)",
-        None,
+        Some("Strecken auf das Lot übertragen"),
     );
     let across = b.perpendicular(&fr.axis, &fr.d, Role::Construction, carry.clone());
     let sheet = Scale::new(1.0, "mm");
@@ -672,18 +684,29 @@ fn cg_parallel(
     (c, g, f): (&H<Point>, &H<Point>, &H<Point>),
     name: Label,
 ) -> Result<H<Point>, ConstructionError> {
-    let cg = b.line_through(c, g, Role::Construction, n("C joined with G", None))?;
+    let cg = b.line_through(
+        c,
+        g,
+        Role::Construction,
+        n("C joined with G", Some("Verbindungslinie CG")),
+    )?;
     let fh = b.parallel(
         &cg,
         f,
         Role::Construction,
-        n("the parallel to CG through F", None),
+        n(
+            "the parallel to CG through F",
+            Some("Parallele zu CG durch F"),
+        ),
     );
     b.meet_point(
         &fh,
         &fr.axis,
         name,
-        n("H, where the parallel cuts DG: GH = GD·FC/CD", None),
+        n(
+            "H, where the parallel cuts DG: GH = GD·FC/CD",
+            Some("Schnittpunkt H"),
+        ),
     )
 }
 
@@ -698,9 +721,17 @@ fn ordinate(
     let Some(base) = &fr.base else {
         return Ok(None);
     };
-    let note = n("the table’s place carried up to the diagram", None);
+    let note = n(
+        "the table’s place carried up to the diagram",
+        Some("Lage des Tisches ins Diagramm übertragen"),
+    );
     let at = b.foot(base, place, Role::Auxiliary, note);
-    let up = b.perpendicular(base, &at, Role::Construction, n("ordinate", None));
+    let up = b.perpendicular(
+        base,
+        &at,
+        Role::Construction,
+        n("ordinate", Some("Ordinate")),
+    );
     // The base runs towards −x: its normal points down the sheet, so a working speed
     // (positive) is laid off against it, upwards.
     b.transfer(
@@ -711,7 +742,10 @@ fn ordinate(
             per_mm: -per_mm,
         },
         Role::Construction,
-        n("the speed laid off as an ordinate", None),
+        n(
+            "the speed laid off as an ordinate",
+            Some("Geschwindigkeit als Ordinate abgetragen"),
+        ),
     )
     .map(Some)
 }

@@ -111,8 +111,81 @@ pub fn walkthrough_items(board: &Board, grouping: Grouping) -> String {
 /// [`walkthrough_items`] one item per page, so that a live page can show the current page's
 /// details without taking in the whole list.
 pub fn walkthrough_item_list(board: &Board, grouping: Grouping) -> Vec<String> {
+    let names = step_names(board);
     (page_groups(board, grouping).iter())
-        .map(|group| group_item(group))
+        .map(|group| group_item(group, &names))
+        .collect()
+}
+
+/// Each step's name in the walk-through, so that no two steps of one situation read alike,
+/// as GeoGebra's construction protocol names each object: the caption, then the names of the
+/// objects it draws (or, for a step that only reads a value off, of those it reads from; at
+/// most three), then, where steps still share all that, which of them it is: `pole ray O
+/// (2 of 4)`, `member S₃`, `joint load P₀ (3 of 4)`.
+///
+/// ```
+/// use graphostatik::kernel::Point;
+/// use graphostatik::protocol::{Board, Note, Role, Topic};
+/// let mut b = Board::recording();
+/// let n = Note::new("given point", Topic::Custom("demo"));
+/// b.point(Point::new(0.0, 0.0), Role::Given.named("A"), n.clone());
+/// b.point(Point::new(1.0, 0.0), Role::Given, n.clone());
+/// b.point(Point::new(2.0, 0.0), Role::Given, n);
+/// let names = graphostatik::render::step_names(&b);
+/// assert_eq!(names, ["given point A", "given point (1 of 2)", "given point (2 of 2)"]);
+/// ```
+pub fn step_names(board: &Board) -> Vec<String> {
+    let label = |id: &crate::protocol::ObjId| {
+        let l = &board.object(*id)?.label;
+        (!l.base.is_empty()).then(|| match l.index {
+            Some(i) => (i.to_string().chars())
+                .filter_map(crate::fmt::subscript_of)
+                .fold(l.base.to_string(), |mut s, c| {
+                    s.push(c);
+                    s
+                }),
+            None => l.base.to_string(),
+        })
+    };
+    // A name the caption says already ("ordinate line through O") is not said twice.
+    let said =
+        |caption: &str, name: &str| caption.split([' ', ',', ':', '(', ')']).any(|w| w == name);
+    let named: Vec<String> = (board.steps().iter())
+        .map(|s| {
+            let mut objs: Vec<String> = s.outputs.iter().filter_map(label).collect();
+            if objs.is_empty() {
+                objs = s.inputs.iter().filter_map(label).collect();
+            }
+            objs.dedup();
+            objs.retain(|o| !said(&s.caption, o));
+            let more = objs.len() > 3;
+            objs.truncate(3);
+            let mut name = s.caption.to_string();
+            if !objs.is_empty() {
+                name = format!(
+                    "{name} {}{}",
+                    objs.join(", "),
+                    if more { ", …" } else { "" }
+                );
+            }
+            name
+        })
+        .collect();
+    let key = |i: usize| (&named[i], board.steps()[i].context.as_deref());
+    let mut count: std::collections::HashMap<_, usize> = Default::default();
+    for i in 0..named.len() {
+        *count.entry(key(i)).or_default() += 1;
+    }
+    let mut seen: std::collections::HashMap<_, usize> = Default::default();
+    (0..named.len())
+        .map(|i| match count[&key(i)] {
+            1 => named[i].clone(),
+            n => {
+                let k = seen.entry(key(i)).or_default();
+                *k += 1;
+                format!("{} ({k} of {n})", named[i])
+            }
+        })
         .collect()
 }
 
@@ -153,19 +226,20 @@ const NAV: &str =
 <button id=\"wt-printbtn\" title=\"one step per panel (p)\">print</button></nav>\n";
 
 /// One page of the list: the steps it shows, a line each, and their details.
-fn group_item(group: &[&Step]) -> String {
+fn group_item(group: &[&Step], names: &[String]) -> String {
     let first = group[0].id;
     let last = group[group.len() - 1].id;
     let mut lines = String::new();
     for s in group {
-        lines.push_str(&step_detail(s));
+        let name = (s.id.0 as usize).checked_sub(1).and_then(|i| names.get(i));
+        lines.push_str(&step_detail(s, name.map_or(&*s.caption, String::as_str)));
     }
     format!("<li data-first=\"{first}\" data-last=\"{last}\">{lines}</li>\n")
 }
 
 /// One step: number, caption and context (the line in the list), then the German term, the
 /// book, the cut's angle, a degenerate outcome and the checks (shown for the current step).
-fn step_detail(step: &Step) -> String {
+fn step_detail(step: &Step, name: &str) -> String {
     let mut d = String::new();
     if let Some(de) = &step.term_de {
         d.push_str(&format!(
@@ -196,7 +270,7 @@ fn step_detail(step: &Step) -> String {
     format!(
         "<div class=\"wt-step\"><b>{}</b> {}{}<div class=\"wt-detail\">{}</div></div>",
         step.id,
-        html_text(&step.caption),
+        html_text(name),
         step.context
             .as_ref()
             .map(|c| format!(" <i>{}</i>", html_text(c)))

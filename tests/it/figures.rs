@@ -31,6 +31,38 @@ fn every_bundled_figure_reads_like_a_plate() {
     }
 }
 
+/// The walk-through a student follows: every step of every bundled scene has its German
+/// term, and a name no other step of its situation has (the caption, the objects it draws,
+/// and which of several alike it is).
+#[test]
+fn every_step_has_its_german_term_and_a_name_of_its_own() {
+    let mut steps = 0;
+    for p in bundled() {
+        let name = p.display().to_string();
+        let scene = AnyScene::load(&p).unwrap();
+        let board = scene.problem().construct(BoardConfig::DRAWING).unwrap();
+        for s in board.steps() {
+            assert!(
+                s.term_de.is_some(),
+                "{name}: step {} `{}` has no German term",
+                s.id,
+                s.caption
+            );
+        }
+        let names = graphostatik::render::step_names(&board);
+        let mut seen = std::collections::HashSet::new();
+        for (s, n) in board.steps().iter().zip(&names) {
+            assert!(n.starts_with(s.caption.as_ref()), "{name}: {n}");
+            assert!(
+                seen.insert((n.clone(), s.context.clone())),
+                "{name}: two steps named `{n}`"
+            );
+        }
+        steps += names.len();
+    }
+    assert!(steps > 15_000, "{steps} steps");
+}
+
 /// A third of the scene's numbers, each scaled by a factor of its own; whole numbers (counts,
 /// firing orders, divisions) stay as they are.
 fn vary(v: &mut Value, rng: &mut Rng) {

@@ -138,9 +138,17 @@ fn ordinate(
         line,
         at_mm,
         Role::Construction,
-        n("the shaft angle on the developed cycle", None),
+        n(
+            "the shaft angle on the developed cycle",
+            Some("Kurbelwinkel auf dem abgewickelten Arbeitsspiel"),
+        ),
     )?;
-    let up = b.perpendicular(line, &foot, Role::Construction, n("ordinate", None));
+    let up = b.perpendicular(
+        line,
+        &foot,
+        Role::Construction,
+        n("ordinate", Some("Ordinate")),
+    );
     Ok((foot, up))
 }
 
@@ -184,14 +192,20 @@ fn force_diagram(
         &gas_pts,
         Trace::Polygon,
         Role::Result.named("a"),
-        n("the gas force over the cycle (a-a)", None),
+        n(
+            "the gas force over the cycle (a-a)",
+            Some("Gasdrucklinie (a-a)"),
+        ),
     );
     if cyl.mass > 0.0 {
         b.curve(
             &res_pts,
             Trace::Polygon,
             Role::Result.named("b"),
-            n("the resulting force over the cycle (b-b)", None),
+            n(
+                "the resulting force over the cycle (b-b)",
+                Some("resultierende Kolbenkraftlinie (b-b)"),
+            ),
         );
     }
     Ok(out)
@@ -229,7 +243,7 @@ fn force_ray(
         &up,
         fs,
         Label::NONE,
-        n("the gas force P read off", None),
+        n("the gas force P read off", Some("Gasdruck abgegriffen")),
     );
     b.check(
         &pv,
@@ -253,7 +267,10 @@ fn force_ray(
         &up,
         fs,
         Label::NONE,
-        n("the resulting force P − M·b read off", None),
+        n(
+            "the resulting force P − M·b read off",
+            Some("resultierende Kolbenkraft abgegriffen"),
+        ),
     );
     b.check(
         &rv,
@@ -356,7 +373,10 @@ fn turning_diagram(
             &up,
             fs,
             Label::NONE,
-            n("the turning force read off", None),
+            n(
+                "the turning force read off",
+                Some("Tangentialdruck abgegriffen"),
+            ),
         );
         b.check(
             &t,
@@ -449,7 +469,7 @@ fn mean_table(
         ids,
         n(
             "the mean turning force by the rule, exactly, and from the work",
-            None,
+            Some("mittlerer Tangentialdruck"),
         ),
     );
 }
