@@ -5,8 +5,10 @@
 //! The figure is inlined once, each step its own layer (`<g data-step="N">`); the page shows
 //! the layers up to the current step and draws the current one in the highlight colour. It
 //! works offline from the file system: no script, style or font from outside. Keys: → or
-//! space next, ← back, Home and End, `z` zooms the view to the step's new objects, `p`
-//! prints one step per panel (a handout).
+//! space next, ← back, Home and End, `z` zooms the view to the step's new objects, `k` plays
+//! the steps at the speed chosen, `p` prints one step per panel (a handout). Each step is a
+//! history entry (the browser's Back goes back a step); hovering a step in the list draws
+//! its objects in blue; on a sheet larger than its pane the view follows the step.
 
 use super::figure::figure;
 use crate::protocol::FigureMeta;
@@ -223,7 +225,11 @@ const NAV: &str =
 <button id=\"wt-next\" title=\"next (→, space)\">next &gt;</button> \
 <button id=\"wt-last\" title=\"last step (End)\">&gt;|</button> \
 <button id=\"wt-zoom\" title=\"zoom to the step (z)\" aria-pressed=\"false\">zoom</button> \
-<button id=\"wt-printbtn\" title=\"one step per panel (p)\">print</button></nav>\n";
+<button id=\"wt-printbtn\" title=\"one step per panel (p)\">print</button> \
+<button id=\"wt-play\" title=\"play the steps one after another (k)\" aria-pressed=\"false\">play</button> \
+<select id=\"wt-speed\" title=\"steps per second\"><option value=\"0.5\">½ step/s</option>\
+<option value=\"1\">1 step/s</option><option value=\"2\" selected>2 steps/s</option>\
+<option value=\"5\">5 steps/s</option><option value=\"20\">20 steps/s</option></select></nav>\n";
 
 /// One page of the list: the steps it shows, a line each, and their details.
 fn group_item(group: &[&Step], names: &[String]) -> String {
@@ -320,6 +326,9 @@ main { display: flex; height: calc(100vh - 4em); }
 #wt-sliders input { vertical-align: middle; width: 14em; }
 #wt-nav button { font: inherit; padding: 0.2em 0.6em; }
 #wt-nav button[aria-pressed="true"] { background: #f3e2df; }
+#wt-nav select { font: inherit; padding: 0.15em; }
+#wt-figure g.wt-hover * { stroke: #1f5fbf !important; }
+#wt-figure g.wt-hover text { fill: #1f5fbf !important; stroke: none !important; }
 #wt-count { display: inline-block; min-width: 6em; text-align: center; }
 #wt-now { padding: 0.5em 1em; border-bottom: 1px solid #ddd; max-height: 45%; overflow: auto; }
 #wt-steps { flex: 1; overflow-y: auto; margin: 0; padding: 0.5em 1em; font-size: 0.9em; list-style: none; }
@@ -357,7 +366,11 @@ function bind() {
   layers = Array.prototype.slice.call(svg.querySelectorAll('g[data-step]'));
   items = Array.prototype.slice.call(document.querySelectorAll('#wt-steps li'));
   full = svg.getAttribute('viewBox');
-  items.forEach(function (li, j) { li.addEventListener('click', function () { show(j); }); });
+  items.forEach(function (li, j) {
+    li.addEventListener('click', function () { show(j); });
+    li.addEventListener('mouseenter', function () { hover(li, true); });
+    li.addEventListener('mouseleave', function () { hover(li, false); });
+  });
 }
 bind();
 function range(li) { return [Number(li.getAttribute('data-first')), Number(li.getAttribute('data-last'))]; }
@@ -390,17 +403,65 @@ function zoomTo(r) {
   var cx = (box.x + box.x2) / 2, cy = (box.y + box.y2) / 2;
   svg.setAttribute('viewBox', [cx - 0.65 * w, cy - 0.65 * h, 1.3 * w, 1.3 * h].join(' '));
 }
-function show(i) {
+// On a sheet larger than its pane, the pane scrolls so that the step's new objects are in
+// view (zoom aside).
+function follow(r) {
+  var pane = document.getElementById('wt-figure'), box = null;
+  if (pane.scrollHeight <= pane.clientHeight && pane.scrollWidth <= pane.clientWidth) return;
+  for (var s = r[0]; s <= r[1]; s++) {
+    var g = svg.querySelector('g[data-step="' + String(s).padStart(3, '0') + '"]');
+    if (!g || !g.firstChild) continue;
+    var b = g.getBoundingClientRect();
+    if (b.width === 0 && b.height === 0) continue;
+    box = box ? { l: Math.min(box.l, b.left), t: Math.min(box.t, b.top), r: Math.max(box.r, b.right), b: Math.max(box.b, b.bottom) }
+      : { l: b.left, t: b.top, r: b.right, b: b.bottom };
+  }
+  if (!box) return;
+  var p = pane.getBoundingClientRect();
+  var dx = box.l < p.left || box.r > p.right ? (box.l + box.r) / 2 - (p.left + p.right) / 2 : 0;
+  var dy = box.t < p.top || box.b > p.bottom ? (box.t + box.b) / 2 - (p.top + p.bottom) / 2 : 0;
+  if (dx || dy) pane.scrollBy(dx, dy);
+}
+// Shows page i. `how`: 'push' (the default: the browser's Back returns to the page before),
+// 'replace' (the address follows, no history entry: opening, playing, a replay), 'pop' (the
+// browser went back or forward).
+function show(i, how) {
   if (items.length === 0) { document.getElementById('wt-count').textContent = 'no steps'; return; }
+  var was = k;
   k = Math.max(0, Math.min(items.length - 1, i));
   var r = range(items[k]);
   setLayers(svg, r);
   items.forEach(function (li, j) { li.classList.toggle('wt-on', j === k); });
   document.getElementById('wt-now').innerHTML = items[k].innerHTML;
   document.getElementById('wt-count').textContent = 'step ' + (k + 1) + ' / ' + items.length;
-  if (zoom) zoomTo(r); else svg.setAttribute('viewBox', full);
+  if (zoom) zoomTo(r); else { svg.setAttribute('viewBox', full); follow(r); }
   items[k].scrollIntoView({ block: 'nearest' });
-  if (window.history && window.history.replaceState) window.history.replaceState(null, '', '#' + (k + 1));
+  if (!window.history || !window.history.replaceState || how === 'pop') return;
+  if ((how || 'push') === 'push' && k !== was) window.history.pushState({ step: k + 1 }, '', '#' + (k + 1));
+  else window.history.replaceState({ step: k + 1 }, '', '#' + (k + 1));
+}
+var timer = null;
+function play() {
+  var button = document.getElementById('wt-play');
+  if (timer) { clearInterval(timer); timer = null; button.textContent = 'play'; button.setAttribute('aria-pressed', 'false'); return; }
+  if (k >= items.length - 1) show(0, 'replace');
+  button.textContent = 'pause';
+  button.setAttribute('aria-pressed', 'true');
+  var rate = Number(document.getElementById('wt-speed').value) || 2;
+  timer = setInterval(function () {
+    if (k >= items.length - 1) { play(); return; }
+    show(k + 1, 'replace');
+  }, 1000 / rate);
+}
+function hover(li, on) {
+  var r = range(li);
+  layers.forEach(function (g) {
+    var s = Number(g.getAttribute('data-step'));
+    if (s < r[0] || s > r[1]) return;
+    g.classList.toggle('wt-hover', on);
+    if (on) g.style.display = '';
+  });
+  if (!on) setLayers(svg, range(items[k]));
 }
 function toggleZoom() {
   zoom = !zoom;
@@ -441,12 +502,19 @@ document.addEventListener('keydown', function (e) {
   else if (e.key === 'End') show(items.length - 1);
   else if (e.key === 'z') toggleZoom();
   else if (e.key === 'p') { buildPrint(); window.print(); }
+  else if (e.key === 'k') play();
+});
+document.getElementById('wt-play').addEventListener('click', play);
+document.getElementById('wt-speed').addEventListener('change', function () { if (timer) { play(); play(); } });
+window.addEventListener('popstate', function (e) {
+  var n = e.state && e.state.step ? e.state.step : Number((window.location.hash || '#1').slice(1));
+  if (isFinite(n) && n > 0) show(n - 1, 'pop');
 });
 // The step in the address, else the first (the last where the page asks to open on the
 // whole construction: <body data-wt-start="end">).
 var start = Number((window.location.hash ||
   (document.body.getAttribute('data-wt-start') === 'end' ? '#' + items.length : '#1')).slice(1));
-show(isFinite(start) && start > 0 ? start - 1 : 0);
+show(isFinite(start) && start > 0 ? start - 1 : 0, 'replace');
 // A new figure of the same construction (a live page's replay while the student drags): the
 // current page's layers on the fresh figure, nothing else touched. `now` is the current
 // page's item as the replay gives it.
@@ -468,7 +536,7 @@ function swapFigure(now) {
   if (zoom) zoomTo(r);
 }
 window.graphostatikWalk = { show: show, step: function () { return k; }, pages: items.length,
-  rebind: function () { bind(); window.graphostatikWalk.pages = items.length; show(k); },
+  rebind: function () { bind(); window.graphostatikWalk.pages = items.length; show(k, 'replace'); },
   swapFigure: swapFigure };
 })();
 "#;

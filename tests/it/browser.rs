@@ -124,13 +124,41 @@ fn a_student_pages_through_a_walkthrough_with_the_keyboard() {
         assert_eq!(current, vec![u64::from(step.id.0)]);
         s.keys("\u{E014}"); // →
     }
-    // Past the end it stays on the last step; ← goes back, Home to the first.
+    // Past the end it stays on the last step; the browser's Back goes back a step, Forward
+    // returns; ← goes back, Home to the first.
+    assert_eq!(s.text("#wt-count"), format!("step {n} / {n}"));
+    s.cmd("POST", "/back", Some(serde_json::json!({})));
+    assert_eq!(s.text("#wt-count"), format!("step {} / {n}", n - 1));
+    s.cmd("POST", "/forward", Some(serde_json::json!({})));
     assert_eq!(s.text("#wt-count"), format!("step {n} / {n}"));
     s.keys("\u{E012}"); // ←
     assert_eq!(s.text("#wt-count"), format!("step {} / {n}", n - 1));
     s.keys("\u{E011}"); // Home
     assert_eq!(s.text("#wt-count"), format!("step 1 / {n}"));
-    // A step with a check shows it beside the figure; z zooms the view to that step.
+    // Play at 20 steps a second: the page moves on by itself, k pauses it.
+    s.script(
+        "var v = document.getElementById('wt-speed'); v.value = '20';\
+              v.dispatchEvent(new Event('change')); return 0;",
+    );
+    s.keys("k");
+    wait_for(
+        &s,
+        "return Number(document.getElementById('wt-count').textContent.split(' ')[1]) > 5;",
+        &serde_json::json!(true),
+        "playing",
+    );
+    s.keys("k");
+    let paused = s.text("#wt-count");
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    assert_eq!(s.text("#wt-count"), paused, "paused");
+    // Hovering a step in the list draws its objects in blue.
+    s.script("document.querySelectorAll('#wt-steps li')[3].dispatchEvent(new Event('mouseenter')); return 0;");
+    assert_eq!(
+        s.script("return document.querySelectorAll('#wt-figure g.wt-hover').length;"),
+        serde_json::json!(1)
+    );
+    s.keys("\u{E011}"); // Home
+                        // A step with a check shows it beside the figure; z zooms the view to that step.
     let checked = steps.iter().position(|st| !st.checks.is_empty()).unwrap();
     s.script(&format!(
         "window.graphostatikWalk.show({checked}); return 0;"
@@ -321,13 +349,15 @@ fn engine_or_skip(test: &str) -> Option<PathBuf> {
     }
 }
 
-/// The screen centre of the first handle called `name` on the page.
+/// The screen centre of the first handle called `name` that is in view (a truss draws each
+/// joint once per load case; the pane may be scrolled to the last).
 fn handle_at(s: &Session, name: &str) -> (f64, f64) {
     let v = s.script(&format!(
         "var hs = document.querySelectorAll('.gs-handle');\
          for (var i = 0; i < hs.length; i++) {{\
-           if (hs[i].querySelector('title').textContent.split(':')[0] === {name:?}) {{\
-             var r = hs[i].getBoundingClientRect(); return [r.x + r.width / 2, r.y + r.height / 2]; }} }}\
+           if (hs[i].querySelector('title').textContent.split(':')[0] !== {name:?}) continue;\
+           var r = hs[i].getBoundingClientRect(), x = r.x + r.width / 2, y = r.y + r.height / 2;\
+           if (x > 40 && y > 40 && x < window.innerWidth - 40 && y < window.innerHeight - 40) return [x, y]; }}\
          return null;"
     ));
     let a = v.as_array().unwrap_or_else(|| panic!("no handle {name}"));
