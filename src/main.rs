@@ -180,6 +180,10 @@ enum Command {
         /// read the scenes served.
         #[arg(long, default_value = "127.0.0.1")]
         bind: std::net::IpAddr,
+        /// The engine, graphostatik_wasm.wasm, as for `site` (without it the pages show the
+        /// walk-through alone).
+        #[arg(long)]
+        engine: Option<PathBuf>,
     },
     /// Print the construction protocol (every step, object and check) as JSON.
     Protocol {
@@ -321,7 +325,12 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
             out,
             engine,
         } => site_cmd(&scenes, &out, engine),
-        Command::Serve { path, port, bind } => serve_cmd(&path, port, bind),
+        Command::Serve {
+            path,
+            port,
+            bind,
+            engine,
+        } => serve_cmd(&path, port, bind, engine),
         Command::Accuracy { scene, svg, json } => accuracy_cmd(&scene, svg.as_deref(), json),
         Command::Drafting {
             scene,
@@ -333,29 +342,7 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
             jobs,
             json,
         } => {
-            let hand = [
-                ("--pencil-mm", pencil_mm),
-                ("--angle-deg", angle_deg),
-                ("--read-mm", read_mm),
-            ];
-            if let Some((name, v)) = hand
-                .iter()
-                .find(|(_, v)| !(v.is_finite() && *v >= 0.0 && *v <= 100.0))
-            {
-                return Err(Fail(format!(
-                    "{name}: must be a number from 0 to 100, got {v}"
-                )));
-            }
-            let options = graphostatik::scene::DraftingOptions {
-                hand: graphostatik::protocol::ErrorModel::drafting(
-                    pencil_mm,
-                    angle_deg.to_radians(),
-                    read_mm,
-                ),
-                runs: runs as usize,
-                seed,
-                jobs: jobs.map_or_else(cores, usize::from),
-            };
+            let options = drafting_options([pencil_mm, angle_deg, read_mm], runs, seed, jobs)?;
             drafting_cmd(&scene, options, json)
         }
         Command::Protocol { scene } => {
@@ -680,6 +667,38 @@ fn say_report<T: serde::Serialize + ?Sized>(
 }
 
 /// `drafting`: the scene drawn by a simulated hand, many times.
+/// The draftsman's hand from `--pencil-mm`, `--angle-deg` and `--read-mm`, each checked.
+fn drafting_options(
+    [pencil_mm, angle_deg, read_mm]: [f64; 3],
+    runs: u32,
+    seed: u64,
+    jobs: Option<u16>,
+) -> Result<graphostatik::scene::DraftingOptions, Fail> {
+    let hand = [
+        ("--pencil-mm", pencil_mm),
+        ("--angle-deg", angle_deg),
+        ("--read-mm", read_mm),
+    ];
+    if let Some((name, v)) = hand
+        .iter()
+        .find(|(_, v)| !(v.is_finite() && *v >= 0.0 && *v <= 100.0))
+    {
+        return Err(Fail(format!(
+            "{name}: must be a number from 0 to 100, got {v}"
+        )));
+    }
+    Ok(graphostatik::scene::DraftingOptions {
+        hand: graphostatik::protocol::ErrorModel::drafting(
+            pencil_mm,
+            angle_deg.to_radians(),
+            read_mm,
+        ),
+        runs: runs as usize,
+        seed,
+        jobs: jobs.map_or_else(cores, usize::from),
+    })
+}
+
 fn drafting_cmd(
     scene: &Path,
     options: graphostatik::scene::DraftingOptions,
@@ -699,16 +718,35 @@ fn drafting_cmd(
 }
 
 /// `serve`: the live preview, until the process is stopped.
-fn serve_cmd(path: &Path, port: u16, bind: std::net::IpAddr) -> Result<ExitCode, Fail> {
+fn serve_cmd(
+    path: &Path,
+    port: u16,
+    bind: std::net::IpAddr,
+    engine: Option<PathBuf>,
+) -> Result<ExitCode, Fail> {
     if !path.exists() {
         return Err(Fail(format!("{}: no such scene or folder", path.display())));
+    }
+    // The engine named must be there; the one beside this build is taken if it is.
+    let engine_js = match engine {
+        Some(f) => Some(read_engine(&f)?),
+        None => default_engine()
+            .filter(|f| f.is_file())
+            .map(|f| read_engine(&f))
+            .transpose()?,
+    };
+    if engine_js.is_none() {
+        eprintln!(
+            "note: no engine, so the pages cannot be dragged: {}",
+            graphostatik::site::BUILD_ENGINE
+        );
     }
     let listener = std::net::TcpListener::bind((bind, port))
         .map_err(|e| Fail(format!("--port {port}: cannot listen on {bind}: {e}")))?;
     let addr = listener
         .local_addr()
         .map_err(|e| Fail(format!("--port {port}: {e}")))?;
-    let site = graphostatik::serve::Site::new(path, bind.is_loopback(), addr.port())
+    let site = graphostatik::serve::Site::new(path, bind.is_loopback(), addr.port(), engine_js)
         .map_err(|e| Fail(format!("{}: {e}", path.display())))?;
     if !bind.is_loopback() {
         eprintln!(
@@ -763,14 +801,7 @@ fn site_cmd(scenes: &[PathBuf], out: &Path, engine: Option<PathBuf>) -> Result<E
     let wasm_path = engine.or_else(default_engine).ok_or_else(|| {
         Fail("site: no engine: give --engine FILE (graphostatik_wasm.wasm)".into())
     })?;
-    let wasm = std::fs::read(&wasm_path).map_err(|e| {
-        Fail(format!(
-            "{}: the engine cannot be read ({e}); build it with `rustup target add \
-             wasm32-unknown-unknown && cargo build -p graphostatik-wasm --target \
-             wasm32-unknown-unknown --profile wasm`, or name it with --engine",
-            wasm_path.display()
-        ))
-    })?;
+    let wasm = read_wasm(&wasm_path)?;
     let mut list = Vec::new();
     for f in scene_files(scenes)? {
         let text =
@@ -803,6 +834,24 @@ fn site_cmd(scenes: &[PathBuf], out: &Path, engine: Option<PathBuf>) -> Result<E
         bytes as f64 / 1e6
     ))?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// The engine's bytes, or why not, with how to build it.
+fn read_wasm(path: &Path) -> Result<Vec<u8>, Fail> {
+    std::fs::read(path).map_err(|e| {
+        Fail(format!(
+            "{}: the engine cannot be read ({e}); build it with `rustup target add \
+             wasm32-unknown-unknown && {}`, or name it with --engine",
+            path.display(),
+            graphostatik::site::BUILD_ENGINE
+        ))
+    })
+}
+
+/// `engine.js` of the engine at `path`.
+fn read_engine(path: &Path) -> Result<String, Fail> {
+    graphostatik::site::engine_js(&read_wasm(path)?)
+        .map_err(|e| Fail(format!("{}: {e}", path.display())))
 }
 
 /// Where `cargo build -p graphostatik-wasm --target wasm32-unknown-unknown --profile wasm`

@@ -1,16 +1,16 @@
 //! The live preview of `graphostatik serve SCENE|DIR`: a small HTTP server on loopback that
-//! shows each scene's walk-through, reloads it when the scene file changes, keeps the last
-//! good figure under the error line of an invalid edit, and moves the numbers the scene
-//! declares in `preview.sliders`, replaying the construction at each position.
+//! shows each scene's page as `graphostatik site` writes it (the walk-through, the engine in
+//! the page: drag the given points, move the scene's `preview.sliders`), reloads it when the
+//! scene file changes, and keeps the last good figure under the error line of an invalid
+//! edit. One page serves both: the site's, plus the file watching.
 //!
 //! It reads only the scene it was given, or the `*.json` files of the folder it was given,
 //! looked up by name (a request never names a path), and answers only GET. Bound to
 //! 127.0.0.1 unless told otherwise; a request whose `Host` is not this machine's loopback name
 //! is refused while bound there (DNS rebinding).
 
-use crate::protocol::{Board, BoardConfig, FigureMeta};
-use crate::render::{walkthrough_html, WalkOptions};
-use crate::scene::{AnyScene, Preview};
+use crate::site::{scene_page, PageLinks, SiteScene};
+use crate::web::Built;
 use std::collections::HashMap;
 use std::io::{BufRead, BufReader, Write};
 use std::net::{TcpListener, TcpStream};
@@ -32,14 +32,15 @@ pub struct Site {
     loopback: bool,
     port: u16,
     last_good: Arc<Mutex<HashMap<String, Good>>>,
+    /// `engine.js` (the engine inlined), when the engine was found.
+    engine: Option<Arc<String>>,
 }
 
 /// The last construction of a scene that succeeded: shown under the error of a bad edit.
 #[derive(Debug, Clone)]
 struct Good {
-    meta: FigureMeta,
-    board: Board,
-    controls: String,
+    text: String,
+    built: Arc<Built>,
 }
 
 /// An HTTP answer.
@@ -61,6 +62,13 @@ impl Answer {
             body,
         }
     }
+    fn script(body: String) -> Answer {
+        Answer {
+            status: 200,
+            content_type: "text/javascript; charset=utf-8",
+            body,
+        }
+    }
     fn text(status: u16, body: impl Into<String>) -> Answer {
         Answer {
             status,
@@ -71,8 +79,14 @@ impl Answer {
 }
 
 impl Site {
-    /// A site for `path` (a scene file or a folder of scenes) behind a listener on `port`.
-    pub fn new(path: &Path, loopback: bool, port: u16) -> std::io::Result<Site> {
+    /// A site for `path` (a scene file or a folder of scenes) behind a listener on `port`,
+    /// with the engine's `engine.js` ([`crate::site::engine_js`]) if there is one.
+    pub fn new(
+        path: &Path,
+        loopback: bool,
+        port: u16,
+        engine: Option<String>,
+    ) -> std::io::Result<Site> {
         let meta = std::fs::metadata(path)?;
         Ok(Site {
             root: path.to_path_buf(),
@@ -80,6 +94,7 @@ impl Site {
             loopback,
             port,
             last_good: Default::default(),
+            engine: engine.map(Arc::new),
         })
     }
 
@@ -117,9 +132,18 @@ impl Site {
         if self.loopback && !host.is_some_and(|h| self.is_loopback_host(h)) {
             return Answer::text(421, "this preview answers only on its loopback address");
         }
-        let (path, query) = target.split_once('?').unwrap_or((target, ""));
+        let path = target.split_once('?').map_or(target, |(p, _)| p);
         if path == "/" {
             return self.index();
+        }
+        if path == "/page.js" {
+            return Answer::script(crate::site::PAGE_JS.into());
+        }
+        if path == "/engine.js" {
+            return match &self.engine {
+                Some(js) => Answer::script(js.to_string()),
+                None => Answer::text(404, "no engine"),
+            };
         }
         if path == "/favicon.ico" {
             // No icon, and no 404 in the browser's console for it.
@@ -128,7 +152,7 @@ impl Site {
         if let Some(name) = path.strip_prefix("/scene/") {
             let name = percent_decode(name);
             return match self.scene(&name) {
-                Some(file) => self.page(&name, &file, query),
+                Some(file) => self.page(&name, &file),
                 None => Answer::text(404, "no such scene"),
             };
         }
@@ -153,7 +177,7 @@ impl Site {
         let scenes = self.scenes();
         if self.single {
             if let Some((name, file)) = scenes.first() {
-                return self.page(name, file, "");
+                return self.page(name, file);
             }
         }
         let mut items = String::new();
@@ -170,11 +194,11 @@ impl Site {
         ))
     }
 
-    /// A scene's walk-through with the reload script and its sliders; on a bad edit, the
-    /// error line over the last good construction.
-    fn page(&self, name: &str, file: &Path, query: &str) -> Answer {
+    /// A scene's page with the reload script; on a bad edit, the error line over the last
+    /// good construction.
+    fn page(&self, name: &str, file: &Path) -> Answer {
         let token = version(file);
-        let built = build(file, query);
+        let built = build(file);
         let mut good = self.last_good.lock().unwrap_or_else(|e| e.into_inner());
         let (shown, error) = match built {
             Ok(g) => {
@@ -186,14 +210,19 @@ impl Site {
         drop(good);
         let extra = reload_script(name, &token);
         match shown {
-            Some(g) => Answer::html(walkthrough_html(
-                &g.meta,
-                &g.board,
-                &WalkOptions {
-                    controls: g.controls,
-                    extra,
+            Some(g) => Answer::html(scene_page(
+                &SiteScene {
+                    name: name.to_string(),
+                    origin: file.display().to_string(),
+                    text: g.text,
+                },
+                &g.built,
+                &PageLinks {
+                    index: "/".into(),
+                    scripts: "/".into(),
+                    engine: self.engine.is_some(),
                     error,
-                    ..Default::default()
+                    extra,
                 },
             )),
             None => Answer::html(format!(
@@ -207,90 +236,20 @@ impl Site {
     }
 }
 
-/// Reads, patches with the slider values of `query` (`s0=…&s1=…`), parses and constructs a
-/// scene; the error as one line naming the file and the field.
-fn build(file: &Path, query: &str) -> Result<Good, String> {
+/// Reads and constructs a scene for its page; the error as one line naming the file and the
+/// field.
+fn build(file: &Path) -> Result<Good, String> {
     let origin = file.display().to_string();
     let text = std::fs::read_to_string(file).map_err(|e| format!("{origin}: {e}"))?;
-    let mut value: serde_json::Value = serde_json::from_str(&text)
-        .map_err(|e| format!("{origin}:{}:{}: {e}", e.line(), e.column()))?;
-    let preview: Option<Preview> = match value.get("preview") {
-        Some(p) => {
-            Some(serde_json::from_value(p.clone()).map_err(|e| format!("{origin}: preview: {e}"))?)
-        }
-        None => None,
-    };
-    let sliders = preview.map(|p| p.sliders).unwrap_or_default();
-    let asked = slider_values(query);
-    let mut current = Vec::with_capacity(sliders.len());
-    for (i, s) in sliders.iter().enumerate() {
-        let field = format!("{origin}: preview.sliders[{i}]");
-        if let Some(why) = s.problem() {
-            return Err(format!("{field}: {why}"));
-        }
-        let ptr = s.pointer().unwrap_or_default();
-        let Some(slot) = value.pointer_mut(&ptr) else {
-            return Err(format!("{field}.field: the scene has no `{}`", s.field));
-        };
-        let Some(v) = slot.as_f64() else {
-            return Err(format!("{field}.field: `{}` is not a number", s.field));
-        };
-        let v = asked.get(&i).copied().map_or(v, |a| a.clamp(s.min, s.max));
-        *slot = serde_json::json!(v);
-        current.push(v);
-    }
-    let patched = serde_json::to_string(&value).map_err(|e| format!("{origin}: {e}"))?;
-    let p = AnyScene::from_json(&patched, &origin)
-        .map_err(|e| e.to_string())?
-        .into_problem();
-    let board = p
-        .construct(BoardConfig::DRAWING)
-        .map_err(|e| match p.error_field(&e) {
-            Some(f) => format!("{origin}: {f}: {e}"),
-            None => format!("{origin}: {e}"),
-        })?;
+    let built = crate::web::build(&text, &origin)?;
     Ok(Good {
-        meta: p.figure_meta(),
-        board,
-        controls: slider_form(&sliders, &current),
+        text,
+        built: Arc::new(built),
     })
 }
 
-/// `s0=1.5&s1=-2` → {0: 1.5, 1: -2}; anything else is ignored.
-fn slider_values(query: &str) -> HashMap<usize, f64> {
-    query
-        .split('&')
-        .filter_map(|kv| {
-            let (k, v) = kv.split_once('=')?;
-            let i = k.strip_prefix('s')?.parse().ok()?;
-            let v: f64 = percent_decode(v).parse().ok()?;
-            v.is_finite().then_some((i, v))
-        })
-        .collect()
-}
-
-/// The sliders as a form: moving one replays the construction at the new value.
-fn slider_form(sliders: &[crate::scene::Slider], current: &[f64]) -> String {
-    if sliders.is_empty() {
-        return String::new();
-    }
-    let mut f = String::from("<form id=\"wt-sliders\">");
-    for (i, (s, v)) in sliders.iter().zip(current).enumerate() {
-        let label = crate::render::html_text(s.label.as_deref().unwrap_or(&s.field));
-        f.push_str(&format!(
-            "<label>{label} <input type=\"range\" name=\"s{i}\" min=\"{}\" max=\"{}\" step=\"{}\" \
-             value=\"{v}\"> <output>{v}</output></label><br>",
-            s.min,
-            s.max,
-            s.step()
-        ));
-    }
-    f.push_str("</form>\n");
-    f
-}
-
-/// The page's live part: it asks for the scene's version and reloads when it changes (the
-/// step shown is kept in the address); a slider's new value replays the construction.
+/// The file watching: the page asks for the scene's version and reloads when it changes (the
+/// step shown is kept in the address).
 fn reload_script(name: &str, token: &str) -> String {
     let name = serde_json::to_string(&percent_encode(name)).unwrap_or_default();
     let token = serde_json::to_string(token).unwrap_or_default();
@@ -299,13 +258,7 @@ fn reload_script(name: &str, token: &str) -> String {
          setInterval(function () {{\n  fetch('/version/' + name, {{ cache: 'no-store' }})\n\
          .then(function (r) {{ return r.ok ? r.text() : token; }})\n\
          .then(function (t) {{ if (t !== token) window.location.reload(); }})\n\
-         .catch(function () {{}});\n}}, {POLL_MS});\n\
-         var form = document.getElementById('wt-sliders');\nif (form) {{\n\
-         form.addEventListener('input', function (e) {{\n\
-         var o = e.target.parentNode.querySelector('output'); if (o) o.textContent = e.target.value; }});\n\
-         form.addEventListener('change', function () {{\n\
-         var q = new URLSearchParams(new FormData(form)).toString();\n\
-         window.location.search = q; }});\n}}\n}})();\n</script>\n"
+         .catch(function () {{}});\n}}, {POLL_MS});\n}})();\n</script>\n"
     )
 }
 
@@ -442,8 +395,5 @@ mod tests {
         assert_eq!(percent_decode("a%20b%2Fc+d"), "a b/c d");
         assert_eq!(percent_decode("100%"), "100%");
         assert_eq!(percent_encode("a b/ü"), "a%20b%2F%C3%BC");
-        let v = slider_values("s0=1.5&s1=-2e%2B3&x=1&s2=nan&s3=inf");
-        assert_eq!(v.len(), 2);
-        assert_eq!(v[&1], -2000.0);
     }
 }

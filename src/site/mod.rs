@@ -15,7 +15,7 @@ use crate::web::{build, Built, SliderLine};
 /// The engine's loader (after the module's base64).
 const ENGINE_JS: &str = include_str!("engine.js");
 /// The live part of a scene's page.
-const PAGE_JS: &str = include_str!("page.js");
+pub const PAGE_JS: &str = include_str!("page.js");
 
 /// A scene to put on the site: its name (the file stem: the page is `NAME.html`) and text.
 #[derive(Debug, Clone)]
@@ -29,11 +29,13 @@ pub struct SiteScene {
 }
 
 /// Why a site cannot be written.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SiteError {
     /// The engine is not a WebAssembly module.
+    #[error("{0}")]
     Engine(String),
     /// A scene is refused: its one-line error, naming it and the field.
+    #[error("{0}")]
     Scene(String),
 }
 
@@ -41,11 +43,12 @@ pub enum SiteError {
 /// `graphostatik_wasm.wasm`), `page.js`, and per scene `NAME.html` and `thumbs/NAME.svg`.
 /// A scene that is refused stops the site with its one-line error, as `render` does.
 pub fn site(scenes: &[SiteScene], wasm: &[u8]) -> Result<Vec<Page>, SiteError> {
-    if !wasm.starts_with(b"\0asm") {
-        return Err(SiteError::Engine(
-            "not a WebAssembly module (it must start with \\0asm)".into(),
-        ));
-    }
+    let engine = engine_js(wasm)?;
+    let links = PageLinks {
+        index: "index.html".into(),
+        engine: true,
+        ..Default::default()
+    };
     let mut pages = Vec::new();
     let mut cards = String::new();
     for s in scenes {
@@ -63,7 +66,7 @@ pub fn site(scenes: &[SiteScene], wasm: &[u8]) -> Result<Vec<Page>, SiteError> {
         });
         pages.push(Page {
             name: format!("{}.html", s.name),
-            contents: scene_page(s, &b),
+            contents: scene_page(s, &b, &links),
         });
     }
     pages.push(Page {
@@ -72,10 +75,7 @@ pub fn site(scenes: &[SiteScene], wasm: &[u8]) -> Result<Vec<Page>, SiteError> {
     });
     pages.push(Page {
         name: "engine.js".into(),
-        contents: format!(
-            "window.graphostatikWasm = \"{}\";\n{ENGINE_JS}",
-            base64(wasm)
-        ),
+        contents: engine,
     });
     pages.push(Page {
         name: "page.js".into(),
@@ -92,8 +92,30 @@ fn is_page_name(name: &str) -> bool {
         && (name.bytes()).all(|c| c.is_ascii_alphanumeric() || matches!(c, b'_' | b'-' | b'.'))
 }
 
-/// A scene's page: the walk-through drawn now, the scene and its handles for the live part.
-fn scene_page(s: &SiteScene, b: &Built) -> String {
+/// Where a scene's page finds the rest, and what it carries besides the construction: the
+/// site's pages link relatively; `serve` links from its root and adds its reload script.
+#[derive(Debug, Clone, Default)]
+pub struct PageLinks {
+    /// The index ("index.html", or "/").
+    pub index: String,
+    /// The prefix of `engine.js` and `page.js` ("" or "/").
+    pub scripts: String,
+    /// Whether the engine is there; without it the page is the walk-through alone, with a
+    /// line saying how to build the engine.
+    pub engine: bool,
+    /// An error line shown above the figure (`serve`: the last failed edit).
+    pub error: Option<String>,
+    /// HTML put after the page's scripts (`serve`: its reload script).
+    pub extra: String,
+}
+
+/// The command that builds the engine, as the pages and errors quote it.
+pub const BUILD_ENGINE: &str =
+    "cargo build -p graphostatik-wasm --target wasm32-unknown-unknown --profile wasm";
+
+/// A scene's page: the walk-through drawn now (`b`, built from `s`), the scene and its
+/// handles for the live part ([`PAGE_JS`]).
+pub fn scene_page(s: &SiteScene, b: &Built, links: &PageLinks) -> String {
     let mut meta = FigureMeta::titled(&b.title);
     meta.source = b.source.clone();
     let data = serde_json::json!({
@@ -105,15 +127,35 @@ fn scene_page(s: &SiteScene, b: &Built) -> String {
     // occurs in JSON only inside strings, where `\u003c` means the same.
     let data = format!("{},\"scene\":{}}}", &data[..data.len() - 1], s.text.trim())
         .replace('<', "\\u003c");
-    let extra = format!(
-        "<script type=\"application/json\" id=\"gs-data\">{data}</script>\n\
-         <script src=\"engine.js\"></script>\n<script src=\"page.js\"></script>\n"
-    );
+    let (extra, status) = if links.engine {
+        (
+            format!(
+                "<script type=\"application/json\" id=\"gs-data\">{data}</script>\n\
+                 <script src=\"{p}engine.js\"></script>\n<script src=\"{p}page.js\"></script>\n",
+                p = links.scripts
+            ),
+            "loading the engine…".to_string(),
+        )
+    } else {
+        (
+            String::new(),
+            format!(
+                "no engine: dragging and sliders need it ({})",
+                html_text(BUILD_ENGINE)
+            ),
+        )
+    };
     let controls = format!(
-        "<div id=\"gs-live\"><a href=\"index.html\">all scenes</a> · \
+        "<div id=\"gs-live\"><a href=\"{index}\">all scenes</a> · \
          <span id=\"gs-summary\" class=\"{cls}\">{summary}</span> · <span id=\"gs-time\">\
-         loading the engine…</span> <button id=\"gs-download\" title=\"the scene as edited, \
-         for graphostatik render\">save scene</button></div>\n{sliders}",
+         {status}</span>{save}</div>\n{sliders}",
+        save = if links.engine {
+            " <button id=\"gs-download\" title=\"the scene as edited, for graphostatik \
+             render\">save scene</button>"
+        } else {
+            ""
+        },
+        index = html_text(&links.index),
         cls = if b.failed == 0 { "gs-pass" } else { "gs-fail" },
         summary = summary(b),
         sliders = slider_form(&b.sliders),
@@ -124,13 +166,28 @@ fn scene_page(s: &SiteScene, b: &Built) -> String {
         &b.items.concat(),
         &WalkOptions {
             controls,
-            extra,
+            extra: extra + &links.extra,
+            error: links.error.clone(),
             ..Default::default()
         },
     );
     // The page opens on the whole construction: what the student drags.
     page.replacen("</style>", SITE_CSS, 1)
         .replacen("<body>", "<body data-wt-start=\"end\">", 1)
+}
+
+/// `engine.js`: the engine `wasm` (the bytes of `graphostatik_wasm.wasm`) as base64, and its
+/// loader.
+pub fn engine_js(wasm: &[u8]) -> Result<String, SiteError> {
+    if !wasm.starts_with(b"\0asm") {
+        return Err(SiteError::Engine(
+            "not a WebAssembly module (it must start with \\0asm)".into(),
+        ));
+    }
+    Ok(format!(
+        "window.graphostatikWasm = \"{}\";\n{ENGINE_JS}",
+        base64(wasm)
+    ))
 }
 
 /// "365 steps, 112 checks: all pass".

@@ -45,8 +45,11 @@ function showError(text) {
     document.body.insertBefore(e, document.querySelector('main'));
   }
   e.textContent = text;
+  e.setAttribute('data-live', '1');
 }
-function clearError() { var e = el('wt-error'); if (e) e.remove(); }
+// Only the page's own error goes when a replay succeeds (serve's line about the file stays
+// until the file is mended).
+function clearError() { var e = el('wt-error'); if (e && e.getAttribute('data-live')) e.remove(); }
 
 function drawHandles() {
   var s = svg();

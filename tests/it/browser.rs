@@ -222,6 +222,9 @@ fn an_author_edits_a_scene_and_moves_a_slider_in_the_live_preview() {
     let Some(browser) = browser_or_skip("serve") else {
         return;
     };
+    let Some(engine) = engine_or_skip("serve") else {
+        return;
+    };
     let dir = tmp("serve");
     let scene = dir.join("funicular.json");
     let good = std::fs::read_to_string(
@@ -230,7 +233,8 @@ fn an_author_edits_a_scene_and_moves_a_slider_in_the_live_preview() {
     .unwrap();
     std::fs::write(&scene, &good).unwrap();
     let mut child = Command::new(bin())
-        .args(["serve", "--port", "0"])
+        .args(["serve", "--port", "0", "--engine"])
+        .arg(&engine)
         .arg(&dir)
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::null())
@@ -249,37 +253,40 @@ fn an_author_edits_a_scene_and_moves_a_slider_in_the_live_preview() {
         .to_string();
     let s = Session::start(&browser, &dir.join("profile"));
     s.goto(&format!("{base}/scene/funicular"));
-    assert!(s.text("#wt-count").starts_with("step 1 / "));
+    let ready = "return !!window.graphostatikSite && window.graphostatikSite.ready;";
+    wait_for(&s, ready, &json!(true), "the engine loaded from the server");
+    assert!(s.text("#wt-count").starts_with("step "));
     assert!(s.text("#wt-sliders").contains("direction of F2"));
-    // A slider replays the construction at its new value.
-    s.script(
-        "var i = document.querySelector('#wt-sliders input[name=s1]'); i.value = '800';\
-         i.dispatchEvent(new Event('change', { bubbles: true })); return 0;",
-    );
+    // A slider replays the construction in the page as it moves, on the step shown.
+    s.keys("\u{E011}"); // Home
+    s.keys("\u{E014}\u{E014}"); // → →
+    let step = s.text("#wt-count");
+    let move_slider = |i: usize, v: &str| {
+        s.script(&format!(
+            "var i = document.querySelector('#wt-sliders input[name=s{i}]'); i.value = '{v}';\
+             i.dispatchEvent(new Event('input', {{ bubbles: true }})); return 0;"
+        ));
+    };
+    move_slider(1, "800");
     wait_for(
         &s,
-        "return window.location.search.indexOf('s1=800') >= 0 && !!document.getElementById('wt-count');",
+        "return window.graphostatikSite.good().forces[2].kg === 800;",
         &json!(true),
         "the page replayed at the slider's value",
     );
-    assert_eq!(
-        s.script("return document.querySelector('#wt-sliders input[name=s1]').value;"),
-        json!("800")
-    );
-    // The step shown is kept in the address, so a replay stays on it.
-    s.keys("\u{E010}"); // End
-    let last = s.text("#wt-count");
-    s.script(
-        "var i = document.querySelector('#wt-sliders input[name=s0]'); i.value = '250';\
-         i.dispatchEvent(new Event('change', { bubbles: true })); return 0;",
-    );
+    move_slider(0, "250");
     wait_for(
         &s,
-        "return window.location.search.indexOf('s0=250') >= 0 && !!document.getElementById('wt-count');",
+        "return window.graphostatikSite.good().forces[1].angle_deg === 250;",
         &json!(true),
         "the second slider",
     );
-    assert_eq!(s.text("#wt-count"), last);
+    assert_eq!(s.text("#wt-count"), step, "the step shown stays");
+    assert_eq!(
+        s.script("return window.graphostatikSite.answer().failed;"),
+        json!(0)
+    );
+    s.keys("\u{E010}"); // End
     let png = s.screenshot();
     keep_screenshot(&png, "serve.png", &dir);
     // An edit reloads the page.
@@ -299,7 +306,8 @@ fn an_author_edits_a_scene_and_moves_a_slider_in_the_live_preview() {
     wait_for(
         &s,
         "var e = document.getElementById('wt-error'); return !!e && /funicular.json:\\d+:\\d+/.test(e.textContent)\
-         && document.querySelectorAll('#wt-figure g[data-step]').length > 10;",
+         && document.querySelectorAll('#wt-figure g[data-step]').length > 10\
+         && !!window.graphostatikSite && window.graphostatikSite.ready;",
         &json!(true),
         "the error line over the last good figure",
     );
