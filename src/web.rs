@@ -10,7 +10,9 @@
 //! costly is refused here with the same line.
 
 use crate::protocol::{Board, BoardConfig, FigureMeta, ObjId};
-use crate::render::{figure_with_points, step_names, walkthrough_item_list, Grouping};
+use crate::render::{
+    figure_with_points, step_names, walkthrough_item, walkthrough_item_list, Grouping,
+};
 use crate::scene::{handles, AnyScene, Handle, Preview};
 use serde::Serialize;
 
@@ -40,9 +42,16 @@ pub struct Built {
     pub source: String,
     /// The figure (SVG, one `<g data-step="N">` layer per step).
     pub svg: String,
-    /// The walk-through's step list: one `<li>` item per step.
+    /// The walk-through's step list: one `<li>` item per step; only page [`Built::page`]'s
+    /// where the answer is for a drag.
     pub items: Vec<String>,
-    /// Every step: number, caption, situation, German term, book.
+    /// The page whose item alone `items` holds, in an answer for a drag ([`replay_page`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub page: Option<usize>,
+    /// How many steps the construction has.
+    pub step_count: usize,
+    /// Every step: number, name, caption, situation, German term, book (none in an answer
+    /// for a drag).
     pub steps: Vec<StepLine>,
     /// Every check of every step, with its bound.
     pub checks: Vec<CheckLine>,
@@ -143,7 +152,14 @@ pub struct SliderLine {
 /// assert!(refused.starts_with("{\"ok\":false,\"error\":\"x.json"));
 /// ```
 pub fn replay(scene: &str, origin: &str) -> String {
-    let answer = match build(scene, origin) {
+    replay_page(scene, origin, None)
+}
+
+/// [`replay`] for a drag: with `page`, the answer carries the step list's item of that page
+/// alone and no list of steps (what a page needs while the pointer moves; the full answer
+/// when it rests).
+pub fn replay_page(scene: &str, origin: &str, page: Option<usize>) -> String {
+    let answer = match build_page(scene, origin, page) {
         Ok(b) => Answer::Built(Box::new(b)),
         Err(error) => Answer::Refused { ok: false, error },
     };
@@ -154,6 +170,11 @@ pub fn replay(scene: &str, origin: &str) -> String {
 
 /// The construction of `text` with everything the page shows.
 pub fn build(text: &str, origin: &str) -> Result<Built, String> {
+    build_page(text, origin, None)
+}
+
+/// [`build`], for a drag where `page` is given ([`replay_page`]).
+pub fn build_page(text: &str, origin: &str, page: Option<usize>) -> Result<Built, String> {
     let scene = AnyScene::from_json(text, origin).map_err(|e| e.to_string())?;
     let sliders = sliders(text, origin)?;
     let p = scene.problem();
@@ -164,7 +185,7 @@ pub fn build(text: &str, origin: &str) -> Result<Built, String> {
             None => format!("{origin}: {e}"),
         })?;
     let meta = p.figure_meta();
-    Ok(built(&meta, &board, handles(&scene, &board), sliders))
+    Ok(built(&meta, &board, handles(&scene, &board), sliders, page))
 }
 
 /// The answer of a constructed board.
@@ -173,7 +194,9 @@ fn built(
     board: &Board,
     handles: Vec<Handle>,
     sliders: Vec<SliderLine>,
+    page: Option<usize>,
 ) -> Built {
+    let page = page.map(|k| k.min(board.steps().len().saturating_sub(1)));
     let mut ids: Vec<ObjId> = handles.iter().map(|h| h.object).collect();
     ids.extend(handles.iter().filter_map(Handle::center));
     let (svg, at) = figure_with_points(meta, board, &ids);
@@ -212,22 +235,37 @@ fn built(
         title: meta.title.to_string(),
         source: meta.source.to_string(),
         svg,
-        items: walkthrough_item_list(board, Grouping::Step),
-        steps: (steps.iter().zip(step_names(board)))
-            .map(|(s, name)| StepLine {
-                id: s.id.0,
-                caption: s.caption.to_string(),
-                name,
-                context: s.context.as_deref().map(str::to_string),
-                term_de: s.term_de.as_deref().map(str::to_string),
-                book: s.book.to_string(),
-            })
-            .collect(),
+        items: match page {
+            None => walkthrough_item_list(board, Grouping::Step),
+            Some(k) => walkthrough_item(board, Grouping::Step, k)
+                .into_iter()
+                .collect(),
+        },
+        page,
+        step_count: steps.len(),
+        steps: match page {
+            None => step_lines(board),
+            Some(_) => Vec::new(),
+        },
         failed: checks.iter().filter(|c| !c.passed).count(),
         checks,
         handles: placed,
         sliders,
     }
+}
+
+/// Every step of `board` as the page lists it.
+fn step_lines(board: &Board) -> Vec<StepLine> {
+    (board.steps().iter().zip(step_names(board)))
+        .map(|(s, name)| StepLine {
+            id: s.id.0,
+            caption: s.caption.to_string(),
+            name,
+            context: s.context.as_deref().map(str::to_string),
+            term_de: s.term_de.as_deref().map(str::to_string),
+            book: s.book.to_string(),
+        })
+        .collect()
 }
 
 /// The scene's `preview.sliders` with their values now; a slider that names no number of

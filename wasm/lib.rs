@@ -37,7 +37,9 @@ pub unsafe extern "C" fn gs_free(ptr: *mut u8, len: usize) {
 }
 
 /// Replays the scene `text` (named `name` in errors): both buffers of [`gs_alloc`] filled
-/// with UTF-8, and freed here. Returns the length of the JSON answer at [`gs_out_ptr`].
+/// with UTF-8, and freed here. `page` below 0 asks for the full answer, else for the answer
+/// of a drag on that page (`graphostatik::web::replay_page`). Returns the length of the
+/// JSON answer at [`gs_out_ptr`].
 ///
 /// # Safety
 /// Each pointer and length is a buffer [`gs_alloc`] returned for that many bytes, all
@@ -48,13 +50,14 @@ pub unsafe extern "C" fn gs_replay(
     name_len: usize,
     text: *mut u8,
     text_len: usize,
+    page: i32,
 ) -> usize {
     install_hook();
     let name = Vec::from_raw_parts(name, name_len, name_len.max(1));
     let text = Vec::from_raw_parts(text, text_len, text_len.max(1));
     let name = String::from_utf8_lossy(&name).into_owned();
     let answer = match std::str::from_utf8(&text) {
-        Ok(t) => graphostatik::web::replay(t, &name),
+        Ok(t) => graphostatik::web::replay_page(t, &name, usize::try_from(page).ok()),
         Err(e) => {
             // The byte offset of the first invalid byte, as a line and column.
             let before = &text[..e.valid_up_to()];

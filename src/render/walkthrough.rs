@@ -119,6 +119,13 @@ pub fn walkthrough_item_list(board: &Board, grouping: Grouping) -> Vec<String> {
         .collect()
 }
 
+/// The item of page `k` alone ([`walkthrough_item_list`]'s `k`-th), for a live page that
+/// shows only the current page's details while the student drags; `None` past the last.
+pub fn walkthrough_item(board: &Board, grouping: Grouping, k: usize) -> Option<String> {
+    let names = step_names(board);
+    (page_groups(board, grouping).get(k)).map(|group| group_item(group, &names))
+}
+
 /// Each step's name in the walk-through, so that no two steps of one situation read alike,
 /// as GeoGebra's construction protocol names each object: the caption, then the names of the
 /// objects it draws (or, for a step that only reads a value off, of those it reads from; at

@@ -20,10 +20,11 @@ Engine.prototype.read = function (ptr, len) {
 };
 // A panic inside the engine traps (WebAssembly.RuntimeError); its message is kept by the
 // engine's hook and thrown here as one line. The instance is not used again after a trap.
-Engine.prototype.replay = function (name, text) {
+// `page` (optional): the answer of a drag on that page (its step item alone, no step list).
+Engine.prototype.replay = function (name, text, page) {
   var n = this.put(name), t = this.put(text), len;
   try {
-    len = this.x.gs_replay(n[0], n[1], t[0], t[1]);
+    len = this.x.gs_replay(n[0], n[1], t[0], t[1], page === undefined ? -1 : page);
   } catch (e) {
     var why = this.x.gs_panic_len() > 0 ? this.read(this.x.gs_panic_ptr(), this.x.gs_panic_len()) : String(e);
     var err = new Error('the engine stopped: ' + why);

@@ -74,7 +74,7 @@ function drawHandles() {
 
 function summary(a) {
   var n = a.checks.length;
-  el('gs-summary').textContent = a.steps.length + ' steps, ' + n + ' checks: ' +
+  el('gs-summary').textContent = a.step_count + ' steps, ' + n + ' checks: ' +
     (a.failed === 0 ? 'all pass' : a.failed + ' fail');
   el('gs-summary').className = a.failed === 0 ? 'gs-pass' : 'gs-fail';
 }
@@ -94,9 +94,10 @@ function sameHandle(a, i) {
 // Puts a built answer in place: figure, step list, handles, sliders' values, summary.
 var phases = {};
 function mark(name, t) { var n = performance.now(); phases[name] = (phases[name] || 0) + n - t; return n; }
-// While the pointer moves (`light`), only the figure and the current step's details are
-// put in place; the step list follows when the drag ends (`settle`).
-var listed = null;
+// While the pointer moves (`light`), the engine answers with the current step's item alone
+// and only the figure and that step's details are put in place; the step list follows when
+// the pointer rests (`settle`).
+var stale = false;
 function apply(a, light) {
   var t = performance.now();
   var holder = document.createElement('div');
@@ -106,13 +107,13 @@ function apply(a, light) {
   svg().replaceWith(next);
   t = mark('swap', t);
   var walk = window.graphostatikWalk;
-  if (light && a.items.length === walk.pages) {
-    walk.swapFigure(a.items[walk.step()]);
-    listed = a.items;
+  if (a.page !== undefined && a.step_count === walk.pages) {
+    walk.swapFigure(a.items[0]);
+    stale = true;
     t = mark('step', t);
   } else {
     el('wt-steps').innerHTML = a.items.join('');
-    listed = null;
+    stale = false;
     t = mark('items', t);
     walk.rebind();
     t = mark('rebind', t);
@@ -145,12 +146,9 @@ function apply(a, light) {
   mark('layout', t);
 }
 
-// The step list of the last replay, once the pointer rests.
+// The full answer once the pointer rests: the step list with every step's checks.
 function settle() {
-  if (!listed) return;
-  el('wt-steps').innerHTML = listed.join('');
-  listed = null;
-  window.graphostatikWalk.rebind();
+  if (stale) replay(true, false);
 }
 
 // Replays the scene as it stands now; a refused scene keeps the last good figure.
@@ -160,7 +158,8 @@ function replay(force, light) {
   lastText = text;
   var t0 = performance.now(), a;
   try {
-    a = engine.replay(name + '.json', text);
+    a = light ? engine.replay(name + '.json', text, window.graphostatikWalk.step())
+      : engine.replay(name + '.json', text);
   } catch (e) {
     showError(String(e.message || e).split('\n')[0]);
     if (e.trapped) { engine = null; window.graphostatikEngine().then(function (x) { engine = x; }); }
@@ -228,9 +227,9 @@ function endDrag() {
   ['viewBox', 'width', 'height'].forEach(function (k) {
     if (s.dataset[k]) { s.setAttribute(k, s.dataset[k]); delete s.dataset[k]; }
   });
-  replay(false, false);
-  if (listed) settle(); else window.graphostatikWalk.rebind();
-  drawHandles();
+  if (!replay(false, false)) {
+    if (stale) settle(); else { window.graphostatikWalk.rebind(); drawHandles(); }
+  }
 }
 figure.addEventListener('pointerup', endDrag);
 figure.addEventListener('pointercancel', endDrag);
@@ -238,7 +237,7 @@ figure.addEventListener('pointercancel', endDrag);
 var form = el('wt-sliders');
 if (form) {
   form.addEventListener('submit', function (e) { e.preventDefault(); });
-  form.addEventListener('change', function () { replay(false, false); settle(); });
+  form.addEventListener('change', function () { if (!replay(false, false)) settle(); });
   form.addEventListener('input', function (e) {
     var input = e.target;
     if (!input.dataset.field) return;
@@ -264,7 +263,7 @@ window.graphostatikSite = {
   scene: function () { return clone(scene); },
   good: function () { return clone(good); },
   // The last construction put in place: its steps, checks (with bounds) and handles.
-  answer: function () { return last && { steps: last.steps.length, checks: last.checks,
+  answer: function () { return last && { steps: last.step_count, checks: last.checks,
     failed: last.failed, handles: last.handles }; },
   // Replays the scene `n` times as it stands, as a drag does (engine and page update, ms
   // each); `full` also puts the step list in place each time, as the end of a drag does.
