@@ -11,6 +11,66 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 
+/// The largest scene file read (bytes): a file beyond it is refused before it is read.
+pub const MAX_SCENE_BYTES: u64 = 256 * 1024 * 1024;
+
+/// Reads a text file of at most `max` bytes: only a regular file (a FIFO, a device such as
+/// `/dev/zero` or a folder is refused before it is opened, so it can neither block nor run
+/// memory out), its size checked before it is read, and text that is not UTF-8 refused at
+/// the line and column of its first bad byte.
+///
+/// ```
+/// use graphostatik::io::read_text;
+/// let e = read_text(std::path::Path::new("/dev/zero"), 1 << 20).unwrap_err();
+/// assert!(e.to_string().contains("not a regular file"));
+/// ```
+pub fn read_text(path: &Path, max: u64) -> std::io::Result<String> {
+    use std::io::{Error, ErrorKind, Read};
+    let regular = |m: &std::fs::Metadata| {
+        if m.is_file() {
+            Ok(())
+        } else {
+            Err(Error::new(
+                ErrorKind::InvalidInput,
+                "not a regular file (a FIFO, device or folder is not read)",
+            ))
+        }
+    };
+    let too_big = |n: u64| {
+        Error::new(
+            ErrorKind::InvalidInput,
+            format!("{n} bytes: a scene is at most {max} bytes"),
+        )
+    };
+    let meta = std::fs::metadata(path)?;
+    regular(&meta)?;
+    if meta.len() > max {
+        return Err(too_big(meta.len()));
+    }
+    let file = std::fs::File::open(path)?;
+    regular(&file.metadata()?)?;
+    let mut bytes = Vec::with_capacity(meta.len() as usize);
+    file.take(max + 1).read_to_end(&mut bytes)?;
+    if bytes.len() as u64 > max {
+        return Err(too_big(bytes.len() as u64));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        let b = e.as_bytes();
+        let at = e.utf8_error().valid_up_to();
+        let line = b[..at].iter().filter(|&&c| c == b'\n').count() + 1;
+        let column = at
+            - b[..at]
+                .iter()
+                .rposition(|&c| c == b'\n')
+                .map_or(0, |i| i + 1)
+            + 1;
+        Error::new(
+            ErrorKind::InvalidData,
+            format!("{line}:{column}: not UTF-8 text (byte {at})"),
+        )
+    })
+}
+
 /// Writes `contents` to `path` through an exclusive temporary in the same folder and a rename,
 /// so a reader (or a failed run) never sees a half-written file.
 ///
@@ -85,23 +145,56 @@ impl Batch {
         self.files.iter().map(|(_, c)| c.len()).sum()
     }
 
+    /// Only a regular file (or a link, which the rename replaces) is written over: a folder,
+    /// a device such as /dev/null, a FIFO or a socket is refused before anything is written.
+    fn check_kinds(&self) -> Result<(), BatchError> {
+        for (path, _) in &self.files {
+            let Ok(m) = std::fs::symlink_metadata(path) else {
+                continue;
+            };
+            let what = if m.is_dir() {
+                "a folder has this name"
+            } else if m.is_file() || m.file_type().is_symlink() {
+                continue;
+            } else {
+                "not a regular file (a device, FIFO or socket is not written over)"
+            };
+            return Err(BatchError {
+                path: path.clone(),
+                source: std::io::Error::new(std::io::ErrorKind::AlreadyExists, what),
+            });
+        }
+        Ok(())
+    }
+
+    /// Whether every file could be written, tried before the work that makes them: each
+    /// target's kind ([`Batch::commit`]'s rule) and an empty temporary made and removed in
+    /// each folder. A command that runs long checks its outputs first, so it does not fail
+    /// at the end for a missing folder.
+    pub fn check_targets(paths: &[&Path]) -> Result<(), BatchError> {
+        let probe = Batch {
+            files: paths
+                .iter()
+                .map(|p| (p.to_path_buf(), Vec::new()))
+                .collect(),
+        };
+        probe.check_kinds()?;
+        for p in paths {
+            let tmp = write_temporary(p, &[]).map_err(|source| BatchError {
+                path: p.to_path_buf(),
+                source,
+            })?;
+            let _ = std::fs::remove_file(tmp);
+        }
+        Ok(())
+    }
+
     /// Writes every file: all temporaries first, then the renames.
     ///
     /// # Errors
     /// The first file that could not be written; then no target has changed.
     pub fn commit(self) -> Result<(), BatchError> {
-        // A target that is a folder cannot be renamed over: refused before anything is written.
-        for (path, _) in &self.files {
-            if std::fs::symlink_metadata(path).is_ok_and(|m| m.is_dir()) {
-                return Err(BatchError {
-                    path: path.clone(),
-                    source: std::io::Error::new(
-                        std::io::ErrorKind::AlreadyExists,
-                        "a folder has this name",
-                    ),
-                });
-            }
-        }
+        self.check_kinds()?;
         let mut temps: Vec<(PathBuf, &Path)> = Vec::with_capacity(self.files.len());
         for (path, contents) in &self.files {
             match write_temporary(path, contents) {

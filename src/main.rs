@@ -632,6 +632,10 @@ fn check_cmd(scene: &Path, json: bool, reference: bool, all: bool) -> Result<Exi
 /// `accuracy`: the knobs swept, with a progress line on a terminal (none otherwise).
 fn accuracy_cmd(scene: &Path, svg: Option<&Path>, json: bool) -> Result<ExitCode, Fail> {
     let p = load(scene)?;
+    // The plot's file is tried before the sweep, which may run for minutes.
+    if let Some(path) = svg {
+        Batch::check_targets(&[path]).map_err(|e| Fail(format!("--svg {e}")))?;
+    }
     let mut progress = |done: usize, total: usize| progress(done, total, "settings");
     let sweeps = graphostatik::scene::sweeps(&p, &mut progress).map_err(|e| {
         Fail(format!(
@@ -786,8 +790,6 @@ fn steps_cmd(scene: &Path, out: &Path, group: GroupArg) -> Result<ExitCode, Fail
     let mut batch = Batch::default();
     batch.add(out.join("index.html"), html);
     commit(batch)?;
-    // The page needs no other file: the step pages an earlier version wrote go.
-    remove_stale_pages(out, &Default::default())?;
     chatter(&format!(
         "{} steps in {}\n",
         board.steps().len(),
@@ -804,8 +806,8 @@ fn site_cmd(scenes: &[PathBuf], out: &Path, engine: Option<PathBuf>) -> Result<E
     let wasm = read_wasm(&wasm_path)?;
     let mut list = Vec::new();
     for f in scene_files(scenes)? {
-        let text =
-            std::fs::read_to_string(&f).map_err(|e| Fail(format!("{}: {e}", f.display())))?;
+        let text = graphostatik::io::read_text(&f, graphostatik::io::MAX_SCENE_BYTES)
+            .map_err(|e| Fail(format!("{}: {e}", f.display())))?;
         let name = f
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
@@ -860,30 +862,6 @@ fn default_engine() -> Option<PathBuf> {
     let exe = std::env::current_exe().ok()?;
     let target = exe.parent()?.parent()?;
     Some(target.join("wasm32-unknown-unknown/wasm/graphostatik_wasm.wasm"))
-}
-
-/// Removes the walk-through pages (`step-NNN.svg`, files of this tool's naming only) in `dir`
-/// that the new walk-through does not have.
-fn remove_stale_pages(dir: &Path, keep: &std::collections::BTreeSet<&str>) -> Result<(), Fail> {
-    let entries = std::fs::read_dir(dir)
-        .map_err(|e| Fail(format!("{}: cannot read the folder: {e}", dir.display())))?;
-    for entry in entries.flatten() {
-        let name = entry.file_name().to_string_lossy().into_owned();
-        let ours = name
-            .strip_prefix("step-")
-            .and_then(|r| r.strip_suffix(".svg"))
-            .is_some_and(|n| !n.is_empty() && n.bytes().all(|c| c.is_ascii_digit()));
-        let is_file = entry.file_type().is_ok_and(|t| t.is_file());
-        if ours && is_file && !keep.contains(name.as_str()) {
-            std::fs::remove_file(entry.path()).map_err(|e| {
-                Fail(format!(
-                    "{}: cannot remove a stale page: {e}",
-                    entry.path().display()
-                ))
-            })?;
-        }
-    }
-    Ok(())
 }
 
 /// `forces`: the member forces of a truss scene, per case, combination and envelope.

@@ -240,7 +240,8 @@ impl Site {
 /// field.
 fn build(file: &Path) -> Result<Good, String> {
     let origin = file.display().to_string();
-    let text = std::fs::read_to_string(file).map_err(|e| format!("{origin}: {e}"))?;
+    let text = crate::io::read_text(file, crate::io::MAX_SCENE_BYTES)
+        .map_err(|e| format!("{origin}: {e}"))?;
     let built = crate::web::build(&text, &origin)?;
     Ok(Good {
         text,

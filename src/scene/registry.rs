@@ -257,10 +257,11 @@ impl AnyScene {
         checks_only: bool,
         free_memory: Option<u64>,
     ) -> Result<AnyScene, SceneError> {
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError::Io {
-            path: path.display().to_string(),
-            message: e.to_string(),
-        })?;
+        let text =
+            crate::io::read_text(path, crate::io::MAX_SCENE_BYTES).map_err(|e| SceneError::Io {
+                path: path.display().to_string(),
+                message: e.to_string(),
+            })?;
         let origin = path.display().to_string();
         let ctx = ReadContext {
             origin: &origin,

@@ -724,23 +724,26 @@ impl TrussScene {
             }
         }
         if let Some(env) = &self.envelope {
-            for (i, n) in env.permanent.iter().enumerate() {
+            // Each case counts once in the envelope: listed twice, or both permanent and in
+            // a group, it would be added twice without a word.
+            let mut seen: HashMap<&str, String> = HashMap::new();
+            let listed = (env.permanent.iter().enumerate())
+                .map(|(i, n)| (format!("envelope.permanent[{i}]"), n))
+                .chain(env.exclusive.iter().enumerate().flat_map(|(g, group)| {
+                    (group.iter().enumerate())
+                        .map(move |(i, n)| (format!("envelope.exclusive[{g}][{i}]"), n))
+                }));
+            for (field, n) in listed {
                 if !known(n) {
+                    return Err(bad(field, format!("no load case is named `{n}`")));
+                }
+                if let Some(first) = seen.get(n.as_str()) {
                     return Err(bad(
-                        format!("envelope.permanent[{i}]"),
-                        format!("no load case is named `{n}`"),
+                        field,
+                        format!("load case `{n}` is listed already at {first}: the envelope counts each case once"),
                     ));
                 }
-            }
-            for (g, group) in env.exclusive.iter().enumerate() {
-                for (i, n) in group.iter().enumerate() {
-                    if !known(n) {
-                        return Err(bad(
-                            format!("envelope.exclusive[{g}][{i}]"),
-                            format!("no load case is named `{n}`"),
-                        ));
-                    }
-                }
+                seen.insert(n, field);
             }
         }
         Ok(())

@@ -489,7 +489,9 @@ fn steps_owns_its_pages_and_nothing_else() {
         "{}",
         String::from_utf8_lossy(&o.stderr)
     );
-    assert!(!out.join("step-999.svg").exists() && !out.join("step-1000.svg").exists());
+    // It writes index.html alone and removes nothing: files of that name it did not write
+    // (nor does it write such files any more) stay.
+    assert!(out.join("step-999.svg").exists() && out.join("step-1000.svg").exists());
     assert!(out.join("notes.txt").exists() && out.join("step-notes.svg").exists());
     assert!(out.join("index.html").exists() && !out.join("step-001.svg").exists());
     std::fs::remove_dir_all(&dir).ok();
@@ -904,4 +906,118 @@ fn check_fails_on_a_book_value_that_differs_for_no_named_cause() {
     let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lh_abb52_esselborn.json");
     assert_eq!(run(&scene).status.code(), Some(0));
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A command's exit status and its standard error.
+fn run_cli(args: &[&std::ffi::OsStr]) -> (Option<i32>, String) {
+    let o = Command::new(bin()).args(args).output().unwrap();
+    (
+        o.status.code(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn only_regular_files_are_read_and_bad_utf8_has_its_place() {
+    let dir = tmp("regular");
+    // /dev/zero would be read until memory runs out: refused before it is opened.
+    let (code, e) = run_cli(&["check".as_ref(), "/dev/zero".as_ref()]);
+    assert_eq!(code, Some(2), "{e}");
+    assert!(e.contains("not a regular file"), "{e}");
+    // A FIFO named *.json in a folder would block `render` forever.
+    let scenes = dir.join("scenes");
+    std::fs::create_dir_all(&scenes).unwrap();
+    let fifo = scenes.join("a.json");
+    let made = Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .is_ok_and(|s| s.success());
+    if made {
+        let (code, e) = run_cli(&[
+            "render".as_ref(),
+            scenes.as_os_str(),
+            "--out".as_ref(),
+            dir.join("out").as_os_str(),
+        ]);
+        assert_eq!(code, Some(2), "{e}");
+        assert!(
+            e.contains("a.json") && e.contains("not a regular file"),
+            "{e}"
+        );
+        std::fs::remove_file(&fifo).unwrap();
+    }
+    // Text that is not UTF-8 is refused at its line and column.
+    let bad = dir.join("bad.json");
+    std::fs::write(&bad, b"{\n  \"title\": \"caf\xe9\"\n}").unwrap();
+    let (code, e) = run_cli(&["check".as_ref(), bad.as_os_str()]);
+    assert_eq!(code, Some(2), "{e}");
+    assert!(e.contains("2:16: not UTF-8"), "{e}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn accuracy_tries_its_plot_file_before_the_sweep_and_never_writes_over_a_device() {
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/lh_abb24_beam.json");
+    let dir = tmp("accuracy-out");
+    let missing = dir.join("no/such/folder/plot.svg");
+    let t = std::time::Instant::now();
+    let (code, e) = run_cli(&[
+        "accuracy".as_ref(),
+        scene.as_ref(),
+        "--svg".as_ref(),
+        missing.as_os_str(),
+    ]);
+    assert_eq!(code, Some(2), "{e}");
+    assert!(e.contains("--svg") && e.contains("plot.svg"), "{e}");
+    // The sweep takes seconds; the refusal comes before it (a loose bound, for a slow machine).
+    assert!(t.elapsed() < std::time::Duration::from_secs(20));
+    if Path::new("/dev/null").exists() {
+        let (code, e) = run_cli(&[
+            "accuracy".as_ref(),
+            scene.as_ref(),
+            "--svg".as_ref(),
+            "/dev/null".as_ref(),
+        ]);
+        assert_eq!(code, Some(2), "{e}");
+        assert!(e.contains("not a regular file"), "{e}");
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::FileTypeExt;
+            let kind = std::fs::metadata("/dev/null").unwrap().file_type();
+            assert!(kind.is_char_device(), "/dev/null is still a device");
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn the_envelope_counts_each_load_case_once() {
+    let shed = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/lh_aufgabe4_shed_roof.json"
+    ))
+    .unwrap();
+    for (from, to, field) in [
+        (
+            "\"permanent\": [\"dead load\"]",
+            "\"permanent\": [\"dead load\", \"dead load\"]",
+            "envelope.permanent[1]",
+        ),
+        (
+            "[[\"wind left\", \"wind right\"]]",
+            "[[\"wind left\", \"dead load\"]]",
+            "envelope.exclusive[0][1]",
+        ),
+    ] {
+        assert!(shed.contains(from));
+        let e = graphostatik::scene::AnyScene::from_json(&shed.replace(from, to), "shed.json")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with(&format!(
+                "shed.json: {field}: load case `dead load` is listed already"
+            )),
+            "{e}"
+        );
+    }
 }
