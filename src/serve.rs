@@ -12,7 +12,7 @@
 use crate::site::{scene_page, PageLinks, SiteScene};
 use crate::web::Built;
 use std::collections::HashMap;
-use std::io::{BufRead, BufReader, Write};
+use std::io::Write;
 use std::net::{TcpListener, TcpStream};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
@@ -20,8 +20,12 @@ use std::time::Duration;
 
 /// How often the page asks whether its scene changed (ms).
 pub const POLL_MS: u32 = 500;
-/// Longest request head read (bytes).
-const MAX_HEAD: usize = 16 * 1024;
+/// Longest request head read (bytes): a longer one is answered 431 and closed.
+pub const MAX_HEAD: usize = 16 * 1024;
+/// Time a client has to send its request head (a slow or idle client is closed after it).
+pub const HEAD_DEADLINE: Duration = Duration::from_secs(5);
+/// Connections served at once; beyond them a client is answered 503 at once and closed.
+pub const MAX_CONNECTIONS: usize = 128;
 
 /// What the server serves: one scene file, or the `*.json` of one folder.
 #[derive(Debug, Clone)]
@@ -103,11 +107,13 @@ impl Site {
         let files: Vec<PathBuf> = if self.single {
             vec![self.root.clone()]
         } else {
+            // Only regular files of the folder itself: a link is not followed out of it.
             let mut v: Vec<PathBuf> = std::fs::read_dir(&self.root)
                 .map(|d| {
                     d.flatten()
+                        .filter(|e| e.file_type().is_ok_and(|t| t.is_file()))
                         .map(|e| e.path())
-                        .filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "json"))
+                        .filter(|p| p.extension().is_some_and(|x| x == "json"))
                         .collect()
                 })
                 .unwrap_or_default();
@@ -166,8 +172,39 @@ impl Site {
         Answer::text(404, "not found")
     }
 
+    /// Whether a request may come from where it says: a browser names another site in
+    /// `Origin` (a script's request) or `Sec-Fetch-Site: cross-site` (any request it makes for
+    /// a page of another site); the preview's own pages, a typed address and a tool that
+    /// sends neither header may ask.
+    fn same_origin(
+        &self,
+        origin: Option<&str>,
+        fetch_site: Option<&str>,
+        host: Option<&str>,
+    ) -> bool {
+        if fetch_site.is_some_and(|f| f.eq_ignore_ascii_case("cross-site")) {
+            return false;
+        }
+        let Some(o) = origin.filter(|o| *o != "null") else {
+            return true;
+        };
+        let Some(h) = o
+            .to_ascii_lowercase()
+            .strip_prefix("http://")
+            .map(str::to_string)
+        else {
+            return false;
+        };
+        if self.loopback {
+            self.is_loopback_host(&h)
+        } else {
+            host.is_some_and(|host| host.eq_ignore_ascii_case(&h))
+        }
+    }
+
     fn is_loopback_host(&self, host: &str) -> bool {
         let port = format!(":{}", self.port);
+        let host = host.to_ascii_lowercase();
         ["127.0.0.1", "localhost", "[::1]"]
             .iter()
             .any(|h| host == *h || host.strip_suffix(port.as_str()) == Some(*h))
@@ -190,7 +227,10 @@ impl Site {
             "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>graphostatik \
              preview</title></head>\n<body style=\"font-family: Georgia, serif\"><h1>Scenes in {}</h1>\n\
              <ul>\n{items}</ul>\n</body></html>\n",
-            crate::render::html_text(&self.root.display().to_string())
+            // The folder's own name, not its path on this machine.
+            crate::render::html_text(
+                &self.root.file_name().map_or_else(|| ".".into(), |n| n.to_string_lossy())
+            )
         ))
     }
 
@@ -312,52 +352,133 @@ fn percent_encode(s: &str) -> String {
         .collect()
 }
 
-/// Serves `site` on `listener` until the process ends: one thread per connection, one
-/// request each.
+/// Serves `site` on `listener` until the process ends: a thread per connection, at most
+/// [`MAX_CONNECTIONS`] at once (beyond them 503 and closed), each with [`HEAD_DEADLINE`] to
+/// send a head of at most [`MAX_HEAD`] bytes, one request each.
 pub fn run(listener: TcpListener, site: Site) {
-    for stream in listener.incoming().flatten() {
-        let site = site.clone();
-        std::thread::spawn(move || {
-            let _ = handle(stream, &site);
-        });
+    let open = Arc::new(std::sync::atomic::AtomicUsize::new(0));
+    for mut stream in listener.incoming().flatten() {
+        use std::sync::atomic::Ordering;
+        if open.fetch_add(1, Ordering::SeqCst) >= MAX_CONNECTIONS {
+            open.fetch_sub(1, Ordering::SeqCst);
+            refuse(&mut stream, 503, "busy: too many connections");
+            continue;
+        }
+        let (site, count) = (site.clone(), Arc::clone(&open));
+        let spawned = std::thread::Builder::new()
+            .stack_size(256 * 1024)
+            .spawn(move || {
+                let _ = handle(stream, &site);
+                count.fetch_sub(1, Ordering::SeqCst);
+            });
+        if spawned.is_err() {
+            open.fetch_sub(1, Ordering::SeqCst);
+        }
     }
 }
 
-fn handle(mut stream: TcpStream, site: &Site) -> std::io::Result<()> {
-    stream.set_read_timeout(Some(Duration::from_secs(10)))?;
-    let mut reader = BufReader::new(stream.try_clone()?);
-    let mut head = Vec::new();
-    let mut line = String::new();
-    while head.len() < MAX_HEAD {
-        line.clear();
-        if reader.read_line(&mut line)? == 0 || line == "\r\n" || line == "\n" {
-            break;
-        }
-        head.push(line.trim_end().to_string());
-    }
-    let mut parts = head.first().map(|l| l.split(' ')).into_iter().flatten();
-    let (method, target) = (parts.next().unwrap_or(""), parts.next().unwrap_or(""));
-    let host = head.iter().skip(1).find_map(|h| {
-        let (k, v) = h.split_once(':')?;
-        k.eq_ignore_ascii_case("host").then(|| v.trim().to_string())
-    });
-    let answer = match method {
-        "GET" | "HEAD" => site.answer(target, host.as_deref()),
-        _ => Answer::text(405, "only GET"),
-    };
-    let reason = match answer.status {
+/// A short answer written without waiting long, then the connection closed.
+fn refuse(stream: &mut TcpStream, status: u16, text: &str) {
+    let _ = stream.set_write_timeout(Some(Duration::from_millis(200)));
+    let _ = write!(
+        stream,
+        "HTTP/1.1 {status} {}\r\nContent-Type: text/plain; charset=utf-8\r\nContent-Length: {}\r\n\
+         Connection: close\r\n\r\n{text}",
+        reason(status),
+        text.len()
+    );
+}
+
+fn reason(status: u16) -> &'static str {
+    match status {
         200 => "OK",
         204 => "No Content",
+        403 => "Forbidden",
         404 => "Not Found",
         405 => "Method Not Allowed",
+        408 => "Request Timeout",
+        431 => "Request Header Fields Too Large",
+        503 => "Service Unavailable",
         _ => "Misdirected Request",
+    }
+}
+
+/// The request head, read within [`HEAD_DEADLINE`] and [`MAX_HEAD`] bytes; `Err` with the
+/// status to answer otherwise.
+fn read_head(stream: &mut TcpStream) -> Result<Vec<String>, u16> {
+    use std::io::Read;
+    let deadline = std::time::Instant::now() + HEAD_DEADLINE;
+    let mut head = Vec::new();
+    let mut buf = [0u8; 2048];
+    loop {
+        let end = head
+            .windows(4)
+            .position(|w| w == b"\r\n\r\n")
+            .map(|i| i + 4)
+            .or_else(|| head.windows(2).position(|w| w == b"\n\n").map(|i| i + 2));
+        if let Some(end) = end {
+            head.truncate(end);
+            break;
+        }
+        if head.len() > MAX_HEAD {
+            return Err(431);
+        }
+        let left = deadline.saturating_duration_since(std::time::Instant::now());
+        if left.is_zero() || stream.set_read_timeout(Some(left)).is_err() {
+            return Err(408);
+        }
+        match stream.read(&mut buf) {
+            Ok(0) => break,
+            Ok(n) => head.extend_from_slice(&buf[..n]),
+            Err(_) => return Err(408),
+        }
+    }
+    Ok(String::from_utf8_lossy(&head)
+        .lines()
+        .map(|l| l.trim_end().to_string())
+        .take_while(|l| !l.is_empty())
+        .collect())
+}
+
+/// A header's value, by its name in any case.
+fn header<'a>(head: &'a [String], name: &str) -> Option<&'a str> {
+    head.iter().skip(1).find_map(|h| {
+        let (k, v) = h.split_once(':')?;
+        k.trim().eq_ignore_ascii_case(name).then(|| v.trim())
+    })
+}
+
+fn handle(mut stream: TcpStream, site: &Site) -> std::io::Result<()> {
+    let head = match read_head(&mut stream) {
+        Ok(h) => h,
+        Err(status) => {
+            refuse(
+                &mut stream,
+                status,
+                "the request head must come whole and soon",
+            );
+            return Ok(());
+        }
+    };
+    let mut parts = head.first().map(|l| l.split(' ')).into_iter().flatten();
+    let (method, target) = (parts.next().unwrap_or(""), parts.next().unwrap_or(""));
+    let (origin, fetch_site) = (header(&head, "origin"), header(&head, "sec-fetch-site"));
+    let answer = if !site.same_origin(origin, fetch_site, header(&head, "host")) {
+        Answer::text(403, "a page of another site may not ask this preview")
+    } else {
+        match method {
+            "GET" | "HEAD" => site.answer(target, header(&head, "host")),
+            _ => Answer::text(405, "only GET"),
+        }
     };
     let body = if method == "HEAD" { "" } else { &answer.body };
+    stream.set_write_timeout(Some(Duration::from_secs(30)))?;
     write!(
         stream,
-        "HTTP/1.1 {} {reason}\r\nContent-Type: {}\r\nContent-Length: {}\r\nCache-Control: no-store\r\n\
+        "HTTP/1.1 {} {}\r\nContent-Type: {}\r\nContent-Length: {}\r\nCache-Control: no-store\r\n\
          X-Content-Type-Options: nosniff\r\nConnection: close\r\n\r\n{body}",
         answer.status,
+        reason(answer.status),
         answer.content_type,
         answer.body.len()
     )?;

@@ -25,6 +25,7 @@ mod mechanisms;
 mod properties;
 mod pump;
 mod schema;
+mod serve_load;
 mod shaft;
 mod snapshots;
 mod support;
