@@ -212,11 +212,8 @@ impl AnyScene {
                 "a scene is a JSON object ({ \"title\": …, … })".into(),
             ));
         }
-        if let Some((field, chars, max)) = found.too_long {
-            return Err(invalid(
-                field,
-                format!("a text of {chars} characters: at most {max} are allowed"),
-            ));
+        if let Some((field, message)) = found.too_long {
+            return Err(invalid(field, message));
         }
         match found.procedure {
             None => Ok(None),

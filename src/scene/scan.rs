@@ -20,9 +20,9 @@ pub(super) struct Scanned {
     pub object: bool,
     /// The `procedure` field, if the scene has one (any JSON value).
     pub procedure: Option<serde_json::Value>,
-    /// The first text (in document order) longer than its field allows: its path, its
-    /// length in characters and the limit.
-    pub too_long: Option<(String, usize, usize)>,
+    /// The first text (in document order) longer than its field allows, or holding a
+    /// control character: its path and what is wrong with it.
+    pub too_long: Option<(String, String)>,
 }
 
 /// Scans `text`; a syntax error anywhere (trailing data included) is returned as is.
@@ -130,12 +130,29 @@ fn path_text(path: &[Seg]) -> String {
 /// Notes the text at `path` if it is longer than its field allows (the scene's free
 /// `notes` may run to [`MAX_NOTES_CHARS`], every other text to [`MAX_TEXT_CHARS`]), unless
 /// an earlier one was found.
-fn check_len(s: &str, path: &[Seg], found: &mut Option<(String, usize, usize)>) {
-    // A character is at least one byte: most texts are settled without counting.
-    if found.is_some() || s.len() <= MAX_TEXT_CHARS {
+fn check_len(s: &str, path: &[Seg], found: &mut Option<(String, String)>) {
+    if found.is_some() {
         return;
     }
     let notes = matches!(path, [Seg::Key(k)] if k == "notes");
+    // A control character (ESC, NUL, a line end in a name) would reach a terminal, a CSV
+    // row, a Markdown table or TeX as it is: texts are one line of printable characters,
+    // the notes may break lines.
+    let allowed = |c: char| notes && matches!(c, '\n' | '\r' | '\t');
+    if let Some(c) = s.chars().find(|&c| c.is_control() && !allowed(c)) {
+        *found = Some((
+            path_text(path),
+            format!(
+                "a control character (U+{:04X}) in a text: a name or title is one line of printable characters",
+                c as u32
+            ),
+        ));
+        return;
+    }
+    // A character is at least one byte: most texts are settled without counting.
+    if s.len() <= MAX_TEXT_CHARS {
+        return;
+    }
     let max = if notes {
         MAX_NOTES_CHARS
     } else {
@@ -143,14 +160,17 @@ fn check_len(s: &str, path: &[Seg], found: &mut Option<(String, usize, usize)>) 
     };
     let n = s.chars().count();
     if n > max {
-        *found = Some((path_text(path), n, max));
+        *found = Some((
+            path_text(path),
+            format!("a text of {n} characters: at most {max} are allowed"),
+        ));
     }
 }
 
 /// Any value below the top level, its path kept for the error.
 struct Walk<'a, 'de> {
     path: &'a mut Vec<Seg<'de>>,
-    found: &'a mut Option<(String, usize, usize)>,
+    found: &'a mut Option<(String, String)>,
 }
 
 impl<'de> DeserializeSeed<'de> for Walk<'_, 'de> {
@@ -212,7 +232,13 @@ mod tests {
         let s = scan(&text).unwrap();
         assert!(s.object);
         assert_eq!(s.procedure, Some(serde_json::json!("truss")));
-        assert_eq!(s.too_long, Some(("joints[1].name".into(), 401, 400)));
+        assert_eq!(
+            s.too_long,
+            Some((
+                "joints[1].name".into(),
+                "a text of 401 characters: at most 400 are allowed".into()
+            ))
+        );
         // Notes may be longer; a character is counted as one however many bytes it takes.
         let s = scan(&format!(
             r#"{{"notes": "{long}", "title": "{}"}}"#,
