@@ -437,7 +437,7 @@ impl Exports {
     ) -> Result<Written, Fail> {
         let meta = p.figure_meta();
         let (svg, lettering) = render::figure_lettered(&meta, board, None);
-        let note = (lettering.left_out > 0).then(|| {
+        let labels = (lettering.left_out > 0).then(|| {
             format!(
                 "{}: {} of {} labels left out, no room for them on the sheet",
                 f.display(),
@@ -445,6 +445,10 @@ impl Exports {
                 lettering.labels
             )
         });
+        let note = match (labels, failed_checks(f, board)) {
+            (Some(a), Some(b)) => Some(format!("{a}\n{b}")),
+            (a, b) => a.or(b),
+        };
         let failed = |e: render::export::ExportError| Fail(format!("{}: {e}", f.display()));
         let mut out = Vec::new();
         for &fmt in &self.formats {
@@ -570,6 +574,19 @@ fn render_all(
                 .unwrap_or_else(|| Err(Fail(format!("{}: rendering stopped", f.display()))))
         })
         .collect()
+}
+
+/// What `render` and `forces` say on standard error when a check of the construction they
+/// drew or read failed (a glancing cut, a value off its closed form): they still write
+/// their output, and `check` shows the failures.
+fn failed_checks(f: &Path, board: &graphostatik::protocol::Board) -> Option<String> {
+    let (n, failed) = (board.check_count(), board.failed_count());
+    (failed > 0).then(|| {
+        format!(
+            "{}: {failed} of {n} checks fail (graphostatik check lists them)",
+            f.display()
+        )
+    })
 }
 
 /// `check`: the table of every check, exit status 1 if any fails; with `reference`, every
@@ -874,8 +891,11 @@ fn forces_cmd(scene: &Path, format: TableFormat) -> Result<ExitCode, Fail> {
             scene.display()
         )));
     };
-    let (_, results) = TrussScene::construct(t, BoardConfig::CHECKS)
+    let (board, results) = TrussScene::construct(t, BoardConfig::CHECKS)
         .map_err(|e| Fail(format!("{}: {e}", scene.display())))?;
+    if let Some(note) = failed_checks(scene, &board) {
+        eprintln!("{note}");
+    }
     use graphostatik::render::forces;
     let text = match format {
         TableFormat::Markdown if results.len() > 1 => format!(

@@ -536,6 +536,14 @@ impl Board {
         }
     }
 
+    /// How many checks failed, counted or kept.
+    pub fn failed_count(&self) -> u64 {
+        match self.ledger.as_deref() {
+            Some(l) => l.summary.failed,
+            None => self.checks().filter(|c| !c.passed).count() as u64,
+        }
+    }
+
     /// Whether every check on the board passed (true for a board without checks), counted
     /// or kept.
     pub fn all_passed(&self) -> bool {

@@ -11,7 +11,13 @@ pub(super) fn source_line(source: &str, detail: &str) -> String {
     }
 }
 
-/// Checks that every scale or pole given (`Some`) is a positive, finite number.
+/// The range of a scale's number (1 : n, or units per mm of sheet).
+pub(super) const MIN_SCALE: f64 = 1e-9;
+/// See [`MIN_SCALE`].
+pub(super) const MAX_SCALE: f64 = 1e9;
+
+/// Checks that every scale or pole given (`Some`) is a positive, finite number, and a scale
+/// one within [`MIN_SCALE`]..=[`MAX_SCALE`].
 pub(super) fn optional_positive(
     origin: &str,
     fields: &[(&str, Option<f64>)],
@@ -23,6 +29,22 @@ pub(super) fn optional_positive(
                     origin: origin.to_string(),
                     field: name.to_string(),
                     message: format!("must be positive, got {v}"),
+                });
+            }
+            // A scale's number, 1 : n or so many units per mm: beyond this range one part of
+            // a figure shrinks to nothing beside another (a force system at 1 : 1e308 drew
+            // its forces and lost its positions to underflow: NaN moments).
+            let scale = name.ends_with("scale") || name.contains("_per_mm");
+            if scale && !(MIN_SCALE..=MAX_SCALE).contains(&v) {
+                return Err(SceneError::Invalid {
+                    origin: origin.to_string(),
+                    field: name.to_string(),
+                    message: format!(
+                        "a scale must lie between {} and {}, got {}",
+                        crate::fmt::sci(MIN_SCALE),
+                        crate::fmt::sci(MAX_SCALE),
+                        crate::fmt::sci(v)
+                    ),
                 });
             }
         }

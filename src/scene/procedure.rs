@@ -194,6 +194,10 @@ impl<'a> ReadContext<'a> {
 /// sheets side by side. A larger one comes from a scale typed wrong (1 : 1e-12).
 pub const MAX_SHEET_MM: f64 = 10_000.0;
 
+/// The smallest figure a scene may draw (mm across): below it a scale such as 1 : 1e308
+/// shrinks the figure to a point, its coordinates underflow and its checks turn NaN.
+pub const MIN_SHEET_MM: f64 = 1.0;
+
 /// Parses a scene of one procedure, keeping field path, line and column, refusing trailing
 /// data after the JSON, reads it into its problem, and checks that its figure fits a sheet.
 pub fn parse_scene<P: Procedure>(
@@ -229,6 +233,19 @@ pub fn parse_scene<P: Procedure>(
                     crate::fmt::sci(mm / 1000.0)
                 },
                 crate::fmt::num(MAX_SHEET_MM / 1000.0, 3)
+            ),
+        });
+    }
+    let large_enough = mm.partial_cmp(&MIN_SHEET_MM).is_some_and(|o| o.is_ge());
+    if !large_enough && !field.is_empty() {
+        return Err(SceneError::Invalid {
+            origin: origin.to_string(),
+            field: field.to_string(),
+            message: format!(
+                "with this value the figure would be {} mm across on the sheet, less than the \
+                 {} mm a figure must take: change it (a scale of 1 : n takes a smaller n)",
+                crate::fmt::sci(mm),
+                crate::fmt::num(MIN_SHEET_MM, 3)
             ),
         });
     }

@@ -1042,3 +1042,32 @@ fn the_envelope_counts_each_load_case_once() {
         );
     }
 }
+
+#[test]
+fn a_scale_that_shrinks_a_figure_to_a_point_is_refused() {
+    // LH Abb. 22 at 1 : 1e308: the positions underflowed beside forces drawn at their scale,
+    // and the moment of the resultant came out NaN; the crank-rocker at 1 : 1e308 drew a
+    // point with every check NaN.
+    let funicular = include_str!("../../scenes/lh_abb22_funicular.json");
+    let e = graphostatik::scene::AnyScene::from_json(
+        &funicular.replace("\"length_scale\": 25", "\"length_scale\": 1e308"),
+        "f.json",
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(
+        e.starts_with("f.json: drawing.length_scale: a scale must lie between"),
+        "{e}"
+    );
+    let rocker = include_str!("../../scenes/kg_abb1043_crank_rocker.json");
+    let mut doc: serde_json::Value = serde_json::from_str(rocker).unwrap();
+    doc["drawing"]["length_scale"] = serde_json::json!(1e300);
+    let e = graphostatik::scene::AnyScene::from_json(&doc.to_string(), "r.json")
+        .unwrap_err()
+        .to_string();
+    assert!(e.starts_with("r.json: drawing.length_scale: "), "{e}");
+    assert!(
+        e.contains("less than the 1 mm a figure must take") || e.contains("a scale must lie"),
+        "{e}"
+    );
+}
