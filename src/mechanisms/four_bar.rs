@@ -89,8 +89,8 @@ impl FourBarError {
                 "the {longest} is at least as long as the other three links together: the link lengths do not close the loop"
             )),
             FourBarError::NotGrashof { lengths: [d, r, l, p] } => ("crank", format!(
-                "the crank cannot turn round (Grashof: shortest + longest ≤ the other two, and the crank or the frame the shortest): frame {}, crank {}, coupler {}, rocker {} mm",
-                crate::fmt::num(*d, 6), crate::fmt::num(*r, 6), crate::fmt::num(*l, 6), crate::fmt::num(*p, 6)
+                // Every digit (shortest round trip): "rocker 150" for 149.999999999 hid why.
+                "the crank cannot turn round (Grashof: shortest + longest ≤ the other two, and the crank or the frame the shortest): frame {d}, crank {r}, coupler {l}, rocker {p} mm"
             )),
             FourBarError::NotParallel => ("assembly", "the parallel closure needs a parallel crank: the rocker as long as the crank and the coupler as long as the frame".into()),
         }

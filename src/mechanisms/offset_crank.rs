@@ -71,10 +71,7 @@ impl OffsetCrank {
         if !(pos(l) && l > r) {
             return Err((
                 "rod_length",
-                format!(
-                    "must be longer than the crank R = {}",
-                    crate::fmt::num(r, 6)
-                ),
+                format!("must be longer than the crank R = {r}, got {l}"),
             ));
         }
         if !(a.is_finite() && a.abs() < l - r) {

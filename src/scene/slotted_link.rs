@@ -89,13 +89,13 @@ impl LinkScene {
         if l.centre_distance_mm <= l.crank_radius_mm {
             return Err(f.bad("link.centre_distance_mm", format!(
                 "must exceed the crank radius {} mm, got {}: the lever's pivot D must lie outside the crank circle (at e = r the return speed c₂ = vR/(e − r) of KG 305 is infinite)",
-                crate::fmt::num(l.crank_radius_mm, 6), crate::fmt::num(l.centre_distance_mm, 6))));
+                l.crank_radius_mm, l.centre_distance_mm)));
         }
         let reach = l.centre_distance_mm + l.crank_radius_mm;
         if l.lever_mm < reach {
             return Err(f.bad("link.lever_mm", format!(
                 "must be at least e + r = {} mm, got {}: the pin would leave the slot at the top of the crank circle",
-                crate::fmt::num(reach, 6), crate::fmt::num(l.lever_mm, 6))));
+                reach, l.lever_mm)));
         }
         self.speed.check(f)?;
         self.angles.check_divisions_or_degrees(f)?;

@@ -1071,3 +1071,23 @@ fn a_scale_that_shrinks_a_figure_to_a_point_is_refused() {
         "{e}"
     );
 }
+
+#[test]
+fn a_refusal_prints_enough_digits_to_show_the_difference() {
+    // The lever 1e-7 mm short of e + r = 280 mm was refused as "at least 280, got 280".
+    let link = include_str!("../../scenes/kg_abb1071_slotted_link.json");
+    let mut doc: serde_json::Value = serde_json::from_str(link).unwrap();
+    doc["link"]["lever_mm"] = serde_json::json!(279.9999999);
+    let e = graphostatik::scene::AnyScene::from_json(&doc.to_string(), "l.json")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("e + r = 280 mm, got 279.9999999"), "{e}");
+    // A crank-rocker whose rocker is 1e-9 mm short of turning: every length as given.
+    let rocker = include_str!("../../scenes/kg_abb1043_crank_rocker.json");
+    let mut doc: serde_json::Value = serde_json::from_str(rocker).unwrap();
+    doc["links"] = serde_json::json!({ "frame_mm": 400, "crank_mm": 100, "coupler_mm": 350, "rocker_mm": 149.999999999 });
+    let e = graphostatik::scene::AnyScene::from_json(&doc.to_string(), "r.json")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("rocker 149.999999999 mm"), "{e}");
+}
