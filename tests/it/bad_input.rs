@@ -1091,3 +1091,27 @@ fn a_refusal_prints_enough_digits_to_show_the_difference() {
         .to_string();
     assert!(e.contains("rocker 149.999999999 mm"), "{e}");
 }
+
+#[test]
+fn a_pump_too_strong_for_the_sheet_is_refused_before_it_is_drawn() {
+    // KG Tafel I's pump at 5,400 at delivery drew a sheet of 35 m; at 4.3e9 at, or with a
+    // plunger of a kilometre, the construction never ended.
+    let pump = include_str!("../../scenes/kg_abb1065_pump_engine.json");
+    for (field, value) in [
+        ("delivery_at", 5400.0),
+        ("delivery_at", 4.3e9),
+        ("plunger_mm", 1e6),
+    ] {
+        let mut doc: serde_json::Value = serde_json::from_str(pump).unwrap();
+        doc["cylinders"][0]["pump"][field] = serde_json::json!(value);
+        let t = std::time::Instant::now();
+        let e = graphostatik::scene::AnyScene::from_json(&doc.to_string(), "p.json")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("more than the 10 m a figure may take"),
+            "{field} {value}: {e}"
+        );
+        assert!(t.elapsed() < std::time::Duration::from_secs(5));
+    }
+}
