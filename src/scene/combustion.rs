@@ -307,6 +307,7 @@ impl CombustionScene {
 
 impl super::Procedure for CombustionScene {
     const NAME: &'static str = "combustion_engine";
+    const SIZED_BY: &'static str = "divisions, cylinders or outputs";
     const ABOUT: &'static str = "single-acting combustion engines, four- and two-stroke, constant volume or constant pressure: piston force with and without inertia over the cycle, tangential force, turning force of several cylinders in their firing order and its mean (KG XIV B.4, Abb. 1056-1060)";
     const GEOMETRY_FIELD: &'static str = "mechanism";
     type Problem = CombustionProblem;

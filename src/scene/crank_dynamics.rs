@@ -465,6 +465,7 @@ fn points(s: &SidePoints, gauge: bool, stroke: f64) -> Indicator {
 
 impl super::Procedure for DynamicsScene {
     const NAME: &'static str = "crank_dynamics";
+    const SIZED_BY: &'static str = "divisions, cylinders, outputs or digitised points";
     const ABOUT: &'static str = "an engine's dynamics: net pressure, inertia, turning force, mean heights, power, flywheel (LH II A, C-J; KG XIV B.4)";
     const OUTPUTS: &'static [&'static str] = DynamicsOutput::NAMES;
     const GEOMETRY_FIELD: &'static str = "mechanism";

@@ -157,6 +157,7 @@ impl FourBarScene {
 
 impl super::Procedure for FourBarScene {
     const NAME: &'static str = "four_bar";
+    const SIZED_BY: &'static str = "angles (crank positions)";
     const ABOUT: &'static str = "the crank-rocker (Bogenschubkurbel) and the parallel crank: positions by two circles with the branch named, the rocker's dead positions, the transmission angle flagged below a limit, Grashof's rule (KG XIV, Abb. 1043, 1045)";
     const OUTPUTS: &'static [&'static str] = FourBarOutput::NAMES;
     const GEOMETRY_FIELD: &'static str = "links";

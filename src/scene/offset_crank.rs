@@ -176,6 +176,7 @@ impl OffsetScene {
 
 impl super::Procedure for OffsetScene {
     const NAME: &'static str = "offset_crank";
+    const SIZED_BY: &'static str = "angles (crank positions) or outputs";
     const ABOUT: &'static str = "the offset (geschränkt) slider-crank: dead centres by the arcs L ± R, the unequal strokes’ crank angles 180° ± δ, path, velocity and forces (KG XIV, Abb. 1046)";
     const OUTPUTS: &'static [&'static str] = OffsetOutput::NAMES;
     const GEOMETRY_FIELD: &'static str = "offset_mm";

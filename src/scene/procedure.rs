@@ -67,6 +67,9 @@ pub trait Procedure:
     const NAME: &'static str;
     /// One line on what it constructs and where the books have it.
     const ABOUT: &'static str;
+    /// What sets the size of its figure, as a refusal of a figure too large names it
+    /// (`"angles (crank positions) or outputs"`).
+    const SIZED_BY: &'static str = "loads or parts";
     /// What a scene can ask for besides the procedure's core (its `outputs` values).
     const OUTPUTS: &'static [&'static str] = &[];
     /// The validated scene in machine units, with every scale chosen.

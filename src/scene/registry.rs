@@ -116,6 +116,30 @@ trait DynProblem: Debug + Send + Sync {
 
 struct ProblemOf<P: Procedure>(P::Problem);
 
+/// The most steps a figure may draw: every step is a layer of the SVG, its objects are
+/// lettered and set out, and a browser replays them on every drag. The bundled figures draw
+/// at most 5,427 (the crane bridge); 64 cylinders at 3,600 divisions ran out of memory.
+pub const MAX_FIGURE_STEPS: usize = 50_000;
+
+/// The figure's cost, counted before it is drawn: the construction run silent (it counts
+/// its steps and keeps nothing, a few percent of drawing it), refused beyond
+/// [`MAX_FIGURE_STEPS`] naming what sets its size. `check` draws nothing and takes more.
+fn figure_cost<P: Procedure>(problem: &P::Problem) -> Result<(), ConstructionError> {
+    let (pilot, _) = P::construct(problem, BoardConfig::SILENT)?;
+    let steps = pilot.step_count();
+    if steps <= MAX_FIGURE_STEPS {
+        return Ok(());
+    }
+    Err(ConstructionError::Unsupported {
+        input: "figure".into(),
+        reason: format!(
+            "it would draw {steps} steps, more than the {MAX_FIGURE_STEPS} a figure may hold: \
+             ask for fewer {} (graphostatik check takes it: it draws nothing)",
+            P::SIZED_BY
+        ),
+    })
+}
+
 impl<P: Procedure> Debug for ProblemOf<P> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         self.0.fmt(f)
@@ -130,6 +154,9 @@ impl<P: Procedure> DynProblem for ProblemOf<P> {
         P::error_field(&self.0, err)
     }
     fn construct(&self, config: BoardConfig) -> Result<Board, ConstructionError> {
+        if config == BoardConfig::DRAWING {
+            figure_cost::<P>(&self.0)?;
+        }
         P::construct(&self.0, config).map(|(b, _)| b)
     }
     fn figure_meta(&self) -> FigureMeta {

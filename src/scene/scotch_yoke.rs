@@ -179,6 +179,7 @@ impl YokeScene {
 
 impl super::Procedure for YokeScene {
     const NAME: &'static str = "scotch_yoke";
+    const SIZED_BY: &'static str = "angles (crank positions) or outputs";
     const ABOUT: &'static str = "the scotch yoke (Kurbelschleife): path, velocity and acceleration over the stroke, beside the slider-crank of the same stroke (KG XIV, Abb. 1069)";
     const OUTPUTS: &'static [&'static str] = YokeOutput::NAMES;
     const GEOMETRY_FIELD: &'static str = "crank";

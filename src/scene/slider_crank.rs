@@ -433,6 +433,7 @@ impl SliderCrankProblem {
 
 impl Procedure for SliderCrankScene {
     const NAME: &'static str = "slider_crank";
+    const SIZED_BY: &'static str = "angles (crank positions) or outputs";
     const ABOUT: &'static str = "the slider-crank: piston path, piston velocity, rod, guide, radial and tangential forces (LH II, KG XIV B)";
     const OUTPUTS: &'static [&'static str] = CrankOutput::NAMES;
     const GEOMETRY_FIELD: &'static str = "mechanism";

@@ -152,6 +152,7 @@ impl LinkScene {
 
 impl super::Procedure for LinkScene {
     const NAME: &'static str = "slotted_link";
+    const SIZED_BY: &'static str = "angles (crank positions) or outputs";
     const ABOUT: &'static str = "the oscillating slotted link (schwingende Kurbelschleife, quick return): working and return angles, β/α, the table's path and speed by the parallel through F, c₁ and c₂ (KG XIV, Abb. 1071-1072, eq. 304-305)";
     const OUTPUTS: &'static [&'static str] = LinkOutput::NAMES;
     const GEOMETRY_FIELD: &'static str = "link";

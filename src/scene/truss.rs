@@ -1036,6 +1036,7 @@ impl TrussScene {
 
 impl super::Procedure for TrussScene {
     const NAME: &'static str = "truss";
+    const SIZED_BY: &'static str = "load cases or moving-load positions";
     const ABOUT: &'static str = "a truss: determinacy, reactions, Cremona plan, Ritter sections, counter-diagonals, envelopes (LH I B)";
     const OUTPUTS: &'static [&'static str] = &[];
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
