@@ -1120,10 +1120,12 @@ fn a_pump_too_strong_for_the_sheet_is_refused_before_it_is_drawn() {
 fn a_figure_too_large_is_refused_before_it_is_drawn_and_check_still_takes_it() {
     // A slider-crank at 3,600 angles draws 108,011 steps (its PNG took 15 s); 64 cylinders
     // at 3,600 divisions ran out of memory. The figure is counted silently first.
-    let scene = GOOD.replace("\"divisions\": 12", "\"divisions\": 3600").replace(
-        "\"outputs\": [\"piston_path\", \"tangential_force\"]",
-        "\"outputs\": [\"piston_path\", \"velocity\", \"tangential_force\"]",
-    );
+    let scene = GOOD
+        .replace("\"divisions\": 12", "\"divisions\": 3600")
+        .replace(
+            "\"outputs\": [\"piston_path\", \"tangential_force\"]",
+            "\"outputs\": [\"piston_path\", \"velocity\", \"tangential_force\"]",
+        );
     let p = graphostatik::scene::AnyScene::from_json(&scene, "s.json")
         .unwrap()
         .into_problem();
