@@ -176,7 +176,7 @@ pub fn build(text: &str, origin: &str) -> Result<Built, String> {
 /// [`build`], for a drag where `page` is given ([`replay_page`]).
 pub fn build_page(text: &str, origin: &str, page: Option<usize>) -> Result<Built, String> {
     let scene = AnyScene::from_json(text, origin).map_err(|e| e.to_string())?;
-    let sliders = sliders(text, origin)?;
+    let sliders = sliders(scene.preview(), text, origin)?;
     let p = scene.problem();
     let board = p
         .construct(BoardConfig::DRAWING)
@@ -268,16 +268,15 @@ fn step_lines(board: &Board) -> Vec<StepLine> {
         .collect()
 }
 
-/// The scene's `preview.sliders` with their values now; a slider that names no number of
-/// the scene is refused naming it.
-fn sliders(text: &str, origin: &str) -> Result<Vec<SliderLine>, String> {
-    let value: serde_json::Value =
-        serde_json::from_str(text).map_err(|e| format!("{origin}: {e}"))?;
-    let Some(p) = value.get("preview") else {
+/// The scene's `preview.sliders` (read with the scene) with their values now; a slider
+/// that names no number of the scene is refused naming it. The text is read as a JSON tree
+/// only where there are sliders to look up: a drag's replay reads its scene once.
+fn sliders(preview: Option<&Preview>, text: &str, origin: &str) -> Result<Vec<SliderLine>, String> {
+    let Some(preview) = preview.filter(|p| !p.sliders.is_empty()) else {
         return Ok(Vec::new());
     };
-    let preview: Preview =
-        serde_json::from_value(p.clone()).map_err(|e| format!("{origin}: preview: {e}"))?;
+    let value: serde_json::Value =
+        serde_json::from_str(text).map_err(|e| format!("{origin}: {e}"))?;
     let mut out = Vec::new();
     for (i, s) in preview.sliders.iter().enumerate() {
         let field = format!("{origin}: preview.sliders[{i}]");

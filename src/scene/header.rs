@@ -59,6 +59,9 @@ macro_rules! scene_struct {
             fn book(&self) -> &[$crate::scene::BookValue] {
                 &self.book
             }
+            fn preview(&self) -> Option<&$crate::scene::Preview> {
+                self.preview.as_ref()
+            }
         }
     };
 }

@@ -26,6 +26,8 @@ pub trait SceneHeader {
     ///
     /// [`BookValue`]: crate::scene::BookValue
     fn book(&self) -> &[crate::scene::BookValue];
+    /// What the live page lets a student move besides the given points.
+    fn preview(&self) -> Option<&crate::scene::Preview>;
 }
 
 /// A type with a JSON Schema where the `schema` feature is on (the default, with `cli`);

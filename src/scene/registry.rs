@@ -89,6 +89,7 @@ trait DynScene: Debug + Send + Sync {
     fn as_any(&self) -> &dyn Any;
     fn clone_box(&self) -> Box<dyn DynScene>;
     fn book(&self) -> &[super::BookValue];
+    fn preview(&self) -> Option<&super::Preview>;
 }
 
 impl<P: Procedure> DynScene for P {
@@ -97,6 +98,9 @@ impl<P: Procedure> DynScene for P {
     }
     fn book(&self) -> &[super::BookValue] {
         super::procedure::SceneHeader::book(self)
+    }
+    fn preview(&self) -> Option<&super::Preview> {
+        super::procedure::SceneHeader::preview(self)
     }
     fn clone_box(&self) -> Box<dyn DynScene> {
         Box::new(self.clone())
@@ -259,6 +263,11 @@ impl AnyScene {
     /// The numbers the book prints that the scene reproduces (its `book` field).
     pub fn book(&self) -> &[super::BookValue] {
         self.scene.book()
+    }
+
+    /// What the live page lets a student move (its `preview` field), if the scene says.
+    pub fn preview(&self) -> Option<&super::Preview> {
+        self.scene.preview()
     }
 
     /// Reads a scene file of any procedure ([`AnyScene::from_json`]).

@@ -357,6 +357,24 @@ fn engine_or_skip(test: &str) -> Option<PathBuf> {
     }
 }
 
+/// `graphostatik site` of `scenes` (paths from the crate's root) into `out`.
+fn write_site(scenes: &[&str], out: &Path) {
+    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let o = Command::new(bin())
+        .arg("site")
+        .args(scenes.iter().map(|p| manifest.join(p)))
+        .arg("--out")
+        .arg(out)
+        .output()
+        .unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
 /// The screen centre of the first handle called `name` that is in view (a truss draws each
 /// joint once per load case; the pane may be scrolled to the last).
 fn handle_at(s: &Session, name: &str) -> (f64, f64) {
@@ -401,21 +419,13 @@ fn a_student_drags_a_joint_and_a_crank_pin_in_the_site() {
         return;
     };
     let dir = tmp("site");
-    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let o = Command::new(bin())
-        .arg("site")
-        .arg(manifest.join("scenes/lh_aufgabe4_shed_roof.json"))
-        .arg(manifest.join("tests/it/browser/grid_truss.json"))
-        .arg(manifest.join("scenes/lh_abb52_esselborn.json"))
-        .arg("--out")
-        .arg(dir.join("site"))
-        .output()
-        .unwrap();
-    assert_eq!(
-        o.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&o.stderr)
+    write_site(
+        &[
+            "scenes/lh_aufgabe4_shed_roof.json",
+            "tests/it/browser/grid_truss.json",
+            "scenes/lh_abb52_esselborn.json",
+        ],
+        &dir.join("site"),
     );
     let s = Session::start(&browser, &dir.join("profile"));
     s.goto(&format!("file://{}", dir.join("site/index.html").display()));
@@ -572,20 +582,7 @@ fn replay_latency() {
         return;
     };
     let dir = tmp("latency");
-    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let o = Command::new(bin())
-        .arg("site")
-        .arg(manifest.join("scenes"))
-        .arg("--out")
-        .arg(dir.join("site"))
-        .output()
-        .unwrap();
-    assert_eq!(
-        o.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
+    write_site(&["scenes"], &dir.join("site"));
     let s = Session::start(&browser, &dir.join("profile"));
     let gz = {
         let out = Command::new("gzip").arg("-9c").arg(&wasm).output().unwrap();
@@ -596,12 +593,13 @@ fn replay_latency() {
         std::fs::metadata(&wasm).unwrap().len() as f64 / 1e6,
         gz as f64 / 1e6
     );
-    let mut scenes: Vec<_> = std::fs::read_dir(manifest.join("scenes"))
-        .unwrap()
-        .flatten()
-        .map(|e| e.path())
-        .filter(|p| p.extension().is_some_and(|x| x == "json"))
-        .collect();
+    let mut scenes: Vec<_> =
+        std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes"))
+            .unwrap()
+            .flatten()
+            .map(|e| e.path())
+            .filter(|p| p.extension().is_some_and(|x| x == "json"))
+            .collect();
     scenes.sort();
     for scene in scenes {
         let name = scene.file_stem().unwrap().to_string_lossy().into_owned();
