@@ -1,0 +1,531 @@
+//! The drawing steps: points, lines, circles, lengths laid off, curves, tables.
+
+use super::*;
+impl Board {
+    pub(super) fn prim<T>(
+        &self,
+        r: Result<T, PrimitiveError>,
+        note: &Note,
+    ) -> Result<T, ConstructionError> {
+        r.map_err(|source| ConstructionError::Primitive {
+            step: self.step_id_next(),
+            caption: note.caption.clone(),
+            source,
+        })
+    }
+
+    /// A length or ratio that must be a finite number for the step `note` would take.
+    pub(super) fn finite(&self, x: f64, note: &Note) -> Result<(), ConstructionError> {
+        if x.is_finite() {
+            Ok(())
+        } else {
+            Err(ConstructionError::Primitive {
+                step: self.step_id_next(),
+                caption: note.caption.clone(),
+                source: PrimitiveError::NotFinite,
+            })
+        }
+    }
+
+    /// A given point.
+    pub fn point(&mut self, p: Point, mark: impl Into<Mark>, note: Note) -> H<Point> {
+        let Mark { label, role } = mark.into();
+        let p = self.mark(p);
+        self.grow(&p);
+        self.begin(StepKind::Given, &note, &[]);
+        let id = self.add(label, role, || Geom::Point { at: p });
+        self.set_tr(id, |b| b.model.given(&p));
+        self.set_shadow(id, |_| Shadow::Point(DP::of(&p)));
+        H { id, g: p }
+    }
+
+    /// The line through a point in a given direction (a given axis, or a ray laid off with
+    /// the protractor).
+    pub fn line_dir(
+        &mut self,
+        p: &H<Point>,
+        dir: Vector,
+        mark: impl Into<Mark>,
+        note: Note,
+    ) -> Result<H<Line>, ConstructionError> {
+        let Mark { label, role } = mark.into();
+        let line = self.prim(Line::new(p.g, dir), &note)?;
+        let line = self.rule(line);
+        let kind = if p.id == ObjId::NONE || note.topic == Topic::Setup {
+            StepKind::Given
+        } else {
+            StepKind::Line
+        };
+        self.begin(kind, &note, &[p.id]);
+        let id = self.add(label, role, || Geom::Line {
+            line,
+            extent: [0.0, 0.0],
+        });
+        self.set_tr(id, |b| b.model.line_at(&b.tr(p.id), &dir));
+        self.set_shadow(id, |b| Shadow::Line {
+            o: b.sp(p),
+            d: DP::of_vec(&dir).unit(),
+        });
+        Ok(H { id, g: line })
+    }
+
+    /// The line through two points (the ruler).
+    pub fn line_through(
+        &mut self,
+        a: &H<Point>,
+        b: &H<Point>,
+        mark: impl Into<Mark>,
+        note: Note,
+    ) -> Result<H<Line>, ConstructionError> {
+        let Mark { label, role } = mark.into();
+        let line = self.prim(Line::through(a.g, b.g, self.tolerance.length), &note)?;
+        let line = self.rule(line);
+        self.begin(StepKind::Line, &note, &[a.id, b.id]);
+        let tb = line.param_of(&b.g);
+        let id = self.add(label, role, || Geom::Line {
+            line,
+            extent: [tb.min(0.0), tb.max(0.0)],
+        });
+        self.set_tr(id, |bd| {
+            bd.model
+                .ruled(&bd.tr(a.id), &bd.tr(b.id), (b.g - a.g).norm())
+        });
+        self.set_shadow(id, |bd| {
+            let (pa, pb) = (bd.sp(a), bd.sp(b));
+            Shadow::Line {
+                o: pa,
+                d: pb.sub(&pa).unit(),
+            }
+        });
+        Ok(H { id, g: line })
+    }
+
+    /// The parallel to `line` through `p`.
+    pub fn parallel(
+        &mut self,
+        line: &H<Line>,
+        p: &H<Point>,
+        mark: impl Into<Mark>,
+        note: Note,
+    ) -> H<Line> {
+        let g = construct::parallel_through(&line.g, p.g);
+        self.slide(StepKind::Parallel, line, p, g, mark.into(), note)
+    }
+
+    /// The perpendicular to `line` through `p`.
+    pub fn perpendicular(
+        &mut self,
+        line: &H<Line>,
+        p: &H<Point>,
+        mark: impl Into<Mark>,
+        note: Note,
+    ) -> H<Line> {
+        let g = construct::perpendicular_through(&line.g, p.g);
+        self.slide(StepKind::Perpendicular, line, p, g, mark.into(), note)
+    }
+
+    /// The set square slid along `line` to `p`, ruling `g` (the parallel, or the
+    /// perpendicular: [`StepKind::Perpendicular`]).
+    pub(super) fn slide(
+        &mut self,
+        kind: StepKind,
+        line: &H<Line>,
+        p: &H<Point>,
+        g: Line,
+        mark: Mark,
+        note: Note,
+    ) -> H<Line> {
+        let g = self.rule(g);
+        self.begin(kind, &note, &[line.id, p.id]);
+        let id = self.add(mark.label, mark.role, || Geom::Line {
+            line: g,
+            extent: [0.0, 0.0],
+        });
+        self.slid(id, line, p, kind == StepKind::Perpendicular);
+        H { id, g }
+    }
+
+    /// The bound and reference of a line slid along `line` to `p` (turned 90°: `turned`).
+    #[inline]
+    pub(super) fn slid(&mut self, id: ObjId, line: &H<Line>, p: &H<Point>, turned: bool) {
+        self.set_tr(id, |b| {
+            let dir = if turned { line.g.normal() } else { line.g.dir };
+            b.model.slid(&b.tr(line.id), &b.tr(p.id), &dir)
+        });
+        self.set_shadow(id, |b| {
+            let d = b.sl(line).1;
+            Shadow::Line {
+                o: b.sp(p),
+                d: if turned { d.normal() } else { d },
+            }
+        });
+    }
+
+    /// The circle about `center` with `radius` mm (the compass), drawn whole or only in the
+    /// short arcs where points are constructed on it ([`Drawn`]).
+    pub fn circle(
+        &mut self,
+        center: &H<Point>,
+        radius: f64,
+        drawn: Drawn,
+        mark: impl Into<Mark>,
+        note: Note,
+    ) -> Result<H<Circle>, ConstructionError> {
+        let Mark { label, role } = mark.into();
+        let radius = self.read(radius);
+        let c = self.prim(Circle::new(center.g, radius), &note)?;
+        self.grow(&(c.center + Vector::new(c.radius, c.radius)));
+        self.grow(&(c.center - Vector::new(c.radius, c.radius)));
+        let kind = if note.topic == Topic::Setup {
+            StepKind::Given
+        } else {
+            StepKind::Circle
+        };
+        self.begin(kind, &note, &[center.id]);
+        let id = self.add(label, role, || Geom::Circle {
+            circle: c,
+            full: drawn == Drawn::Whole,
+            marks: Vec::new(),
+        });
+        self.set_tr(id, |b| {
+            b.model.compass(&b.tr(center.id), &c.center, c.radius)
+        });
+        self.set_shadow(id, |b| Shadow::Circle {
+            c: b.sp(center),
+            r: c.radius.into(),
+        });
+        Ok(H { id, g: c })
+    }
+
+    /// The point of a circle at the angle `deg` (laid off with the protractor), with the ray
+    /// from the centre drawn as a segment of the given role.
+    pub fn point_on_circle(
+        &mut self,
+        circle: &H<Circle>,
+        deg: f64,
+        mark: impl Into<Mark>,
+        note: Note,
+    ) -> H<Point> {
+        let dir = SinCos::of_deg(deg);
+        self.point_on_circle_dir(circle, dir, mark, note)
+    }
+
+    /// The point of a circle in the direction given by its sine and cosine ([`SinCos`]), for an
+    /// angle better known by those than by its degrees (180° − θ for a tiny θ: forming
+    /// 180 − θ would round θ away), with the ray from the centre drawn.
+    pub fn point_on_circle_dir(
+        &mut self,
+        circle: &H<Circle>,
+        dir: SinCos,
+        mark: impl Into<Mark>,
+        note: Note,
+    ) -> H<Point> {
+        let Mark { label, role } = mark.into();
+        let SinCos { sin: s, cos: c } = dir;
+        let g = &circle.g;
+        let p = Point::new(g.center.x + g.radius * c, g.center.y + g.radius * s);
+        let p = self.mark(p);
+        self.begin(StepKind::Divide, &note, &[circle.id]);
+        let id = self.add(label, Role::Given, || Geom::Point { at: p });
+        self.on_circle(id, circle, &p, dir);
+        let c = circle.g.center;
+        self.add(Label::NONE, role, || Geom::Segment {
+            segment: Segment { a: c, b: p },
+        });
+        self.touch(circle.id, &p);
+        H { id, g: p }
+    }
+
+    /// The bound and reference of the point `p` of a circle in the direction `(sin, cos)`.
+    pub(super) fn on_circle(&mut self, id: ObjId, circle: &H<Circle>, p: &Point, dir: SinCos) {
+        let SinCos { sin: s, cos: c } = dir;
+        self.set_tr(id, |b| {
+            b.model.on_circle(&b.tr(circle.id), p, circle.g.radius)
+        });
+        self.set_shadow(id, |b| {
+            let (cc, r) = b.sc(circle);
+            Shadow::Point(DP {
+                x: cc.x + r * c,
+                y: cc.y + r * s,
+            })
+        });
+    }
+
+    /// Divides a circle into `n` equal parts from `start_deg` (one step, `n` points).
+    pub fn divide_circle(
+        &mut self,
+        circle: &H<Circle>,
+        start_deg: f64,
+        n: usize,
+        turning: Turning,
+        label: &'static str,
+        note: Note,
+    ) -> Vec<H<Point>> {
+        let clockwise = turning == Turning::Clockwise;
+        let mut pts = construct::divide_circle(&circle.g, start_deg, n, clockwise);
+        pts.iter_mut().for_each(|p| *p = self.mark(*p));
+        self.begin(StepKind::Divide, &note, &[circle.id]);
+        let mut out = Vec::with_capacity(pts.len());
+        let sign = if clockwise { -1.0 } else { 1.0 };
+        for (k, p) in pts.into_iter().enumerate() {
+            let id = self.add(Label::indexed(label, k as u32), Role::Given, || {
+                Geom::Point { at: p }
+            });
+            if self.recording {
+                let deg = start_deg + sign * 360.0 * k as f64 / n.max(1) as f64;
+                self.on_circle(id, circle, &p, SinCos::of_deg(deg));
+            }
+            self.touch(circle.id, &p);
+            out.push(H { id, g: p });
+        }
+        out
+    }
+
+    /// The sign of a fixed pivot under `pivot` (the frame, Gestell): a small triangle on a
+    /// hatched ground line, drawn at its size on the sheet whatever the scale.
+    pub fn ground(&mut self, pivot: &H<Point>, note: Note) {
+        if !self.recording {
+            return;
+        }
+        const HALF: f64 = 3.0;
+        const DEPTH: f64 = 4.0;
+        let p = pivot.g;
+        let (l, r) = (
+            Point::new(p.x - HALF, p.y - DEPTH),
+            Point::new(p.x + HALF, p.y - DEPTH),
+        );
+        self.begin(StepKind::Given, &note, &[pivot.id]);
+        for (a, b, role) in [(p, l, Role::Given), (p, r, Role::Given)] {
+            self.add(Label::NONE, role, || Geom::Segment {
+                segment: Segment { a, b },
+            });
+        }
+        let (a, b) = (l - Vector::new(1.5, 0.0), r + Vector::new(1.5, 0.0));
+        // Hatched on the right of a → b: below the line, as the ground is.
+        self.add(Label::NONE, Role::Guide, || Geom::Segment {
+            segment: Segment { a, b },
+        });
+    }
+
+    /// A segment drawn between two points (a crank, a rod).
+    pub fn segment(
+        &mut self,
+        a: &H<Point>,
+        b: &H<Point>,
+        mark: impl Into<Mark>,
+        note: Note,
+    ) -> H<Segment> {
+        let Mark { label, role } = mark.into();
+        let s = Segment { a: a.g, b: b.g };
+        self.begin(StepKind::LayOff, &note, &[a.id, b.id]);
+        let id = self.add(label, role, || match role {
+            Role::Force | Role::Velocity => Geom::Vector { segment: s },
+            _ => Geom::Segment { segment: s },
+        });
+        H { id, g: s }
+    }
+
+    /// Lays off `length` mm from `from` along the direction of `along` (negative: backwards),
+    /// drawing the laid-off length as a vector of the given role (force, velocity) or a segment.
+    pub fn lay_off(
+        &mut self,
+        from: &H<Point>,
+        along: &H<Line>,
+        length: f64,
+        mark: impl Into<Mark>,
+        note: Note,
+    ) -> Result<H<Point>, ConstructionError> {
+        // The line's direction is a unit vector already: no normalisation needed.
+        self.lay_off_carried(from, along, (length, None), mark.into(), note)
+    }
+
+    /// Lays off a value read earlier (a force, a velocity measured elsewhere) at `per_mm`
+    /// units per mm from `from` along `along`: the dividers' transfer, whose error and
+    /// reference follow the value it carries.
+    pub fn transfer(
+        &mut self,
+        from: &H<Point>,
+        along: &H<Line>,
+        reading: Reading<'_>,
+        mark: impl Into<Mark>,
+        note: Note,
+    ) -> Result<H<Point>, ConstructionError> {
+        let Reading { value, per_mm } = reading;
+        let length = value.g / per_mm;
+        self.lay_off_carried(
+            from,
+            along,
+            (length, Some((value, per_mm))),
+            mark.into(),
+            note,
+        )
+    }
+
+    pub(super) fn lay_off_carried(
+        &mut self,
+        from: &H<Point>,
+        along: &H<Line>,
+        (length, carried): (f64, Option<(&H<f64>, f64)>),
+        mark: Mark,
+        note: Note,
+    ) -> Result<H<Point>, ConstructionError> {
+        let Mark { label, role } = mark;
+        self.finite(length, &note)?;
+        let length = self.read(length);
+        let p = from.g + along.g.dir * length;
+        self.finite(p.x, &note)?;
+        self.finite(p.y, &note)?;
+        self.grow(&p);
+        match carried {
+            Some((v, _)) => self.begin(StepKind::LayOff, &note, &[from.id, along.id, v.id]),
+            None => self.begin(StepKind::LayOff, &note, &[from.id, along.id]),
+        }
+        let a = from.g;
+        let id = self.add(label, Role::Given, || Geom::Point { at: p });
+        self.set_tr(id, |b| {
+            let mut c = carried.map_or(Track::default(), |(v, _)| b.tr(v.id));
+            c.err /= carried.map_or(1.0, |(_, per_mm)| per_mm.abs());
+            b.model
+                .laid(&b.tr(from.id), &b.tr(along.id), length, &p, &c)
+        });
+        self.set_shadow(id, |b| {
+            let len = carried.map_or(length.into(), |(v, per_mm)| b.sv(v) / per_mm);
+            Shadow::Point(b.sp(from).add(&b.sl(along).1.scale(len)))
+        });
+        self.add(Label::NONE, role, || match role {
+            Role::Force | Role::Velocity => Geom::Vector {
+                segment: Segment { a, b: p },
+            },
+            _ => Geom::Segment {
+                segment: Segment { a, b: p },
+            },
+        });
+        self.touch(along.id, &p);
+        Ok(H { id, g: p })
+    }
+
+    /// The foot of the perpendicular from `p` on `line`, with the perpendicular drawn.
+    pub fn foot(
+        &mut self,
+        line: &H<Line>,
+        p: &H<Point>,
+        mark: impl Into<Mark>,
+        note: Note,
+    ) -> H<Point> {
+        let Mark { label, role } = mark.into();
+        let f = construct::foot_on_line(&line.g, &p.g);
+        let f = self.mark(f);
+        self.begin(StepKind::Foot, &note, &[line.id, p.id]);
+        let id = self.add(label, Role::Given, || Geom::Point { at: f });
+        self.set_tr(id, |b| {
+            b.model
+                .foot(&b.tr(line.id), &line.g, (&b.tr(p.id), &p.g), &f)
+        });
+        self.set_shadow(id, |b| {
+            let ((o, d), q) = (b.sl(line), b.sp(p));
+            Shadow::Point(o.add(&d.scale(q.sub(&o).dot(&d))))
+        });
+        let a = p.g;
+        self.add(Label::NONE, role, || Geom::Segment {
+            segment: Segment { a, b: f },
+        });
+        self.touch(line.id, &f);
+        H { id, g: f }
+    }
+
+    /// Writes a table on the sheet with its top-left corner at `at` (the evaluation of a
+    /// plan, LH B.4 "Auswertung"); `inputs` are the objects its numbers were read from.
+    pub fn table(&mut self, at: Point, rows: Vec<Vec<String>>, inputs: &[ObjId], note: Note) {
+        if !self.recording {
+            return;
+        }
+        self.begin(StepKind::Measure, &note, inputs);
+        self.add(Label::NONE, Role::Result, || Geom::Table { at, rows });
+    }
+
+    /// Draws a curve through points, smooth or as their polygon ([`Trace`]).
+    pub fn curve(
+        &mut self,
+        points: &[H<Point>],
+        trace: Trace,
+        mark: impl Into<Mark>,
+        note: Note,
+    ) -> H<ObjId> {
+        let Mark { label, role } = mark.into();
+        if !self.recording {
+            return H {
+                id: ObjId::NONE,
+                g: ObjId::NONE,
+            };
+        }
+        let ids: Vec<ObjId> = points.iter().map(|p| p.id).collect();
+        self.begin(StepKind::Curve, &note, &ids);
+        let pts: Vec<Point> = points.iter().map(|p| p.g).collect();
+        let id = self.add(label, role, || Geom::Curve {
+            points: pts,
+            smooth: trace == Trace::Smooth,
+        });
+        H { id, g: id }
+    }
+
+    /// Divides the segment from `a` to `b` into `n ≥ 1` equal parts: the `n + 1` division
+    /// points, ends included (the ends are the given points themselves).
+    pub fn divide_segment(
+        &mut self,
+        a: &H<Point>,
+        b: &H<Point>,
+        n: usize,
+        label: &'static str,
+        note: Note,
+    ) -> Vec<H<Point>> {
+        let mut pts = construct::divide_segment(&Segment { a: a.g, b: b.g }, n);
+        let last = pts.len() - 1;
+        pts[1..last].iter_mut().for_each(|p| *p = self.mark(*p));
+        self.begin(StepKind::Divide, &note, &[a.id, b.id]);
+        let last = pts.len() - 1;
+        let n = n.max(1);
+        let mut out = Vec::with_capacity(pts.len());
+        for (k, p) in pts.into_iter().enumerate() {
+            if k == 0 {
+                out.push(*a);
+            } else if k == last {
+                out.push(*b);
+            } else {
+                let id = self.add(Label::quiet(label, k as u32), Role::Given, || Geom::Point {
+                    at: p,
+                });
+                self.between(id, (a, b), k as f64 / n as f64, &p);
+                out.push(H { id, g: p });
+            }
+        }
+        out
+    }
+
+    /// The point dividing the segment from `a` to `b` in the ratio `t : (1 − t)`, drawn as a
+    /// mark on the segment (a tangent of Tolle's parabola divided at the crank angle's
+    /// parameter, LH Abb. 55).
+    pub fn divide_at(
+        &mut self,
+        a: &H<Point>,
+        b: &H<Point>,
+        t: f64,
+        label: impl Into<Label>,
+        note: Note,
+    ) -> Result<H<Point>, ConstructionError> {
+        let label = label.into();
+        self.finite(t, &note)?;
+        let p = construct::point_at_ratio(&Segment { a: a.g, b: b.g }, t);
+        let p = self.mark(p);
+        self.grow(&p);
+        self.begin(StepKind::Divide, &note, &[a.id, b.id]);
+        let id = self.add(label, Role::Given, || Geom::Point { at: p });
+        self.between(id, (a, b), t, &p);
+        Ok(H { id, g: p })
+    }
+
+    /// The bound and reference of the point `p` at the ratio `t` from `a` to `b`.
+    pub(super) fn between(&mut self, id: ObjId, (a, b): (&H<Point>, &H<Point>), t: f64, p: &Point) {
+        self.set_tr(id, |bd| bd.model.between(&bd.tr(a.id), &bd.tr(b.id), t, p));
+        self.set_shadow(id, |bd| Shadow::Point(DP::between(&bd.sp(a), &bd.sp(b), t)));
+    }
+}
