@@ -1,6 +1,8 @@
 //! The cuts: line with line, line with circle, circle with circle.
 
+use super::follow::{Cutting, Derived};
 use super::*;
+
 impl Board {
     /// Intersects two lines; a parallel or coincident pair is recorded as its named case.
     pub fn meet(&mut self, a: &H<Line>, b: &H<Line>, label: impl Into<Label>, note: Note) -> Cut {
@@ -17,11 +19,16 @@ impl Board {
                 if let Some(s) = self.last_step() {
                     s.conditioning = Some(conditioning);
                 }
-                let id = self.add(label, Role::Given, || Geom::Point { at: point });
-                self.lines_met(id, (a, b), &point, conditioning);
+                let of = Cutting::Lines(a, b);
+                let how = Derived::Cut {
+                    of,
+                    at: point,
+                    cond: conditioning,
+                };
+                let h = self.made_point(label, point, how);
                 self.touch(a.id, &point);
                 self.touch(b.id, &point);
-                Cut::Point(H { id, g: point }, conditioning)
+                Cut::Point(h, conditioning)
             }
             LineLine::Parallel { distance } => {
                 if let Some(s) = self.last_step() {
@@ -39,28 +46,6 @@ impl Board {
                 Cut::Coincident
             }
         }
-    }
-
-    /// The bound and reference of the point where two lines met.
-    pub(super) fn lines_met(
-        &mut self,
-        id: ObjId,
-        (a, b): (&H<Line>, &H<Line>),
-        p: &Point,
-        cond: Conditioning,
-    ) {
-        let step = StepId(self.next_step);
-        self.set_tr(id, |bd| {
-            let (ta, tb) = (bd.tr(a.id), bd.tr(b.id));
-            let across = ((ta.across(&a.g, p), a.g.dir), (tb.across(&b.g, p), b.g.dir));
-            let extent = p.coords.norm() + a.g.origin.coords.norm() + b.g.origin.coords.norm();
-            let worst = crate::protocol::accuracy::worse(ta.worst, tb.worst);
-            bd.model.cut_lines(step, cond, across, extent, worst)
-        });
-        self.set_shadow(id, |bd| {
-            let ((ao, ad), (bo, bdir)) = (bd.sl(a), bd.sl(b));
-            Shadow::Point(refr::meet(&ao, &ad, &bo, &bdir))
-        });
     }
 
     /// Intersects two lines where the construction needs a point: a degenerate case is an error.
@@ -115,21 +100,9 @@ impl Board {
                 return Err(self.fail_cut(step, &note, CutOutcome::Misses { gap }));
             }
         };
-        let h = self.finish_cut(p, cond, br, [line.id, circle.id], label);
-        let step = StepId(self.next_step);
-        self.set_tr(h.id, |b| {
-            let (tl, tc) = (b.tr(line.id), b.tr(circle.id));
-            let delta = tl.across(&line.g, &p) + tc.err;
-            let (c, r) = (circle.g.center, circle.g.radius);
-            let extent = p.coords.norm() + r + c.coords.norm() + line.g.origin.coords.norm();
-            let worst = crate::protocol::accuracy::worse(tl.worst, tc.worst);
-            b.model.cut(step, cond, (delta, extent, r), worst)
-        });
-        self.set_shadow(h.id, |b| {
-            let ((o, d), (c, r)) = (b.sl(line), b.sc(circle));
-            Shadow::Point(refr::line_circle(&o, &d, &c, r, &p))
-        });
-        Ok(h)
+        let of = Cutting::LineCircle(line, circle);
+        let how = Derived::Cut { of, at: p, cond };
+        Ok(self.finish_cut((p, cond, br), [line.id, circle.id], label, how))
     }
 
     /// Records a cut that has no point and returns the error naming its case.
@@ -149,15 +122,14 @@ impl Board {
         }
     }
 
-    /// Records the point of a cut: conditioning, branch (none for a tangency), the point, and
-    /// the marks on the two curves it lies on.
+    /// Records the point `p` of a cut: conditioning, branch (none for a tangency), the point
+    /// as it follows from the curves cut (`how`), and the marks on the two curves it lies on.
     pub(super) fn finish_cut(
         &mut self,
-        p: Point,
-        cond: Conditioning,
-        br: Option<Branch>,
+        (p, cond, br): (Point, Conditioning, Option<Branch>),
         on: [ObjId; 2],
         label: Label,
+        how: Derived<'_>,
     ) -> H<Point> {
         self.last_touched = br.is_none();
         if let Some(s) = self.last_step() {
@@ -168,10 +140,10 @@ impl Board {
             }
         }
         let p = self.mark(p);
-        let id = self.add(label, Role::Given, || Geom::Point { at: p });
+        let h = self.made_point(label, p, how);
         self.touch(on[0], &p);
         self.touch(on[1], &p);
-        H { id, g: p }
+        h
     }
 
     /// Whether the last cut of a line or circle with a circle found the two touching: one
@@ -213,24 +185,8 @@ impl Board {
                 return Err(self.fail_cut(step, &note, outcome));
             }
         };
-        let h = self.finish_cut(p, cond, br, [a.id, b.id], label);
-        let step = StepId(self.next_step);
-        self.set_tr(h.id, |bd| {
-            let (ta, tb) = (bd.tr(a.id), bd.tr(b.id));
-            let (ga, gb) = (&a.g, &b.g);
-            let extent = p.coords.norm()
-                + ga.radius
-                + gb.radius
-                + ga.center.coords.norm()
-                + gb.center.coords.norm();
-            let worst = crate::protocol::accuracy::worse(ta.worst, tb.worst);
-            let geom = (ta.err + tb.err, extent, ga.radius.max(gb.radius));
-            bd.model.cut(step, cond, geom, worst)
-        });
-        self.set_shadow(h.id, |bd| {
-            let ((c1, r1), (c2, r2)) = (bd.sc(a), bd.sc(b));
-            Shadow::Point(refr::circle_circle(&c1, r1, &c2, r2, &p))
-        });
-        Ok(h)
+        let of = Cutting::Circles(a, b);
+        let how = Derived::Cut { of, at: p, cond };
+        Ok(self.finish_cut((p, cond, br), [a.id, b.id], label, how))
     }
 }

@@ -1,6 +1,8 @@
 //! The drawing steps: points, lines, circles, lengths laid off, curves, tables.
 
+use super::follow::Derived;
 use super::*;
+
 impl Board {
     pub(super) fn prim<T>(
         &self,
@@ -29,14 +31,10 @@ impl Board {
 
     /// A given point.
     pub fn point(&mut self, p: Point, mark: impl Into<Mark>, note: Note) -> H<Point> {
-        let Mark { label, role } = mark.into();
         let p = self.mark(p);
         self.grow(&p);
         self.begin(StepKind::Given, &note, &[]);
-        let id = self.add(label, role, || Geom::Point { at: p });
-        self.set_tr(id, |b| b.model.given(&p));
-        self.set_shadow(id, |_| Shadow::Point(DP::of(&p)));
-        H { id, g: p }
+        self.made(mark.into(), p, || Geom::Point { at: p }, Derived::Given(p))
     }
 
     /// The line through a point in a given direction (a given axis, or a ray laid off with
@@ -48,7 +46,6 @@ impl Board {
         mark: impl Into<Mark>,
         note: Note,
     ) -> Result<H<Line>, ConstructionError> {
-        let Mark { label, role } = mark.into();
         let line = self.prim(Line::new(p.g, dir), &note)?;
         let line = self.rule(line);
         let kind = if p.id == ObjId::NONE || note.topic == Topic::Setup {
@@ -57,16 +54,11 @@ impl Board {
             StepKind::Line
         };
         self.begin(kind, &note, &[p.id]);
-        let id = self.add(label, role, || Geom::Line {
+        let geom = || Geom::Line {
             line,
             extent: [0.0, 0.0],
-        });
-        self.set_tr(id, |b| b.model.line_at(&b.tr(p.id), &dir));
-        self.set_shadow(id, |b| Shadow::Line {
-            o: b.sp(p),
-            d: DP::of_vec(&dir).unit(),
-        });
-        Ok(H { id, g: line })
+        };
+        Ok(self.made(mark.into(), line, geom, Derived::Ray { at: p, dir }))
     }
 
     /// The line through two points (the ruler).
@@ -77,27 +69,15 @@ impl Board {
         mark: impl Into<Mark>,
         note: Note,
     ) -> Result<H<Line>, ConstructionError> {
-        let Mark { label, role } = mark.into();
         let line = self.prim(Line::through(a.g, b.g, self.tolerance.length), &note)?;
         let line = self.rule(line);
         self.begin(StepKind::Line, &note, &[a.id, b.id]);
         let tb = line.param_of(&b.g);
-        let id = self.add(label, role, || Geom::Line {
+        let geom = || Geom::Line {
             line,
             extent: [tb.min(0.0), tb.max(0.0)],
-        });
-        self.set_tr(id, |bd| {
-            bd.model
-                .ruled(&bd.tr(a.id), &bd.tr(b.id), (b.g - a.g).norm())
-        });
-        self.set_shadow(id, |bd| {
-            let (pa, pb) = (bd.sp(a), bd.sp(b));
-            Shadow::Line {
-                o: pa,
-                d: pb.sub(&pa).unit(),
-            }
-        });
-        Ok(H { id, g: line })
+        };
+        Ok(self.made(mark.into(), line, geom, Derived::Ruled(a, b)))
     }
 
     /// The parallel to `line` through `p`.
@@ -137,28 +117,17 @@ impl Board {
     ) -> H<Line> {
         let g = self.rule(g);
         self.begin(kind, &note, &[line.id, p.id]);
-        let id = self.add(mark.label, mark.role, || Geom::Line {
+        let geom = || Geom::Line {
             line: g,
             extent: [0.0, 0.0],
-        });
-        self.slid(id, line, p, kind == StepKind::Perpendicular);
-        H { id, g }
-    }
-
-    /// The bound and reference of a line slid along `line` to `p` (turned 90°: `turned`).
-    #[inline]
-    pub(super) fn slid(&mut self, id: ObjId, line: &H<Line>, p: &H<Point>, turned: bool) {
-        self.set_tr(id, |b| {
-            let dir = if turned { line.g.normal() } else { line.g.dir };
-            b.model.slid(&b.tr(line.id), &b.tr(p.id), &dir)
-        });
-        self.set_shadow(id, |b| {
-            let d = b.sl(line).1;
-            Shadow::Line {
-                o: b.sp(p),
-                d: if turned { d.normal() } else { d },
-            }
-        });
+        };
+        let turned = kind == StepKind::Perpendicular;
+        let how = Derived::Slid {
+            line,
+            through: p,
+            turned,
+        };
+        self.made(mark, g, geom, how)
     }
 
     /// The circle about `center` with `radius` mm (the compass), drawn whole or only in the
@@ -171,7 +140,6 @@ impl Board {
         mark: impl Into<Mark>,
         note: Note,
     ) -> Result<H<Circle>, ConstructionError> {
-        let Mark { label, role } = mark.into();
         let radius = self.read(radius);
         let c = self.prim(Circle::new(center.g, radius), &note)?;
         self.grow(&(c.center + Vector::new(c.radius, c.radius)));
@@ -182,19 +150,13 @@ impl Board {
             StepKind::Circle
         };
         self.begin(kind, &note, &[center.id]);
-        let id = self.add(label, role, || Geom::Circle {
+        let geom = || Geom::Circle {
             circle: c,
             full: drawn == Drawn::Whole,
             marks: Vec::new(),
-        });
-        self.set_tr(id, |b| {
-            b.model.compass(&b.tr(center.id), &c.center, c.radius)
-        });
-        self.set_shadow(id, |b| Shadow::Circle {
-            c: b.sp(center),
-            r: c.radius.into(),
-        });
-        Ok(H { id, g: c })
+        };
+        let how = Derived::Compass { center, circle: c };
+        Ok(self.made(mark.into(), c, geom, how))
     }
 
     /// The point of a circle at the angle `deg` (laid off with the protractor), with the ray
@@ -226,29 +188,14 @@ impl Board {
         let p = Point::new(g.center.x + g.radius * c, g.center.y + g.radius * s);
         let p = self.mark(p);
         self.begin(StepKind::Divide, &note, &[circle.id]);
-        let id = self.add(label, Role::Given, || Geom::Point { at: p });
-        self.on_circle(id, circle, &p, dir);
+        let at = p;
+        let h = self.made_point(label, p, Derived::OnCircle { circle, at, dir });
         let c = circle.g.center;
         self.add(Label::NONE, role, || Geom::Segment {
             segment: Segment { a: c, b: p },
         });
         self.touch(circle.id, &p);
-        H { id, g: p }
-    }
-
-    /// The bound and reference of the point `p` of a circle in the direction `(sin, cos)`.
-    pub(super) fn on_circle(&mut self, id: ObjId, circle: &H<Circle>, p: &Point, dir: SinCos) {
-        let SinCos { sin: s, cos: c } = dir;
-        self.set_tr(id, |b| {
-            b.model.on_circle(&b.tr(circle.id), p, circle.g.radius)
-        });
-        self.set_shadow(id, |b| {
-            let (cc, r) = b.sc(circle);
-            Shadow::Point(DP {
-                x: cc.x + r * c,
-                y: cc.y + r * s,
-            })
-        });
+        h
     }
 
     /// Divides a circle into `n` equal parts from `start_deg` (one step, `n` points).
@@ -273,7 +220,8 @@ impl Board {
             });
             if self.recording {
                 let deg = start_deg + sign * 360.0 * k as f64 / n.max(1) as f64;
-                self.on_circle(id, circle, &p, SinCos::of_deg(deg));
+                let dir = SinCos::of_deg(deg);
+                self.follow(id, Derived::OnCircle { circle, at: p, dir });
             }
             self.touch(circle.id, &p);
             out.push(H { id, g: p });
@@ -318,10 +266,7 @@ impl Board {
         let Mark { label, role } = mark.into();
         let s = Segment { a: a.g, b: b.g };
         self.begin(StepKind::LayOff, &note, &[a.id, b.id]);
-        let id = self.add(label, role, || match role {
-            Role::Force | Role::Velocity => Geom::Vector { segment: s },
-            _ => Geom::Segment { segment: s },
-        });
+        let id = self.add(label, role, || drawn_as(role, s));
         H { id, g: s }
     }
 
@@ -369,7 +314,6 @@ impl Board {
         mark: Mark,
         note: Note,
     ) -> Result<H<Point>, ConstructionError> {
-        let Mark { label, role } = mark;
         self.finite(length, &note)?;
         let length = self.read(length);
         let p = from.g + along.g.dir * length;
@@ -380,28 +324,18 @@ impl Board {
             Some((v, _)) => self.begin(StepKind::LayOff, &note, &[from.id, along.id, v.id]),
             None => self.begin(StepKind::LayOff, &note, &[from.id, along.id]),
         }
-        let a = from.g;
-        let id = self.add(label, Role::Given, || Geom::Point { at: p });
-        self.set_tr(id, |b| {
-            let mut c = carried.map_or(Track::default(), |(v, _)| b.tr(v.id));
-            c.err /= carried.map_or(1.0, |(_, per_mm)| per_mm.abs());
-            b.model
-                .laid(&b.tr(from.id), &b.tr(along.id), length, &p, &c)
-        });
-        self.set_shadow(id, |b| {
-            let len = carried.map_or(length.into(), |(v, per_mm)| b.sv(v) / per_mm);
-            Shadow::Point(b.sp(from).add(&b.sl(along).1.scale(len)))
-        });
-        self.add(Label::NONE, role, || match role {
-            Role::Force | Role::Velocity => Geom::Vector {
-                segment: Segment { a, b: p },
-            },
-            _ => Geom::Segment {
-                segment: Segment { a, b: p },
-            },
-        });
+        let how = Derived::Laid {
+            from,
+            along,
+            length,
+            carried,
+            at: p,
+        };
+        let h = self.made_point(mark.label, p, how);
+        let segment = Segment { a: from.g, b: p };
+        self.add(Label::NONE, mark.role, || drawn_as(mark.role, segment));
         self.touch(along.id, &p);
-        Ok(H { id, g: p })
+        Ok(h)
     }
 
     /// The foot of the perpendicular from `p` on `line`, with the perpendicular drawn.
@@ -416,21 +350,18 @@ impl Board {
         let f = construct::foot_on_line(&line.g, &p.g);
         let f = self.mark(f);
         self.begin(StepKind::Foot, &note, &[line.id, p.id]);
-        let id = self.add(label, Role::Given, || Geom::Point { at: f });
-        self.set_tr(id, |b| {
-            b.model
-                .foot(&b.tr(line.id), &line.g, (&b.tr(p.id), &p.g), &f)
-        });
-        self.set_shadow(id, |b| {
-            let ((o, d), q) = (b.sl(line), b.sp(p));
-            Shadow::Point(o.add(&d.scale(q.sub(&o).dot(&d))))
-        });
+        let how = Derived::Foot {
+            line,
+            from: p,
+            at: f,
+        };
+        let h = self.made_point(label, f, how);
         let a = p.g;
         self.add(Label::NONE, role, || Geom::Segment {
             segment: Segment { a, b: f },
         });
         self.touch(line.id, &f);
-        H { id, g: f }
+        h
     }
 
     /// Writes a table on the sheet with its top-left corner at `at` (the evaluation of a
@@ -491,11 +422,9 @@ impl Board {
             } else if k == last {
                 out.push(*b);
             } else {
-                let id = self.add(Label::quiet(label, k as u32), Role::Given, || Geom::Point {
-                    at: p,
-                });
-                self.between(id, (a, b), k as f64 / n as f64, &p);
-                out.push(H { id, g: p });
+                let t = k as f64 / n as f64;
+                let how = Derived::Between { a, b, t, at: p };
+                out.push(self.made_point(Label::quiet(label, k as u32), p, how));
             }
         }
         out
@@ -518,14 +447,14 @@ impl Board {
         let p = self.mark(p);
         self.grow(&p);
         self.begin(StepKind::Divide, &note, &[a.id, b.id]);
-        let id = self.add(label, Role::Given, || Geom::Point { at: p });
-        self.between(id, (a, b), t, &p);
-        Ok(H { id, g: p })
+        Ok(self.made_point(label, p, Derived::Between { a, b, t, at: p }))
     }
+}
 
-    /// The bound and reference of the point `p` at the ratio `t` from `a` to `b`.
-    pub(super) fn between(&mut self, id: ObjId, (a, b): (&H<Point>, &H<Point>), t: f64, p: &Point) {
-        self.set_tr(id, |bd| bd.model.between(&bd.tr(a.id), &bd.tr(b.id), t, p));
-        self.set_shadow(id, |bd| Shadow::Point(DP::between(&bd.sp(a), &bd.sp(b), t)));
+/// A segment drawn as its role draws it: a force or a velocity as an arrow.
+fn drawn_as(role: Role, segment: Segment) -> Geom {
+    match role {
+        Role::Force | Role::Velocity => Geom::Vector { segment },
+        _ => Geom::Segment { segment },
     }
 }

@@ -1,6 +1,8 @@
 //! Reading values off the drawing, and the checks against their closed forms.
 
+use super::follow::Derived;
 use super::*;
+
 impl Board {
     /// Measures the signed distance from `from` to `to` along the direction of `axis` and
     /// reads it off at `scale`: the drafter's dividers on the scale rule.
@@ -18,18 +20,14 @@ impl Board {
         let mm = self.read(mm);
         let value = mm * scale.per_mm;
         self.begin(StepKind::Measure, &note, &[from.id, to.id, axis.id]);
-        let unit = scale.unit;
-        let id = self.add(label, Role::Result, || Geom::Scalar { value, unit });
-        self.set_tr(id, |b| {
-            let ends = (&b.tr(from.id), &b.tr(to.id));
-            b.model
-                .measured(ends, &b.tr(axis.id), mm, scale.per_mm, (&from.g, &to.g))
-        });
-        self.set_shadow(id, |b| {
-            let mm = b.sp(to).sub(&b.sp(from)).dot(&b.sl(axis).1);
-            Shadow::Scalar(mm * scale.per_mm)
-        });
-        H { id, g: value }
+        let how = Derived::Measured {
+            from,
+            to,
+            axis,
+            mm,
+            scale,
+        };
+        self.made_number(label, (value, scale.unit), how)
     }
 
     /// Records a number reckoned from constructed values (`inputs`), not drawn: a value the
@@ -64,22 +62,12 @@ impl Board {
         weighted: Weighted<'_>,
         note: Note,
     ) -> H<f64> {
-        let label = label.into();
-        let Weighted { inputs, weight } = weighted;
-        self.begin(StepKind::Tally, &note, inputs);
-        let id = self.add(label, Role::Result, || Geom::Scalar { value, unit });
-        self.set_tr(id, |b| {
-            let t: Vec<(Track, f64)> = inputs
-                .iter()
-                .map(|i| {
-                    let mut t = b.tr(*i);
-                    t.err *= weight.abs();
-                    (t, b.number(*i).map_or(0.0, |v| v * weight))
-                })
-                .collect();
-            b.model.reckoned(t.iter(), value)
-        });
-        H { id, g: value }
+        self.begin(StepKind::Tally, &note, weighted.inputs);
+        let how = Derived::Reckoned {
+            inputs: weighted,
+            value,
+        };
+        self.made_number(label.into(), (value, unit), how)
     }
 
     /// The angle at `vertex` from the ray through `from` to the ray through `to`, in degrees
@@ -97,15 +85,13 @@ impl Board {
         // atan2 of cross and dot keeps every digit near 0° and 180°, where acos loses half.
         let value = u.perp(&v).abs().atan2(u.dot(&v)).to_degrees();
         self.begin(StepKind::Measure, &note, &[vertex.id, from.id, to.id]);
-        let id = self.add(label, Role::Result, || Geom::Scalar { value, unit: "°" });
-        self.set_tr(id, |b| {
-            let (tv, tf, tt) = (b.tr(vertex.id), b.tr(from.id), b.tr(to.id));
-            b.model.angle(&tv, &tf, &tt, (u.norm(), v.norm()), value)
-        });
-        self.set_shadow(id, |b| {
-            Shadow::Scalar(refr::angle_deg(&b.sp(vertex), &b.sp(from), &b.sp(to)))
-        });
-        H { id, g: value }
+        let how = Derived::Angle {
+            vertex,
+            from,
+            to,
+            value,
+        };
+        self.made_number(label, (value, "°"), how)
     }
 
     /// Attaches a check whose tolerance is a stated bound rather than the rounding of the
