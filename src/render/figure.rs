@@ -342,6 +342,7 @@ fn draw_object(f: &Frame, obj: &Object, labels: &Placement, g: Group) -> Group {
             if let Some((a, b)) = line_ends(obj).and_then(|(a, b)| f.clip_segment(a, b)) {
                 g = g.add(sheet_line(f, class, a, b));
             }
+            g = draw_label(f, obj, labels, g);
         }
         Geom::Segment { segment } | Geom::Vector { segment } => {
             let (a, b) = (segment.a, segment.b);

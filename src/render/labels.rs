@@ -232,6 +232,15 @@ fn where_first(o: &crate::protocol::Object, circles: &[Circle]) -> Option<(Point
             Some((*at, at + Vector::new(-w / 2.0, -(LABEL_OFFSET + ASCENT))))
         }
         Geom::Point { at } => Some((*at, first_position(circles, at))),
+        // A line is lettered beside the middle of its drawn length: a member between its
+        // joints (LH Abb. 17's numbers), a funicular's closing line s.
+        Geom::Line { line, extent } => {
+            let mid = line.point_at(0.5 * (extent[0] + extent[1]));
+            Some((
+                mid,
+                mid + Vector::new(LABEL_OFFSET * 0.6, LABEL_OFFSET * 0.6),
+            ))
+        }
         Geom::Curve { points, .. } => (points.iter())
             .max_by(|a, b| a.y.total_cmp(&b.y))
             .map(|top| (*top, top + Vector::new(1.0, 1.5))),

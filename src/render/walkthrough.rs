@@ -130,7 +130,7 @@ pub fn walkthrough_item(board: &Board, grouping: Grouping, k: usize) -> Option<S
 /// as GeoGebra's construction protocol names each object: the caption, then the names of the
 /// objects it draws (or, for a step that only reads a value off, of those it reads from; at
 /// most three), then, where steps still share all that, which of them it is: `pole ray O
-/// (2 of 4)`, `member S₃`, `joint load P₀ (3 of 4)`.
+/// (2 of 4)`, `member 3`, `joint load P₀ (3 of 4)`.
 ///
 /// ```
 /// use graphostatik::kernel::Point;

@@ -77,11 +77,10 @@ pub fn construct_truss(
     cases: &[LoadCase],
     dr: &TrussDrawing,
 ) -> Result<Vec<CaseResult>, ConstructionError> {
-    let mut row = 0.0;
-    construct(b, t, cases, dr, true, &mut row, &[])
+    construct(b, t, cases, dr, true, &mut Rows::default(), &[])
 }
 
-/// As [`construct_truss`], drawing the cases' rows from `row_top` (mm) downwards and moving
+/// As [`construct_truss`], drawing the cases' rows from `rows.top` (mm) downwards and moving
 /// it below them: for figures that draw several trusses (sub-trusses, counter-diagonals
 /// switched per case) one under the other. `slack` are joint pairs of members left out of
 /// this truss but drawn dashed in its drawing (counter-diagonals out of action).
@@ -93,10 +92,10 @@ pub fn construct_truss_rows(
     t: &Truss,
     cases: &[LoadCase],
     dr: &TrussDrawing,
-    row_top: &mut f64,
+    rows: &mut Rows,
     slack: &[[usize; 2]],
 ) -> Result<Vec<CaseResult>, ConstructionError> {
-    construct(b, t, cases, dr, true, row_top, slack)
+    construct(b, t, cases, dr, true, rows, slack)
 }
 
 /// The plan alone, without the rank test and the sparse solve: what a drafter does, and what
@@ -112,8 +111,7 @@ pub fn construct_plan(
     cases: &[LoadCase],
     dr: &TrussDrawing,
 ) -> Result<Vec<CaseResult>, ConstructionError> {
-    let mut row = 0.0;
-    construct(b, t, cases, dr, false, &mut row, &[])
+    construct(b, t, cases, dr, false, &mut Rows::default(), &[])
 }
 
 fn construct(
@@ -122,7 +120,7 @@ fn construct(
     cases: &[LoadCase],
     dr: &TrussDrawing,
     checked: bool,
-    row_top: &mut f64,
+    rows: &mut Rows,
     slack: &[[usize; 2]],
 ) -> Result<Vec<CaseResult>, ConstructionError> {
     // The rank test at every size: sparse for the usual square system, the SVD for the rest
@@ -150,22 +148,23 @@ fn construct(
             at: Layout::ORIGIN,
             sup,
             slack,
+            numbered: rows.numbered(t.members.len()),
         };
         // Several cases: each row under its case's name (dead load, wind, snow), as the
         // plates head their plans.
         if cases.len() > 1 {
             let name = vec![vec![case.name.clone()]];
-            b.table(Point::new(0.0, *row_top), name, &[], N_CASE_NAME);
-            *row_top -= HEADING_MM;
+            b.table(Point::new(0.0, rows.top), name, &[], N_CASE_NAME);
+            rows.top -= HEADING_MM;
         }
         // A scratch run fixes where the blocks go; the real run draws them there.
         let dry = construct_case(&mut b.scratch(), &c)?;
-        let (at, height) = Layout::row(&dry.boxes, *row_top);
+        let (at, height) = Layout::row(&dry.boxes, rows.top);
         c.at = at;
         b.set_context(|| case.name.clone());
         let r = construct_case(b, &c)?;
         b.clear_context();
-        *row_top -= height;
+        rows.top -= height;
         out.push(r.result);
     }
     Ok(out)
@@ -218,6 +217,33 @@ struct Case<'a> {
     at: Layout,
     sup: Supports,
     slack: &'a [[usize; 2]],
+    /// Whether this case's drawing letters its members with their numbers.
+    numbered: bool,
+}
+
+/// The most member numbers a figure writes over all its truss drawings; past it only the
+/// first drawing is numbered (the crowd rule: the books number the members once, and every
+/// plan's table uses the same numbers).
+const MEMBER_NUMBERS: usize = 120;
+
+/// Where the next row of a figure of several truss drawings goes, and how many member
+/// numbers its drawings have written ([`construct_truss_rows`]).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Rows {
+    /// The top of the next row (mm of the sheet; rows go downwards from 0).
+    pub top: f64,
+    numbers: usize,
+}
+
+impl Rows {
+    /// Whether a drawing of `members` members is numbered, counting its numbers if it is.
+    fn numbered(&mut self, members: usize) -> bool {
+        let yes = self.numbers == 0 || self.numbers + members <= MEMBER_NUMBERS;
+        if yes {
+            self.numbers += members;
+        }
+        yes
+    }
 }
 
 /// The truss drawing of a case: the joints, the members' lines, the rollers' reaction lines.
@@ -298,7 +324,12 @@ fn draw_truss(
     boxes: &mut [[f64; 4]; 3],
 ) -> Result<Drawn, ConstructionError> {
     let Case {
-        t, dr, at, slack, ..
+        t,
+        dr,
+        at,
+        slack,
+        numbered,
+        ..
     } = *c;
     let k = 1000.0 / dr.length_scale;
     let jp: Vec<H<Point>> = t
@@ -317,7 +348,10 @@ fn draw_truss(
         mline.push(b.line_through(
             &jp[i],
             &jp[j],
-            Role::Given.labelled(member_label(b, t, m)),
+            match numbered {
+                true => Role::Given.labelled(member_number(b, t, m)),
+                false => Role::Given.into(),
+            },
             N_MEMBER,
         )?);
     }

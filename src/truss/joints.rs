@@ -22,6 +22,15 @@ const N_START: Note = note(
     "LH B.4, Abb. 17a",
     Topic::Cremona,
 );
+const N_NAME: Note = note(
+    "the joint’s name over its polygon",
+    Some("Knotenpunkt"),
+    "LH B.4, Abb. 17a",
+    Topic::Cremona,
+);
+/// Height of the joint's name over its polygon, the gap under it included (mm): a heading
+/// of the sheet is set 5 mm high.
+const NAME_MM: f64 = 7.0;
 const N_KNOWN: Note = note(
     "known force at the joint laid on, clockwise",
     Some("bekannte Kraft"),
@@ -245,14 +254,15 @@ impl<'a> Polygons<'a> {
         b.set_context(|| format!("{}: joint polygon {name}", case.name));
         let at_start = Point::new(self.cursor - lo, at.y);
         let start = b.point(at_start, Role::Given, N_START);
+        let mut own = EMPTY;
         let mut cur = start;
         for i in &known {
             let along = b.line_dir(&cur, i.force, Role::Auxiliary, N_KNOWN)?;
             let len = i.force.norm() / fs;
             cur = b.lay_off(&cur, &along, len, Role::Force, N_KNOWN)?;
-            grow(&mut self.bx, cur.g, at);
+            grow(&mut own, cur.g, at);
         }
-        grow(&mut self.bx, start.g, at);
+        grow(&mut own, start.g, at);
         // The unknowns, in clockwise order after the knowns.
         let order: Vec<usize> = items
             .iter()
@@ -261,6 +271,7 @@ impl<'a> Polygons<'a> {
             .collect();
         if let [m] = order[..] {
             let h = self.read(b, v, &cur, &start, m);
+            self.name(b, v, own);
             return Ok(Some(vec![(m, h, close.norm())]));
         }
         let (m1, m2) = (order[0], order[1]);
@@ -269,15 +280,37 @@ impl<'a> Polygons<'a> {
         let l1 = b.parallel(&mline[m1], &cur, con, N_PAR);
         let l2 = b.parallel(&mline[m2], &start, con, N_PAR);
         let Cut::Point(mid, _) = b.meet(&l1, &l2, Label::NONE, N_CLOSE) else {
+            self.name(b, v, own);
             return Ok(None);
         };
-        grow(&mut self.bx, mid.g, at);
+        grow(&mut own, mid.g, at);
         let h1 = self.read(b, v, &cur, &mid, m1);
         let h2 = self.read(b, v, &mid, &start, m2);
+        self.name(b, v, own);
         Ok(Some(vec![
             (m1, h1, (mid.g - cur.g).norm()),
             (m2, h2, (start.g - mid.g).norm()),
         ]))
+    }
+
+    /// The name of joint `v` over its polygon, whose box (from the plan's corner) is `own`,
+    /// as LH Abb. 17a names each polygon by its joint; the plan's box takes in both.
+    fn name(&mut self, b: &mut Board, v: usize, own: [f64; 4]) {
+        let at = self.ctx.at;
+        let top = Point::new(at.x + own[0], at.y + own[3] + NAME_MM);
+        let name = match Label::from_name(&self.ctx.t.joints[v].name) {
+            Label {
+                base,
+                index: Some(i),
+                ..
+            } => format!("{base}_{i}"),
+            l => l.base.into_owned(),
+        };
+        b.table(top, vec![vec![name]], &[], N_NAME);
+        for p in [Point::new(at.x + own[0], at.y + own[1]), top] {
+            grow(&mut self.bx, p, at);
+        }
+        grow(&mut self.bx, Point::new(at.x + own[2], at.y + own[3]), at);
     }
 
     /// Member `m` drawn as the side `from → to` of the polygon of joint `v`, and its force

@@ -32,6 +32,16 @@ pub(crate) fn member_label(b: &Board, t: &Truss, m: usize) -> Label {
     }
 }
 
+/// A member's number as the truss drawing letters it (LH Abb. 17: members in Arabic
+/// numbers, joints in Roman numerals): the scene's name for it (`"7"`, or `"U1"` as U₁);
+/// none on a board that does not keep its drawing.
+pub(crate) fn member_number(b: &Board, t: &Truss, m: usize) -> Label {
+    if !b.is_drawing() {
+        return Label::NONE;
+    }
+    Label::from_name(&t.members[m].name)
+}
+
 /// A joint's label: the scene's name for it (the books' Roman numerals, or any other; see
 /// [`Label::from_name`]).
 pub(super) fn joint_label(t: &Truss, j: usize) -> Label {

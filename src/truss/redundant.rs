@@ -10,7 +10,7 @@
 //!   is switched to the other, and the plan is drawn again, until all working diagonals pull.
 //!   The book: "man verfährt so, als wenn die zweite Diagonale nicht vorhanden wäre".
 
-use super::cremona::{construct_plan, construct_truss_rows, CaseResult, TrussDrawing};
+use super::cremona::{construct_plan, construct_truss_rows, CaseResult, Rows, TrussDrawing};
 use super::plan::case_result;
 use super::{LoadCase, Truss};
 use crate::kernel::Vector;
@@ -85,7 +85,7 @@ pub fn construct_pairs(
     cases: &[LoadCase],
     dr: &TrussDrawing,
 ) -> Result<Vec<CaseResult>, ConstructionError> {
-    let mut row = 0.0;
+    let mut row = Rows::default();
     let mut out = Vec::with_capacity(cases.len());
     let p = Pairs { t, pairs, dr };
     for case in cases {
@@ -111,7 +111,7 @@ impl Pairs<'_> {
         &self,
         b: &mut Board,
         case: &LoadCase,
-        row: &mut f64,
+        row: &mut Rows,
     ) -> Result<CaseResult, ConstructionError> {
         let (t, n) = (self.t, self.t.members.len());
         let mut forces = vec![0.0; n];
@@ -154,7 +154,7 @@ impl Pairs<'_> {
         &self,
         b: &mut Board,
         case: &LoadCase,
-        row: &mut f64,
+        row: &mut Rows,
     ) -> Result<CaseResult, ConstructionError> {
         let working = self.working_diagonals(b, case)?;
         let (t, n) = (self.t, self.t.members.len());
