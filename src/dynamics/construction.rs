@@ -10,6 +10,7 @@ use crate::protocol::{
     note, Board, ConstructionError, Label, Note, Part, Reading, Role, Scale, Topic, Trace, H,
 };
 
+mod excess;
 mod summary;
 
 const N_FOOT: Note = note(

@@ -102,7 +102,8 @@ impl Builder<'_> {
         self.b.clear_context();
         self.b
             .curve(&pts, Trace::Polygon, Role::Result.named("T"), N_CURVE);
-        self.mean_line(&frame, &out)?;
+        let mean = self.mean_line(&frame, &out)?;
+        self.excess_areas(&pts, (&mean.0, &mean.1))?;
         Ok((out, ids))
     }
 
@@ -149,11 +150,12 @@ impl Builder<'_> {
 
     /// The rectangle of equal area: the mean resistance over the developed circle, at the
     /// trapezoid mean of the drawn ordinates.
+    /// Returns the mean line's ends, at 0° and at 360°.
     fn mean_line(
         &mut self,
         fr: &TurningFrame,
         out: &[(f64, f64)],
-    ) -> Result<(), ConstructionError> {
+    ) -> Result<(H<Point>, H<Point>), ConstructionError> {
         let pts: Vec<(f64, f64)> = out
             .iter()
             .copied()
@@ -168,14 +170,14 @@ impl Builder<'_> {
             N_MEAN_AT,
         )?;
         let line = self.b.parallel(&fr.axis, &m, Role::Auxiliary, N_MEAN_LINE);
-        self.b.lay_off(
+        let end = self.b.lay_off(
             &m,
             &line,
             self.r_mm * std::f64::consts::TAU,
             Role::Auxiliary,
             N_MEAN_LINE,
         )?;
-        Ok(())
+        Ok((m, end))
     }
 }
 

@@ -374,6 +374,25 @@ impl Board {
         self.add(Label::NONE, Role::Result, || Geom::Table { at, rows });
     }
 
+    /// Hatches the area inside the polygon through `outline` (its last point joined to its
+    /// first) with thin lines `spacing` mm apart, rising at 45° ([`construct::hatch`]): one
+    /// step, an area the figure names (LH J's excess areas of the turning force over its
+    /// mean). Nothing is constructed on the hatching, so a board that does not record skips
+    /// it.
+    pub fn hatch(&mut self, outline: &[H<Point>], spacing: f64, note: Note) {
+        if !self.recording {
+            return;
+        }
+        let ids: Vec<ObjId> = outline.iter().map(|p| p.id).collect();
+        self.begin(StepKind::Curve, &note, &ids);
+        let pts: Vec<Point> = outline.iter().map(|p| p.g).collect();
+        for segment in construct::hatch(&pts, Vector::new(1.0, 1.0), spacing) {
+            self.add(Label::NONE, Role::Construction, || Geom::Segment {
+                segment,
+            });
+        }
+    }
+
     /// Draws a curve through points, smooth or as their polygon ([`Trace`]).
     pub fn curve(
         &mut self,
