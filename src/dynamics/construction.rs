@@ -43,6 +43,18 @@ const N_PUMP: Note = note(
     "KG Abb. 1053, 1065-1066",
     Topic::Forces,
 );
+const N_PUMP_RECT: Note = note(
+    "the pump’s force rectangle over the stroke: P_p1 out, P_p2 back",
+    Some("Pumpendruck, Rechteck"),
+    "KG Abb. 1065",
+    Topic::Forces,
+);
+const N_CURVE_STEAM: Note = note(
+    "the steam’s net force reduced by η, which the rectangle is laid over",
+    Some("verkleinerte Dampfüberdruckfläche"),
+    "KG Abb. 1065",
+    Topic::Forces,
+);
 const N_P: Note = note(
     "net piston force P read off",
     Some("Überdruck P"),
@@ -78,12 +90,18 @@ const N_CURVE_R: Note = note(
 /// of the resulting force, and the values read off.
 #[derive(Clone, Copy)]
 struct Ray {
+    /// The steam's net force alone (η·(P₁ − P₂)), before a pump's force is laid against it.
+    steam_point: H<Point>,
     p_point: H<Point>,
     r_point: H<Point>,
     row_p: f64,
     row_b: f64,
     row_r: f64,
 }
+
+/// On an ordinate: the steam's net force alone, and the net piston force (the same where
+/// there is no pump).
+type NetPoints = (H<Point>, H<Point>);
 
 struct Diagram {
     axis: TolleAxis,
@@ -165,6 +183,7 @@ pub fn construct(
                 bl.ray(c, k)?;
             }
             bl.curves(c);
+            bl.pump_rectangles(c)?;
         }
     }
     if want_t {
@@ -285,12 +304,14 @@ impl Builder<'_> {
         let ord = self
             .b
             .perpendicular(&axis.axis, &foot, Role::Construction, N_ORD);
-        let (p_point, p) = self.net_pressure(c, theta, x, foot, ord, axis.vertical)?;
+        let ((steam_point, p_point), p) =
+            self.net_pressure(c, theta, x, foot, ord, axis.vertical)?;
         let (r_point, b, r) = match curves {
             Some(cv) => self.resulting(c, theta, (foot, p_point, ord), &axis, &cv)?,
             None => (p_point, 0.0, p),
         };
         let ray = Ray {
+            steam_point,
             p_point,
             r_point,
             row_p: p,
@@ -310,7 +331,7 @@ impl Builder<'_> {
         foot: H<Point>,
         ord: H<Line>,
         vertical: H<Line>,
-    ) -> Result<(H<Point>, f64), ConstructionError> {
+    ) -> Result<(NetPoints, f64), ConstructionError> {
         let cyl = self.cyl(c);
         let (stroke, _) = cf::book_angle(theta);
         let (work, back) = match stroke {
@@ -333,6 +354,7 @@ impl Builder<'_> {
             .b
             .lay_off(&w, &ord, -eta * back / k, Role::Construction, N_BACK)?;
         let load = pump.map_or(0.0, |p| p.force(stroke));
+        let steam = pp;
         if pump.is_some() {
             pp = self.b.lay_off(&pp, &ord, -load / k, Role::Force, N_PUMP)?;
         }
@@ -348,7 +370,7 @@ impl Builder<'_> {
             work.abs().max(back.abs()).max(load),
             || cyl.pressure_force(theta, x),
         );
-        Ok((pp, p.g))
+        Ok(((steam, pp), p.g))
     }
 
     /// The inertia force on Tolle's parabola, transferred onto the net-pressure ordinate.
@@ -438,6 +460,11 @@ impl Builder<'_> {
             let rays: Vec<Ray> = idx.iter().filter_map(|&k| self.rays[c][k]).collect();
             let p: Vec<H<Point>> = rays.iter().map(|r| r.p_point).collect();
             let r: Vec<H<Point>> = rays.iter().map(|r| r.r_point).collect();
+            if p.len() >= 2 && self.cyl(c).pump.is_some() {
+                let steam: Vec<H<Point>> = rays.iter().map(|r| r.steam_point).collect();
+                let mark = Role::Given.named(if ret { "S'" } else { "S" });
+                self.b.curve(&steam, Trace::Smooth, mark, N_CURVE_STEAM);
+            }
             if p.len() >= 2 {
                 self.b
                     .curve(&p, Trace::Smooth, Role::Result.named("P"), N_CURVE_P);
@@ -446,6 +473,37 @@ impl Builder<'_> {
                 }
             }
         }
+    }
+
+    /// The pump's force rectangle of cylinder c for each stroke (KG Abb. 1065): its
+    /// resistance, the same over a stroke, laid up from both dead centres and joined, over
+    /// the steam force reduced by η; what lies between is what the crank drive carries.
+    fn pump_rectangles(&mut self, c: usize) -> Result<(), ConstructionError> {
+        let Some(pump) = self.cyl(c).pump else {
+            return Ok(());
+        };
+        let axis = self.diagram(c)?.axis;
+        let ends = axis.ends;
+        let mut ups = Vec::with_capacity(2);
+        for e in &ends {
+            ups.push(
+                self.b
+                    .perpendicular(&axis.axis, e, Role::Construction, N_ORD),
+            );
+        }
+        let k = self.dr.force_scale;
+        for (stroke, name) in [(cf::Stroke::Out, "P_p1"), (cf::Stroke::Return, "P_p2")] {
+            let h = pump.force(stroke) / k;
+            let a = self
+                .b
+                .lay_off(&ends[0], &ups[0], h, Role::Given, N_PUMP_RECT)?;
+            let b = self
+                .b
+                .lay_off(&ends[1], &ups[1], h, Role::Given, N_PUMP_RECT)?;
+            let mark = Role::Given.named(name);
+            self.b.curve(&[a, b], Trace::Polygon, mark, N_PUMP_RECT);
+        }
+        Ok(())
     }
 
     /// The tangential force on every ray of cylinder c by the polar construction of
