@@ -12,7 +12,7 @@
 use crate::crank::{self, Angles, CrankDrive, CrankResults, Drawing, PistonForce, Request};
 use crate::kernel::Point;
 use crate::protocol::{
-    Board, ConstructionError, Drawn, Label, Note, Reading, Role, Scale, Topic, Trace, H,
+    Board, ConstructionError, Drawn, Label, Note, Part, Reading, Role, Scale, Topic, Trace, H,
 };
 
 fn n(caption: &'static str, term: Option<&'static str>) -> Note {
@@ -118,6 +118,11 @@ pub fn construct(
         piston_force: PistonForce::Constant(0.0),
     };
     let thetas = angles.thetas(&drive);
+    // Where a slider-crank is compared, it stands in the sheet's first column and the yoke
+    // beside it in the second, each with its diagrams under it.
+    if yoke.compare_rod.is_some() {
+        b.set_part(YOKE);
+    }
     let fr = frame(b, yoke, dr, rq)?;
     let mut rows = Vec::with_capacity(thetas.len());
     let mut curves: [Vec<H<Point>>; 2] = [Vec::new(), Vec::new()];
@@ -149,6 +154,7 @@ pub fn construct(
         Some(_) => Some(compare(b, &fr, &drive, dr, (&thetas, rq))?),
         None => None,
     };
+    b.set_part(Part::default());
     Ok(YokeResults { rows, slider_crank })
 }
 
@@ -448,9 +454,14 @@ fn ordinate(
     .map(Some)
 }
 
-/// The slider-crank of the same stroke, drawn below by [`crank::construct_at`] with its own
-/// checks, and its x, c and b laid into the yoke's diagrams (dashed) from the same dead
-/// centre, so the two curves stand side by side.
+/// The sheet's column of the yoke, beside the compared slider-crank's.
+const YOKE: Part = Part::at(0, 1);
+/// The sheet's column of the compared slider-crank.
+const SLIDER_CRANK: Part = Part::at(0, 0);
+
+/// The slider-crank of the same stroke, drawn beside the yoke by [`crank::construct_at`]
+/// with its own checks (Tolle's diagram under its stroke), and its x, c and b laid into the
+/// yoke's diagrams (dashed) from the same dead centre, so the two curves stand side by side.
 fn compare(
     b: &mut Board,
     fr: &Frame,
@@ -458,15 +469,8 @@ fn compare(
     dr: &Drawing,
     (thetas, rq): (&[f64], YokeRequest),
 ) -> Result<CrankResults, ConstructionError> {
-    let r = drive.crank_radius / dr.length_scale;
-    let low = fr
-        .bases
-        .iter()
-        .flatten()
-        .map(|(_, p)| p.g.y)
-        .fold(-r, f64::min);
-    let depth = drive.v2_over_r() * 2.0 / dr.acceleration_scale;
-    let origin = Point::new(0.0, low - 2.0 * r - depth - 20.0);
+    let origin = Point::origin();
+    b.set_part(SLIDER_CRANK);
     let request = Request {
         piston_path: true,
         velocity_parallel: rq.velocity,
@@ -481,6 +485,7 @@ fn compare(
         &request,
         origin,
     )?;
+    b.set_part(YOKE);
     let note = n(
         "the slider-crank of the same stroke laid into the diagram",
         Some("Schubkurbel"),

@@ -33,7 +33,7 @@ impl Builder<'_> {
             self.b.clear_context();
             let ax = tolle::axis(
                 self.b,
-                Point::new(x0.x + self.r, -below),
+                Point::new(x0.x + self.r, x0.y - below),
                 self.r,
                 Topic::Acceleration,
             )?;
