@@ -15,6 +15,7 @@ use super::model::{integrate_split, Kinematics};
 use crate::crank::closed_form as cf;
 
 mod construction;
+mod indicator;
 pub use construction::{construct, GasDrawing, GasEngine, GasResults, GasRow};
 
 /// Four-stroke (a cycle of two turns) or two-stroke (one turn).

@@ -8,7 +8,7 @@ use crate::crank::{self, Angles, CrankDrive, Drawing, PistonForce, Request};
 use crate::dynamics::model::Kinematics;
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{
-    Board, ConstructionError, Label, Note, Part, Role, Scale, Topic, Trace, Weighted, H,
+    Board, ConstructionError, Label, Note, Part, Reading, Role, Scale, Topic, Trace, Weighted, H,
 };
 
 fn n(caption: &'static str, term: Option<&'static str>) -> Note {
@@ -88,12 +88,12 @@ pub fn construct(
         })
         .collect();
     let mut depth = 0.0;
-    // Each cylinder's row: its piston-force diagram, and beside it its crank figure with
-    // the polar force plan; the turning-force diagram under them, the table under that.
+    // Each cylinder's row: its gas pressure diagram, its piston-force diagram over the
+    // developed cycle, and beside them its crank figure with the polar force plan; the
+    // turning-force diagram under the force diagrams, the table under that.
     for c in 0..e.cylinders.len() {
-        b.set_part(Part::at(c as u16, 0));
         let forces = force_diagram(b, e, dr, (c, &shafts), &mut depth)?;
-        b.set_part(Part::at(c as u16, 1));
+        b.set_part(Part::at(c as u16, 2));
         let t = tangential(b, e, dr, (c, &shafts, &forces), depth)?;
         for (row, (f, t)) in rows.iter_mut().zip(forces.iter().zip(t)) {
             row.cylinders.push([f.0, f.1, t]);
@@ -101,7 +101,7 @@ pub fn construct(
         }
     }
     let t_m_exact = super::mean_turning_force(&e.kinematics, &e.cylinders, e.cycle_deg);
-    b.set_part(Part::at(e.cylinders.len() as u16, 0));
+    b.set_part(Part::at(e.cylinders.len() as u16, 1));
     let t_m = turning_diagram(b, e, dr, (&rows, t_m_exact), depth)?;
     b.set_part(Part::default());
     Ok(GasResults {
@@ -166,6 +166,10 @@ fn force_diagram(
     let peak = cyl.area_cm2 * (cyl.cycle.peak_at - super::ATMOSPHERE_AT);
     *depth += peak / dr.force_scale + 15.0;
     let name = cyl.name.clone();
+    b.set_part(Part::at(c as u16, 0));
+    let scales = (-*depth, dr.length_scale, dr.force_scale);
+    let pushes = super::indicator::diagram(b, e, (c, shafts), scales)?;
+    b.set_part(Part::at(c as u16, 1));
     let lettered = match e.cylinders.len() {
         1 => Label::NONE,
         _ => Label::named(format!("cylinder {name}")),
@@ -180,9 +184,9 @@ fn force_diagram(
         ),
     )?;
     let (mut gas_pts, mut res_pts, mut out) = (Vec::new(), Vec::new(), Vec::new());
-    for &shaft in shafts {
+    for (&shaft, push) in shafts.iter().zip(&pushes) {
         b.set_context(|| format!("{name}, shaft {}°", crate::fmt::num(shaft, 3)));
-        let (tip, rtip, pv, rv) = force_ray(b, e, dr, (c, shaft), (&axis, peak))?;
+        let (tip, rtip, pv, rv) = force_ray(b, e, dr, (c, shaft, push), (&axis, peak))?;
         gas_pts.push(tip);
         res_pts.push(rtip);
         out.push((pv, rv));
@@ -218,7 +222,7 @@ fn force_ray(
     b: &mut Board,
     e: &GasEngine,
     dr: &GasDrawing,
-    (c, shaft): (usize, f64),
+    (c, shaft, push): (usize, f64, &H<f64>),
     (axis, peak): (&(H<Point>, H<Line>), f64),
 ) -> Result<(H<Point>, H<Point>, f64, f64), ConstructionError> {
     let cyl = &e.cylinders[c];
@@ -226,14 +230,21 @@ fn force_ray(
     let fs = Scale::new(dr.force_scale, "kg");
     let (foot, up) = ordinate(b, (&axis.0, &axis.1), shaft * dr.mm_per_deg)?;
     let p = cyl.gas_force(k, shaft);
-    // The base runs to +x: the ordinate's direction points up the sheet.
-    let tip = b.lay_off(
+    // The base runs to +x: the ordinate's direction points up the sheet. The indicator's
+    // ordinate is carried over with the dividers, turned down where the gas pushes against
+    // the piston's motion (the return strokes).
+    let (stroke, _) = crate::crank::closed_form::book_angle(cyl.angles(shaft).1);
+    let reading = Reading {
+        value: push,
+        per_mm: stroke.sign() * dr.force_scale,
+    };
+    let tip = b.transfer(
         &foot,
         &up,
-        p / dr.force_scale,
+        reading,
         Role::Force,
         n(
-            "the gas force from the pressure above the atmosphere",
+            "the gas force carried over from the pressure diagram",
             Some("Kolbenkraft"),
         ),
     )?;
@@ -398,7 +409,7 @@ fn turning_diagram(
     );
     let mean = mean_of_ordinates(b, e, rows, (&ids, top));
     let row = b.part().row;
-    b.set_part(Part::at(row + 1, 0));
+    b.set_part(Part::at(row + 1, 1));
     mean_table(b, e, (mean, exact, &ids), y - top / dr.force_scale - 15.0);
     Ok(mean)
 }
