@@ -61,6 +61,18 @@ const N_MEAN_LINE: Note = note(
     "LH J; KG Abb. 1064",
     Topic::Forces,
 );
+const N_T_FULL: Note = note(
+    "the turning force before the reduction by η (ordinate times 1/η)",
+    Some("Tangentialdruck ohne Wirkungsgrad"),
+    "KG Abb. 1062",
+    Topic::Forces,
+);
+const N_CURVE_FULL: Note = note(
+    "the turning force before the reduction by η",
+    Some("Tangentialdrucklinie"),
+    "KG Abb. 1062",
+    Topic::Forces,
+);
 const N_CURVE: Note = note(
     "turning-force diagram",
     Some("Tangentialdruckdiagramm"),
@@ -90,30 +102,67 @@ impl Builder<'_> {
         let frame = TurningFrame { o, axis, up };
         let n = self.thetas.len();
         let mut pts: Vec<H<Point>> = Vec::with_capacity(n + 1);
+        let mut full: Vec<H<Point>> = Vec::new();
         let (mut out, mut ids) = (Vec::with_capacity(n), Vec::with_capacity(n));
         for k in 0..=n {
-            let (end, sum) = self.turning_ordinate(&frame, k)?;
+            let (foot, end, sum) = self.turning_ordinate(&frame, k)?;
             pts.push(end);
+            full.extend(self.unreduced(&frame, k, &foot)?);
             if k < n {
                 out.push((self.thetas[k], sum.g));
                 ids.push(sum.id);
             }
         }
         self.b.clear_context();
+        // Where η < 1, KG Abb. 1062 draws the turning force before and after the reduction:
+        // T in a full line, η·T, which the resistance is measured against, apart from it.
+        let name = if full.is_empty() { "T" } else { "η·T" };
+        if !full.is_empty() {
+            self.b
+                .curve(&full, Trace::Polygon, Role::Given.named("T"), N_CURVE_FULL);
+        }
         self.b
-            .curve(&pts, Trace::Polygon, Role::Result.named("T"), N_CURVE);
+            .curve(&pts, Trace::Polygon, Role::Result.named(name), N_CURVE);
         let mean = self.mean_line(&frame, &out)?;
         self.excess_areas(&pts, (&mean.0, &mean.1))?;
         Ok((out, ids))
     }
 
+    /// Where η < 1, on a board that records, the k-th ordinate's turning force before the
+    /// reduction, the cylinders' T laid off as one length, for the unreduced curve of KG
+    /// Abb. 1062.
+    fn unreduced(
+        &mut self,
+        fr: &TurningFrame,
+        k: usize,
+        foot: &H<Point>,
+    ) -> Result<Option<H<Point>>, ConstructionError> {
+        let eta = self.e.efficiency;
+        if eta == 1.0 || !self.b.is_recording() {
+            return Ok(None);
+        }
+        let kk = k % self.thetas.len();
+        let t: f64 = (self.tangential.iter())
+            .map(|t| t.as_ref().map_or(0.0, |t| t[kk]))
+            .sum();
+        let at = self.b.lay_off(
+            foot,
+            &fr.up,
+            t / self.dr.force_scale,
+            Role::Construction,
+            N_T_FULL,
+        )?;
+        Ok(Some(at))
+    }
+
     /// The ordinate at the k-th shaft angle (k = n is 360°): every cylinder's η·T laid off on
-    /// top of the others, the sum read off and checked.
+    /// top of the others, the sum read off and checked. Returns the ordinate's foot on the
+    /// developed circle, its end and the sum.
     fn turning_ordinate(
         &mut self,
         fr: &TurningFrame,
         k: usize,
-    ) -> Result<(H<Point>, H<f64>), ConstructionError> {
+    ) -> Result<Ordinate, ConstructionError> {
         let n = self.thetas.len();
         let kk = k % n;
         let theta = if k == n { 360.0 } else { self.thetas[kk] };
@@ -145,7 +194,7 @@ impl Builder<'_> {
             reference,
             || model::turning_force(&kin, cyls, eta, theta),
         );
-        Ok((end, sum))
+        Ok((a, end, sum))
     }
 
     /// The rectangle of equal area: the mean resistance over the developed circle, at the
@@ -183,6 +232,10 @@ impl Builder<'_> {
 
 /// The turning force at each shaft angle (degrees, kg) and the objects it was read as.
 pub(super) type Ordinates = (Vec<(f64, f64)>, Vec<crate::protocol::ObjId>);
+
+/// One ordinate of the turning-force diagram: its foot on the developed circle, its end, and
+/// the sum read off.
+type Ordinate = (H<Point>, H<Point>, H<f64>);
 
 /// The axis of the developed crank circle, its start and its ordinate direction.
 struct TurningFrame {
