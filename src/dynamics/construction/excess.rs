@@ -147,18 +147,21 @@ impl Builder<'_> {
 
 /// The crossings' labels: v_max where the energy E(θ) = ∫ (T − T_m) r dθ is largest (the
 /// shaft runs fastest, at the end of a + area), v_min where it is least; the others none.
-/// Reckoned from the numbers before anything is drawn.
+/// Reckoned from the numbers before anything is drawn: E at a crossing is the area between
+/// T and the mean line (through `start`, at 0°) up to it, by the trapezoids of the polygon.
 fn extremes(t: &[H<Point>], start: Point, crossings: &[(usize, f64)]) -> Vec<Label> {
+    let y = start.y;
     let mut names = vec![Label::NONE; crossings.len()];
     let (mut e, mut top, mut low) = (0.0, (0.0, None), (0.0, None));
-    let mut outline = vec![start];
+    let trapezoid = |a: Point, b: Point| 0.5 * (a.y + b.y - 2.0 * y) * (b.x - a.x);
+    let mut last = start;
     let mut from = 0;
     for (i, &(k, r)) in crossings.iter().enumerate() {
-        outline.extend(t[from..=k].iter().map(|p| p.g));
         let cross = t[k].g + (t[k + 1].g - t[k].g) * r;
-        outline.push(cross);
-        e += signed_mm2(&outline);
-        outline = vec![cross];
+        for p in t[from..=k].iter().map(|p| p.g).chain([cross]) {
+            e += trapezoid(last, p);
+            last = p;
+        }
         from = k + 1;
         if e > top.0 {
             top = (e, Some(i));
