@@ -62,7 +62,7 @@ const N_MEAN_LINE: Note = note(
     Topic::Forces,
 );
 const N_T_FULL: Note = note(
-    "the turning force before the reduction by η (ordinate times 1/η)",
+    "the turning force before the reduction by η: the cylinders’ T laid off as one length",
     Some("Tangentialdruck ohne Wirkungsgrad"),
     "KG Abb. 1062",
     Topic::Forces,
