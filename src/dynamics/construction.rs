@@ -145,7 +145,7 @@ pub fn construct(
         .iter()
         .map(|c| max_abs_force(&engine.kinematics, c))
         .collect();
-    let fmax = force_refs.iter().copied().fold(1.0, f64::max);
+    let fmax = force_refs.iter().copied().fold(f64::MIN_POSITIVE, f64::max);
     let thetas = rays.thetas(&drive(&engine.kinematics, PistonForce::Constant(0.0)));
     let divisions = thetas.len();
     let mut bl = Builder {
@@ -367,7 +367,7 @@ impl Builder<'_> {
             "net piston force P",
             "kg",
             "LH Gl. 40-42; KG (296-297); with a pump KG Abb. 1065",
-            work.abs().max(back.abs()).max(load),
+            work.abs().max(back.abs()).max(load).max(self.force_refs[c]),
             || cyl.pressure_force(theta, x),
         );
         Ok(((steam, pp), p.g))
@@ -400,7 +400,9 @@ impl Builder<'_> {
         );
         let kin = self.e.kinematics;
         let mass = self.cyl(c).mass;
-        let bref = mass * kin.a() * (1.0 + kin.lambda);
+        // Judged at the diagram's force scale, as every ordinate drawn on it: the parabola is
+        // read off the same sheet as the net pressure, whose largest force may dwarf it.
+        let bref = (mass * kin.a() * (1.0 + kin.lambda)).max(self.force_refs[c]);
         self.b.check(
             &bval,
             "inertia force M·b (Tolle’s parabola)",

@@ -81,3 +81,35 @@ pub fn wrap_360(deg: f64) -> f64 {
         }
     }
 }
+
+/// The angle (radians, in [0, π]) of a triangle opposite its side `c`, the other two sides
+/// `a` and `b`: Kahan's half-angle form, free of the cancellation of the law of cosines.
+/// `acos((a² + b² − c²)/2ab)` loses half of f64's digits near 0 and π (a needle of a
+/// triangle, a linkage at its change point: 1e-6° from it, arccos gives 0, the truth is
+/// 7.7e-7°); here each difference is of two given sides, so the angle is as good as they
+/// are. Sides that break the triangle inequality by rounding give 0 or π.
+///
+/// ```
+/// use graphostatik::kernel::angle::triangle_angle;
+/// // 3-4-5: the right angle opposite 5.
+/// assert!((triangle_angle(5.0, 3.0, 4.0) - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+/// // A needle: sides 1, 1 and 1e-10 enclose 1e-10 rad (arccos gives 0).
+/// let tiny = triangle_angle(1e-10, 1.0, 1.0);
+/// assert!((tiny / 1e-10 - 1.0).abs() < 1e-12, "{tiny}");
+/// assert_eq!(triangle_angle(2.0, 1.0, 1.0), std::f64::consts::PI);
+/// ```
+pub fn triangle_angle(c: f64, a: f64, b: f64) -> f64 {
+    let (a, b) = if a >= b { (a, b) } else { (b, a) };
+    // Kahan: with a ≥ b, m = c − (a − b) when b ≥ c, else b − (a − c); both are the
+    // triangle's excess c + b − a, formed where it does not cancel.
+    let m = if b >= c { c - (a - b) } else { b - (a - c) };
+    let num = ((a - b) + c) * m;
+    let den = (a + (b + c)) * ((a - c) + b);
+    if num <= 0.0 {
+        return 0.0;
+    }
+    if den <= 0.0 {
+        return std::f64::consts::PI;
+    }
+    2.0 * (num / den).sqrt().atan()
+}

@@ -16,6 +16,7 @@
 //! line at two crank angles: the two circles touch there, a typed tangency whose branch is
 //! undetermined (the parallel crank may turn into the antiparallel one).
 
+use crate::kernel::angle::triangle_angle;
 use crate::kernel::{Branch, Circle, Point, Vector};
 use crate::protocol::{Board, ConstructionError, Drawn, Label, Note, Role, Topic, H};
 
@@ -159,39 +160,63 @@ impl FourBar {
         let (s, c) = crate::kernel::angle::sin_cos_deg(theta);
         let p = Vector::new(r * c, r * s);
         let a = Vector::new(d, 0.0);
-        let pa = a - p;
-        let f2 = pa.norm_squared();
-        let f = f2.sqrt();
-        let b = match self.assembly {
-            Assembly::Parallel => p + a,
+        // AB directly, not B − A: A is far from the pin when the crank is short, and B − A
+        // would round the crank's own vector away.
+        let ab = match self.assembly {
+            Assembly::Parallel => p,
             side => {
+                let pa = a - p;
+                let f = pa.norm();
                 let u = pa / f;
-                let cos_g = ((l * l + f2 - rho * rho) / (2.0 * l * f)).clamp(-1.0, 1.0);
-                let sin_g = (1.0 - cos_g * cos_g).sqrt();
+                // The angle at P between PA and PB, opposite the rocker.
+                let (sin_g, cos_g) = triangle_angle(rho, l, f).sin_cos();
                 let perp = Vector::new(-u.y, u.x) * if side == Assembly::Left { 1.0 } else { -1.0 };
-                p + (u * cos_g + perp * sin_g) * l
+                (u * cos_g + perp * sin_g) * l - pa
             }
         };
-        let ab = b - a;
         let psi = ab.y.abs().atan2(-ab.x).to_degrees();
-        let cos_mu = ((l * l + rho * rho - f2) / (2.0 * l * rho)).clamp(-1.0, 1.0);
-        (Point::from(b), psi, cos_mu.acos().to_degrees())
+        (Point::from(a + ab), psi, self.mu_exact(theta).to_degrees())
+    }
+
+    /// The transmission angle μ at the crank angle θ (radians), by the half angle: with
+    /// PA² = (d − r)² + 4dr·sin²(θ/2), PA² − (L − ρ)² = 4Lρ·sin²(μ/2) and
+    /// (L + ρ)² − PA² = 4Lρ·cos²(μ/2), each formed from the given lengths without the
+    /// cancellation of cos μ = (L² + ρ² − PA²)/2Lρ near 0° and 180° (the change points).
+    fn mu_exact(&self, theta: f64) -> f64 {
+        let (near, far, _) = self.mu_parts(theta);
+        half_angles(near, far)
+    }
+
+    /// 4Lρ·sin²(μ/2), 4Lρ·cos²(μ/2) and PA at the crank angle θ ([`FourBar::mu_exact`]).
+    fn mu_parts(&self, theta: f64) -> (f64, f64, f64) {
+        let (d, r, l, rho) = (self.frame, self.crank, self.coupler, self.rocker);
+        let (h, _) = crate::kernel::angle::sin_cos_deg(theta / 2.0);
+        let q = 4.0 * d * r * h * h;
+        let near = (d - r - l + rho) * (d - r + l - rho) + q;
+        let far = (l + rho - d + r) * (l + rho + d - r) - q;
+        (near, far, ((d - r) * (d - r) + q).sqrt())
+    }
+
+    /// The transmission angle μ at θ and how far it moves (both in degrees) when PA is
+    /// `band` longer or shorter: the kernel takes two circles whose distance is within its
+    /// length tolerance of touching as touching, so near a change point the construction
+    /// may stand anywhere in that band. Away from one this is some 1e-12°; at one it is
+    /// √(2·PA·band/Lρ), the square root a touching cut brings.
+    pub fn transmission_within(&self, theta: f64, band: f64) -> (f64, f64) {
+        let (near, far, f) = self.mu_parts(theta);
+        let mu = half_angles(near, far);
+        let dn = 2.0 * f * band + band * band;
+        let moved = [(near + dn, far - dn), (near - dn, far + dn)]
+            .map(|(n, f)| (half_angles(n, f) - mu).abs());
+        (mu.to_degrees(), moved[0].max(moved[1]).to_degrees())
     }
 
     /// The rocker's swing between its dead positions and the angle ϑ between the crank lines
     /// there (degrees): the crank takes 180° + ϑ one way and 180° − ϑ the other.
     pub fn dead_positions(&self) -> (f64, f64) {
         let (d, r, l, rho) = (self.frame, self.crank, self.coupler, self.rocker);
-        let at_a = |reach: f64| {
-            ((d * d + rho * rho - reach * reach) / (2.0 * d * rho))
-                .clamp(-1.0, 1.0)
-                .acos()
-        };
-        let at_o = |reach: f64| {
-            ((d * d + reach * reach - rho * rho) / (2.0 * d * reach))
-                .clamp(-1.0, 1.0)
-                .acos()
-        };
+        let at_a = |reach: f64| triangle_angle(reach, d, rho);
+        let at_o = |reach: f64| triangle_angle(rho, d, reach);
         (
             (at_a(l + r) - at_a(l - r)).abs().to_degrees(),
             (at_o(l + r) - at_o(l - r)).abs().to_degrees(),
@@ -449,7 +474,7 @@ fn position(
     let change_point = b.last_cut_touched();
     b.segment(&pin, &joint, pen, n("the coupler", Some("Koppel")));
     b.segment(&fr.a, &joint, pen, n("the rocker", Some("Schwinge")));
-    let (_, psi, mu) = fb.exact(theta);
+    let (_, psi, _) = fb.exact(theta);
     let angle = b.measure_angle(
         &fr.a,
         &fr.o,
@@ -473,6 +498,7 @@ fn position(
         change_point,
     };
     if rq.transmission {
+        let mu = fb.transmission_within(theta, b.tolerance().length * ls);
         let t = transmission(b, fr, fb, (&pin, &joint), mu);
         row.transmission = Some(t);
         row.flagged = t.min(180.0 - t) < fb.min_transmission;
@@ -480,14 +506,20 @@ fn position(
     Ok(row)
 }
 
-/// The transmission angle μ = ∠PBA between coupler and rocker, checked; its note says when it
-/// falls below the limit.
+/// The angle 2·atan2(√near, √far), both clamped at 0 (radians).
+fn half_angles(near: f64, far: f64) -> f64 {
+    2.0 * near.max(0.0).sqrt().atan2(far.max(0.0).sqrt())
+}
+
+/// The transmission angle μ = ∠PBA between coupler and rocker, checked against the closed
+/// form `mu` = (μ, the band it may move in at a change point); its note says when it falls
+/// below the limit.
 fn transmission(
     b: &mut Board,
     fr: &Frame,
     fb: &FourBar,
     (pin, joint): (&H<Point>, &H<Point>),
-    mu: f64,
+    (mu, band): (f64, f64),
 ) -> f64 {
     let caption = if mu.min(180.0 - mu) < fb.min_transmission {
         "the transmission angle μ at B: below the limit"
@@ -501,13 +533,13 @@ fn transmission(
         Label::quiet("μ", 0),
         n(caption, Some("Übertragungswinkel")),
     );
-    b.check(
+    b.check_within(
         &t,
         "transmission angle μ",
         "°",
-        "cos μ = (L² + ρ² − PA²)/(2Lρ)",
+        "tan²(μ/2) = (PA² − (L − ρ)²)/((L + ρ)² − PA²)",
         180.0,
-        || mu,
+        || (mu, band),
     );
     t.g
 }

@@ -264,7 +264,7 @@ impl CombustionScene {
         let cycle = self.cycle();
         let n = c.firing_order.len();
         let inertia = self.effects.unwrap_or_default().inertia;
-        let cylinders = (1..=n)
+        let cylinders: Vec<GasCylinder> = (1..=n)
             .map(|i| {
                 let k = c.firing_order.iter().position(|&x| x == i).unwrap_or(0);
                 GasCylinder {
@@ -286,7 +286,9 @@ impl CombustionScene {
             mm_per_deg: None,
         });
         let nice = super::defaults::nice_at_least;
-        let peak = area_cm2(c.bore_mm, 0.0) * self.gas.peak_at;
+        let peak = cylinders
+            .first()
+            .map_or(0.0, |c| largest_force(&kinematics, c));
         CombustionProblem {
             title: self.title.clone(),
             source: self.source.clone().unwrap_or_default(),
@@ -305,6 +307,14 @@ impl CombustionScene {
     }
 }
 
+/// The largest force a cylinder's diagrams draw (kg): the gas at its peak, or the inertia
+/// of its masses at the inner dead centre, whichever is larger (a small fast engine's
+/// inertia dwarfs its gas forces, and a scale chosen for the gas alone once drew it kilometres
+/// long).
+fn largest_force(k: &Kinematics, c: &GasCylinder) -> f64 {
+    (c.area_cm2 * c.cycle.peak_at).max(c.mass * k.a() * (1.0 + k.lambda))
+}
+
 impl super::Procedure for CombustionScene {
     const NAME: &'static str = "combustion_engine";
     const SIZED_BY: &'static str = "divisions, cylinders or outputs";
@@ -320,7 +330,7 @@ impl super::Procedure for CombustionScene {
             .engine
             .cylinders
             .first()
-            .map_or(0.0, |c| c.area_cm2 * c.cycle.peak_at);
+            .map_or(0.0, |c| largest_force(&p.engine.kinematics, c));
         let force = (n + 2.0) * peak / d.force_scale;
         let across = p.engine.cycle_deg * d.mm_per_deg;
         let length =

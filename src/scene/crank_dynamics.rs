@@ -336,7 +336,11 @@ impl DynamicsScene {
             .cylinders
             .iter()
             .map(|c| largest_force(&engine.kinematics, c))
-            .fold(1.0, f64::max);
+            .fold(0.0, f64::max);
+        // The force scale follows the forces at any size (a floor of 1 kg once laid a
+        // diagram of micro-engine forces out at a scale for kilograms); an engine that draws no
+        // force at all takes 1 kg.
+        let fmax = if fmax > 0.0 { fmax } else { 1.0 };
         let drawing = DynamicsDrawing {
             length_scale: d
                 .length_scale

@@ -254,24 +254,43 @@ pub fn parse_scene<P: Procedure>(
             ),
         });
     }
-    let min = crate::kernel::tolerance::MIN_PART_REL * mm;
-    if let Some((part, field)) = P::smallest_part(&problem).filter(|(p, _)| p.is_nan() || *p < min)
-    {
-        return Err(SceneError::Invalid {
-            origin: origin.to_string(),
-            field: field.to_string(),
-            message: format!(
-                "with this value its diagram would be {} mm on a figure {} mm across, less than \
-                 {} of it: its digits would drown in the sheet's rounding; choose a scale that \
-                 draws it at least {} mm long",
-                crate::fmt::sci(part),
-                crate::fmt::num(mm, 1),
-                crate::fmt::sci(crate::kernel::tolerance::MIN_PART_REL),
-                crate::fmt::sci(min)
-            ),
-        });
+    if let Some(e) = too_small_part::<P>(&problem, mm, origin) {
+        return Err(e);
     }
     Ok((scene, problem))
+}
+
+/// The refusal of a scene whose smallest part (a diagram at a scale) would be drawn below
+/// [`MIN_PART_REL`](crate::kernel::tolerance::MIN_PART_REL) of its figure of `mm` across.
+fn too_small_part<P: Procedure>(problem: &P::Problem, mm: f64, origin: &str) -> Option<SceneError> {
+    let min = crate::kernel::tolerance::MIN_PART_REL * mm;
+    let (part, field) = P::smallest_part(problem).filter(|(p, _)| p.is_nan() || *p < min)?;
+    // Drawn large enough, the part would take the rest of the figure along: where that
+    // sheet is too large as well, no value of the field works, and the advice says so.
+    let advice = if mm / part * min > MAX_SHEET_MM {
+        format!(
+            "no scale draws it: the figure's largest part is {} times it, more than a sheet \
+             of {} m holds; make the quantities it compares less unequal",
+            crate::fmt::sci(mm / part),
+            crate::fmt::num(MAX_SHEET_MM / 1000.0, 3)
+        )
+    } else {
+        format!(
+            "choose a scale that draws it at least {} mm long",
+            crate::fmt::sci(min)
+        )
+    };
+    Some(SceneError::Invalid {
+        origin: origin.to_string(),
+        field: field.to_string(),
+        message: format!(
+            "with this value its diagram would be {} mm on a figure {} mm across, less than \
+             {} of it: its digits would drown in the sheet's rounding; {advice}",
+            crate::fmt::sci(part),
+            crate::fmt::num(mm, 1),
+            crate::fmt::sci(crate::kernel::tolerance::MIN_PART_REL),
+        ),
+    })
 }
 
 pub(super) fn json_error(

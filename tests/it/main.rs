@@ -24,6 +24,7 @@ mod local_frame;
 mod mechanisms;
 mod properties;
 mod pump;
+mod scale_free;
 mod schema;
 mod serve_load;
 mod shaft;

@@ -352,7 +352,7 @@ fn turning_diagram(
     depth: f64,
 ) -> Result<f64, ConstructionError> {
     let k = &e.kinematics;
-    let top = rows.iter().map(|r| r.turning.abs()).fold(1.0, f64::max);
+    let top = rows.iter().map(|r| r.turning.abs()).fold(0.0, f64::max);
     let y = -depth - top / dr.force_scale - 30.0;
     let axis = base(
         b,
