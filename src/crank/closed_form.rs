@@ -211,6 +211,27 @@ pub fn tolle_bound(lambda: f64) -> f64 {
     1.25 * lambda.powi(3) / (c * c * c)
 }
 
+/// A bound of |exact − approximate| acceleration over v²/R at the crank angle θ: the two
+/// terms [`acceleration_exact`] adds to the book's cos θ + λ cos 2θ, each taken at its
+/// size, `λ|cos 2θ|(1/cos ψ − 1) + λ³ sin² 2θ/(4 cos³ ψ)`. It is at most
+/// [`tolle_bound`], which holds for every angle and grows without limit as λ → 1 (2.6e9 at
+/// λ = 1 − 1e-6, where the gap at one angle is some thousand times v²/R): a check held to
+/// the bound of its own angle fails on a wrong value there.
+///
+/// ```
+/// use graphostatik::crank::closed_form::{acceleration_approx, acceleration_exact, tolle_bound, tolle_bound_at};
+/// for theta in [0.0, 37.0, 90.0, 133.0, 180.0, 271.0] {
+///     let gap = (acceleration_exact(1.0, 0.2, theta) - acceleration_approx(1.0, 0.2, theta)).abs();
+///     let at = tolle_bound_at(0.2, theta);
+///     assert!(gap <= at * (1.0 + 1e-12) && at <= tolle_bound(0.2));
+/// }
+/// ```
+pub fn tolle_bound_at(lambda: f64, theta_deg: f64) -> f64 {
+    let (s2, c2) = sc(2.0 * theta_deg);
+    let (_, cp) = rod_angle(lambda, theta_deg);
+    lambda * c2.abs() * (1.0 / cp - 1.0) + lambda.powi(3) * s2 * s2 / (4.0 * cp.powi(3))
+}
+
 /// The crank angle φ (degrees, outstroke) of the largest piston velocity, exactly: the zero of
 /// [`acceleration_exact`] in (0°, 90°], found by bisection to the last bit.
 ///

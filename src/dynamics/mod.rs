@@ -140,8 +140,11 @@ pub struct Power {
 pub struct Flywheel {
     /// Mean resistance T_m (kg) at the crank pin.
     pub resistance: f64,
-    /// The largest fluctuation of energy ΔE (m·kg).
+    /// The largest fluctuation of energy ΔE (m·kg), from the drawn ordinates.
     pub delta_e: f64,
+    /// ΔE of the exact turning force's continuous energy curve (m·kg): what the ordinates
+    /// approach as the divisions grow.
+    pub delta_e_exact: f64,
     /// Shaft angle of the largest speed (degrees).
     pub fastest_deg: f64,
     /// Shaft angle of the smallest speed (degrees).

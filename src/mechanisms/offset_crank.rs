@@ -116,7 +116,15 @@ impl OffsetCrank {
         let (r, l, a) = (self.crank_radius, self.rod_length, self.offset);
         let (s, c) = crate::kernel::angle::sin_cos_deg(theta);
         let across = a - r * s;
-        let h = (l * l - across * across).sqrt();
+        // h² = (L − across)(L + across), each factor from the given lengths and a half-angle
+        // sine: L − across = (L − a − R) + 2R·sin²(θ/2 + 45°), L + across = (L + a − R) +
+        // 2R·sin²(θ/2 − 45°). Near a locking position (across → L) L² − across² cancelled
+        // the digits S = P·L/h is read with (4e-3 kg of 2.1e7 at L = a + R + 1e-5; now 0).
+        let (up, _) = crate::kernel::angle::sin_cos_deg(theta / 2.0 + 45.0);
+        let (down, _) = crate::kernel::angle::sin_cos_deg(theta / 2.0 - 45.0);
+        let minus = (l - a - r) + 2.0 * r * up * up;
+        let plus = (l + a - r) + 2.0 * r * down * down;
+        let h = (minus * plus).max(0.0).sqrt();
         let x = ((l + r) * (l + r) - a * a).sqrt() - (r * c + h);
         let q = r * s - across * r * c / h;
         let v = self.crank_pin_speed * q / r;

@@ -354,6 +354,25 @@ impl super::Procedure for CombustionScene {
             (crank, "drawing.length_scale")
         })
     }
+    fn spread(p: &CombustionProblem) -> Option<super::procedure::Spread> {
+        let c = p.engine.cylinders.first()?;
+        let k = &p.engine.kinematics;
+        let atm = c.area_cm2 * combustion::ATMOSPHERE_AT;
+        let inertia = c.mass * k.a() * (1.0 + k.lambda);
+        Some(if inertia > c.area_cm2 * c.cycle.peak_at {
+            super::procedure::Spread {
+                ratio: inertia / atm,
+                between: "the masses' inertia force and the atmosphere's force on the piston",
+                field: "cylinders.reciprocating_kg",
+            }
+        } else {
+            super::procedure::Spread {
+                ratio: c.cycle.peak_at / combustion::ATMOSPHERE_AT,
+                between: "the peak pressure and the atmosphere",
+                field: "gas.peak_at",
+            }
+        })
+    }
     fn problem(&self, ctx: &ReadContext) -> Result<CombustionProblem, SceneError> {
         self.check_values(ctx.origin)?;
         Ok(self.to_problem())

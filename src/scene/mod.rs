@@ -73,7 +73,9 @@ pub use four_bar::{FourBarDrawingSpec, FourBarOutput, FourBarProblem, FourBarSce
 pub use handles::{handles, Drag, Handle};
 pub use header::{Preview, Slider};
 pub use offset_crank::{OffsetDrawingSpec, OffsetOutput, OffsetProblem, OffsetScene};
-pub use procedure::{parse_scene, scene_field, Procedure, ReadContext, SceneHeader, SchemaType};
+pub use procedure::{
+    parse_scene, scene_field, Procedure, ReadContext, SceneHeader, SchemaType, Spread,
+};
 #[cfg(feature = "schema")]
 pub use reference::reference_markdown;
 #[cfg(feature = "schema")]

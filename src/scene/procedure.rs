@@ -124,6 +124,16 @@ pub trait Procedure:
         None
     }
 
+    /// Two quantities the figure draws at one scale, as far apart in size as its inputs
+    /// make them: their ratio (largest over smallest), what they are, and the input field
+    /// that sets it. Beyond 1/[`MIN_PART_REL`](crate::kernel::tolerance::MIN_PART_REL) no
+    /// scale draws both on a sheet, and the scene is refused naming that input, not the
+    /// scale (whose every value would be refused in turn). `None` by default.
+    fn spread(problem: &Self::Problem) -> Option<Spread> {
+        let _ = problem;
+        None
+    }
+
     /// How the procedure's own inputs (`ConstructionError::Unsupported::input`, e.g.
     /// `"forces[2]"`, `"pole"`) are called in the scene: pairs of (input prefix, scene field).
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[];
@@ -195,6 +205,17 @@ impl<'a> ReadContext<'a> {
     }
 }
 
+/// Two quantities drawn at one scale ([`Procedure::spread`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Spread {
+    /// The larger over the smaller.
+    pub ratio: f64,
+    /// What the two are, for the refusal ("the return speed c₂ and the working speed c₁").
+    pub between: &'static str,
+    /// The input field that sets the ratio.
+    pub field: &'static str,
+}
+
 /// The largest figure a scene may draw (mm on the sheet): ten metres of paper, some eight A0
 /// sheets side by side. A larger one comes from a scale typed wrong (1 : 1e-12).
 pub const MAX_SHEET_MM: f64 = 10_000.0;
@@ -223,56 +244,95 @@ pub fn parse_scene<P: Procedure>(
         }
     };
     let problem = scene.problem(ctx)?;
-    let (mm, field) = P::sheet_extent(&problem);
-    let fits = mm.partial_cmp(&MAX_SHEET_MM).is_some_and(|o| o.is_le());
-    if !fits && !field.is_empty() {
-        return Err(SceneError::Invalid {
-            origin: origin.to_string(),
-            field: field.to_string(),
-            message: format!(
-                "with this value the figure would be {} m across on the sheet, more than the {} m \
-                 a figure may take: change it (a scale of 1 : n takes a larger n)",
-                if mm < 1e9 {
-                    crate::fmt::num(mm / 1000.0, 3)
-                } else {
-                    crate::fmt::sci(mm / 1000.0)
-                },
-                crate::fmt::num(MAX_SHEET_MM / 1000.0, 3)
-            ),
-        });
+    if let Some(e) = too_spread::<P>(&problem, origin) {
+        return Err(e);
     }
-    let large_enough = mm.partial_cmp(&MIN_SHEET_MM).is_some_and(|o| o.is_ge());
-    if !large_enough && !field.is_empty() {
-        return Err(SceneError::Invalid {
-            origin: origin.to_string(),
-            field: field.to_string(),
-            message: format!(
-                "with this value the figure would be {} mm across on the sheet, less than the \
-                 {} mm a figure must take: change it (a scale of 1 : n takes a smaller n)",
-                crate::fmt::sci(mm),
-                crate::fmt::num(MIN_SHEET_MM, 3)
-            ),
-        });
+    let extent = P::sheet_extent(&problem);
+    let small = too_small_part::<P>(&problem, extent, origin);
+    // A part too small against a figure its own scale sets cannot be mended by that scale:
+    // say so before advising a value that would be refused in turn.
+    if !small.as_ref().is_some_and(|(_, hopeless)| *hopeless) {
+        if let Some(e) = wrong_size(extent, origin) {
+            return Err(e);
+        }
     }
-    if let Some(e) = too_small_part::<P>(&problem, mm, origin) {
+    if let Some((e, _)) = small {
         return Err(e);
     }
     Ok((scene, problem))
 }
 
+/// The refusal of a figure whose two parts at one scale are too unequal for any scale.
+fn too_spread<P: Procedure>(problem: &P::Problem, origin: &str) -> Option<SceneError> {
+    let limit = 1.0 / crate::kernel::tolerance::MIN_PART_REL;
+    let s = P::spread(problem).filter(|s| s.ratio.is_nan() || s.ratio > limit)?;
+    Some(SceneError::Invalid {
+        origin: origin.to_string(),
+        field: s.field.to_string(),
+        message: format!(
+            "with this value {} differ {}-fold, more than the {} one scale can draw on a \
+             sheet without the smaller drowning in its rounding: no scale draws both; change \
+             this value",
+            s.between,
+            crate::fmt::sci(s.ratio),
+            crate::fmt::sci(limit)
+        ),
+    })
+}
+
+/// The refusal of a figure of `mm` across, set by the scale `field`, too large or too small
+/// for a sheet.
+fn wrong_size((mm, field): (f64, &str), origin: &str) -> Option<SceneError> {
+    if field.is_empty() {
+        return None;
+    }
+    let fits = mm.partial_cmp(&MAX_SHEET_MM).is_some_and(|o| o.is_le());
+    let large_enough = mm.partial_cmp(&MIN_SHEET_MM).is_some_and(|o| o.is_ge());
+    let message = if !fits {
+        format!(
+            "with this value the figure would be {} m across on the sheet, more than the {} m \
+             a figure may take: change it (a scale of 1 : n takes a larger n)",
+            if mm < 1e9 {
+                crate::fmt::num(mm / 1000.0, 3)
+            } else {
+                crate::fmt::sci(mm / 1000.0)
+            },
+            crate::fmt::num(MAX_SHEET_MM / 1000.0, 3)
+        )
+    } else if !large_enough {
+        format!(
+            "with this value the figure would be {} mm across on the sheet, less than the \
+             {} mm a figure must take: change it (a scale of 1 : n takes a smaller n)",
+            crate::fmt::sci(mm),
+            crate::fmt::num(MIN_SHEET_MM, 3)
+        )
+    } else {
+        return None;
+    };
+    Some(SceneError::Invalid {
+        origin: origin.to_string(),
+        field: field.to_string(),
+        message,
+    })
+}
+
 /// The refusal of a scene whose smallest part (a diagram at a scale) would be drawn below
-/// [`MIN_PART_REL`](crate::kernel::tolerance::MIN_PART_REL) of its figure of `mm` across.
-fn too_small_part<P: Procedure>(problem: &P::Problem, mm: f64, origin: &str) -> Option<SceneError> {
+/// [`MIN_PART_REL`](crate::kernel::tolerance::MIN_PART_REL) of its figure of `mm` across,
+/// and whether no value of its scale can mend it: when that scale also sets the figure's
+/// extent, the part and the figure grow together.
+fn too_small_part<P: Procedure>(
+    problem: &P::Problem,
+    (mm, extent_field): (f64, &str),
+    origin: &str,
+) -> Option<(SceneError, bool)> {
     let min = crate::kernel::tolerance::MIN_PART_REL * mm;
     let (part, field) = P::smallest_part(problem).filter(|(p, _)| p.is_nan() || *p < min)?;
-    // Drawn large enough, the part would take the rest of the figure along: where that
-    // sheet is too large as well, no value of the field works, and the advice says so.
-    let advice = if mm / part * min > MAX_SHEET_MM {
+    let hopeless = field == extent_field;
+    let advice = if hopeless {
         format!(
-            "no scale draws it: the figure's largest part is {} times it, more than a sheet \
-             of {} m holds; make the quantities it compares less unequal",
+            "no scale draws it: the figure's largest part at this scale is {} times it; make \
+             the quantities it compares less unequal",
             crate::fmt::sci(mm / part),
-            crate::fmt::num(MAX_SHEET_MM / 1000.0, 3)
         )
     } else {
         format!(
@@ -280,7 +340,7 @@ fn too_small_part<P: Procedure>(problem: &P::Problem, mm: f64, origin: &str) -> 
             crate::fmt::sci(min)
         )
     };
-    Some(SceneError::Invalid {
+    let e = SceneError::Invalid {
         origin: origin.to_string(),
         field: field.to_string(),
         message: format!(
@@ -290,7 +350,8 @@ fn too_small_part<P: Procedure>(problem: &P::Problem, mm: f64, origin: &str) -> 
             crate::fmt::num(mm, 1),
             crate::fmt::sci(crate::kernel::tolerance::MIN_PART_REL),
         ),
-    })
+    };
+    Some((e, hopeless))
 }
 
 pub(super) fn json_error(

@@ -184,6 +184,14 @@ impl super::Procedure for LinkScene {
             crank
         })
     }
+    fn spread(p: &LinkProblem) -> Option<super::procedure::Spread> {
+        let (e, r) = (p.link.centre_distance, p.link.crank_radius);
+        p.request.velocity.then(|| super::procedure::Spread {
+            ratio: (e + r) / (e - r),
+            between: "the return speed c₂ and the working speed c₁ (c₂/c₁ = (e + r)/(e − r))",
+            field: "link.centre_distance_mm",
+        })
+    }
     fn problem(&self, ctx: &ReadContext) -> Result<LinkProblem, SceneError> {
         self.check_values(ctx.origin)?;
         Ok(self.to_problem())

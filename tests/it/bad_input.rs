@@ -1092,6 +1092,55 @@ fn a_refusal_prints_enough_digits_to_show_the_difference() {
     assert!(e.contains("rocker 149.999999999 mm"), "{e}");
 }
 
+/// Two quantities one scale must draw, too unequal for any scale: the refusal names the input
+/// that makes them so, not the scale (whose every value was refused in turn, too large or
+/// too small); a little less unequal, the default scales draw it.
+#[test]
+fn no_scale_can_draw_it_names_the_input_not_the_scale() {
+    let link = include_str!("../../scenes/kg_abb1071_slotted_link.json");
+    let otto = include_str!("../../scenes/kg_abb1056_otto_four_cylinders.json");
+    let read = |doc: &serde_json::Value| {
+        graphostatik::scene::AnyScene::from_json(&doc.to_string(), "s.json").map(|_| ())
+    };
+    for (e, scale) in [(80.0 * (1.0 + 1e-6), None), (80.00008, Some(1e4))] {
+        let mut doc: serde_json::Value = serde_json::from_str(link).unwrap();
+        doc["link"]["centre_distance_mm"] = serde_json::json!(e);
+        match scale {
+            Some(v) => doc["drawing"]["velocity_scale_m_s_per_mm"] = serde_json::json!(v),
+            None => drop(
+                doc["drawing"]
+                    .as_object_mut()
+                    .unwrap()
+                    .remove("velocity_scale_m_s_per_mm"),
+            ),
+        }
+        let msg = read(&doc).unwrap_err().to_string();
+        assert!(
+            msg.contains("link.centre_distance_mm") && msg.contains("no scale draws both"),
+            "{msg}"
+        );
+        doc["link"]["centre_distance_mm"] = serde_json::json!(80.008);
+        drop(
+            doc["drawing"]
+                .as_object_mut()
+                .unwrap()
+                .remove("velocity_scale_m_s_per_mm"),
+        );
+        read(&doc).unwrap();
+    }
+    // A combustion engine whose pistons weigh 1.2 kg at a millionth of its size: the inertia
+    // is 3e6 times the atmosphere's force on the piston.
+    let mut doc: serde_json::Value = serde_json::from_str(otto).unwrap();
+    doc["mechanism"]["stroke_mm"] = serde_json::json!(130e-6);
+    doc["cylinders"]["bore_mm"] = serde_json::json!(100e-6);
+    drop(doc.as_object_mut().unwrap().remove("drawing"));
+    let msg = read(&doc).unwrap_err().to_string();
+    assert!(
+        msg.contains("cylinders.reciprocating_kg") && msg.contains("no scale draws both"),
+        "{msg}"
+    );
+}
+
 #[test]
 fn a_pump_too_strong_for_the_sheet_is_refused_before_it_is_drawn() {
     // KG Tafel I's pump at 5,400 at delivery drew a sheet of 35 m; at 4.3e9 at, or with a

@@ -126,14 +126,14 @@ impl Builder<'_> {
         );
         self.b.check_within(
             &b,
-            "b against the finite rod’s exact acceleration (bound 1.25λ³/(1−λ²)^1.5·v²/r)",
+            "b against the finite rod’s exact acceleration (within Tolle’s bound at θ)",
             "m/s²",
             "KG (285) differentiated twice",
             reference,
             || {
                 (
                     sign * cf::acceleration_exact(a, lam, theta),
-                    cf::tolle_bound(lam) * a,
+                    cf::tolle_bound_at(lam, theta) * a,
                 )
             },
         );

@@ -94,10 +94,11 @@ impl Board {
         self.made_number(label, (value, "°"), how)
     }
 
-    /// Attaches a check whose tolerance is a stated bound rather than the rounding of the
+    /// Attaches a check whose tolerance is a stated bound on top of the rounding of the
     /// construction: a model's difference from the exact value (Tolle's parabola against the
-    /// finite rod's exact acceleration is within its truncation bound O(λ³)). The closed form
-    /// and the bound are evaluated only on a recording board.
+    /// finite rod's exact acceleration is within its truncation bound at that angle), and
+    /// [`CHECK_REL`] × max(|closed form|, `reference`) for the construction itself. The closed
+    /// form and the bound are evaluated only on a recording board.
     #[inline]
     pub fn check_within(
         &mut self,
@@ -128,7 +129,9 @@ impl Board {
         closed_and_bound: impl FnOnce() -> (f64, f64),
     ) {
         let (closed, model_bound) = closed_and_bound();
-        let tolerance = model_bound.max(CHECK_REL * closed.abs().max(reference.abs()));
+        // The model's own error (a rule's, an approximation's) and the construction's allowance
+        // on top of it: where the model's bound is its error exactly, rounding must not fail it.
+        let tolerance = model_bound + CHECK_REL * closed.abs().max(reference.abs());
         let error = (value.g - closed).abs();
         let (bound, worst_cut) = self
             .bound(value.id)
