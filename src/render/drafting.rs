@@ -6,7 +6,8 @@ use crate::scene::DraftingReport;
 /// The drafting report as text: per checked value the closed form, the construction drawn
 /// without error, the drawings' mean, standard deviation (also relative to the quantity's
 /// natural magnitude), 95 %
-/// range, the linear bound for the hand, the error budget (the shares of the variance that
+/// range, the linear estimate the board propagates for the hand and the share of the
+/// drawings beyond it, the error budget (the shares of the variance that
 /// the pencil, the set square and the scale rule cause alone), and the most glancing cut.
 pub fn drafting_table_text(r: &DraftingReport) -> String {
     let head = [
@@ -19,7 +20,8 @@ pub fn drafting_table_text(r: &DraftingReport) -> String {
         "sd",
         "sd %",
         "95 % of the drawings",
-        "bound",
+        "estimate",
+        "beyond it",
         "pencil/square/rule",
         "worst cut",
     ];
@@ -45,13 +47,14 @@ pub fn drafting_table_text(r: &DraftingReport) -> String {
             },
             format!("{} … {}", num(v.range[0], 3), num(v.range[1], 3)),
             sci(v.bound),
+            format!("{} %", num(100.0 * v.outside, 1)),
             shares(&v.budget),
             v.worst_cut.map_or("-".into(), |w| {
                 format!("{}° at {}", num(w.conditioning.angle_deg(), 1), w.step)
             }),
         ]);
     }
-    let mut out = super::table::aligned(&cells, 3..=10);
+    let mut out = super::table::aligned(&cells, 3..=11);
     let o = &r.options;
     out.push_str(&format!(
         "{} drawings by a hand of pencil {} mm, set square {}°, scale rule {} mm (standard deviations), seeds {}…; {} could not be finished{}{}\n",
@@ -64,6 +67,10 @@ pub fn drafting_table_text(r: &DraftingReport) -> String {
         r.first_failure.as_ref().map_or(String::new(), |e| format!(" (the first: {})", crate::fmt::clip(e, 160))),
         if r.missing > 0 { format!("; {} checked values no finished drawing gave", r.missing) } else { String::new() }
     ));
+    out.push_str(
+        "estimate: the board's linear sum of the hand's standard deviations through every step \
+         (not a bound); beyond it: the drawings farther than that from the value drawn exactly\n",
+    );
     out
 }
 
