@@ -166,14 +166,20 @@ fn hostile_text_is_set_literally_in_every_format() {
     assert!(!html.contains('\u{0}') && !html.contains("<b>x</b>"));
 }
 
-/// Compiles a TikZ picture with `lualatex` where it is installed (Unicode labels need it or
-/// XeLaTeX); says it is skipped where it is not.
+/// Compiles a TikZ picture with `lualatex` where it and the `standalone` class are
+/// installed (Unicode labels need it or XeLaTeX); says it is skipped where they are not.
 fn compile_if_tex_is_installed(tex: &str, name: &str) {
     let Ok(found) = Command::new("lualatex").arg("--version").output() else {
         eprintln!("lualatex not installed: the TikZ syntax was checked without TeX");
         return;
     };
     if !found.status.success() {
+        return;
+    }
+    // LuaLaTeX without the LaTeX extras has no `standalone` class: skipped, not failed.
+    let class = Command::new("kpsewhich").arg("standalone.cls").output();
+    if !class.is_ok_and(|o| o.status.success() && !o.stdout.is_empty()) {
+        eprintln!("standalone.cls not installed: the TikZ syntax was checked without TeX");
         return;
     }
     let dir = std::env::temp_dir().join(format!("gs-tikz-{}-{name}", std::process::id()));

@@ -2,7 +2,8 @@
 //! deleted, a value retyped, an extreme number, a control character or a long string put in.
 //! Each goes the whole way a user's file goes (parse, validate, construct on a recording
 //! board, draw the figure), in a thread of its own with a time limit. The promises: no panic,
-//! no hang, an error is one line naming the file, and a figure holds nothing XML forbids.
+//! no hang, an error is one line naming the file, a check table holds no NaN or infinity,
+//! and a figure holds nothing XML forbids.
 //!
 //! The seed is fixed (`FUZZ_SEED` picks another), so a failure repeats; the budget
 //! (`FUZZ_SECONDS`, default 40 s) bounds the run on CI's two cores.
@@ -130,6 +131,13 @@ fn run(text: &str) -> Result<(), String> {
                 Some(field) => line(format!("fuzz.json: {field}: {e}")),
                 None => line(format!("fuzz.json: {e}")),
             })?;
+    // An accepted scene's check table holds numbers: no NaN, no infinity.
+    for c in board.checks() {
+        let row = [c.constructed, c.closed_form, c.error, c.tolerance, c.bound];
+        if !row.iter().all(|x| x.is_finite()) {
+            return Err(format!("BUG: {} is {row:?} in the check table", c.quantity));
+        }
+    }
     let svg = render::figure(&problem.figure_meta(), &board, None);
     let forbidden = |c: char| (c < ' ' && !matches!(c, '\t' | '\n' | '\r')) || c == '\u{fffe}';
     if svg.chars().any(forbidden) {
