@@ -141,14 +141,18 @@ fn mean_heights(
     }
     let squares = rules::count_squares(&pts, CELL_MM);
     let sq = b.reckon(to_tm(squares), "kg", Label::NONE, ords_read, N_MEAN);
-    let columns = (length / CELL_MM).ceil();
     b.check_within(
         &sq,
         "T_m by counting millimetre squares",
         "kg",
         "LH G.c",
         exact.abs(),
-        || (to_tm(polygon), to_tm(columns * CELL_MM * CELL_MM)),
+        || {
+            (
+                to_tm(polygon),
+                to_tm(rules::count_squares_bound(&pts, CELL_MM)),
+            )
+        },
     );
     out.push(MeanHeight {
         rule: "millimetre squares".into(),
