@@ -129,3 +129,25 @@ fn a_scotch_yoke_scene_names_what_is_wrong() {
         AnyScene::from_json(&scene("\"divisions\": 12 => \"divisions\": 12"), "y.json").unwrap();
     assert_eq!(ok.procedure(), "scotch_yoke");
 }
+
+/// Near a locking position (L = a + R + 1e-5 mm) the offset crank's closed forms keep their
+/// digits: S at 270° against a 50-digit evaluation of P·L/√(L² − (a − R sin θ)²) with the
+/// same f64 inputs (L² − across² cancelled 4e-3 kg of 2.1e7 before).
+#[test]
+fn the_offset_cranks_rod_force_near_locking_keeps_its_digits() {
+    use graphostatik::mechanisms::offset_crank::OffsetCrank;
+    let k = OffsetCrank {
+        crank_radius: 200.0,
+        rod_length: 350.00001,
+        offset: 150.0,
+        crank_pin_speed: 5.0,
+        piston_force: Some(5000.0),
+    };
+    let s = k.exact(270.0).rod_force.abs();
+    // mpmath, 50 digits, on the f64 value of 350.00001.
+    let truth = 20_916_501.137_967_157;
+    assert!((s - truth).abs() <= 1e-12 * truth, "{s} against {truth}");
+    let s = k.exact(269.99).rod_force.abs();
+    let truth = 18_312_492.208_960_244;
+    assert!((s - truth).abs() <= 1e-9 * truth, "{s} against {truth}");
+}

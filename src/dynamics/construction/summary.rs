@@ -277,7 +277,7 @@ fn excess(turning: &[(f64, f64)], t_m: f64, r_m: f64) -> (f64, f64, f64) {
 /// summed division by division, checked against the same sums over the exact turning force
 /// at the same angles. The exact ΔE of the continuous curve is written beside it in the
 /// table; the two differ by the division's resolution, which is the rule's, not the
-/// drawing's (KG Tafel I at 20 divisions: 1185 against 1329 m·kg).
+/// drawing's (LH J's locomotive at 20 divisions: 1185 against 1329 m·kg).
 fn flywheel(
     b: &mut Board,
     e: &Engine,
