@@ -4,6 +4,11 @@
 //! cost per object is each stage's time over the objects the board drew; the spread of that
 //! cost across scenes says whether the cost follows what is drawn. `cargo bench --bench
 //! render` prints the table in Markdown (median of 5 runs each).
+//!
+//! Then the batch: `graphostatik render scenes --out DIR` as a user runs it (the process, its
+//! files written and synced), on one core and on two, SVG alone and with PNG and PDF, and the
+//! speed-up two cores give (median of 5 runs; CPU time beside the wall time, since the
+//! machine is shared).
 
 use graphostatik::protocol::BoardConfig;
 use graphostatik::render::{export, figure};
@@ -89,4 +94,70 @@ fn main() {
             all_t[k] * 1e6 / all_objects as f64
         );
     }
+    batch_on_cores(dir);
+}
+
+/// The wall and CPU time (user + system, of the process and its threads) of one run of the
+/// command line.
+fn run_once(args: &[&str]) -> (f64, f64) {
+    let cpu = || {
+        // The waited-for children's CPU time: cutime + cstime of /proc/self/stat, in ticks
+        // of 1/100 s (Linux; NaN elsewhere).
+        std::fs::read_to_string("/proc/self/stat")
+            .ok()
+            .and_then(|s| {
+                let f: Vec<f64> = s
+                    .rsplit(')')
+                    .next()?
+                    .split_whitespace()
+                    .filter_map(|x| x.parse().ok())
+                    .collect();
+                // cutime and cstime: fields 16 and 17 of stat, 12 and 13 of the numbers after
+                // the name (the state, field 3, is a letter).
+                Some((f.get(12)? + f.get(13)?) / 100.0)
+            })
+            .unwrap_or(f64::NAN)
+    };
+    let (c0, s) = (cpu(), Instant::now());
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_graphostatik"))
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    (s.elapsed().as_secs_f64(), cpu() - c0)
+}
+
+/// `render` of the bundled scenes on one and on two cores.
+fn batch_on_cores(dir: &str) {
+    let out = std::env::temp_dir().join(format!("gs-bench-render-{}", std::process::id()));
+    let out_s = out.to_string_lossy().to_string();
+    println!();
+    println!("| render {dir} | 1 core: wall s (CPU s) | 2 cores: wall s (CPU s) | speed-up |");
+    println!("|---|---:|---:|---:|");
+    for formats in ["svg", "svg,png,pdf"] {
+        let time = |jobs: &str| {
+            let mut runs: Vec<(f64, f64)> = (0..5)
+                .map(|_| {
+                    let args = ["-q", "render", dir, "--out", &out_s, "--jobs", jobs];
+                    run_once(&[&args[..], &["--format", formats]].concat())
+                })
+                .collect();
+            runs.sort_by(|a, b| a.0.total_cmp(&b.0));
+            runs[2]
+        };
+        let (one, two) = (time("1"), time("2"));
+        println!(
+            "| --format {formats} | {:.3} ({:.2}) | {:.3} ({:.2}) | {:.2}x |",
+            one.0,
+            one.1,
+            two.0,
+            two.1,
+            one.0 / two.0
+        );
+    }
+    let _ = std::fs::remove_dir_all(&out);
 }

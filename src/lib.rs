@@ -51,14 +51,15 @@
 //!    around it, `serve`, the live preview, and the `graphostatik` command line (feature
 //!    `cli`, on by default).
 //!
-//! [`prelude`] gathers what a construction in Rust needs; [`fmt`] and [`io`] are helpers
-//! (fixed number formatting, atomic writes).
+//! [`prelude`] gathers what a construction in Rust needs; [`fmt`], [`io`] and [`jobs`] are
+//! helpers (fixed number formatting, atomic writes, jobs on every core).
 #![warn(missing_docs)]
 
 pub mod crank;
 pub mod dynamics;
 pub mod fmt;
 pub mod io;
+pub mod jobs;
 pub mod kernel;
 pub mod mechanisms;
 pub mod prelude;

@@ -227,6 +227,7 @@ enum TableFormat {
 }
 
 /// Input errors: exit status 2, one line naming the place.
+#[derive(Debug)]
 struct Fail(String);
 
 fn scene_files(args: &[PathBuf]) -> Result<Vec<PathBuf>, Fail> {
@@ -427,14 +428,10 @@ impl Exports {
         Ok(Exports { formats, dpi })
     }
 
-    /// The files of one constructed scene, by extension, and what is to be said of its
-    /// lettering once they are written (the labels the crowd rule left out).
-    fn files(
-        &self,
-        f: &Path,
-        p: &AnyProblem,
-        board: &graphostatik::protocol::Board,
-    ) -> Result<Written, Fail> {
+    /// One constructed scene drawn: its SVG and TikZ (which need the board) and what is to be
+    /// said of its lettering once the files are written (the labels the crowd rule left out).
+    /// PNG and PDF are made from the SVG afterwards, each a job of its own.
+    fn draw(&self, f: &Path, p: &AnyProblem, board: &Board) -> Result<Drawn, Fail> {
         let meta = p.figure_meta();
         let (svg, lettering) = render::figure_lettered(&meta, board, None);
         let labels = (lettering.left_out > 0).then(|| {
@@ -449,20 +446,27 @@ impl Exports {
             (Some(a), Some(b)) => Some(format!("{a}\n{b}")),
             (a, b) => a.or(b),
         };
+        let tikz = self.formats.contains(&Format::Tikz).then(|| {
+            render::export::tikz(&meta, board)
+                .map(String::into_bytes)
+                .map_err(|e| Fail(format!("{}: {e}", f.display())))
+        });
+        Ok(Drawn {
+            svg,
+            tikz,
+            note,
+            objects: board.object_count(),
+        })
+    }
+
+    /// The raster and page formats, made from a drawn figure's SVG.
+    fn export(&self, f: &Path, fmt: Format, svg: &str) -> Result<Vec<u8>, Fail> {
         let failed = |e: render::export::ExportError| Fail(format!("{}: {e}", f.display()));
-        let mut out = Vec::new();
-        for &fmt in &self.formats {
-            let bytes = match fmt {
-                Format::Svg => svg.clone().into_bytes(),
-                Format::Png => render::export::png(&svg, self.dpi).map_err(failed)?,
-                Format::Pdf => render::export::pdf(&svg).map_err(failed)?,
-                Format::Tikz => render::export::tikz(&meta, board)
-                    .map_err(failed)?
-                    .into_bytes(),
-            };
-            out.push((fmt.extension(), bytes));
+        match fmt {
+            Format::Png => render::export::png(svg, self.dpi).map_err(failed),
+            Format::Pdf => render::export::pdf(svg).map_err(failed),
+            Format::Svg | Format::Tikz => unreachable!("drawn with the board"),
         }
-        Ok(Written { files: out, note })
     }
 }
 
@@ -520,21 +524,34 @@ struct Written {
     note: Option<String>,
 }
 
-/// Renders each scene in every format asked for on every core the machine offers. The scenes are
-/// handed out one at a time (a large truss does not hold up the small ones behind it) and the
-/// results come back in the order of `files`, so the output and the first error reported are
-/// those of a serial run.
+/// A scene constructed and drawn: what needs its board.
+struct Drawn {
+    svg: String,
+    tikz: Option<Result<Vec<u8>, Fail>>,
+    note: Option<String>,
+    /// The board's objects: what a PNG or PDF of it costs (some 76 µs each).
+    objects: usize,
+}
+
+/// Renders each scene in every format asked for on every core the machine offers, in two
+/// rounds of jobs handed out dearest first ([`graphostatik::jobs::dearest_first`]): each
+/// scene read, constructed and drawn (the dearest guessed by the scene file's size), then
+/// every PNG and PDF on its own (their cost, by far the largest, follows the drawn objects).
+/// The results come back in the order of `files`, so the output and the first error reported
+/// are those of a serial run.
 fn render_all(
     files: &[PathBuf],
     jobs: Option<u16>,
     exports: &Exports,
 ) -> Vec<Result<Written, Fail>> {
+    let workers = jobs.map(usize::from).unwrap_or_else(cores);
     let done = std::sync::atomic::AtomicUsize::new(0);
-    let one = |f: &PathBuf| -> Result<Written, Fail> {
+    let size = |f: &PathBuf| std::fs::metadata(f).map_or(0, |m| m.len());
+    let drawn = graphostatik::jobs::dearest_first(files, size, workers, |f| {
         let start = std::time::Instant::now();
         let p = load(f)?;
         let board = construct(f, &p)?;
-        let written = exports.files(f, &p, &board)?;
+        let drawn = exports.draw(f, &p, &board)?;
         if verbosity() >= 2 {
             eprintln!(
                 "{}: {} steps, {} checks, {:.1} ms",
@@ -546,34 +563,45 @@ fn render_all(
         }
         let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
         progress(k, files.len(), "scenes");
-        Ok(written)
-    };
-    let workers = jobs.map(usize::from).unwrap_or_else(cores).min(files.len());
-    if workers <= 1 {
-        return files.iter().map(one).collect();
-    }
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let slots: Vec<std::sync::Mutex<Option<Result<Written, Fail>>>> =
-        files.iter().map(|_| Default::default()).collect();
-    std::thread::scope(|s| {
-        for _ in 0..workers {
-            s.spawn(|| loop {
-                let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                let Some(f) = files.get(i) else { break };
-                let r = one(f);
-                *slots[i].lock().unwrap_or_else(|e| e.into_inner()) = Some(r);
-            });
-        }
+        Ok(drawn)
     });
-    slots
-        .into_iter()
-        .zip(files)
-        .map(|(slot, f)| {
-            slot.into_inner()
-                .unwrap_or_else(|e| e.into_inner())
-                .unwrap_or_else(|| Err(Fail(format!("{}: rendering stopped", f.display()))))
+    // Past the first scene that failed nothing is written: its exports are not made.
+    let upto = drawn.iter().position(Result::is_err).unwrap_or(drawn.len());
+    let raster: Vec<(usize, Format)> = exports
+        .formats
+        .iter()
+        .filter(|f| matches!(f, Format::Png | Format::Pdf))
+        .flat_map(|&fmt| (0..upto).map(move |i| (i, fmt)))
+        .collect();
+    let objects = |&(i, _): &(usize, Format)| drawn[i].as_ref().map_or(0, |d| d.objects as u64);
+    let made = graphostatik::jobs::dearest_first(&raster, objects, workers, |&(i, fmt)| {
+        let d = drawn[i].as_ref().expect("exports only of drawn scenes");
+        exports.export(&files[i], fmt, &d.svg)
+    });
+    let mut made: std::collections::BTreeMap<(usize, Format), Result<Vec<u8>, Fail>> =
+        raster.into_iter().zip(made).collect();
+    let written = drawn.into_iter().enumerate().map(|(i, d)| {
+        let mut d = d?;
+        if i > upto {
+            return Err(Fail(format!("{}: not rendered", files[i].display())));
+        }
+        let mut out = Vec::new();
+        for &fmt in &exports.formats {
+            let bytes = match fmt {
+                Format::Svg => std::mem::take(&mut d.svg).into_bytes(),
+                Format::Tikz => d.tikz.take().expect("drawn when asked for")?,
+                _ => made
+                    .remove(&(i, fmt))
+                    .expect("made for every drawn scene")?,
+            };
+            out.push((fmt.extension(), bytes));
+        }
+        Ok(Written {
+            files: out,
+            note: d.note,
         })
-        .collect()
+    });
+    written.collect()
 }
 
 /// What `render` and `forces` say on standard error when a check of the construction they

@@ -149,7 +149,7 @@ fn edges(mods: &BTreeMap<Module, PathBuf>) -> BTreeMap<Module, BTreeSet<Module>>
 fn layer(m: &Module) -> usize {
     match m.first().map(String::as_str) {
         None => 6, // lib.rs, main.rs: the crate root and the command line
-        Some("kernel" | "fmt" | "io") => 0,
+        Some("kernel" | "fmt" | "io" | "jobs") => 0,
         Some("protocol") => 1,
         Some("crank" | "dynamics" | "mechanisms" | "statics" | "truss") => 2,
         Some("scene") => 3,

@@ -733,6 +733,41 @@ fn render_on_every_core_writes_what_a_serial_run_writes_and_names_the_first_bad_
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(!out.exists());
     }
+    // Every format, the PNGs and PDFs made as jobs of their own: the same bytes on any number
+    // of cores.
+    for bad in ["s3b.json", "s6b.json"] {
+        std::fs::remove_file(mixed.join(bad)).unwrap();
+    }
+    let formats = |out: &Path, jobs: &str| {
+        let o = Command::new(bin())
+            .arg("render")
+            .arg(&mixed)
+            .arg("--out")
+            .arg(out)
+            .args([
+                "--jobs",
+                jobs,
+                "--format",
+                "svg,png,pdf,tikz",
+                "--dpi",
+                "30",
+            ])
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    };
+    let (a, b) = (dir.join("formats-1"), dir.join("formats-3"));
+    formats(&a, "1");
+    formats(&b, "3");
+    let names: Vec<_> = std::fs::read_dir(&a)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names.len(), 8 * 4);
+    for name in names {
+        let same = std::fs::read(a.join(&name)).unwrap() == std::fs::read(b.join(&name)).unwrap();
+        assert!(same, "{name:?} differs between --jobs 1 and --jobs 3");
+    }
     std::fs::remove_dir_all(&dir).ok();
 }
 
