@@ -90,6 +90,9 @@ pub struct CheckLine {
     pub step: u32,
     /// What is checked.
     pub quantity: String,
+    /// The object checked, where the quantity does not name it ("member 5").
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub object: Option<String>,
     /// Its unit.
     pub unit: String,
     /// The value read off the construction.
@@ -221,6 +224,7 @@ fn built(
         .map(|(step, c)| CheckLine {
             step,
             quantity: c.quantity.to_string(),
+            object: c.object.as_deref().map(str::to_string),
             unit: c.unit.to_string(),
             constructed: c.constructed,
             closed_form: c.closed_form,

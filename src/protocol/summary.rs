@@ -157,6 +157,7 @@ mod tests {
 
     fn check(quantity: &'static str, error: f64, passed: bool) -> Check {
         Check {
+            object: None,
             quantity: Cow::Borrowed(quantity),
             unit: Cow::Borrowed("kg"),
             constructed: 1.0 + error,

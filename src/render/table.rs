@@ -11,6 +11,9 @@ pub struct CheckRow {
     pub step: String,
     /// The situation ("θ = 30°").
     pub context: String,
+    /// The object checked, where the quantity does not name it ("member 5").
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub object: Option<String>,
     /// The quantity.
     pub quantity: String,
     /// Unit.
@@ -54,6 +57,7 @@ fn check_row(step: StepId, context: Option<&str>, c: &Check) -> CheckRow {
     CheckRow {
         step: step.to_string(),
         context: context.unwrap_or("").to_string(),
+        object: c.object.as_deref().map(str::to_string),
         quantity: c.quantity.to_string(),
         unit: c.unit.to_string(),
         constructed: c.constructed,
@@ -185,7 +189,18 @@ fn check_cells(
     count: Option<(u64, u64)>,
 ) {
     cells.cell(|s| push_uint_padded(s, step.0.into(), 3));
-    cells.cell(|s| s.push_str(context.unwrap_or("")));
+    // The situation, and the object where the quantity does not name it: "P: joint B0,
+    // member 5".
+    cells.cell(|s| {
+        let context = context.unwrap_or("");
+        s.push_str(context);
+        if let Some(object) = &c.object {
+            if !context.is_empty() {
+                s.push_str(", ");
+            }
+            s.push_str(object);
+        }
+    });
     cells.cell(|s| {
         s.push_str(&c.quantity);
         s.push_str(" [");

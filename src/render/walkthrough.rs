@@ -303,7 +303,10 @@ fn checks_table(step: &Step) -> String {
             "<tr class=\"{}\"><td>{} [{}]<br><small>{}</small></td><td>{}</td><td>{}</td>\
              <td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
             if c.passed { "wt-ok" } else { "wt-fail" },
-            html_text(&c.quantity),
+            html_text(&match &c.object {
+                Some(object) => format!("{}, {object}", c.quantity),
+                None => c.quantity.to_string(),
+            }),
             html_text(&c.unit),
             html_text(&c.formula),
             crate::fmt::num(c.constructed, 6),

@@ -300,7 +300,7 @@ impl<'a> Found<'a> {
                     N_FORCE,
                 );
                 let v = b.measure(&pl, &pr, &mline[m], kg, member_label(b, t, m), N_FORCE);
-                check_member(b, &v, m, sol, self.reference);
+                check_member(b, t, &v, m, sol, self.reference);
                 self.forces[m] = Some(v.g);
                 self.ids[m] = v.id;
                 self.plan_mm[m] = (pr.g - pl.g).norm();

@@ -116,7 +116,7 @@ pub(crate) fn joint_polygons(
             continue;
         };
         for (m, h, mm) in found {
-            check_member(b, &h, m, sol, p.reference);
+            check_member(b, t, &h, m, sol, p.reference);
             p.force[m] = Some(h.g);
             p.ids[m] = h.id;
             p.plan_mm[m] = mm;

@@ -164,20 +164,24 @@ pub(crate) fn member_check_reference(ctx: &PlanContext) -> f64 {
 /// `reference` ([`member_check_reference`]).
 pub(crate) fn check_member(
     b: &mut Board,
+    t: &Truss,
     value: &H<f64>,
     m: usize,
     sol: Option<&Solution>,
     reference: f64,
 ) {
     if let Some(sol) = sol {
-        b.check(
-            value,
-            "member force (tension +)",
-            "kg",
-            "joint equilibrium, sparse LU (faer)",
-            reference,
-            || sol.members[m],
-        );
+        let name = || format!("member {}", t.members[m].name);
+        b.checking(name, |b| {
+            b.check(
+                value,
+                "member force (tension +)",
+                "kg",
+                "joint equilibrium, sparse LU (faer)",
+                reference,
+                || sol.members[m],
+            )
+        });
     }
 }
 

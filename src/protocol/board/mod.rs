@@ -135,6 +135,9 @@ pub struct Board {
     extent: Option<[f64; 4]>,
     #[serde(skip)]
     context: Option<std::sync::Arc<str>>,
+    /// The object the checks made inside [`Board::checking`] name.
+    #[serde(skip)]
+    checked_object: Option<Text>,
     /// The part of the figure the next steps draw in.
     #[serde(skip)]
     part: Part,
@@ -188,6 +191,7 @@ impl Board {
             extent: None,
             recording,
             context: None,
+            checked_object: None,
             part: Part::default(),
             next_step: 0,
             last_touched: false,
@@ -494,6 +498,27 @@ impl Board {
             l.contexts.push((StepId(self.next_step + 1), None));
         }
         self.context = None;
+    }
+
+    /// Runs `checks` with their object named by `object` (made on a recording board only):
+    /// the check table then says which member a member force is ("member 5"), where the
+    /// quantity is the same for every member.
+    ///
+    /// ```
+    /// use graphostatik::protocol::{Board, Label, Note, Topic};
+    /// let n = Note::new("sum", Topic::Custom("doc"));
+    /// let mut b = Board::recording();
+    /// let s = b.tally(2400.0, "kg", Label::NONE, &[], n);
+    /// let closed = || 2400.0;
+    /// b.checking(|| "member 5".into(), |b| b.check(&s, "member force", "kg", "ΣY = 0", 1.0, closed));
+    /// assert_eq!(b.steps().last().unwrap().checks[0].object.as_deref(), Some("member 5"));
+    /// ```
+    pub fn checking(&mut self, object: impl FnOnce() -> String, checks: impl FnOnce(&mut Board)) {
+        if self.recording {
+            self.checked_object = Some(object().into());
+        }
+        checks(self);
+        self.checked_object = None;
     }
 
     /// The protocol as pretty JSON (deterministic: objects and steps in the order made).

@@ -140,6 +140,7 @@ impl Board {
             value.id,
             Check {
                 quantity,
+                object: self.checked_object.clone(),
                 unit,
                 constructed: value.g,
                 closed_form: closed,
