@@ -166,12 +166,32 @@ pub struct Part {
     pub row: u16,
     /// The column, from the left.
     pub col: u16,
+    /// Whether the layout sets the part out in its row alone: its top level with the row's,
+    /// a gap right of the part before it in the row, whatever the parts of other rows are
+    /// (a truss's drawing, force polygon and plan, each constructed at its own origin and of
+    /// another size in every load case). Otherwise the part keeps the height it was
+    /// constructed at and moves with its column, so that what a row or a column shares (a
+    /// diagram's base line through the centre of the crank beside it) stays shared.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub packed: bool,
 }
 
 impl Part {
     /// The part in row `row` and column `col`.
     pub const fn at(row: u16, col: u16) -> Part {
-        Part { row, col }
+        Part {
+            row,
+            col,
+            packed: false,
+        }
+    }
+    /// The part in row `row` and column `col`, set out in its row alone ([`Part::packed`]).
+    pub const fn packed(row: u16, col: u16) -> Part {
+        Part {
+            row,
+            col,
+            packed: true,
+        }
     }
     /// Whether it is the first row's first column (where a figure that names no part is).
     pub fn is_first(&self) -> bool {

@@ -9,6 +9,10 @@
 //! no gap between them is wider than the gap, so the sheet has no large empty regions of the
 //! layout's making. Parts in one cell keep the positions they were constructed at.
 //!
+//! A part that is set out in its row alone ([`Part::packed`]: a truss's drawing, force
+//! polygon and plan, of another size in every load case) belongs to no column: its top is
+//! set level with its row's, and it stands a gap right of the part before it in the row.
+//!
 //! A part's extent is that of its solid drawing (points, segments, vectors, circles, arcs,
 //! curves, tables; not the lines, which the figure clips to the reach of the solids) with
 //! [`PART_MARGIN`] around it for the lettering.
@@ -78,6 +82,37 @@ pub fn overlapping_pairs(boxes: &[PartBox]) -> usize {
         .sum()
 }
 
+/// How far each part set out in its row alone ([`Part::packed`]) is moved: up or down to
+/// the highest top of its row's parts, and across to a gap right of the part before it in
+/// the row (the first at the sheet's left edge); `boxes` moved with them.
+fn packed(boxes: &mut [PartBox]) -> BTreeMap<Part, Vector> {
+    let left = boxes
+        .iter()
+        .map(|b| b.bounds[0])
+        .fold(f64::INFINITY, f64::min);
+    let mut tops: BTreeMap<u16, f64> = BTreeMap::new();
+    for b in boxes.iter() {
+        let top = tops.entry(b.part.row).or_insert(b.bounds[3]);
+        *top = top.max(b.bounds[3]);
+    }
+    let mut shift = BTreeMap::new();
+    let mut right: BTreeMap<u16, f64> = BTreeMap::new();
+    // Boxes are in part order: by row, then column.
+    for b in boxes.iter_mut().filter(|b| b.part.packed) {
+        let cursor = right.get(&b.part.row).map_or(left, |r| r + PART_GAP);
+        let d = Vector::new(cursor - b.bounds[0], tops[&b.part.row] - b.bounds[3]);
+        b.bounds = [
+            b.bounds[0] + d.x,
+            b.bounds[1] + d.y,
+            b.bounds[2] + d.x,
+            b.bounds[3] + d.y,
+        ];
+        right.insert(b.part.row, b.bounds[2]);
+        shift.insert(b.part, d);
+    }
+    shift
+}
+
 /// How far each row (down) and each column (across) is moved: `(row offsets in y, column
 /// offsets in x)`, the first row and column left where they are.
 fn offsets(boxes: &[PartBox]) -> (BTreeMap<u16, f64>, BTreeMap<u16, f64>) {
@@ -87,8 +122,11 @@ fn offsets(boxes: &[PartBox]) -> (BTreeMap<u16, f64>, BTreeMap<u16, f64>) {
         let [x0, y0, x1, y1] = b.bounds;
         let r = rows.entry(b.part.row).or_insert([y0, y1]);
         *r = [r[0].min(y0), r[1].max(y1)];
-        let c = cols.entry(b.part.col).or_insert([x0, x1]);
-        *c = [c[0].min(x0), c[1].max(x1)];
+        // A part set out in its row alone is in no column.
+        if !b.part.packed {
+            let c = cols.entry(b.part.col).or_insert([x0, x1]);
+            *c = [c[0].min(x0), c[1].max(x1)];
+        }
     }
     let mut dy = BTreeMap::new();
     let mut bottom: Option<f64> = None;
@@ -110,17 +148,19 @@ fn offsets(boxes: &[PartBox]) -> (BTreeMap<u16, f64>, BTreeMap<u16, f64>) {
 /// The board with its parts set out, or `None` where it draws in one part only (then it is
 /// drawn as constructed).
 pub fn laid_out(board: &Board) -> Option<Board> {
-    let boxes = part_boxes(board);
+    let mut boxes = part_boxes(board);
     if boxes.len() < 2 {
         return None;
     }
+    let own = packed(&mut boxes);
     let (dy, dx) = offsets(&boxes);
     let mut moved = board.clone();
     moved.move_parts(|p| {
-        Vector::new(
-            dx.get(&p.col).copied().unwrap_or(0.0),
-            dy.get(&p.row).copied().unwrap_or(0.0),
-        )
+        let row = Vector::new(0.0, dy.get(&p.row).copied().unwrap_or(0.0));
+        match own.get(&p) {
+            Some(v) => v + row,
+            None => Vector::new(dx.get(&p.col).copied().unwrap_or(0.0), 0.0) + row,
+        }
     });
     Some(moved)
 }
@@ -162,6 +202,40 @@ mod tests {
         assert!((at(3).y - at(5).y).abs() < 1e-9);
         let gap = (0.0 - PART_MARGIN) - (at(4).y + PART_MARGIN);
         assert!((gap - PART_GAP).abs() < 1e-9, "{gap}");
+    }
+
+    #[test]
+    fn packed_parts_stand_in_their_own_row_tops_level_a_gap_apart() {
+        let n = Note::new("p", Topic::Custom("layout"));
+        let mut b = Board::recording();
+        // Two rows of three parts, each constructed at the origin: the first row's parts wide,
+        // the second's narrow; tops at different heights.
+        for (row, w) in [(0u16, 200.0), (1, 20.0)] {
+            for col in 0..3 {
+                b.set_part(Part::packed(row, col));
+                b.point(
+                    Point::new(0.0, -10.0 * f64::from(col)),
+                    Role::Given,
+                    n.clone(),
+                );
+                b.point(Point::new(w, -40.0), Role::Given, n.clone());
+            }
+        }
+        let moved = laid_out(&b).expect("six parts");
+        let boxes = part_boxes(&moved);
+        assert_eq!(overlapping_pairs(&boxes), 0, "{boxes:?}");
+        for row in boxes.chunks(3) {
+            // Tops level, and each part a gap right of the one before, in every row alone.
+            assert!(row
+                .iter()
+                .all(|b| (b.bounds[3] - row[0].bounds[3]).abs() < 1e-9));
+            for pair in row.windows(2) {
+                let gap = pair[1].bounds[0] - pair[0].bounds[2];
+                assert!((gap - PART_GAP).abs() < 1e-9, "{gap}");
+            }
+        }
+        // The narrow row is not spread to the wide row's columns.
+        assert!(boxes[5].bounds[2] < boxes[1].bounds[2], "{boxes:?}");
     }
 
     #[test]

@@ -33,8 +33,8 @@ use super::matrix::{self, Solution};
 use super::notes::*;
 use super::plan::*;
 use super::{JointLoad, LoadCase, SupportKind, Truss};
-use crate::kernel::{Line, Point, Vector};
-use crate::protocol::{Board, ConstructionError, Label, Role, H, TABLE_BLOCK_ROWS};
+use crate::kernel::{Line, Point};
+use crate::protocol::{Board, ConstructionError, Label, Part, Role, H};
 
 pub use super::plan::{CaseResult, ReactionForce, TrussDrawing, ZERO_FORCE_REL};
 
@@ -139,34 +139,33 @@ fn construct(
         vec![None; cases.len()]
     };
     for (case, sol) in cases.iter().zip(sols) {
-        let mut c = Case {
+        let c = Case {
             t,
             g: g.as_ref(),
             case,
             sol: sol.as_ref(),
             dr,
-            at: Layout::ORIGIN,
             sup,
             slack,
             numbered: rows.numbered(t.members.len()),
         };
+        // Each case a row of the sheet, its parts constructed once, each in its own frame.
+        b.set_part(Part::packed(rows.row, TRUSS));
+        b.set_context(|| case.name.clone());
+        let r = construct_case(b, &c)?;
+        b.clear_context();
         // Several cases: each row under its case's name (dead load, wind, snow), as the
         // plates head their plans.
         if cases.len() > 1 {
             let name = vec![vec![case.name.clone()]];
-            b.table(Point::new(0.0, rows.top), name, &[], N_CASE_NAME);
-            rows.top -= HEADING_MM;
+            let [x0, _, _, y1] = r.truss_box;
+            b.set_part(Part::packed(rows.row, TRUSS));
+            b.table(Point::new(x0, y1 + HEADING_MM), name, &[], N_CASE_NAME);
         }
-        // A scratch run fixes where the blocks go; the real run draws them there.
-        let dry = construct_case(&mut b.scratch(), &c)?;
-        let (at, height) = Layout::row(&dry.boxes, rows.top);
-        c.at = at;
-        b.set_context(|| case.name.clone());
-        let r = construct_case(b, &c)?;
-        b.clear_context();
-        rows.top -= height;
+        rows.row += 1;
         out.push(r.result);
     }
+    b.set_part(Part::default());
     Ok(out)
 }
 
@@ -214,7 +213,6 @@ struct Case<'a> {
     case: &'a LoadCase,
     sol: Option<&'a Solution>,
     dr: &'a TrussDrawing,
-    at: Layout,
     sup: Supports,
     slack: &'a [[usize; 2]],
     /// Whether this case's drawing letters its members with their numbers.
@@ -226,12 +224,12 @@ struct Case<'a> {
 /// plan's table uses the same numbers).
 const MEMBER_NUMBERS: usize = 120;
 
-/// Where the next row of a figure of several truss drawings goes, and how many member
-/// numbers its drawings have written ([`construct_truss_rows`]).
+/// The sheet row the next case of a figure of several truss drawings goes in, and how many
+/// member numbers its drawings have written ([`construct_truss_rows`]).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Rows {
-    /// The top of the next row (mm of the sheet; rows go downwards from 0).
-    pub top: f64,
+    /// The row of the next case ([`Part::row`]; rows go downwards from 0).
+    pub row: u16,
     numbers: usize,
 }
 
@@ -262,7 +260,6 @@ fn construct_case(b: &mut Board, c: &Case) -> Result<CaseOut, ConstructionError>
         case,
         sol,
         dr,
-        at,
         sup,
         ..
     } = *c;
@@ -272,9 +269,9 @@ fn construct_case(b: &mut Board, c: &Case) -> Result<CaseOut, ConstructionError>
         .iter()
         .map(|l| l.force.norm())
         .fold(0.0, f64::max);
-    let mut boxes = [EMPTY; 3];
-    let drawn = draw_truss(b, c, &mut boxes)?;
-    let loads = draw_loads(b, c, &drawn.jp, &mut boxes);
+    let mut truss_box = EMPTY;
+    let drawn = draw_truss(b, c, &mut truss_box)?;
+    let loads = draw_loads(b, c, &drawn.jp, &mut truss_box);
     let inp = ReactionInput {
         t,
         sup,
@@ -284,9 +281,8 @@ fn construct_case(b: &mut Board, c: &Case) -> Result<CaseOut, ConstructionError>
         jp: &drawn.jp,
         rlines: &drawn.rlines,
         loads: &loads,
-        at,
     };
-    let reactions = draw_reactions(b, &inp, &mut boxes)?;
+    let reactions = draw_reactions(b, &inp, &mut truss_box)?;
     let external = External::of(t, &loads, reactions, maxload);
     // Bow's notation needs a plane drawing and every external force on the outline;
     // otherwise the joint polygons are drawn one by one (LH Abb. 17a).
@@ -296,23 +292,23 @@ fn construct_case(b: &mut Board, c: &Case) -> Result<CaseOut, ConstructionError>
         ext: &external,
         sol,
         dr,
-        at: at.plan,
+        at: Point::origin(),
         mline: &drawn.mline,
         maxload,
     };
+    column(b, PLAN);
     let (result, plan_box) = match g.filter(|g| outline(t, g, &external).is_ok()) {
         Some(g) => cremona_plan(b, &ctx, g)?,
         None => super::joints::joint_polygons(b, &ctx)?,
     };
     let zero_kg = ZERO_FORCE_REL * check_reference(maxload, &external);
-    boxes[2] = write_table(b, &result, zero_kg, at.plan, plan_box);
+    write_table(b, &result, zero_kg, plan_box);
+    column(b, TRUSS);
     mark_zero_members(b, t, &result, &drawn.jp, zero_kg);
-    for bx in &mut boxes {
-        if !bx[0].is_finite() {
-            *bx = [0.0; 4];
-        }
+    if !truss_box[0].is_finite() {
+        truss_box = [0.0; 4];
     }
-    Ok(CaseOut { result, boxes })
+    Ok(CaseOut { result, truss_box })
 }
 
 /// The truss drawn to scale (Bauplan): joints, members (each the line through its joints,
@@ -321,12 +317,11 @@ fn construct_case(b: &mut Board, c: &Case) -> Result<CaseOut, ConstructionError>
 fn draw_truss(
     b: &mut Board,
     c: &Case,
-    boxes: &mut [[f64; 4]; 3],
+    truss_box: &mut [f64; 4],
 ) -> Result<Drawn, ConstructionError> {
     let Case {
         t,
         dr,
-        at,
         slack,
         numbered,
         ..
@@ -337,8 +332,8 @@ fn draw_truss(
         .iter()
         .enumerate()
         .map(|(i, j)| {
-            let p = at.truss + j.at.coords * k;
-            grow(&mut boxes[0], p, at.truss);
+            let p = Point::from(j.at.coords * k);
+            grow(truss_box, p, Point::origin());
             b.point(p, Role::Given.labelled(joint_label(t, i)), N_JOINT)
         })
         .collect();
@@ -380,11 +375,9 @@ fn draw_loads(
     b: &mut Board,
     c: &Case,
     jp: &[H<Point>],
-    boxes: &mut [[f64; 4]; 3],
+    truss_box: &mut [f64; 4],
 ) -> Vec<JointLoad> {
-    let Case {
-        t, case, dr, at, ..
-    } = *c;
+    let Case { t, case, dr, .. } = *c;
     let mut loads: Vec<JointLoad> = case
         .loads
         .iter()
@@ -398,7 +391,7 @@ fn draw_loads(
     for l in &loads {
         let head = jp[l.joint];
         let tail = b.point(head.g - l.force / dr.force_scale, Role::Given, N_LOAD);
-        grow(&mut boxes[0], tail.g, at.truss);
+        grow(truss_box, tail.g, Point::origin());
         b.segment(
             &tail,
             &head,
@@ -450,31 +443,17 @@ fn table_rows(result: &CaseResult, zero_kg: f64) -> Vec<Vec<String>> {
 }
 
 /// The evaluation of the plan written beside it (LH B.4, "Auswertung"): member, length in
-/// the plan, force, tension or compression, then the reactions by magnitude. Returns the
-/// plan's box grown by the table.
-fn write_table(
-    b: &mut Board,
-    result: &CaseResult,
-    zero_kg: f64,
-    at_plan: Point,
-    plan_box: [f64; 4],
-) -> [f64; 4] {
-    let n = result.members.len() + result.reactions.len();
-    // The rows are written only where the drawing is kept; the table takes its room anyway.
+/// the plan, force, tension or compression, then the reactions by magnitude; `plan_box` is
+/// the plan's extent.
+fn write_table(b: &mut Board, result: &CaseResult, zero_kg: f64, plan_box: [f64; 4]) {
+    // The rows are written only where the drawing is kept.
     let rows = if b.is_drawing() {
         table_rows(result, zero_kg)
     } else {
         Vec::new()
     };
-    let corner = at_plan + Vector::new(plan_box[2] + 12.0, plan_box[3]);
+    let corner = Point::new(plan_box[2] + 12.0, plan_box[3]);
     b.table(corner, rows, &[], N_TABLE);
-    let mut plan_box = plan_box;
-    // Room for the table: blocks of at most TABLE_BLOCK_ROWS rows side by side, each about
-    // 75 mm wide, 3.6 mm per row.
-    let blocks = n.div_ceil(TABLE_BLOCK_ROWS).max(1);
-    plan_box[2] += 12.0 + 75.0 * blocks as f64;
-    plan_box[1] = plan_box[1].min(plan_box[3] - 3.6 * (n.min(TABLE_BLOCK_ROWS) as f64 + 1.0));
-    plan_box
 }
 
 /// Zero-force members (Nullstäbe) marked in the truss drawing.

@@ -3,7 +3,7 @@
 //! moment equations and the sparse solve.
 
 use super::labels::support_label;
-use super::layout::{grow, Layout};
+use super::layout::{column, grow, part_of, POLYGON, TRUSS};
 use super::matrix::Solution;
 use super::notes::*;
 use super::{JointLoad, SupportKind, Truss};
@@ -170,6 +170,7 @@ pub(super) fn culmann(
     let p = b.meet_point(&rl, &lk, Label::quiet("P", 0), N_CULMANN_P)?;
     let q = b.meet_point(&li, &lj, Label::quiet("Q", 0), N_CULMANN_Q)?;
     let c = b.line_through(&p, &q, Role::Construction.named("c"), N_CULMANN)?;
+    column(b, POLYGON);
     let (f0, last) = (fh[0], fh[n]);
     let along_k = b.parallel(&lk, &last, Role::Auxiliary, N_CULMANN_PLAN);
     let along_c = b.parallel(&c, &f0, Role::Auxiliary, N_CULMANN_PLAN);
@@ -309,7 +310,6 @@ pub(super) struct ReactionInput<'a> {
     pub(super) jp: &'a [H<Point>],
     pub(super) rlines: &'a [Option<H<Line>>],
     pub(super) loads: &'a [JointLoad],
-    pub(super) at: Layout,
 }
 
 /// The reactions by the funicular polygon, one vector per support (LH C.2): the loads' force
@@ -319,7 +319,7 @@ pub(super) struct ReactionInput<'a> {
 pub(super) fn draw_reactions(
     b: &mut Board,
     inp: &ReactionInput,
-    boxes: &mut [[f64; 4]; 3],
+    truss_box: &mut [f64; 4],
 ) -> Result<Vec<Vector>, ConstructionError> {
     let ReactionInput {
         t,
@@ -327,7 +327,6 @@ pub(super) fn draw_reactions(
         fs,
         jp,
         loads,
-        at,
         ..
     } = *inp;
     let mut reactions = vec![Vector::zeros(); t.supports.len()];
@@ -338,12 +337,13 @@ pub(super) fn draw_reactions(
         corners: fh,
         pole,
         rays,
-    } = loads_polygon(b, inp, boxes)?;
+    } = loads_polygon(b, inp)?;
     // The first string starts at the pin, or at the first roller.
     let start = match sup {
         Supports::PinRoller { pin, .. } => pin,
         Supports::Rollers(r) => r[0].0,
     };
+    column(b, TRUSS);
     let strings = polygon::strings(
         b,
         &rays,
@@ -356,17 +356,16 @@ pub(super) fn draw_reactions(
         },
     )?;
     for c in &strings.corners {
-        grow(&mut boxes[0], c.g, at.truss);
+        grow(truss_box, c.g, Point::origin());
     }
     let (first, s) = (strings.strings[0], strings.strings[loads.len()]);
     let segs = match sup {
         Supports::PinRoller { pin, roller, .. } => {
-            pin_and_roller(b, inp, (pin, roller), &s, &fh, &pole, boxes)?
+            pin_and_roller(b, inp, (pin, roller), &s, &fh, &pole, truss_box)?
         }
         Supports::Rollers(r) => {
             let mut segs = vec![None; t.supports.len()];
             for (si, from, to) in culmann(b, inp, &first, &s, &fh, &r)? {
-                grow(&mut boxes[1], to.g, at.polygon);
                 segs[si] = Some((from, to));
             }
             segs
@@ -392,15 +391,10 @@ pub(super) fn draw_reactions(
 
 /// The loads laid off head to tail in the order of their joints, the pole, and its rays:
 /// the corners, and (pole, rays).
-fn loads_polygon(
-    b: &mut Board,
-    inp: &ReactionInput,
-    boxes: &mut [[f64; 4]; 3],
-) -> Result<LoadsPolygon, ConstructionError> {
-    let ReactionInput {
-        sup, fs, loads, at, ..
-    } = *inp;
-    let mut corners = vec![at.polygon];
+fn loads_polygon(b: &mut Board, inp: &ReactionInput) -> Result<LoadsPolygon, ConstructionError> {
+    let ReactionInput { sup, fs, loads, .. } = *inp;
+    column(b, POLYGON);
+    let mut corners = vec![Point::origin()];
     for l in loads {
         let c = *corners.last().expect("starts with one corner") + l.force / fs;
         corners.push(c);
@@ -423,9 +417,6 @@ fn loads_polygon(
         fh.push(b.lay_off(&fh[i], &along, len, Role::Force, N_FP)?);
     }
     let polygon::Rays { pole: o, rays } = polygon::pole_and_rays(b, pole, &fh)?;
-    for p in fh.iter().map(|h| h.g).chain([pole]) {
-        grow(&mut boxes[1], p, at.polygon);
-    }
     Ok(LoadsPolygon {
         corners: fh,
         pole: o,
@@ -443,22 +434,21 @@ fn pin_and_roller(
     last_string: &H<Line>,
     fh: &[H<Point>],
     pole: &H<Point>,
-    boxes: &mut [[f64; 4]; 3],
+    truss_box: &mut [f64; 4],
 ) -> Result<Vec<PlanSegment>, ConstructionError> {
-    let ReactionInput {
-        t, jp, rlines, at, ..
-    } = *inp;
+    let ReactionInput { t, jp, rlines, .. } = *inp;
     let mut segs = vec![None; t.supports.len()];
     let last = fh[fh.len() - 1];
     let ri = support_index(t, roller);
     let rline = rlines[ri].expect("a roller has a line");
     let bcut = b.meet_point(last_string, &rline, Label::quiet("b", 0), N_B_CUT)?;
-    grow(&mut boxes[0], bcut.g, at.truss);
+    grow(truss_box, bcut.g, Point::origin());
     let con = Role::Construction;
-    let closing = polygon::closing(b, &jp[pin], &bcut, pole, Label::NONE, con, con)?;
+    // The closing line in the truss drawing, its parallel through the pole in the polygon.
+    let ray_part = part_of(b, POLYGON);
+    let closing = polygon::closing_across(b, (&jp[pin], &bcut), pole, con, ray_part)?;
     let bl = b.parallel(&rline, &last, Role::Auxiliary, N_B_DIR);
     let x = b.meet_point(&closing.ray, &bl, Label::quiet("X", 0), N_SPLIT)?;
-    grow(&mut boxes[1], x.g, at.polygon);
     segs[ri] = Some((last, x));
     segs[support_index(t, pin)] = Some((x, fh[0]));
     Ok(segs)

@@ -11,7 +11,7 @@
 //!   determinate or over-determinate?) and the sparse solve that every plan is checked against;
 //! - [`faces`]: the truss drawn as a plane graph, its faces, and the outer boundary along
 //!   which the external forces are named (Bow's notation);
-//! - [`cremona`]: the procedure: determinacy, the two-pass layout, and per load case the
+//! - [`cremona`]: the procedure: determinacy, and per load case (a row of the sheet) the
 //!   truss drawing, the reactions, the plan and the table of member forces. Privately it
 //!   draws on `graphic_reactions` (the reactions by the closing line, or by Culmann's line
 //!   for three rollers), `plan` (the context shared by `bow` for Bow's notation, `joints` for

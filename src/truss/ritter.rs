@@ -35,12 +35,15 @@ pub(super) fn ritter(
             case.name, t.members[cut[0]].name, t.members[cut[1]].name, t.members[cut[2]].name
         )
     });
-    b.meet(
-        &mline[sec.i],
-        &mline[sec.j],
-        Label::quiet("R", 0),
-        N_RITTER_CUT,
-    );
+    // The moment point: two members' lines cut in the truss drawing.
+    super::layout::in_column(b, super::layout::TRUSS, |b| {
+        b.meet(
+            &mline[sec.i],
+            &mline[sec.j],
+            Label::quiet("R", 0),
+            N_RITTER_CUT,
+        )
+    });
     let m = cut[sec.k];
     let px = pt[sec.known].expect("known space");
     let par = b.parallel(&mline[m], &px, Role::Construction, N_RITTER_PAR);

@@ -227,8 +227,8 @@ impl Board {
         self
     }
 
-    /// A silent board with this board's tolerance: for a dry run that measures where the
-    /// parts of a figure will go before they are drawn.
+    /// A silent board with this board's tolerance: for a trial run whose drawing is not kept
+    /// (the counter-diagonals' trial plans, LH B.5).
     pub fn scratch(&self) -> Board {
         Board {
             tolerance: self.tolerance,

@@ -30,7 +30,7 @@
 //! ```
 
 use crate::kernel::{Line, Point};
-use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Topic, H};
+use crate::protocol::{note, Board, ConstructionError, Label, Note, Part, Role, Topic, H};
 
 const N_POLE: Note = note("pole O", Some("Pol"), "LH C.2, Abb. 22", Topic::ForcePlan);
 const N_RAY: Note = note(
@@ -195,6 +195,22 @@ pub fn closing(
 ) -> Result<Closing, ConstructionError> {
     let line = b.line_through(a, z, role.labelled(label), N_CLOSING)?;
     let ray = b.parallel(&line, pole, ray_role, N_CLOSING_RAY);
+    Ok(Closing { line, ray })
+}
+
+/// [`closing`] in a figure whose funicular polygon and force polygon are parts of their own
+/// (a truss's drawing and its reactions' polygon): the unlettered closing line drawn in the
+/// board's part, its parallel through the pole in `ray_part`, where the board goes on drawing.
+pub fn closing_across(
+    b: &mut Board,
+    (a, z): (&H<Point>, &H<Point>),
+    pole: &H<Point>,
+    role: Role,
+    ray_part: Part,
+) -> Result<Closing, ConstructionError> {
+    let line = b.line_through(a, z, role.labelled(Label::NONE), N_CLOSING)?;
+    b.set_part(ray_part);
+    let ray = b.parallel(&line, pole, role, N_CLOSING_RAY);
     Ok(Closing { line, ray })
 }
 
