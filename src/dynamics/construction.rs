@@ -11,6 +11,7 @@ use crate::protocol::{
 };
 
 mod excess;
+mod reduction;
 mod summary;
 
 const N_FOOT: Note = note(
@@ -175,7 +176,13 @@ pub fn construct(
     let want_t = request.turning_force || request.mean_height || request.power || request.flywheel;
     // The sheet: each cylinder a row (its indicator diagrams, its crank figure, its polar
     // diagrams), the turning-force diagram under them, the table under that.
-    let row = |c: usize| Part::at(c as u16, 0);
+    // The cards' reductions first, as the books begin (LH A), each cylinder's a row of
+    // its own and their table under them; the rows after them keep their order.
+    let first = if request.reduction { nc as u16 + 1 } else { 0 };
+    let row = |c: usize| Part::at(first + c as u16, 0);
+    if request.reduction {
+        reduction::reduce_all(bl.b, engine, drawing)?;
+    }
     if request.net_pressure || want_t {
         for c in 0..nc {
             bl.b.set_part(row(c));

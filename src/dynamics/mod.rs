@@ -21,7 +21,7 @@
 //! let side = |p| Side { area_cm2: 100.0, indicator: Indicator::Points {
 //!     working: vec![(0.0, p), (1.0, p)], back: vec![(0.0, 1.0), (1.0, 1.0)] } };
 //! let cyl = Cylinder { name: "1".into(), cover: side(5.0), crank: side(5.0), mass: 0.0,
-//!     offset_deg: 0.0, pump: None };
+//!     offset_deg: 0.0, pump: None, card: None };
 //! let k = Kinematics { r: 300.0, lambda: 0.2, v: 5.0 };
 //! let t_m = mean_turning_force(&k, &[cyl], 1.0);
 //! let p_m = 100.0 * (5.0 - 1.0);
@@ -83,6 +83,10 @@ pub struct DynamicsDrawing {
 /// What to construct; each pulls in only what it needs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
 pub struct DynamicsRequest {
+    /// Each cylinder's indicator card reduced to the new length, redrawn at a new spring
+    /// scale where one is given, and turned into piston forces by the reduction factor
+    /// (LH A, Abb. 42-45).
+    pub reduction: bool,
     /// The net-pressure diagram of each cylinder, with the inertia parabolas and the resulting
     /// curve where the masses are given.
     pub net_pressure: bool,

@@ -202,6 +202,22 @@ pub struct Cylinder {
     /// A double-acting pump on the same piston rod (KG Abb. 1053, 1065-1067), with the
     /// effect `pump`.
     pub pump: Option<Pump>,
+    /// The indicator card as the indicator drew it, where its reduction is to be drawn
+    /// (LH A, Abb. 42-45).
+    pub card: Option<IndicatorCard>,
+}
+
+/// An indicator card as the indicator drew it (LH A, Abb. 42): its length and its spring
+/// scale, and the spring scale it is redrawn at over the new length before the piston forces
+/// (Abb. 44), where the book redraws it so.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct IndicatorCard {
+    /// The card's length l (mm): the stroke as the indicator's reducing gear drew it.
+    pub length_mm: f64,
+    /// Its spring scale f (mm per at): p = a/f (LH Gl. 14).
+    pub spring_mm_per_at: f64,
+    /// The spring scale f′ it is redrawn at (mm per at): a′ = a·f′/f (LH Gl. 15).
+    pub respring_mm_per_at: Option<f64>,
 }
 
 /// A double-acting plunger pump driven directly by the cylinder's piston rod (KG Abb. 1053):
@@ -555,6 +571,7 @@ mod tests {
             mass,
             offset_deg,
             pump: None,
+            card: None,
         }
     }
 

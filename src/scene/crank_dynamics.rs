@@ -37,8 +37,8 @@ super::header::scene_struct! {
         /// What the flywheel must achieve.
         #[serde(default)]
         pub flywheel: Option<FlywheelSpec>,
-        /// What to construct: `net_pressure`, `turning_force`, `mean_height`, `power`,
-        /// `flywheel`.
+        /// What to construct: `reduction`, `net_pressure`, `turning_force`, `mean_height`,
+        /// `power`, `flywheel`.
         pub outputs: Vec<DynamicsOutput>,
         /// Scales; any left out are chosen.
         #[serde(default)]
@@ -78,6 +78,26 @@ pub struct CylinderSpec {
     /// `pump`.
     #[serde(default)]
     pub pump: Option<PumpSpec>,
+    /// The indicator card as the indicator drew it; used with the output `reduction`.
+    #[serde(default)]
+    pub card: Option<CardSpec>,
+}
+
+/// An indicator card as the indicator drew it (LH A, Abb. 42): the output `reduction`
+/// divides it into 10 strips, redraws it over the drawing's stroke (at `respring_mm_per_at`
+/// where given, Abb. 44) and turns it into piston forces at the force scale (Abb. 45).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct CardSpec {
+    /// The card's length l (mm; LH: 30).
+    pub length_mm: f64,
+    /// Its spring scale f: mm for 1 at (LH: 1.5).
+    pub spring_mm_per_at: f64,
+    /// The spring scale f′ it is redrawn at over the new length (mm for 1 at; LH Abb. 44:
+    /// 2.5); absent: the card goes straight to piston forces.
+    #[serde(default)]
+    pub respring_mm_per_at: Option<f64>,
 }
 
 /// A double-acting plunger pump driven by the piston rod (KG Abb. 1053, 1065).
@@ -241,6 +261,9 @@ pub struct FlywheelSpec {
 super::header::output_enum! {
     /// An output of the dynamics procedure.
     pub enum DynamicsOutput {
+        /// Each cylinder's indicator card reduced: 11 ordinates, the new length, the new
+        /// spring scale, the piston forces by the reduction factor (LH A, Abb. 42-45).
+        Reduction = "reduction",
         /// Net pressure, inertia and resulting curves (LH Abb. 58; KG Abb. 1055).
         NetPressure = "net_pressure",
         /// Tangential force on every ray and the turning-force diagram (LH Abb. 67; KG Abb. 1064).
@@ -321,6 +344,7 @@ impl DynamicsScene {
         let mut request = DynamicsRequest::default();
         for o in &self.outputs {
             match o {
+                DynamicsOutput::Reduction => request.reduction = true,
                 DynamicsOutput::NetPressure => request.net_pressure = true,
                 DynamicsOutput::TurningForce => request.turning_force = true,
                 DynamicsOutput::MeanHeight => request.mean_height = true,
@@ -433,6 +457,11 @@ fn cylinder(
         },
         mass,
         offset_deg: c.crank_offset_deg,
+        card: c.card.map(|k| model::IndicatorCard {
+            length_mm: k.length_mm,
+            spring_mm_per_at: k.spring_mm_per_at,
+            respring_mm_per_at: k.respring_mm_per_at,
+        }),
         pump: eta.and_then(|efficiency| {
             c.pump.map(|p| model::Pump {
                 plunger_cm2: area_cm2(p.plunger_mm, 0.0),

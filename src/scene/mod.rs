@@ -58,7 +58,7 @@ pub use combustion::{
     CombustionProblem, CombustionScene, GasCylindersSpec, GasDrawingSpec, GasEffects, GasSpec,
 };
 pub use crank_dynamics::{
-    CylinderSpec, DynamicsDrawingSpec, DynamicsEffects, DynamicsOutput, DynamicsProblem,
+    CardSpec, CylinderSpec, DynamicsDrawingSpec, DynamicsEffects, DynamicsOutput, DynamicsProblem,
     DynamicsScene, FlywheelSpec, IndicatorSpec, MassSpec, PointsSpec, SidePoints, SteamSpec,
     Weights,
 };

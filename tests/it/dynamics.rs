@@ -50,6 +50,59 @@ fn lh_a_reduction_of_the_indicator_diagrams() {
     assert!((area_cm2(450.0, 100.0) - 1511.9).abs() < 0.05);
 }
 
+/// An indicator card of `length` mm at the spring scale `f` mm per at.
+fn card(length: f64, f: f64) -> serde_json::Value {
+    serde_json::json!({"length_mm": length, "spring_mm_per_at": f})
+}
+
+/// LH A, Abb. 42-45 as a construction: every ordinate of both sides redrawn and laid off at
+/// the force scale, the reduction factors read off the drawing, and nothing else built.
+#[test]
+fn the_cards_reduction_is_constructed_and_read_off() {
+    let p = scene(include_str!(
+        "../../scenes/lh_abb42_indicator_reduction.json"
+    ));
+    assert_eq!(
+        p.request,
+        DynamicsRequest {
+            reduction: true,
+            ..Default::default()
+        }
+    );
+    let (b, res) = DynamicsScene::construct(&p, BoardConfig::DRAWING).unwrap();
+    assert!(res.rays.iter().all(Vec::is_empty) && res.turning.is_empty());
+    let count = |q: &str| b.checks().filter(|c| c.quantity.as_ref() == q).count();
+    // 11 ordinates on 4 curves, and the 12 marks of the pressure scale 0 … 11 at abs.
+    assert_eq!(count("ordinate a′ = a·f′/f"), 44 + 12);
+    assert_eq!(count("piston force P = F_w·p"), 44);
+    assert_eq!(count("net piston force P"), 0);
+    assert!(b.checks().all(|c| c.passed));
+    let factors: Vec<f64> = b
+        .checks()
+        .filter(|c| c.quantity.as_ref() == "reduction factor R = a₁/a")
+        .map(|c| c.constructed)
+        .collect();
+    // Cover side first (rod 55 mm), then the crank side (rod 90 mm).
+    let want = [
+        reduction_factor(area_cm2(540.0, 55.0), 1.5, 900.0),
+        reduction_factor(area_cm2(540.0, 90.0), 1.5, 900.0),
+    ];
+    assert_eq!(factors.len(), 2);
+    for (got, want) in factors.iter().zip(want) {
+        assert!((got - want).abs() < 1e-12 * want, "{got} {want}");
+    }
+    // With the net pressure too, the cards' rows come first and the others keep theirs.
+    let both = with(LOCO, |v| {
+        v["outputs"] = serde_json::json!(["reduction", "net_pressure"]);
+        v["cylinders"][0]["card"] = card(30.0, 1.5);
+        v["cylinders"][1]["card"] = card(30.0, 1.5);
+    })
+    .unwrap();
+    let (b, _) = DynamicsScene::construct(&both, BoardConfig::DRAWING).unwrap();
+    let rows: std::collections::BTreeSet<u16> = b.steps().iter().map(|s| s.part.row).collect();
+    assert_eq!(rows.into_iter().collect::<Vec<_>>(), [0, 1, 2, 3, 4]);
+}
+
 #[test]
 fn lh_b4_inertia_of_the_locomotive() {
     // LH B.4: M = q·F/g = 0.28 · π/4 · 54² / 9.81 = 65.3, M·v²/r = 10150, B0 = 11820,
@@ -272,6 +325,7 @@ fn p_m_over_t_m_is_half_pi_for_any_closed_cycle() {
             mass: 50.0 * rnd(),
             offset_deg: 360.0 * rnd(),
             pump: None,
+            card: None,
         };
         let k = Kinematics {
             r: 100.0 + 300.0 * rnd(),
@@ -440,6 +494,33 @@ fn bad_input_names_the_field() {
             Box::new(|v| v["flywheel"]["irregularity"] = 0.into()),
         ),
         ("divisions", Box::new(|v| v["divisions"] = 1.into())),
+        (
+            "cylinders[0].card",
+            Box::new(|v| v["cylinders"][0]["card"] = card(30.0, 1.5)),
+        ),
+        (
+            "cylinders[1].card",
+            Box::new(|v| {
+                v["outputs"] = serde_json::json!(["reduction"]);
+                v["cylinders"][0]["card"] = card(30.0, 1.5);
+            }),
+        ),
+        (
+            "cylinders[0].card.spring_mm_per_at",
+            Box::new(|v| {
+                v["outputs"] = serde_json::json!(["reduction"]);
+                v["cylinders"][0]["card"] = card(30.0, 500.0);
+                v["cylinders"][1]["card"] = card(30.0, 1.5);
+            }),
+        ),
+        (
+            "cylinders[1].card.length_mm",
+            Box::new(|v| {
+                v["outputs"] = serde_json::json!(["reduction"]);
+                v["cylinders"][0]["card"] = card(30.0, 1.5);
+                v["cylinders"][1]["card"] = card(f64::MIN_POSITIVE, 1.5);
+            }),
+        ),
     ];
     for (field, edit) in bad {
         let e = with(LOCO, edit).expect_err(field);

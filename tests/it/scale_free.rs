@@ -20,11 +20,15 @@ fn times(v: &mut Value, f: f64) {
     }
 }
 
-/// Lengths (`*_mm`) × k, weights (`*_kg`, and every weight in a table of them) × k³.
+/// Lengths (`*_mm`) × k, weights (`*_kg`, and every weight in a table of them) × k³; an
+/// indicator card is paper, drawn at its own size as the drawing's scales are.
 fn scale(v: &mut Value, k: f64) {
     match v {
         Value::Object(m) => {
             for (key, x) in m.iter_mut() {
+                if key == "card" {
+                    continue;
+                }
                 if key.ends_with("_mm") && !key.ends_with("per_mm") {
                     times(x, k);
                 } else if key.ends_with("_kg") {

@@ -418,6 +418,30 @@ impl Board {
         H { id, g: id }
     }
 
+    /// Draws a curve the scene gives point by point (an indicator card as the indicator drew
+    /// it, LH Abb. 42): given, not constructed, so its points are no objects of the
+    /// construction and nothing is read off them but what a later step lays off itself.
+    /// Drawn only on a recording board; the figure grows to hold it.
+    pub fn given_curve(
+        &mut self,
+        points: &[Point],
+        trace: Trace,
+        mark: impl Into<Mark>,
+        note: Note,
+    ) {
+        if !self.recording {
+            return;
+        }
+        let Mark { label, role } = mark.into();
+        let pts: Vec<Point> = points.iter().map(|&p| self.mark(p)).collect();
+        pts.iter().for_each(|p| self.grow(p));
+        self.begin(StepKind::Given, &note, &[]);
+        self.add(label, role, || Geom::Curve {
+            points: pts,
+            smooth: trace == Trace::Smooth,
+        });
+    }
+
     /// Divides the segment from `a` to `b` into `n ≥ 1` equal parts: the `n + 1` division
     /// points, ends included (the ends are the given points themselves).
     pub fn divide_segment(

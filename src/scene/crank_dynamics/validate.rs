@@ -2,11 +2,16 @@
 
 use super::super::fields::Fields;
 use super::super::SceneError;
-use super::{CylinderSpec, DynamicsScene, IndicatorSpec, MassSpec, SidePoints, SteamSpec};
+use super::{
+    CylinderSpec, DynamicsOutput, DynamicsScene, IndicatorSpec, MassSpec, SidePoints, SteamSpec,
+};
 use crate::kernel::tolerance::MAX_DIVISIONS;
 
 /// At most this many cylinders on one shaft.
 const MAX_CYLINDERS: usize = 64;
+/// The largest and the smallest card the output `reduction` draws (mm, length or height).
+const MAX_CARD_MM: f64 = 1000.0;
+const MIN_CARD_MM: f64 = 1.0;
 /// At most this many digitised points per curve.
 const MAX_POINTS: usize = 100_000;
 
@@ -33,6 +38,7 @@ impl DynamicsScene {
             check_cylinder(f, &format!("cylinders[{i}]"), c, 2.0 * r, inertia)?;
         }
         self.check_pumps(f)?;
+        self.check_cards(f)?;
         if let Some(fw) = &self.flywheel {
             if !(fw.irregularity.is_finite() && fw.irregularity > 0.0 && fw.irregularity < 1.0) {
                 return Err(f.bad(
@@ -116,6 +122,41 @@ impl DynamicsScene {
                         p.delivery_at
                     ),
                 ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The cards: every cylinder's given with the output `reduction` and none without it;
+    /// a length and spring scales that draw a card of at most a metre.
+    fn check_cards(&self, f: Fields) -> Result<(), SceneError> {
+        let on = self.outputs.contains(&DynamicsOutput::Reduction);
+        for (i, c) in self.cylinders.iter().enumerate() {
+            let at = format!("cylinders[{i}].card");
+            let Some(card) = c.card else {
+                if on {
+                    return Err(f.bad(&at, "missing: the output `reduction` reduces every cylinder's indicator card: give its length_mm and spring_mm_per_at".into()));
+                }
+                continue;
+            };
+            if !on {
+                return Err(f.bad(&at, "is used only with the output `reduction`: add it to `outputs`, or leave the card out".into()));
+            }
+            let peak = peak_pressure(c).max(1.0);
+            for (name, v, per) in [
+                ("length_mm", card.length_mm, 1.0),
+                ("spring_mm_per_at", card.spring_mm_per_at, peak),
+                (
+                    "respring_mm_per_at",
+                    card.respring_mm_per_at.unwrap_or(1.0),
+                    peak,
+                ),
+            ] {
+                let field = format!("{at}.{name}");
+                f.positive(&field, v)?;
+                if v * per > MAX_CARD_MM || v * per < MIN_CARD_MM {
+                    return Err(f.bad(&field, format!("{v} draws a card {} mm long or high: give one that draws between {MIN_CARD_MM} and {MAX_CARD_MM} mm", crate::fmt::num(v * per, 3))));
+                }
             }
         }
         Ok(())
@@ -347,4 +388,20 @@ fn check_points(
         ));
     }
     Ok(())
+}
+
+/// The highest absolute pressure of a cylinder's diagrams (at), read at the scene's own
+/// values: what a card's spring scale draws as its height.
+fn peak_pressure(c: &CylinderSpec) -> f64 {
+    match &c.indicator {
+        IndicatorSpec::Steam(s) => s.admission_at.max(s.back_at) + if s.gauge { 1.0 } else { 0.0 },
+        IndicatorSpec::Points(p) => {
+            let add = if p.gauge { 1.0 } else { 0.0 };
+            [&p.cover, &p.crank]
+                .iter()
+                .flat_map(|s| s.working.iter().chain(&s.back))
+                .map(|q| q[1] + add)
+                .fold(0.0, f64::max)
+        }
+    }
 }
