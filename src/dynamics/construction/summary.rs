@@ -137,7 +137,7 @@ fn mean_heights(
         || to_tm(polygon),
     );
     if equal {
-        out.extend(equal_strip_rules(&ords));
+        out.extend(equal_strip_rules(b, e, turning, &ords, ords_read));
     }
     let squares = rules::count_squares(&pts, CELL_MM);
     let sq = b.reckon(to_tm(squares), "kg", Label::NONE, ords_read, N_MEAN);
@@ -168,18 +168,61 @@ fn mean_heights(
     out
 }
 
-/// Simpson's rule and the 3/8 rule over ordinates at equal strips, where their count allows.
-fn equal_strip_rules(ords: &[f64]) -> impl Iterator<Item = MeanHeight> {
-    let simpson = rules::simpson(ords).map(|t_m| ("Simpson (Gl. 58)", t_m));
-    let eighths = rules::three_eighths(ords).map(|t_m| ("3/8 rule (Gl. 59)", t_m));
-    [simpson, eighths]
-        .into_iter()
-        .flatten()
-        .map(|(rule, t_m)| MeanHeight {
+/// Simpson's rule and the 3/8 rule over ordinates at equal strips, where their count allows,
+/// each held to the same rule over the exact turning force at the same shaft angles.
+fn equal_strip_rules(
+    b: &mut Board,
+    e: &Engine,
+    turning: &[(f64, f64)],
+    ords: &[f64],
+    ords_read: Weighted<'_>,
+) -> Vec<MeanHeight> {
+    let exact = || -> Vec<f64> {
+        let k = &e.kinematics;
+        let mut t: Vec<f64> = turning
+            .iter()
+            .map(|p| model::turning_force(k, &e.cylinders, e.efficiency, p.0))
+            .collect();
+        t.extend(t.first().copied());
+        t
+    };
+    // Judged at the diagram's largest ordinate: a rule sums the ordinates, whose rounding
+    // follows their size, not the mean's.
+    let largest = ords.iter().fold(0.0f64, |m, t| m.max(t.abs()));
+    type Rule = fn(&[f64]) -> Option<f64>;
+    let rules: [(&str, &str, &str, Rule); 2] = [
+        (
+            "Simpson (Gl. 58)",
+            "T_m by Simpson’s rule",
+            "LH Gl. 56-58",
+            rules::simpson,
+        ),
+        (
+            "3/8 rule (Gl. 59)",
+            "T_m by the 3/8 rule",
+            "LH Gl. 59",
+            rules::three_eighths,
+        ),
+    ];
+    let mut out = Vec::with_capacity(2);
+    for (rule, quantity, formula, apply) in rules {
+        let Some(t_m) = apply(ords) else { continue };
+        // Simpson's weights reach 4/3 of the trapezoid's, the 3/8 rule's 9/8.
+        let weighted = Weighted {
+            weight: ords_read.weight * 4.0 / 3.0,
+            ..ords_read
+        };
+        let value = b.reckon(t_m, "kg", Label::NONE, weighted, N_MEAN);
+        b.check(&value, quantity, "kg", formula, largest, || {
+            apply(&exact()).unwrap_or(f64::NAN)
+        });
+        out.push(MeanHeight {
             rule: rule.into(),
             t_m,
             error: 0.0,
-        })
+        });
+    }
+    out
 }
 
 /// T_m by a simulated polar planimeter traced round the drawn outline (pole below the
