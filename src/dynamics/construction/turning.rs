@@ -43,6 +43,18 @@ const N_T_EACH: Note = note(
     "LH F; KG Abb. 1064",
     Topic::Forces,
 );
+const N_T_SINGLE: Note = note(
+    "a cylinder’s tangential force (times η) laid off alone from the developed circle",
+    Some("Tangentialdruck eines Zylinders"),
+    "LH F, Abb. 67",
+    Topic::Forces,
+);
+const N_CURVE_SINGLE: Note = note(
+    "a single cylinder’s turning-force curve, drawn before their sum",
+    Some("Tangentialdrucklinie eines Zylinders"),
+    "LH F, Abb. 67; KG Abb. 1064",
+    Topic::Forces,
+);
 const N_T_SUM: Note = note(
     "turning force on the shaft read off",
     Some("resultierender Tangentialdruck"),
@@ -103,9 +115,11 @@ impl Builder<'_> {
         let n = self.thetas.len();
         let mut pts: Vec<H<Point>> = Vec::with_capacity(n + 1);
         let mut full: Vec<H<Point>> = Vec::new();
+        let nc = self.e.cylinders.len();
+        let mut singles: Vec<Vec<H<Point>>> = vec![Vec::new(); if nc > 1 { nc } else { 0 }];
         let (mut out, mut ids) = (Vec::with_capacity(n), Vec::with_capacity(n));
         for k in 0..=n {
-            let (foot, end, sum) = self.turning_ordinate(&frame, k)?;
+            let (foot, end, sum) = self.turning_ordinate(&frame, k, &mut singles)?;
             pts.push(end);
             full.extend(self.unreduced(&frame, k, &foot)?);
             if k < n {
@@ -114,6 +128,11 @@ impl Builder<'_> {
             }
         }
         self.b.clear_context();
+        for (c, single) in singles.iter().enumerate() {
+            let name = Label::named(self.e.cylinders[c].name.clone());
+            let mark = Role::Construction.labelled(name);
+            self.b.curve(single, Trace::Polygon, mark, N_CURVE_SINGLE);
+        }
         // Where η < 1, KG Abb. 1062 draws the turning force before and after the reduction:
         // T in a full line, η·T, which the resistance is measured against, apart from it.
         let name = if full.is_empty() { "T" } else { "η·T" };
@@ -156,12 +175,15 @@ impl Builder<'_> {
     }
 
     /// The ordinate at the k-th shaft angle (k = n is 360°): every cylinder's η·T laid off on
-    /// top of the others, the sum read off and checked. Returns the ordinate's foot on the
-    /// developed circle, its end and the sum.
+    /// top of the others, the sum read off and checked; where there are several cylinders
+    /// and the board records, each one's η·T laid off alone too, its point added to
+    /// `singles` (LH F draws the single cylinders' curves before their sum). Returns the
+    /// ordinate's foot on the developed circle, its end and the sum.
     fn turning_ordinate(
         &mut self,
         fr: &TurningFrame,
         k: usize,
+        singles: &mut [Vec<H<Point>>],
     ) -> Result<Ordinate, ConstructionError> {
         let n = self.thetas.len();
         let kk = k % n;
@@ -180,6 +202,14 @@ impl Builder<'_> {
             let t = self.tangential[c].as_ref().map_or(0.0, |t| t[kk]);
             let len = self.e.efficiency * t / self.dr.force_scale;
             end = self.b.lay_off(&end, &ord, len, Role::Force, N_T_EACH)?;
+            if let Some(single) = singles.get_mut(c).filter(|_| self.b.is_recording()) {
+                // The first cylinder's lies at the bottom of the sum: its point is the sum's
+                // first; every other is laid off from the circle alone.
+                single.push(match c {
+                    0 => end,
+                    _ => (self.b).lay_off(&a, &ord, len, Role::Construction, N_T_SINGLE)?,
+                });
+            }
         }
         let sum = self
             .b
