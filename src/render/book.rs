@@ -107,7 +107,12 @@ pub fn book_table_text(rows: &[BookRow]) -> String {
     );
     let value = |x: Option<f64>| x.map_or("-".to_string(), |x| num(x, 6));
     for r in rows {
-        let _ = writeln!(out, "{} [{}] ({})", r.quantity, r.unit, r.source);
+        let unit = if r.unit.is_empty() {
+            String::new()
+        } else {
+            format!(" [{}]", r.unit)
+        };
+        let _ = writeln!(out, "{}{unit} ({})", r.quantity, r.source);
         let _ = writeln!(
             out,
             "    printed {}  constructed {}  inputs {}  within ±{} ({})",

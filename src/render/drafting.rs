@@ -31,10 +31,17 @@ pub fn drafting_table_text(r: &DraftingReport) -> String {
         cells.push(vec![
             v.step.clone(),
             v.context.clone(),
-            if v.object.is_empty() {
-                format!("{} [{}]", v.quantity, v.unit)
-            } else {
-                format!("{} {} [{}]", v.quantity, v.object, v.unit)
+            {
+                let unit = if v.unit.is_empty() {
+                    String::new()
+                } else {
+                    format!(" [{}]", v.unit)
+                };
+                if v.object.is_empty() {
+                    format!("{}{unit}", v.quantity)
+                } else {
+                    format!("{} {}{unit}", v.quantity, v.object)
+                }
             },
             num(v.closed_form, 4),
             num(v.drawn_exactly, 4),

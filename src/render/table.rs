@@ -203,9 +203,12 @@ fn check_cells(
     });
     cells.cell(|s| {
         s.push_str(&c.quantity);
-        s.push_str(" [");
-        s.push_str(&c.unit);
-        s.push(']');
+        // A ratio (R/L, a reduction factor) has no unit, and no empty brackets.
+        if !c.unit.is_empty() {
+            s.push_str(" [");
+            s.push_str(&c.unit);
+            s.push(']');
+        }
     });
     if let Some((n, failed)) = count {
         cells.cell(|s| push_uint_padded(s, n, 1));
