@@ -38,13 +38,17 @@ fn in_sector(ext: &External, at_v: &[usize], placed: &[bool], back: f64, span: f
     here.into_iter().map(|(_, fi)| fi).collect()
 }
 
+/// The external forces in clockwise order round the outline, and the space left of every
+/// half-edge (outer half-edges only; the rest `usize::MAX`).
+pub(super) type Outline = (Vec<usize>, Vec<usize>);
+
 /// Assigns every external force to its place on the outline, clockwise, and every outer
 /// half-edge to the space on its left.
 pub(super) fn outline(
     t: &Truss,
     g: &PlaneGraph,
     ext: &External,
-) -> Result<(Vec<usize>, Vec<usize>), ConstructionError> {
+) -> Result<Outline, ConstructionError> {
     let nh = g.next.len();
     let mut space_of_half = vec![usize::MAX; nh];
     let mut order = Vec::with_capacity(ext.forces.len());
@@ -100,11 +104,10 @@ pub(super) fn cremona_plan(
     b: &mut Board,
     ctx: &PlanContext,
     g: &PlaneGraph,
+    round: Outline,
 ) -> Result<(CaseResult, [f64; 4]), ConstructionError> {
-    let PlanContext {
-        t, case, ext, at, ..
-    } = *ctx;
-    let sm = SpaceMap::new(t, g, ext)?;
+    let PlanContext { t, case, at, .. } = *ctx;
+    let sm = SpaceMap::new(g, round);
     let mut bx = EMPTY;
     let mut pt: Vec<Option<H<Point>>> = vec![None; sm.n_spaces];
     external_polygon(b, ctx, &sm.order, &mut pt, &mut bx)?;
@@ -168,8 +171,7 @@ struct SpaceMap {
 }
 
 impl SpaceMap {
-    fn new(t: &Truss, g: &PlaneGraph, ext: &External) -> Result<SpaceMap, ConstructionError> {
-        let (order, mut space_of_half) = outline(t, g, ext)?;
+    fn new(g: &PlaneGraph, (order, mut space_of_half): Outline) -> SpaceMap {
         let n_ext = order.len().max(1);
         // Inner faces become spaces after the outer ones.
         let mut space_of_face = vec![usize::MAX; g.faces.len()];
@@ -191,13 +193,13 @@ impl SpaceMap {
                 space_of_half[h] = space_of_face[g.face_of[h]];
             }
         }
-        Ok(SpaceMap {
+        SpaceMap {
             order,
             space_of_half,
             face_of_space,
             n_ext,
             n_spaces,
-        })
+        }
     }
 
     /// The joints touching each space, to revisit when it becomes known.

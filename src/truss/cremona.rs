@@ -297,8 +297,10 @@ fn construct_case(b: &mut Board, c: &Case) -> Result<CaseOut, ConstructionError>
         maxload,
     };
     column(b, PLAN);
-    let (result, plan_box) = match g.filter(|g| outline(t, g, &external).is_ok()) {
-        Some(g) => cremona_plan(b, &ctx, g)?,
+    // The outline is found once: whether Bow's notation applies, and where it starts.
+    let outlined = g.and_then(|g| Some((g, outline(t, g, &external).ok()?)));
+    let (result, plan_box) = match outlined {
+        Some((g, round)) => cremona_plan(b, &ctx, g, round)?,
         None => super::joints::joint_polygons(b, &ctx)?,
     };
     let zero_kg = ZERO_FORCE_REL * check_reference(maxload, &external);
