@@ -328,6 +328,17 @@ fn requests(
     let inside = |p: &Point| region.contains_local_point(&PPoint::new(p.x, p.y));
     let mut requests = Vec::new();
     for o in board.objects() {
+        // A table's lettering (a heading, an area's sign, an evaluation) is no place for a
+        // label either.
+        if let Geom::Table { at, rows } = &o.geom {
+            for (block, p) in super::extent::table_blocks(*at, rows) {
+                let (w, h) = super::extent::table_size(&block);
+                taken.add(Aabb::new(
+                    PPoint::new(p.x, p.y - h),
+                    PPoint::new(p.x + w, p.y),
+                ));
+            }
+        }
         if let Geom::Point { at } = &o.geom {
             if !(drawn(at) && inside(at)) {
                 continue;

@@ -128,11 +128,6 @@ impl Builder<'_> {
             }
         }
         self.b.clear_context();
-        for (c, single) in singles.iter().enumerate() {
-            let name = Label::named(self.e.cylinders[c].name.clone());
-            let mark = Role::Construction.labelled(name);
-            self.b.curve(single, Trace::Polygon, mark, N_CURVE_SINGLE);
-        }
         // Where η < 1, KG Abb. 1062 draws the turning force before and after the reduction:
         // T in a full line, η·T, which the resistance is measured against, apart from it.
         let name = if full.is_empty() { "T" } else { "η·T" };
@@ -144,6 +139,13 @@ impl Builder<'_> {
             .curve(&pts, Trace::Polygon, Role::Result.named(name), N_CURVE);
         let mean = self.mean_line(&frame, &out)?;
         self.excess_areas(&pts, (&mean.0, &mean.1))?;
+        // The single cylinders' curves after the areas' signs, so that their names are
+        // placed clear of them.
+        for (c, single) in singles.iter().enumerate() {
+            let name = Label::named(self.e.cylinders[c].name.clone());
+            let mark = Role::Construction.labelled(name);
+            self.b.curve(single, Trace::Polygon, mark, N_CURVE_SINGLE);
+        }
         Ok((out, ids))
     }
 
