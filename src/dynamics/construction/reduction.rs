@@ -270,7 +270,7 @@ fn reduce(
     b.set_part(Part::packed(row, 0));
     b.clear_context();
     let (taken, ticks) = the_card(b, cyl, &card, top)?;
-    let means = [false, true].map(|crank| mean_pressures(b, cyl, &card, &taken, crank));
+    let means = [false, true].map(|crank| mean_pressures(b, cyl, (&card, top), &taken, crank));
     let mut col = 1;
     if let Some(f_new) = card.respring_mm_per_at {
         b.set_part(Part::packed(row, col));
@@ -494,12 +494,11 @@ fn respring(
         for (i, a) in row.iter().enumerate() {
             let x = i as f64 / STRIPS as f64;
             let (foot, ord) = (&p.feet[i], &p.ords[i]);
-            b.set_context(|| format!("{name}, {}, a{}", cv.name(), subscript(i)));
-            let pt = b.transfer(
-                foot,
-                ord,
+            let pt = lay_again(
+                b,
+                &p,
+                (name, cv, i),
                 Reading { value: a, per_mm },
-                Role::Construction,
                 N_RESPRING,
             )?;
             check_respring(b, (foot, &pt, ord), (f, f_new), cv.pressure(cyl, x), top);
@@ -510,6 +509,20 @@ fn respring(
     b.clear_context();
     reduced_curves(b, &ends, Role::Result);
     Ok(())
+}
+
+/// The ordinate `i` of curve `cv` taken off the card laid off again on the panel `p`'s
+/// ordinate `i` at the reading's scale, the check context naming it ("right, cover side,
+/// working stroke, a₃").
+fn lay_again(
+    b: &mut Board,
+    p: &Panel,
+    (name, cv, i): (&str, &Curve, usize),
+    reading: Reading<'_>,
+    note: Note,
+) -> Result<H<Point>, ConstructionError> {
+    b.set_context(|| format!("{name}, {}, a{}", cv.name(), subscript(i)));
+    b.transfer(&p.feet[i], &p.ords[i], reading, Role::Construction, note)
 }
 
 /// The redrawn ordinate from `foot` to `pt` measured and held to a′ = a·f′/f, a = f·p.
@@ -562,14 +575,7 @@ fn piston_forces(
         for (i, a) in row.iter().enumerate() {
             let x = i as f64 / STRIPS as f64;
             let (foot, ord) = (&p.feet[i], &p.ords[i]);
-            b.set_context(|| format!("{name}, {}, a{}", cv.name(), subscript(i)));
-            let pt = b.transfer(
-                foot,
-                ord,
-                Reading { value: a, per_mm },
-                Role::Construction,
-                N_FORCE,
-            )?;
+            let pt = lay_again(b, &p, (name, cv, i), Reading { value: a, per_mm }, N_FORCE)?;
             let force = b.measure(foot, &pt, ord, Scale::kg(k), Label::NONE, N_READ);
             b.check(
                 &force,
@@ -612,7 +618,7 @@ type Means = (H<f64>, H<f64>, f64);
 fn mean_pressures(
     b: &mut Board,
     cyl: &Cylinder,
-    card: &IndicatorCard,
+    (card, reference): (&IndicatorCard, f64),
     taken: &Taken,
     crank: bool,
 ) -> Means {
@@ -633,7 +639,6 @@ fn mean_pressures(
     let side = if crank { "crank side" } else { "cover side" };
     let name = &cyl.name;
     b.set_context(|| format!("{name}, {side}"));
-    let reference = peak(cyl);
     let trapezoid = rules::trapezoid(&widths);
     let weighted = Weighted {
         inputs: &inputs,
