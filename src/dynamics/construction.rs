@@ -11,6 +11,7 @@ use crate::protocol::{
 };
 
 mod excess;
+mod mean_area;
 mod reduction;
 mod summary;
 
@@ -35,7 +36,7 @@ const N_WORK: Note = note(
 const N_BACK: Note = note(
     "back side laid off against it: the net pressure a_ü = a₁ − a₂",
     Some("Überdruck"),
-    "LH Gl. 40-42, Abb. 58; KG (296-297)",
+    "LH Gl. 40-42, Abb. 58; KG (296)",
     Topic::Forces,
 );
 const N_PUMP: Note = note(
@@ -59,7 +60,7 @@ const N_CURVE_STEAM: Note = note(
 const N_P: Note = note(
     "net piston force P read off",
     Some("Überdruck P"),
-    "LH Gl. 42; KG (297)",
+    "LH Gl. 42; KG (296)",
     Topic::Forces,
 );
 const N_B_TRANSFER: Note = note(
@@ -91,6 +92,10 @@ const N_CURVE_R: Note = note(
 /// of the resulting force, and the values read off.
 #[derive(Clone, Copy)]
 struct Ray {
+    /// The ray's foot on the diagram axis.
+    foot: H<Point>,
+    /// The end of the working side's force laid off from the foot.
+    work_point: H<Point>,
     /// The steam's net force alone (η·(P₁ − P₂)), before a pump's force is laid against it.
     steam_point: H<Point>,
     p_point: H<Point>,
@@ -100,9 +105,9 @@ struct Ray {
     row_r: f64,
 }
 
-/// On an ordinate: the steam's net force alone, and the net piston force (the same where
-/// there is no pump).
-type NetPoints = (H<Point>, H<Point>);
+/// On an ordinate: the end of the working side's force, the steam's net force alone, and the
+/// net piston force (the same where there is no pump).
+type NetPoints = (H<Point>, H<Point>, H<Point>);
 
 struct Diagram {
     axis: TolleAxis,
@@ -113,7 +118,7 @@ pub(super) struct Builder<'a> {
     b: &'a mut Board,
     e: &'a Engine,
     dr: &'a DynamicsDrawing,
-    /// The first cylinder's rays by rod-length arcs through this many parts of the stroke.
+    /// Every cylinder's rays by rod-length arcs through this many parts of its stroke.
     stroke_parts: Option<usize>,
     thetas: Vec<f64>,
     r_mm: f64,
@@ -126,9 +131,9 @@ pub(super) struct Builder<'a> {
 }
 
 /// Constructs what `request` asks for on the crank `rays`: n equal divisions of the shaft's
-/// revolution, or the first cylinder's stroke in n equal parts with its rays by rod-length
-/// arcs (LH Abb. 59; the first cylinder's crank is then the reference, offset 0, and the other
-/// cylinders stand at the same shaft angles plus their offsets).
+/// revolution, every cylinder at those shaft angles plus its offset; or each cylinder's stroke
+/// in n equal parts with its rays by rod-length arcs (LH Abb. 59), each cylinder's rays then
+/// at shaft angles of its own, and the turning-force diagram on all of them (LH F, Abb. 67).
 ///
 /// # Errors
 /// A [`ConstructionError`] where a step has no solution; a validated scene gives none.
@@ -183,15 +188,8 @@ pub fn construct(
     if request.reduction {
         reduction::reduce_all(bl.b, engine, drawing)?;
     }
-    if request.net_pressure || want_t {
-        for c in 0..nc {
-            bl.b.set_part(row(c));
-            for k in 0..divisions {
-                bl.ray(c, k)?;
-            }
-            bl.curves(c);
-            bl.pump_rectangles(c)?;
-        }
+    if request.net_pressure || request.mean_area || want_t {
+        res.mean_area = bl.net_pressures(&row, request.mean_area)?;
     }
     if want_t {
         for c in 0..nc {
@@ -239,17 +237,52 @@ impl Builder<'_> {
         &self.e.cylinders[c]
     }
 
+    /// Cylinder c's crank angle on its k-th ray: the shaft angle plus its offset, or where
+    /// the stroke is divided, the k-th ray of its own stroke's parts (LH F: each cylinder's
+    /// rays by rod-length arcs through its own stroke).
     fn crank_deg(&self, c: usize, k: usize) -> f64 {
         let offset = self.cyl(c).offset_deg;
-        if offset == 0.0 {
+        if offset == 0.0 || self.stroke_parts.is_some() {
             self.thetas[k]
         } else {
             (self.thetas[k] + offset).rem_euclid(360.0)
         }
     }
 
+    /// The shaft angle of cylinder c's k-th ray: the first cylinder's crank angle.
+    fn shaft_deg(&self, c: usize, k: usize) -> f64 {
+        let offset = self.cyl(c).offset_deg;
+        if offset == 0.0 || self.stroke_parts.is_none() {
+            self.thetas[k]
+        } else {
+            (self.thetas[k] - offset).rem_euclid(360.0)
+        }
+    }
+
     fn force_scale(&self) -> Scale {
         Scale::kg(self.dr.force_scale)
+    }
+
+    /// Every cylinder's net-pressure diagram in its row of the sheet, and KG (297) on it where
+    /// `mean_area` asks for it.
+    fn net_pressures(
+        &mut self,
+        row: &dyn Fn(usize) -> Part,
+        mean_area: bool,
+    ) -> Result<Vec<super::MeanArea>, ConstructionError> {
+        let mut out = Vec::new();
+        for c in 0..self.e.cylinders.len() {
+            self.b.set_part(row(c));
+            for k in 0..self.thetas.len() {
+                self.ray(c, k)?;
+            }
+            self.curves(c);
+            self.pump_rectangles(c)?;
+            if mean_area {
+                out.push(self.mean_area(c)?);
+            }
+        }
+        Ok(out)
     }
 
     /// The net-pressure diagram of cylinder c: its axis under the stroke and, with masses,
@@ -311,13 +344,15 @@ impl Builder<'_> {
         let ord = self
             .b
             .perpendicular(&axis.axis, &foot, Role::Construction, N_ORD);
-        let ((steam_point, p_point), p) =
+        let ((work_point, steam_point, p_point), p) =
             self.net_pressure(c, theta, x, foot, ord, axis.vertical)?;
         let (r_point, b, r) = match curves {
             Some(cv) => self.resulting(c, theta, (foot, p_point, ord), &axis, &cv)?,
             None => (p_point, 0.0, p),
         };
         let ray = Ray {
+            foot,
+            work_point,
             steam_point,
             p_point,
             r_point,
@@ -373,11 +408,11 @@ impl Builder<'_> {
             &p,
             "net piston force P",
             "kg",
-            "LH Gl. 40-42; KG (296-297); with a pump KG Abb. 1065",
+            "LH Gl. 40-42; KG (296); with a pump KG Abb. 1065",
             work.abs().max(back.abs()).max(load).max(self.force_refs[c]),
             || cyl.pressure_force(theta, x),
         );
-        Ok(((steam, pp), p.g))
+        Ok(((w, steam, pp), p.g))
     }
 
     /// The inertia force on Tolle's parabola, transferred onto the net-pressure ordinate.
@@ -541,11 +576,11 @@ impl Builder<'_> {
             ..Request::default()
         };
         self.b.clear_context();
-        // The first cylinder's rays by rod-length arcs where the stroke is divided (its angles
-        // are the same), everyone else's at their crank angles.
+        // Every cylinder's rays by rod-length arcs through its own stroke where the stroke is
+        // divided (the angles are the same), at their crank angles otherwise.
         let rays = match self.stroke_parts {
-            Some(n) if c == 0 => Angles::StrokeParts(n),
-            _ => Angles::Degrees(angles),
+            Some(n) => Angles::StrokeParts(n),
+            None => Angles::Degrees(angles),
         };
         let res = crank::construct_at(self.b, &drive, &drawing, &rays, &req, origin)?;
         let t: Vec<f64> = res
@@ -563,7 +598,7 @@ impl Builder<'_> {
                 (0..self.thetas.len())
                     .filter_map(|k| {
                         self.rays[c][k].map(|r| RayRow {
-                            shaft_deg: self.thetas[k],
+                            shaft_deg: self.shaft_deg(c, k),
                             crank_deg: self.crank_deg(c, k),
                             pressure_force: r.row_p,
                             inertia: r.row_b,
@@ -585,3 +620,4 @@ const N_CURVE_B: Note = note(
 );
 
 mod turning;
+mod unequal;

@@ -90,6 +90,9 @@ pub struct DynamicsRequest {
     /// The net-pressure diagram of each cylinder, with the inertia parabolas and the resulting
     /// curve where the masses are given.
     pub net_pressure: bool,
+    /// Each cylinder's net piston force by the mean piston area F = (F′+F″)/2 beside the
+    /// net pressure's own (KG 296-297), and the effective areas read back off the drawing.
+    pub mean_area: bool,
     /// The tangential force on every crank ray and the turning-force diagram.
     pub turning_force: bool,
     /// The mean height of the turning-force diagram by every rule.
@@ -126,6 +129,23 @@ pub struct MeanHeight {
     pub t_m: f64,
     /// Its error against the exact mean (kg).
     pub error: f64,
+}
+
+/// KG (297) against (296) for one cylinder: the net piston force by the mean piston area.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MeanArea {
+    /// The cover side's effective area F′ (cm²).
+    pub cover_cm2: f64,
+    /// The crank side's effective area F″ (cm²).
+    pub crank_cm2: f64,
+    /// Their mean F = (F′+F″)/2 (cm²).
+    pub mean_cm2: f64,
+    /// The largest F·p_ü − P over the drawn rays (kg), P the steam's force by (296).
+    pub difference: f64,
+    /// The crank angle where it is largest (degrees).
+    pub at_deg: f64,
+    /// That difference over the largest |P| of the rays.
+    pub relative: f64,
 }
 
 /// The indicated power.
@@ -168,6 +188,9 @@ pub struct DynamicsResults {
     /// the mean heights are reckoned from them, their error bounds with them.
     #[serde(skip)]
     pub turning_ids: Vec<crate::protocol::ObjId>,
+    /// Per cylinder, KG (297) against (296), where asked for.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub mean_area: Vec<MeanArea>,
     /// The exact mean turning force (kg).
     pub t_m_exact: Option<f64>,
     /// Mean heights by rule.

@@ -27,8 +27,10 @@ super::header::scene_struct! {
         /// `stroke_parts`.
         #[serde(default)]
         pub divisions: Option<usize>,
-        /// The first cylinder's stroke in n equal parts (LH: 10), its crank rays by arcs with
-        /// the rod length (LH C.2, Abb. 59): 2n rays, 1 ≤ n ≤ 1800. Its crank offset must be 0.
+        /// Each cylinder's stroke in n equal parts (LH: 10), its crank rays by arcs with the
+        /// rod length (LH C.2, Abb. 59): 2n rays a cylinder, 1 ≤ n ≤ 1800. The turning-force
+        /// diagram stands on every cylinder's abscissae, each one's ordinate taken off the
+        /// others' drawn curves (LH F, Abb. 67). The first cylinder's crank offset must be 0.
         #[serde(default)]
         pub stroke_parts: Option<usize>,
         /// The physical effects to include; only these are computed.
@@ -266,6 +268,9 @@ super::header::output_enum! {
         Reduction = "reduction",
         /// Net pressure, inertia and resulting curves (LH Abb. 58; KG Abb. 1055).
         NetPressure = "net_pressure",
+        /// The net piston force by the mean piston area F = (F′+F″)/2 on every ray, beside
+        /// the net pressure's own, and the effective areas read back (KG 296-297, Abb. 1054).
+        MeanArea = "mean_area",
         /// Tangential force on every ray and the turning-force diagram (LH Abb. 67; KG Abb. 1064).
         TurningForce = "turning_force",
         /// Mean height of the turning-force diagram by every rule (LH G).
@@ -346,6 +351,7 @@ impl DynamicsScene {
             match o {
                 DynamicsOutput::Reduction => request.reduction = true,
                 DynamicsOutput::NetPressure => request.net_pressure = true,
+                DynamicsOutput::MeanArea => request.mean_area = true,
                 DynamicsOutput::TurningForce => request.turning_force = true,
                 DynamicsOutput::MeanHeight => request.mean_height = true,
                 DynamicsOutput::Power => request.power = true,

@@ -574,25 +574,39 @@ fn a_scene_computes_only_what_it_asks_for() {
 
 #[test]
 fn rays_by_rod_length_arcs_for_the_engine() {
-    // LH C.2, F, Abb. 59, 67: the first cylinder's stroke in 10 parts, its 20 rays by
-    // rod-length arcs, the second cylinder 90° on; the turning-force diagram then has unequal
-    // abscissae, so the trapezoid rule takes the strips as they are and Simpson's and the
-    // 3/8 rule are not offered (LH G: new equal ordinates would be needed).
-    let p = with(LOCO, |v| {
-        v.as_object_mut().unwrap().remove("divisions");
-        v["stroke_parts"] = 10.into();
-    })
-    .unwrap();
+    // LH C.2, F, Abb. 59, 67: each cylinder's stroke in 10 parts, its 20 rays by rod-length
+    // arcs, the second cylinder 90° on; the turning-force diagram then has each cylinder's
+    // unequal abscissae, the other's ordinate taken off its drawn curve, so the trapezoid rule
+    // takes the strips as they are and Simpson's and the 3/8 rule are not offered (LH G: new
+    // equal ordinates would be needed).
+    let p = scene(include_str!(
+        "../../scenes/lh_f_abb67_unequal_abscissae.json"
+    ));
     let (board, res) = DynamicsScene::construct(&p, BoardConfig::DRAWING).unwrap();
     let failed: Vec<_> = board.checks().filter(|c| !c.passed).collect();
     assert!(failed.is_empty(), "{failed:#?}");
-    assert_eq!(res.turning.len(), 20);
+    // 20 abscissae each, none shared: the left crank's dead centres stand at 90° and 270°,
+    // where the right one's rays by arcs do not.
+    assert_eq!(res.turning.len(), 40);
+    let added = "turning force Σ η·T, the curves’ ordinates added";
+    assert_eq!(
+        board
+            .checks()
+            .filter(|c| c.quantity.as_ref() == added)
+            .count(),
+        41
+    );
     let k = p.engine.kinematics;
-    for (i, r) in res.rays[0].iter().enumerate() {
-        let x = k.x_frac(r.crank_deg);
-        let part = if i <= 10 { i } else { 20 - i };
-        assert!((x - part as f64 / 10.0).abs() < 1e-12, "ray {i}: {x}");
+    for rays in &res.rays {
+        for (i, r) in rays.iter().enumerate() {
+            let x = k.x_frac(r.crank_deg);
+            let part = if i <= 10 { i } else { 20 - i };
+            assert!((x - part as f64 / 10.0).abs() < 1e-12, "ray {i}: {x}");
+        }
     }
+    // The left crank leads by 90°: its rays stand 90° earlier on the shaft.
+    let (right, left) = (&res.rays[0], &res.rays[1]);
+    assert!((left[3].shaft_deg - (right[3].crank_deg - 90.0).rem_euclid(360.0)).abs() < 1e-9);
     let rules: Vec<&str> = res.mean_heights.iter().map(|m| m.rule.as_str()).collect();
     assert!(
         rules
@@ -690,4 +704,50 @@ fn the_flywheels_delta_e_is_checked_tightly() {
     assert!(c.bound > 0.0 && c.error <= c.bound, "{c:?}");
     // 20 divisions: 1185.3 against the continuous curve's 1328.6 m·kg.
     assert!((c.constructed - 1185.3).abs() < 0.1, "{c:?}");
+}
+
+/// KG (297): the mean area F = (F′+F″)/2 evens out the two strokes. On every ray F·p_ü is
+/// reckoned from the two forces read back off the net-pressure diagram; at the dead centre it
+/// departs from (296) by (F − F′)·p₁ − (F − F″)·p₂, and by nothing where both rods are equal.
+#[test]
+fn kg_297_the_mean_area_beside_the_sides_own() {
+    const KG: &str = include_str!("../../scenes/kg_abb1055_hp_piston_force.json");
+    let p = scene(KG);
+    assert!(p.request.mean_area && !p.request.turning_force);
+    let (b, res) = DynamicsScene::construct(&p, BoardConfig::DRAWING).unwrap();
+    assert!(b.checks().all(|c| c.passed));
+    let count = |q: &str| b.checks().filter(|c| c.quantity.as_ref() == q).count();
+    assert_eq!(
+        count("net piston force by the mean area F·p_ü (KG 297)"),
+        18
+    );
+    assert_eq!(count("effective piston area F′ = P₁/p₁ (cover side)"), 1);
+    assert_eq!(count("effective piston area F″ = P₁/p₁ (crank side)"), 1);
+    let m = &res.mean_area[0];
+    assert!((m.cover_cm2 - 1546.25).abs() < 0.01 && (m.crank_cm2 - 1511.89).abs() < 0.01);
+    let c = &p.engine.cylinders[0];
+    let (p1, p2) = (c.cover.indicator.working(0.0), c.crank.indicator.back(1.0));
+    let at_dead_centre = (m.mean_cm2 - m.cover_cm2) * p1 - (m.mean_cm2 - m.crank_cm2) * p2;
+    // The largest departure is at a dead centre, the same on both strokes but for its sign:
+    // −192.4 kg, 1.8 % of the force there.
+    assert!(
+        (m.difference.abs() - at_dead_centre.abs()).abs() < 1e-6,
+        "{} {at_dead_centre}",
+        m.difference
+    );
+    assert!((m.difference.abs() - 192.4).abs() < 0.05 && (m.relative.abs() - 0.0182).abs() < 5e-4);
+    // Equal rods: (297) is (296).
+    let even = with(KG, |v| {
+        v["cylinders"][0]["rod_cover_side_mm"] = 100.0.into()
+    })
+    .unwrap();
+    let (b, res) = DynamicsScene::construct(&even, BoardConfig::DRAWING).unwrap();
+    assert!(b.checks().all(|c| c.passed));
+    assert!(res.mean_area[0].difference.abs() < 1e-9 * 1e4);
+    // With the pump on the rod (KG Abb. 1065) the drawn forces carry η: undone for (297).
+    const PUMP: &str = include_str!("../../scenes/kg_abb1065_pump_engine.json");
+    let pump = with(PUMP, |v| v["outputs"] = serde_json::json!(["mean_area"])).unwrap();
+    let (b, res) = DynamicsScene::construct(&pump, BoardConfig::DRAWING).unwrap();
+    assert!(b.checks().all(|c| c.passed) && res.mean_area.len() == 1);
+    assert!((res.mean_area[0].difference.abs() - m.difference.abs()).abs() < 1e-6);
 }

@@ -53,6 +53,9 @@ pub(super) fn finish(
 ) {
     let wanted = request.mean_height || request.power || request.flywheel;
     if res.turning.is_empty() || !wanted {
+        if !res.mean_area.is_empty() {
+            table(b, e, res, table_at);
+        }
         return;
     }
     let exact = e.t_m();
@@ -66,7 +69,7 @@ pub(super) fn finish(
     if request.flywheel {
         res.flywheel = Some(flywheel(b, e, (&res.turning, &res.turning_ids), exact));
     }
-    table(b, res, table_at, e.efficiency);
+    table(b, e, res, table_at);
 }
 
 /// The diagram as drawn: (x, y) in sheet mm, x the developed arc, closed at 360°.
@@ -368,15 +371,36 @@ fn flywheel(
     }
 }
 
-/// The table of the mean heights, the power and the flywheel; `eta` is the efficiency the
-/// turning force carries (the power is then η·N_i, and named so).
-fn table(b: &mut Board, res: &DynamicsResults, at: Point, eta: f64) {
+/// The table of KG (297) against (296), the mean heights, the power and the flywheel; the
+/// power is η·N_i, and named so, where the turning force carries the efficiency η.
+fn table(b: &mut Board, e: &Engine, res: &DynamicsResults, at: Point) {
     if !b.is_recording() {
         return;
     }
     use crate::fmt::num;
+    let eta = e.efficiency;
     // Each row names its quantity and unit; the error is in the row's unit.
     let mut rows = vec![vec!["".to_string(), "value".into(), "error".into()]];
+    for (cyl, m) in e.cylinders.iter().zip(&res.mean_area) {
+        let of = if e.cylinders.len() > 1 {
+            format!("{}: ", cyl.name)
+        } else {
+            String::new()
+        };
+        let mut row = |name: String, value: String| rows.push(vec![name, value, "".into()]);
+        row(format!("{of}F′, cover side [cm²]"), num(m.cover_cm2, 1));
+        row(format!("{of}F″, crank side [cm²]"), num(m.crank_cm2, 1));
+        row(format!("{of}F = (F′+F″)/2 [cm²]"), num(m.mean_cm2, 1));
+        let at = crate::fmt::num(m.at_deg, 3);
+        row(
+            format!("{of}F·p_ü − P, largest (θ = {at}°) [kg]"),
+            num(m.difference, 1),
+        );
+        row(
+            format!("{of}the same, of the largest P [%]"),
+            num(100.0 * m.relative, 2),
+        );
+    }
     for m in &res.mean_heights {
         let name = format!("T_m, {} [kg]", m.rule);
         rows.push(vec![name, num(m.t_m, 1), num(m.error, 2)]);
@@ -412,6 +436,10 @@ fn table(b: &mut Board, res: &DynamicsResults, at: Point, eta: f64) {
         if let Some(j) = f.moment_of_inertia {
             rows.push(vec!["J [kg·m·s²]".into(), num(j, 2), "".into()]);
         }
+    }
+    // A table of no errors (KG 297 alone) leaves that column out.
+    if rows.iter().skip(1).all(|r| r[2].is_empty()) {
+        rows.iter_mut().for_each(|r| drop(r.pop()));
     }
     b.table(at, rows, &[], N_TABLE);
 }

@@ -73,7 +73,7 @@ const N_MEAN_LINE: Note = note(
     "LH J; KG Abb. 1064",
     Topic::Forces,
 );
-const N_T_FULL: Note = note(
+pub(super) const N_T_FULL: Note = note(
     "the turning force before the reduction by η: the cylinders’ T laid off as one length",
     Some("Tangentialdruck ohne Wirkungsgrad"),
     "KG Abb. 1062",
@@ -112,21 +112,18 @@ impl Builder<'_> {
         let mm_per_deg = self.r_mm * std::f64::consts::PI / 180.0;
         super::super::angle_marks(self.b, o.g, (mm_per_deg, 90.0, 360.0), N_ANGLES);
         let frame = TurningFrame { o, axis, up };
-        let n = self.thetas.len();
-        let mut pts: Vec<H<Point>> = Vec::with_capacity(n + 1);
-        let mut full: Vec<H<Point>> = Vec::new();
         let nc = self.e.cylinders.len();
-        let mut singles: Vec<Vec<H<Point>>> = vec![Vec::new(); if nc > 1 { nc } else { 0 }];
-        let (mut out, mut ids) = (Vec::with_capacity(n), Vec::with_capacity(n));
-        for k in 0..=n {
-            let (foot, end, sum) = self.turning_ordinate(&frame, k, &mut singles)?;
-            pts.push(end);
-            full.extend(self.unreduced(&frame, k, &foot)?);
-            if k < n {
-                out.push((self.thetas[k], sum.g));
-                ids.push(sum.id);
-            }
-        }
+        let (pts, full, singles, (out, ids)) = if self.stroke_parts.is_some() && nc > 1 {
+            let u = self.unequal_ordinates(&frame)?;
+            let singles = if self.b.is_recording() {
+                u.singles
+            } else {
+                Vec::new()
+            };
+            (u.ends, u.full, singles, u.ordinates)
+        } else {
+            self.equal_ordinates(&frame)?
+        };
         self.b.clear_context();
         // Where η < 1, KG Abb. 1062 draws the turning force before and after the reduction:
         // T in a full line, η·T, which the resistance is measured against, apart from it.
@@ -147,6 +144,27 @@ impl Builder<'_> {
             self.b.curve(single, Trace::Polygon, mark, N_CURVE_SINGLE);
         }
         Ok((out, ids))
+    }
+
+    /// The ordinates where every cylinder has a ray at every shaft angle: at each, the
+    /// cylinders' η·T laid off on top of each other.
+    fn equal_ordinates(&mut self, frame: &TurningFrame) -> Result<Drawn, ConstructionError> {
+        let n = self.thetas.len();
+        let mut pts: Vec<H<Point>> = Vec::with_capacity(n + 1);
+        let mut full: Vec<H<Point>> = Vec::new();
+        let nc = self.e.cylinders.len();
+        let mut singles: Vec<Vec<H<Point>>> = vec![Vec::new(); if nc > 1 { nc } else { 0 }];
+        let (mut out, mut ids) = (Vec::with_capacity(n), Vec::with_capacity(n));
+        for k in 0..=n {
+            let (foot, end, sum) = self.turning_ordinate(frame, k, &mut singles)?;
+            pts.push(end);
+            full.extend(self.unreduced(frame, k, &foot)?);
+            if k < n {
+                out.push((self.thetas[k], sum.g));
+                ids.push(sum.id);
+            }
+        }
+        Ok((pts, full, singles, (out, ids)))
     }
 
     /// Where η < 1, on a board that records, the k-th ordinate's turning force before the
@@ -269,9 +287,13 @@ pub(super) type Ordinates = (Vec<(f64, f64)>, Vec<crate::protocol::ObjId>);
 /// the sum read off.
 type Ordinate = (H<Point>, H<Point>, H<f64>);
 
+/// What the diagram's ordinates draw: the sum's ends, the unreduced curve's points (η < 1),
+/// each cylinder's single curve, and the sums read off.
+type Drawn = (Vec<H<Point>>, Vec<H<Point>>, Vec<Vec<H<Point>>>, Ordinates);
+
 /// The axis of the developed crank circle, its start and its ordinate direction.
-struct TurningFrame {
-    o: H<Point>,
-    axis: H<Line>,
-    up: H<Line>,
+pub(super) struct TurningFrame {
+    pub(super) o: H<Point>,
+    pub(super) axis: H<Line>,
+    pub(super) up: H<Line>,
 }
