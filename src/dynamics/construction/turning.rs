@@ -31,7 +31,7 @@ const N_ARC: Note = note(
     "LH F, Abb. 67",
     Topic::Forces,
 );
-const N_ORD: Note = note(
+pub(super) const N_ORD: Note = note(
     "ordinate at the developed crank position",
     Some("Ordinate"),
     "LH Abb. 67",

@@ -11,7 +11,7 @@
 //! chords cost against the exact turning force shows in the mean heights, which are measured
 //! against the exact T_m.
 
-use super::turning::{Ordinates, TurningFrame, N_T_FULL};
+use super::turning::{Ordinates, TurningFrame, N_ORD, N_T_FULL};
 use super::Builder;
 use crate::kernel::Point;
 use crate::protocol::{note, ConstructionError, Label, Note, Reading, Role, Topic, H};
@@ -20,12 +20,6 @@ const N_FOOT: Note = note(
     "the arc r·θ of a cylinder’s own crank ray laid off along the developed circle",
     Some("Bogen r·α"),
     "LH F, Abb. 59, 67",
-    Topic::Forces,
-);
-const N_ORD: Note = note(
-    "ordinate at the developed crank position",
-    Some("Ordinate"),
-    "LH Abb. 67",
     Topic::Forces,
 );
 const N_OWN: Note = note(
