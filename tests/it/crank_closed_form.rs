@@ -58,10 +58,11 @@ fn every_check_passes_at_many_angles_for_every_rod_ratio() {
         let checks: Vec<_> = board.steps().iter().flat_map(|s| &s.checks).collect();
         // x, c (2 methods), S, N, T (2 constructions), K, and on Tolle's parabola x, b and
         // b against the exact value at each of 72 angles; the two chords through C and
-        // Esselborn's angle, right angle, velocity and c_max/c_m once.
+        // Esselborn's angle, right angle, velocity, c_max/c_m, and v/c_m by Simpson over
+        // the outstroke's 36 equal strips once.
         // The two curves' areas of acceleration and retardation balance: two more.
         // And the piston path by the arc drawn once (LH Abb. 49) at every angle.
-        assert_eq!(checks.len(), 72 * 12 + 2 + 4 + 2, "λ = {lambda}");
+        assert_eq!(checks.len(), 72 * 12 + 2 + 5 + 2, "λ = {lambda}");
         for c in &checks {
             assert!(c.constructed.is_finite() && c.closed_form.is_finite());
             assert!(
@@ -357,4 +358,48 @@ fn rays_by_rod_length_arcs_put_the_piston_at_equal_parts_of_the_stroke() {
             );
         }
     }
+}
+
+/// LH Gl. 26: v/c_m = π/2, c_m read off the drawn velocities of an outstroke at equal crank
+/// angles (equal times) by Simpson's rule. Six 30° strips at r/l = 1/5 give 1.570119, twelve
+/// 1.570755: the rule's error falls as h⁴ towards π/2. Angles that are not equal strips from
+/// dead centre to dead centre give no such row.
+#[test]
+fn v_over_the_mean_piston_speed_read_off_the_velocities() {
+    let ratio = |thetas: Vec<f64>| {
+        let mut b = Board::new(BoardConfig::DRAWING);
+        let drawing = Drawing {
+            length_scale: 10.0,
+            force_scale: 20.0,
+            velocity_scale: 0.05,
+            acceleration_scale: 10.0,
+        };
+        let request = Request {
+            velocity_parallel: true,
+            max_velocity: true,
+            ..Request::default()
+        };
+        construct(
+            &mut b,
+            &drive(0.2, 0.0),
+            &drawing,
+            &Angles::Degrees(thetas),
+            &request,
+        )
+        .unwrap();
+        assert!(b.all_passed());
+        let rows: Vec<f64> = (b.checks())
+            .filter(|c| c.quantity.starts_with("v / c_m"))
+            .map(|c| c.constructed)
+            .collect();
+        rows.first().copied()
+    };
+    let six = ratio((0..=6).map(|k| 30.0 * k as f64).collect()).unwrap();
+    let twelve = ratio((0..=12).map(|k| 15.0 * k as f64).collect()).unwrap();
+    assert!((six - 1.570119).abs() < 1e-6, "{six}");
+    assert!((twelve - 1.570755).abs() < 1e-6, "{twelve}");
+    let half_pi = std::f64::consts::FRAC_PI_2;
+    assert!((half_pi - six) / (half_pi - twelve) > 15.0);
+    assert_eq!(ratio(vec![0.0, 30.0, 90.0, 180.0]), None);
+    assert_eq!(ratio((0..=5).map(|k| 36.0 * k as f64).collect()), None);
 }

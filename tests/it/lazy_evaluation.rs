@@ -234,4 +234,6 @@ fn esselborn_alone_constructs_one_position_and_no_crank_division() {
     assert_eq!(t.get(&Topic::Forces), None);
     assert_eq!(count(&b, "crank angle of the rod perpendicular"), 1);
     assert_eq!(count(&b, "piston velocity at Esselborn"), 1);
+    // No velocities constructed, no mean piston speed read off them (LH Gl. 26).
+    assert_eq!(count(&b, "v / c_m"), 0);
 }

@@ -14,6 +14,12 @@ use crate::protocol::{
     note, ConstructionError, Drawn, Label, Note, Role, Scale, Topic, Weighted, H,
 };
 
+const N_MEAN_SPEED: Note = note(
+    "the mean piston speed c_m as the mean of the drawn velocities over equal times of a stroke",
+    Some("mittlere Kolbengeschwindigkeit"),
+    "LH B.2, Gl. 26",
+    Topic::Velocity,
+);
 const N_MEAN: Note = note(
     "the largest piston velocity against the mean piston speed c_m = 2v/π",
     Some("mittlere Kolbengeschwindigkeit"),
@@ -160,6 +166,7 @@ impl Builder<'_> {
             || v * cf::sin_factor(lam, phi, cf::Stroke::Out),
         );
         self.against_mean_speed(&c, (lam, phi));
+        self.v_over_mean_speed();
         let exact = cf::max_velocity_angle(lam);
         Ok(MaxVelocity {
             esselborn_deg: angle.g,
@@ -191,6 +198,65 @@ impl Builder<'_> {
             "LH B.2: c_m = 2s·n/60",
             1.0,
             || cf::sin_factor(lam, phi, cf::Stroke::Out) * std::f64::consts::FRAC_PI_2,
+        );
+    }
+
+    /// LH Gl. 26, v/c_m = π/2, with c_m the piston's mean speed over a stroke read off the
+    /// construction: the drawn velocities at equal crank angles (equal times) from dead centre
+    /// to dead centre, their mean by Simpson's rule, and held to the same rule over the exact
+    /// velocities. Only where the velocity is constructed on an even number of equal strips
+    /// of the outstroke.
+    fn v_over_mean_speed(&mut self) {
+        let mut idx: Vec<usize> = (0..self.thetas.len())
+            .filter(|&i| self.thetas[i] <= 180.0 + 1e-9)
+            .collect();
+        idx.sort_by(|a, b| self.thetas[*a].total_cmp(&self.thetas[*b]));
+        let m = idx.len().saturating_sub(1);
+        let step = 180.0 / m.max(1) as f64;
+        let equal =
+            (idx.iter().enumerate()).all(|(j, &i)| (self.thetas[i] - j as f64 * step).abs() < 1e-9);
+        let cs: Option<Vec<H<f64>>> = (idx.iter())
+            .map(|&i| self.cache[i].c_parallel.or(self.cache[i].c_ic))
+            .collect();
+        let (Some(cs), true) = (cs, equal && m >= 2 && m % 2 == 0) else {
+            return;
+        };
+        let weight = |j: usize| match j {
+            0 => 1.0,
+            j if j == m => 1.0,
+            j if j % 2 == 1 => 4.0,
+            _ => 2.0,
+        };
+        // The mean over the stroke's time: h/3·Σ w·c over π, h = π/m.
+        let mean_of = |c: &dyn Fn(usize) -> f64| {
+            (0..=m).map(|j| weight(j) * c(j)).sum::<f64>() / (3.0 * m as f64)
+        };
+        let c_m = mean_of(&|j| cs[j].g);
+        let v = self.d.crank_pin_speed;
+        let lam = self.lambda();
+        let exact_m = mean_of(&|j| v * cf::sin_factor(lam, j as f64 * step, cf::Stroke::Out));
+        if c_m <= 0.0 || exact_m <= 0.0 {
+            return;
+        }
+        let ids: Vec<_> = cs.iter().map(|c| c.id).collect();
+        let ratio = self.b.reckon(
+            v / c_m,
+            "",
+            Label::NONE,
+            // A velocity off by δ moves c_m by at most 4δ/(3m), and v/c_m by v/c_m² of that.
+            Weighted {
+                inputs: &ids,
+                weight: v / (c_m * c_m) * 4.0 / (3.0 * m as f64),
+            },
+            N_MEAN_SPEED,
+        );
+        self.b.check(
+            &ratio,
+            "v / c_m, c_m the drawn velocities’ mean over the stroke (Simpson)",
+            "",
+            "LH Gl. 26: v/c_m = π/2",
+            std::f64::consts::FRAC_PI_2,
+            || v / exact_m,
         );
     }
 
