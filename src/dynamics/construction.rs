@@ -376,19 +376,14 @@ impl Builder<'_> {
     ) -> Result<(NetPoints, f64), ConstructionError> {
         let cyl = self.cyl(c);
         let (stroke, _) = cf::book_angle(theta);
-        let (work, back) = match stroke {
-            cf::Stroke::Out => (
-                cyl.cover.area_cm2 * cyl.cover.indicator.working(x),
-                cyl.crank.area_cm2 * cyl.crank.indicator.back(1.0 - x),
-            ),
-            cf::Stroke::Return => (
-                cyl.crank.area_cm2 * cyl.crank.indicator.working(1.0 - x),
-                cyl.cover.area_cm2 * cyl.cover.indicator.back(x),
-            ),
-        };
+        let ((ws, u_work), (bs, u_back)) = cyl.sides(stroke, x);
+        let (work, back) = (
+            ws.area_cm2 * ws.indicator.working(u_work),
+            bs.area_cm2 * bs.indicator.back(u_back),
+        );
         let k = self.dr.force_scale;
         let pump = cyl.pump;
-        let eta = pump.map_or(1.0, |p| p.efficiency);
+        let eta = cyl.drawn_steam_share();
         let w = self
             .b
             .lay_off(&foot, &ord, eta * work / k, Role::Force, N_WORK)?;

@@ -282,18 +282,31 @@ impl Cylinder {
         }
     }
 
+    /// The share of the steam force the net-pressure diagram draws: the efficiency η where a
+    /// pump on the rod is laid against the steam force reduced by it (KG Abb. 1065), 1
+    /// otherwise.
+    pub fn drawn_steam_share(&self) -> f64 {
+        self.pump.map_or(1.0, |p| p.efficiency)
+    }
+
+    /// The mean of the two sides' effective areas, F = (F′+F″)/2 (cm², KG 297).
+    pub fn mean_area_cm2(&self) -> f64 {
+        0.5 * (self.cover.area_cm2 + self.crank.area_cm2)
+    }
+
     /// The net steam force alone (kg) on the given stroke at x.
     pub fn steam_force(&self, stroke: cf::Stroke, x: f64) -> f64 {
-        let (u_cover, u_crank) = (x, 1.0 - x);
+        let ((work, u_work), (back, u_back)) = self.sides(stroke, x);
+        work.area_cm2 * work.indicator.working(u_work) - back.area_cm2 * back.indicator.back(u_back)
+    }
+
+    /// The side working on `stroke` (the cover side on the outstroke) and the side behind
+    /// the piston, each with the piston's position along its own side's stroke, x being the
+    /// position from the inner dead centre.
+    pub fn sides(&self, stroke: cf::Stroke, x: f64) -> ((&Side, f64), (&Side, f64)) {
         match stroke {
-            cf::Stroke::Out => {
-                self.cover.area_cm2 * self.cover.indicator.working(u_cover)
-                    - self.crank.area_cm2 * self.crank.indicator.back(u_crank)
-            }
-            cf::Stroke::Return => {
-                self.crank.area_cm2 * self.crank.indicator.working(u_crank)
-                    - self.cover.area_cm2 * self.cover.indicator.back(u_cover)
-            }
+            cf::Stroke::Out => ((&self.cover, x), (&self.crank, 1.0 - x)),
+            cf::Stroke::Return => ((&self.crank, 1.0 - x), (&self.cover, x)),
         }
     }
 }

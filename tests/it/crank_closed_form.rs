@@ -368,12 +368,6 @@ fn rays_by_rod_length_arcs_put_the_piston_at_equal_parts_of_the_stroke() {
 fn v_over_the_mean_piston_speed_read_off_the_velocities() {
     let ratio = |thetas: Vec<f64>| {
         let mut b = Board::new(BoardConfig::DRAWING);
-        let drawing = Drawing {
-            length_scale: 10.0,
-            force_scale: 20.0,
-            velocity_scale: 0.05,
-            acceleration_scale: 10.0,
-        };
         let request = Request {
             velocity_parallel: true,
             max_velocity: true,
@@ -382,7 +376,7 @@ fn v_over_the_mean_piston_speed_read_off_the_velocities() {
         construct(
             &mut b,
             &drive(0.2, 0.0),
-            &drawing,
+            &DRAWING,
             &Angles::Degrees(thetas),
             &request,
         )

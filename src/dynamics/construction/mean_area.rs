@@ -63,10 +63,7 @@ impl Builder<'_> {
     fn sides(&self, c: usize, theta: f64) -> Sides {
         let cyl = self.cyl(c);
         let x = self.e.kinematics.x_frac(theta);
-        let ((work, u_work), (back, u_back)) = match cf::book_angle(theta).0 {
-            cf::Stroke::Out => ((&cyl.cover, x), (&cyl.crank, 1.0 - x)),
-            cf::Stroke::Return => ((&cyl.crank, 1.0 - x), (&cyl.cover, x)),
-        };
+        let ((work, u_work), (back, u_back)) = cyl.sides(cf::book_angle(theta).0, x);
         Sides {
             f_work: work.area_cm2,
             f_back: back.area_cm2,
@@ -96,7 +93,7 @@ impl Builder<'_> {
         Ok(MeanArea {
             cover_cm2: cyl.cover.area_cm2,
             crank_cm2: cyl.crank.area_cm2,
-            mean_cm2: 0.5 * (cyl.cover.area_cm2 + cyl.crank.area_cm2),
+            mean_cm2: cyl.mean_area_cm2(),
             difference,
             at_deg,
             relative: if largest > 0.0 {
@@ -134,8 +131,7 @@ impl Builder<'_> {
             N_P2,
         );
         let cyl = self.cyl(c);
-        let eta = cyl.pump.map_or(1.0, |p| p.efficiency);
-        let mean = 0.5 * (cyl.cover.area_cm2 + cyl.crank.area_cm2);
+        let (eta, mean) = (cyl.drawn_steam_share(), cyl.mean_area_cm2());
         let Sides {
             f_work: fw,
             f_back: fb,
@@ -194,7 +190,7 @@ impl Builder<'_> {
         if pw.abs() <= f64::EPSILON * area {
             return;
         }
-        let eta = self.cyl(c).pump.map_or(1.0, |p| p.efficiency);
+        let eta = self.cyl(c).drawn_steam_share();
         let name = &self.e.cylinders[c].name;
         self.b
             .set_context(|| format!("{name}, θ = {}°", crate::fmt::num(theta, 3)));

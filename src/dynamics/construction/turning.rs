@@ -31,7 +31,7 @@ const N_ARC: Note = note(
     "LH F, Abb. 67",
     Topic::Forces,
 );
-pub(super) const N_ORD: Note = note(
+const N_ORD: Note = note(
     "ordinate at the developed crank position",
     Some("Ordinate"),
     "LH Abb. 67",
@@ -43,7 +43,7 @@ const N_T_EACH: Note = note(
     "LH F; KG Abb. 1064",
     Topic::Forces,
 );
-const N_T_SINGLE: Note = note(
+pub(super) const N_T_SINGLE: Note = note(
     "a cylinder’s tangential force (times η) laid off alone from the developed circle",
     Some("Tangentialdruck eines Zylinders"),
     "LH F, Abb. 67",
@@ -55,7 +55,7 @@ const N_CURVE_SINGLE: Note = note(
     "LH F, Abb. 67; KG Abb. 1064",
     Topic::Forces,
 );
-const N_T_SUM: Note = note(
+pub(super) const N_T_SUM: Note = note(
     "turning force on the shaft read off",
     Some("resultierender Tangentialdruck"),
     "LH Abb. 67; KG Abb. 1062, 1064",
@@ -194,6 +194,21 @@ impl Builder<'_> {
         Ok(Some(at))
     }
 
+    /// The foot and ordinate of the abscissa θ on the developed circle (360° is its end),
+    /// the check context set to θ.
+    pub(super) fn foot(
+        &mut self,
+        fr: &TurningFrame,
+        theta: f64,
+    ) -> Result<Foot, ConstructionError> {
+        self.b
+            .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+        let arc = self.r_mm * theta.to_radians();
+        let at = (self.b).lay_off(&fr.o, &fr.axis, arc, Role::Construction, N_ARC)?;
+        let ord = (self.b).perpendicular(&fr.axis, &at, Role::Construction, N_ORD);
+        Ok(Foot { theta, at, ord })
+    }
+
     /// The ordinate at the k-th shaft angle (k = n is 360°): every cylinder's η·T laid off on
     /// top of the others, the sum read off and checked; where there are several cylinders
     /// and the board records, each one's η·T laid off alone too, its point added to
@@ -208,15 +223,7 @@ impl Builder<'_> {
         let n = self.thetas.len();
         let kk = k % n;
         let theta = if k == n { 360.0 } else { self.thetas[kk] };
-        self.b
-            .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
-        let arc = self.r_mm * theta.to_radians();
-        let a = self
-            .b
-            .lay_off(&fr.o, &fr.axis, arc, Role::Construction, N_ARC)?;
-        let ord = self
-            .b
-            .perpendicular(&fr.axis, &a, Role::Construction, N_ORD);
+        let Foot { at: a, ord, .. } = self.foot(fr, theta)?;
         let mut end = a;
         for c in 0..self.e.cylinders.len() {
             let t = self.tangential[c].as_ref().map_or(0.0, |t| t[kk]);
@@ -290,6 +297,13 @@ type Ordinate = (H<Point>, H<Point>, H<f64>);
 /// What the diagram's ordinates draw: the sum's ends, the unreduced curve's points (η < 1),
 /// each cylinder's single curve, and the sums read off.
 type Drawn = (Vec<H<Point>>, Vec<H<Point>>, Vec<Vec<H<Point>>>, Ordinates);
+
+/// Where an abscissa stands on the developed circle: its angle, its foot and its ordinate.
+pub(super) struct Foot {
+    pub(super) theta: f64,
+    pub(super) at: H<Point>,
+    pub(super) ord: H<Line>,
+}
 
 /// The axis of the developed crank circle, its start and its ordinate direction.
 pub(super) struct TurningFrame {

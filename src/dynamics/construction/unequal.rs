@@ -11,23 +11,11 @@
 //! chords cost against the exact turning force shows in the mean heights, which are measured
 //! against the exact T_m.
 
-use super::turning::{Ordinates, TurningFrame, N_ORD, N_T_FULL};
+use super::turning::{Foot, Ordinates, TurningFrame, N_T_FULL, N_T_SINGLE, N_T_SUM};
 use super::Builder;
 use crate::kernel::Point;
 use crate::protocol::{note, ConstructionError, Label, Note, Reading, Role, Topic, H};
 
-const N_FOOT: Note = note(
-    "the arc r·θ of a cylinder’s own crank ray laid off along the developed circle",
-    Some("Bogen r·α"),
-    "LH F, Abb. 59, 67",
-    Topic::Forces,
-);
-const N_OWN: Note = note(
-    "a cylinder’s tangential force (times η) laid off alone on its own abscissa",
-    Some("Tangentialdruck eines Zylinders"),
-    "LH F, Abb. 59, 67",
-    Topic::Forces,
-);
 const N_SHIFT: Note = note(
     "a cylinder’s point carried a whole developed circle on, where its curve runs over the end",
     Some("Abwicklung, periodisch fortgesetzt"),
@@ -58,12 +46,6 @@ const N_ADD: Note = note(
     "LH F, Abb. 67",
     Topic::Forces,
 );
-const N_SUM: Note = note(
-    "turning force on the shaft read off",
-    Some("resultierender Tangentialdruck"),
-    "LH Abb. 67",
-    Topic::Forces,
-);
 
 /// One of a cylinder's own ordinates.
 #[derive(Clone, Copy)]
@@ -90,13 +72,6 @@ pub(super) struct Unequal {
     pub ordinates: Ordinates,
 }
 
-/// Where an abscissa stands on the developed circle: its angle, its foot and its ordinate.
-struct Foot {
-    theta: f64,
-    at: H<Point>,
-    ord: H<crate::kernel::Line>,
-}
-
 impl Builder<'_> {
     /// Every cylinder's shaft angles, merged: the abscissae of the sum (degrees, ascending).
     fn abscissae(&self) -> Vec<f64> {
@@ -108,16 +83,6 @@ impl Builder<'_> {
         all.sort_by(f64::total_cmp);
         all.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
         all
-    }
-
-    /// The foot and ordinate of the abscissa θ (360° is the circle's end).
-    fn foot(&mut self, fr: &TurningFrame, theta: f64) -> Result<Foot, ConstructionError> {
-        self.b
-            .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
-        let arc = self.r_mm * theta.to_radians();
-        let at = (self.b).lay_off(&fr.o, &fr.axis, arc, Role::Construction, N_FOOT)?;
-        let ord = (self.b).perpendicular(&fr.axis, &at, Role::Construction, N_ORD);
-        Ok(Foot { theta, at, ord })
     }
 
     /// The diagram's ordinates where the cylinders' abscissae differ: each one's own points
@@ -176,7 +141,7 @@ impl Builder<'_> {
             self.b
                 .set_context(|| format!("θ = {}°", crate::fmt::num(f.theta, 3)));
             let len = eta * t[k] / self.dr.force_scale;
-            let p = (self.b).lay_off(&f.at, &f.ord, len, Role::Construction, N_OWN)?;
+            let p = (self.b).lay_off(&f.at, &f.ord, len, Role::Construction, N_T_SINGLE)?;
             let exact = self.exact_t(c, self.crank_deg(c, k));
             own.push(OwnPoint {
                 theta: f.theta,
@@ -232,7 +197,14 @@ impl Builder<'_> {
             )?;
             closed += exact;
         }
-        let sum = (self.b).measure(&f.at, &end, &fr.up, self.force_scale(), Label::NONE, N_SUM);
+        let sum = (self.b).measure(
+            &f.at,
+            &end,
+            &fr.up,
+            self.force_scale(),
+            Label::NONE,
+            N_T_SUM,
+        );
         let reference = self.e.efficiency * self.force_refs.iter().sum::<f64>();
         self.b.check(
             &sum,
