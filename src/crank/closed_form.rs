@@ -87,6 +87,15 @@ pub fn piston_position(r: f64, l: Option<f64>, theta_deg: f64) -> f64 {
     }
 }
 
+/// The difference u of the outstroke's and the return's piston paths at 90° from their dead
+/// centres (LH B.1, Gl. 22): exactly `2L(1 − √(1 − λ²))`, written `2L·λ²/(1 + √(1 − λ²))`
+/// so that a long rod loses no digits; LH's `u = L·λ²` keeps the series' first term
+/// (60 mm for R = 300, L = 1500 mm, where this gives 60.61).
+pub fn path_difference(r: f64, l: f64) -> f64 {
+    let lam2 = (r / l) * (r / l);
+    2.0 * l * lam2 / (1.0 + (1.0 - lam2).sqrt())
+}
+
 /// The outstroke crank angle θ (degrees) at which the piston stands `x` from the inner dead
 /// centre (0 ≤ x ≤ 2R): the angle at O of the triangle of crank R, rod L and the distance
 /// d = L + R − x from O to the crosshead, by the half-angle formula

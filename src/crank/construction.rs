@@ -104,6 +104,12 @@ const N_MEASURE_X: Note = note(
     "KG (285); LH Gl. 20, 23",
     Topic::PistonPath,
 );
+const N_U: Note = note(
+    "u: the outstroke’s path at 90° less the return’s",
+    Some("Wegunterschied"),
+    "LH B.1, Gl. 22",
+    Topic::PistonPath,
+);
 const N_ROD_LINE: Note = note(
     "rod direction extended",
     Some("Schubstangenrichtung"),
@@ -671,6 +677,9 @@ pub fn construct_at(
         bl.angle(i, request)?;
     }
     bl.b.clear_context();
+    if request.piston_path && drive.finite_rod {
+        bl.path_difference()?;
+    }
     let max_velocity = if request.max_velocity {
         Some(bl.esselborn()?)
     } else {
@@ -986,6 +995,34 @@ impl Builder<'_> {
         );
         self.cache[i].x = Some(x);
         Ok(x)
+    }
+
+    /// The difference u of the outstroke's and the return's paths at 90° (LH B.1, Gl. 22):
+    /// the outstroke's x(90°) from the inner dead centre less the return's 2R − x(270°) from
+    /// the outer one, both read off the figure; where both positions are drawn.
+    fn path_difference(&mut self) -> Result<(), ConstructionError> {
+        let at = |deg: f64| self.thetas.iter().position(|t| (t - deg).abs() < 1e-9);
+        let (Some(i), Some(j)) = (at(90.0), at(270.0)) else {
+            return Ok(());
+        };
+        let (out, ret) = (self.x(i)?, self.x(j)?);
+        let (r, l) = (self.d.crank_radius, self.d.rod_length);
+        let u = self.b.tally(
+            out.g + ret.g - 2.0 * r,
+            "mm",
+            Label::NONE,
+            &[out.id, ret.id],
+            N_U,
+        );
+        self.b.check(
+            &u,
+            "path difference u of outstroke and return at 90°",
+            "mm",
+            "LH B.1, Gl. 22",
+            r,
+            || cf::path_difference(r, l),
+        );
+        Ok(())
     }
 
     fn rod_line(&mut self, i: usize) -> Result<H<Line>, ConstructionError> {

@@ -240,6 +240,31 @@ pub(crate) fn curve(
     Ok((TolleCurve { t, d, t1 }, c_cut))
 }
 
+/// CD taken off with the dividers from D to C, at the ordinates' scale `ys`: Tolle's 3λ·a
+/// (positive for the outstroke's curve, whose D lies under the axis). The book computes CD
+/// and lays it off (LH B.3: "CD = 77,7 m/sek²"); reading it back puts the printed length
+/// beside what the sheet holds.
+pub(crate) fn read_cd(
+    b: &mut Board,
+    ax: &TolleAxis,
+    c: &TolleC,
+    curve: &TolleCurve,
+    ys: Scale,
+) -> H<f64> {
+    b.measure(
+        &curve.d,
+        &c.c,
+        &ax.vertical,
+        ys,
+        Label::NONE,
+        n(
+            "CD taken off with the dividers",
+            "Strecke CD (Tolle)",
+            "LH B.3, Abb. 55",
+        ),
+    )
+}
+
 /// The areas of acceleration and retardation (LH B.3, Abb. 56: "für die aufgewandte
 /// Beschleunigung und die Verzögerung gleich"): the signed area between the curve and the
 /// axis, from the constructed points T, D, T₁, exactly (the integrand y·x' of the quadratic

@@ -51,6 +51,12 @@ const N_PUMP_RECT: Note = note(
     "KG Abb. 1065",
     Topic::Forces,
 );
+const N_PUMP_READ: Note = note(
+    "the pump force taken off the rectangle",
+    Some("Pumpenkraft"),
+    "KG Abb. 1065-1066",
+    Topic::Forces,
+);
 const N_CURVE_STEAM: Note = note(
     "the steam’s net force reduced by η, which the rectangle is laid over",
     Some("verkleinerte Dampfüberdruckfläche"),
@@ -299,6 +305,7 @@ impl Builder<'_> {
                 let cp = tolle::point_c(self.b, &axis, self.r_mm, k.lambda)?;
                 let (out, _) = tolle::curve(self.b, &axis, &cp, a_mm, k.lambda, 1.0, "B₀")?;
                 let (ret, _) = tolle::curve(self.b, &axis, &cp, a_mm, k.lambda, -1.0, "B'₀")?;
+                self.check_cd(c, (&axis, &cp, &out));
                 for cv in [out, ret] {
                     tolle::balance(self.b, &axis, &cv);
                     let pts = tolle::envelope(self.b, &cv, 10);
@@ -318,6 +325,25 @@ impl Builder<'_> {
             self.diagrams[c] = Some(Diagram { axis, curves });
         }
         Ok(self.diagrams[c].as_ref().expect("set above"))
+    }
+
+    /// CD of cylinder c's outstroke parabola read off at the force scale and held to Tolle's
+    /// 3λ·M·v²/r (LH B.4: "CD = 5075 kg").
+    fn check_cd(&mut self, c: usize, (axis, cp, out): (&TolleAxis, &tolle::TolleC, &TolleCurve)) {
+        let name = &self.e.cylinders[c].name;
+        self.b.set_context(|| name.clone());
+        let cd = tolle::read_cd(self.b, axis, cp, out, self.force_scale());
+        let k = self.e.kinematics;
+        let ma = self.cyl(c).mass * k.a();
+        self.b.check(
+            &cd,
+            "CD = 3λ·M·v²/r, taken off between C and D (Tolle)",
+            "kg",
+            "LH B.4, Abb. 58",
+            (ma * (1.0 + k.lambda)).max(self.force_refs[c]),
+            || 3.0 * k.lambda * ma,
+        );
+        self.b.clear_context();
     }
 
     /// The net pressure and resulting force on ray k of cylinder c (LH Abb. 58).
@@ -531,17 +557,36 @@ impl Builder<'_> {
             );
         }
         let k = self.dr.force_scale;
-        for (stroke, name) in [(cf::Stroke::Out, "P_p1"), (cf::Stroke::Return, "P_p2")] {
-            let h = pump.force(stroke) / k;
+        let name = &self.e.cylinders[c].name;
+        self.b.set_context(|| name.clone());
+        let sides = [
+            (cf::Stroke::Out, "P_p1", "pump force P_p1 (outstroke)"),
+            (cf::Stroke::Return, "P_p2", "pump force P_p2 (return)"),
+        ];
+        for (stroke, name, what) in sides {
+            let force = pump.force(stroke);
             let a = self
                 .b
-                .lay_off(&ends[0], &ups[0], h, Role::Given, N_PUMP_RECT)?;
+                .lay_off(&ends[0], &ups[0], force / k, Role::Given, N_PUMP_RECT)?;
             let b = self
                 .b
-                .lay_off(&ends[1], &ups[1], h, Role::Given, N_PUMP_RECT)?;
+                .lay_off(&ends[1], &ups[1], force / k, Role::Given, N_PUMP_RECT)?;
             let mark = Role::Given.named(name);
             self.b.curve(&[a, b], Trace::Polygon, mark, N_PUMP_RECT);
+            // Its height taken off again at the force scale (KG: "P_p1 = 3490 kg").
+            let p = self.b.measure(
+                &ends[1],
+                &b,
+                &ups[1],
+                self.force_scale(),
+                Label::NONE,
+                N_PUMP_READ,
+            );
+            let reference = force.abs().max(self.force_refs[c]);
+            self.b
+                .check(&p, what, "kg", "KG Abb. 1053, 1065", reference, || force);
         }
+        self.b.clear_context();
         Ok(())
     }
 

@@ -210,12 +210,17 @@ impl Engine {
         model::mean_turning_force(&self.kinematics, &self.cylinders, self.efficiency)
     }
 
+    /// The stroke s (m) and the revolutions per minute n = 60·v/(2πr).
+    pub fn stroke_and_rpm(&self) -> (f64, f64) {
+        let k = &self.kinematics;
+        let s = 2.0 * k.r / 1000.0;
+        (s, 60.0 * k.v / (2.0 * std::f64::consts::PI * k.r / 1000.0))
+    }
+
     /// Indicated power of each cylinder from its exact mean pressures (LH Gl. 68), times η:
     /// (F_D p_m^D + F_K p_m^K) s n / (75 · 60).
     pub fn power_from_pressures(&self) -> Vec<f64> {
-        let k = &self.kinematics;
-        let s = 2.0 * k.r / 1000.0;
-        let n = 60.0 * k.v / (2.0 * std::f64::consts::PI * k.r / 1000.0);
+        let (s, n) = self.stroke_and_rpm();
         self.cylinders
             .iter()
             .map(|c| {

@@ -54,6 +54,23 @@ impl BookRow {
     }
 }
 
+/// Whether a check stands in the situation `at`: its context, or its context and object as
+/// the check table's context column writes them ("dead load: joint I, member 1").
+fn situated(e: &crate::protocol::CheckEntry, at: &str) -> bool {
+    let context = e.context.unwrap_or("");
+    match &e.check.object {
+        None => e.context == Some(at),
+        Some(object) => {
+            e.context == Some(at)
+                || match at.strip_suffix(&**object) {
+                    Some(head) if context.is_empty() => head.is_empty(),
+                    Some(head) => head.strip_suffix(", ") == Some(context),
+                    None => false,
+                }
+        }
+    }
+}
+
 /// The book rows of `values` against the checks on `board` (every check must be kept:
 /// a board of [`Mode::Checks`](crate::protocol::Mode) with `every`, or a drawing board).
 pub fn book_rows(board: &Board, values: &[BookValue]) -> Vec<BookRow> {
@@ -61,8 +78,7 @@ pub fn book_rows(board: &Board, values: &[BookValue]) -> Vec<BookRow> {
     (values.iter())
         .map(|v| {
             let found = entries.iter().find(|e| {
-                *e.check.quantity == *v.check
-                    && v.at.as_deref().is_none_or(|at| e.context == Some(at))
+                *e.check.quantity == *v.check && v.at.as_deref().is_none_or(|at| situated(e, at))
             });
             let within = v.tolerance();
             let verdict = match found {
@@ -204,6 +220,41 @@ mod tests {
         );
         assert!(
             text.contains("4 book values, 1 reproduced, 1 differing for a named cause, 2 failed")
+        );
+    }
+
+    /// Where checks of one quantity differ only by their object (the members at a joint),
+    /// `at` names the object as the check table does.
+    #[test]
+    fn a_book_value_finds_its_member_by_the_tables_context() {
+        let n = Note::new("member", Topic::Custom("book"));
+        let mut b = Board::recording();
+        b.set_context(|| "dead load: joint I".into());
+        for (k, force) in [(1, -869.4), (2, 441.6)] {
+            let s = b.tally(force, "kg", "S", &[], n.clone());
+            b.checking(
+                || format!("member {k}"),
+                |b| b.check(&s, "AB", "kg", "ΣY = 0", 1000.0, || force),
+            );
+        }
+        let rows = book_rows(
+            &b,
+            &[
+                value(441.6, Some("dead load: joint I, member 2"), None),
+                value(-869.4, Some("dead load: joint I"), None),
+                value(441.6, Some("joint I, member 2"), None),
+                value(441.6, Some("dead load: joint I, member 22"), None),
+            ],
+        );
+        let verdicts: Vec<_> = rows.iter().map(|r| r.verdict.clone()).collect();
+        assert_eq!(
+            verdicts,
+            [
+                Verdict::Reproduced,
+                Verdict::Reproduced,
+                Verdict::NoSuchCheck,
+                Verdict::NoSuchCheck
+            ]
         );
     }
 }

@@ -24,8 +24,9 @@ pub struct BookValue {
     /// The check it stands beside, by the quantity the check table names
     /// (`"rod force S"`).
     pub check: String,
-    /// The situation of that check (`"θ = 30°"`, `"dead load"`), where the quantity is
-    /// checked in several; absent: the first check of that quantity.
+    /// The situation of that check as the check table's context column writes it
+    /// (`"θ = 30°"`, `"dead load"`, `"dead load: joint I, member 1"`), where the quantity
+    /// is checked in several; absent: the first check of that quantity.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub at: Option<String>,
     /// The number as the book prints it, in the check's unit.

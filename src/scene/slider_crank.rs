@@ -401,6 +401,27 @@ impl Speed {
         Ok(())
     }
 
+    /// The speed against the crank radius `r` (mm): a crank-pin speed or revolutions per
+    /// minute beyond what a number holds (a wheel of 1e-300 mm) are refused, naming the
+    /// field, so that no power or force reckoned from them overflows.
+    pub(super) fn check_revolutions(&self, f: Fields, r: f64) -> Result<(), SceneError> {
+        let v = self.crank_pin_speed(r);
+        let n = 60.0 * v / (2.0 * std::f64::consts::PI * r / 1000.0);
+        if v.is_finite() && n.is_finite() {
+            return Ok(());
+        }
+        let field = match self {
+            Speed::Rpm(_) => "speed.rpm",
+            Speed::CrankPinMS(_) => "speed.crank_pin_m_s",
+            Speed::Train { .. } => "speed.train.wheel_diameter_mm",
+        };
+        Err(f.bad(
+            field,
+            "gives a crank speed beyond the numbers the engine can hold: give a realistic speed"
+                .into(),
+        ))
+    }
+
     /// The crank-pin speed v (m/s) for the crank radius `r` (mm).
     pub fn crank_pin_speed(&self, r: f64) -> f64 {
         match self {

@@ -18,7 +18,9 @@ use super::beam::{construct_beam_at, BeamDrawing, BeamRequest, BeamResults};
 use super::{Beam, PointLoad};
 use crate::kernel::tolerance::REL_POSITION_EPS;
 use crate::kernel::{Point, Vector};
-use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Scale, Topic, Trace};
+use crate::protocol::{
+    note, Board, ConstructionError, Label, Note, Role, Scale, Topic, Trace, Weighted, H,
+};
 use serde::Serialize;
 
 const N_BASE: Note = note(
@@ -61,6 +63,12 @@ const N_MB: Note = note(
     "resultant bending moment M_b = y·H",
     Some("Biegungsmoment"),
     "LH C.7",
+    Topic::Moment,
+);
+const N_D: Note = note(
+    "diameter d = ∛(M_b / 0.1·k_b) from the ordinate",
+    Some("Wellendurchmesser"),
+    "LH I Aufgabe 7",
     Topic::Moment,
 );
 const N_LEG_Y: Note = note(
@@ -565,7 +573,41 @@ impl Combine<'_> {
         let formula = "LH C.7: √(M1² + M2² + 2 M1 M2 cos α)";
         let what = "resultant bending moment M_b";
         b.check(&h, what, "kg·m", formula, self.mref, || self.mb_closed(x));
+        if let Some(kb) = self.shaft.kb {
+            self.diameter(b, x, &h, kb);
+        }
         Ok(h.g)
+    }
+
+    /// The diameter the bending moment read off at x needs, d = ∛(M_b / 0.1·k_b) (LH I
+    /// Aufgabe 7: "d = 2,92·∛25 = 85 mm"), reckoned from the ordinate and checked against
+    /// the same rule over the closed-form M_b.
+    fn diameter(&self, b: &mut Board, x: f64, mb: &H<f64>, kb: f64) {
+        let d_mm = |m: f64| 10.0 * super::sizing::shaft_diameter_cm(100.0 * m, kb);
+        let d = d_mm(mb.g);
+        b.set_context(|| format!("x = {} m", crate::fmt::num(x, 4)));
+        // dd/dM = d/(3M): how far d moves for one kg·m of the ordinate's error.
+        let weight = d / (3.0 * mb.g.abs());
+        let h = b.reckon(
+            d,
+            "mm",
+            Label::NONE,
+            Weighted {
+                inputs: &[mb.id],
+                weight,
+            },
+            N_D,
+        );
+        let largest = d_mm(self.mref);
+        b.check(
+            &h,
+            "shaft diameter d for M_b at k_b",
+            "mm",
+            "LH C.7, Aufgabe 7: M_b = 0,1·d³·k_b",
+            largest,
+            || d_mm(self.mb_closed(x)),
+        );
+        b.clear_context();
     }
 
     /// The ideal moment by the construction of Abb. 29 (Gl. 13): legs M_b and α₀·M_d, the

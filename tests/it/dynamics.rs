@@ -521,6 +521,14 @@ fn bad_input_names_the_field() {
                 v["cylinders"][1]["card"] = card(f64::MIN_POSITIVE, 1.5);
             }),
         ),
+        // A wheel too small for the crank speed to be a number (the power would overflow).
+        (
+            "speed.train.wheel_diameter_mm",
+            Box::new(|v| {
+                v["speed"] =
+                    serde_json::json!({"train": {"km_h": 60, "wheel_diameter_mm": 4.9e-324}});
+            }),
+        ),
     ];
     for (field, edit) in bad {
         let e = with(LOCO, edit).expect_err(field);

@@ -61,9 +61,10 @@ fn piston_path_alone_constructs_no_velocity_and_no_force_step() {
     assert_eq!(t.get(&Topic::Forces), None);
     // Setup: O, piston line, vertical, crank circle, dead centre, rod arc, crosshead dead
     // centre, guide = 8. Division of the crank circle = 1. Per angle: crank, rod arc,
-    // crosshead, rod, measure = 5.
+    // crosshead, rod, measure = 5. The difference u of the two strokes' paths at 90° (LH
+    // Gl. 22), reckoned once = 1.
     assert_eq!(t[&Topic::Setup], 8);
-    assert_eq!(t[&Topic::PistonPath], 1 + 12 * 5);
+    assert_eq!(t[&Topic::PistonPath], 1 + 12 * 5 + 1);
     assert_eq!(count(&b, "piston path"), 12);
     let measures = b
         .steps()
@@ -209,8 +210,9 @@ fn acceleration_alone_draws_no_velocity_and_no_force_and_only_the_frame_it_stand
     // 9 joining lines with their points of contact, the curve (21); then one point per crank
     // angle: 7 steps (two divisions, the joining line, the point, its foot, two readings).
     // The axis now holds O, the axis, the vertical, the ends with their ordinates (7) and C
-    // with its ordinate (2); each curve adds the balance of its areas (a tally).
-    let fixed = 9 + 2 * (8 + 1 + 2 + 9 * 2 + 1);
+    // with its ordinate (2); each curve adds the balance of its areas (a tally), and the
+    // outstroke's CD is taken off again (1).
+    let fixed = 9 + 2 * (8 + 1 + 2 + 9 * 2 + 1) + 1;
     assert_eq!(t[&Topic::Acceleration], fixed + 12 * 7, "{t:?}");
     assert_eq!(count(&b, "piston acceleration b"), 12);
     assert_eq!(count(&b, "b against the finite rod"), 12);

@@ -61,6 +61,9 @@ impl Builder<'_> {
                     r,
                     || lam * r,
                 );
+                if sense > 0.0 && lam > 0.0 {
+                    self.check_cd(&ax, &c_pt, &c);
+                }
                 tolle::balance(self.b, &ax, &c);
                 let pts = tolle::envelope(self.b, &c, ENVELOPE_PARTS);
                 if pts.len() >= 2 {
@@ -75,6 +78,24 @@ impl Builder<'_> {
             });
         }
         Ok(self.tolle.as_ref().expect("set above"))
+    }
+
+    /// CD read off the outstroke's curve and held to Tolle's 3λ·v²/r (LH B.3).
+    fn check_cd(&mut self, ax: &tolle::TolleAxis, c: &tolle::TolleC, curve: &tolle::TolleCurve) {
+        let ys = Scale {
+            per_mm: self.scales.acceleration_scale,
+            unit: "m/s²",
+        };
+        let cd = tolle::read_cd(self.b, ax, c, curve, ys);
+        let (lam, a) = (self.lambda(), self.d.v2_over_r());
+        self.b.check(
+            &cd,
+            "CD = 3λ·v²/r, taken off between C and D (Tolle)",
+            "m/s²",
+            "LH B.3, Abb. 55",
+            a * (1.0 + lam),
+            || 3.0 * lam * a,
+        );
     }
 
     /// The piston acceleration at angle i on Tolle's parabola, read off and checked against

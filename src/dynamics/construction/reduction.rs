@@ -5,7 +5,7 @@
 //! piston force's scale (a₁ = a·F_w/(f·k) = a·R, Gl. 18-19). The reduction factor R is read
 //! off the drawing as a₁/a, side by side, and checked against F_w/(f·k).
 
-use super::super::model::{Cylinder, IndicatorCard, Side};
+use super::super::model::{self, Cylinder, IndicatorCard, Side};
 use super::super::{rules, DynamicsDrawing, Engine};
 use crate::fmt::num;
 use crate::kernel::{Line, Point};
@@ -106,6 +106,12 @@ const N_MEAN: Note = note(
     "the mean pressure from the card’s 11 ordinates: p_m = h_m/f",
     Some("mittlerer indizierter Druck"),
     "LH G, Gl. 53-58",
+    Topic::Forces,
+);
+const N_POWER: Note = note(
+    "indicated power from the two sides’ mean pressures",
+    Some("indizierte Leistung"),
+    "LH H, Gl. 65-68",
     Topic::Forces,
 );
 const N_REDUCED: Note = note(
@@ -271,6 +277,7 @@ fn reduce(
     b.clear_context();
     let (taken, ticks) = the_card(b, cyl, &card, top)?;
     let means = [false, true].map(|crank| mean_pressures(b, cyl, (&card, top), &taken, crank));
+    indicated_power(b, e, cyl, &means);
     let mut col = 1;
     if let Some(f_new) = card.respring_mm_per_at {
         b.set_part(Part::packed(row, col));
@@ -285,7 +292,7 @@ fn reduce(
         } else {
             "cover side (D)"
         };
-        let (trap, simp, exact) = means[usize::from(crank)];
+        let (trap, simp, exact, _) = means[usize::from(crank)];
         let cells = [
             num(f_w, 1),
             num(r.g, 3),
@@ -609,8 +616,8 @@ fn area_of(cyl: &Cylinder) -> f64 {
 type Factor = (bool, f64, H<f64>);
 
 /// A side's mean pressure by the trapezoid rule and by Simpson's rule over the card's
-/// ordinates, and exactly (at).
-type Means = (H<f64>, H<f64>, f64);
+/// ordinates, exactly, and by Simpson's rule over the exact pressures (at).
+type Means = (H<f64>, H<f64>, f64, f64);
 
 /// The side's mean pressure p_m = h_m/f (LH Gl. 53) from the widths of its card at the 11
 /// ordinates, by the trapezoid rule (Gl. 55) and by Simpson's rule (Gl. 58), each held to
@@ -636,6 +643,7 @@ fn mean_pressures(
         .map(|x| cw.pressure(cyl, x) - cb.pressure(cyl, x))
         .collect();
     let inputs: Vec<_> = work.iter().chain(back).map(|h| h.id).collect();
+    let simpson_exact = rules::simpson(&exact).unwrap_or(rules::trapezoid(&exact));
     let side = if crank { "crank side" } else { "cover side" };
     let name = &cyl.name;
     b.set_context(|| format!("{name}, {side}"));
@@ -666,11 +674,52 @@ fn mean_pressures(
         "at",
         "LH Gl. 53, 58",
         reference,
-        || rules::simpson(&exact).unwrap_or(rules::trapezoid(&exact)),
+        || simpson_exact,
     );
     b.clear_context();
     let ind = if crank { &cyl.crank } else { &cyl.cover };
-    (trap, simp, ind.indicator.mean_pressure())
+    (trap, simp, ind.indicator.mean_pressure(), simpson_exact)
+}
+
+/// The cylinder's indicated power from its two sides' mean pressures by Simpson's rule,
+/// N_i = (F_D p_m^D + F_K p_m^K)·s·n/(75·60) (LH H, Gl. 65-68: "608 PS" for the
+/// locomotive), held to the same over the exact pressures.
+fn indicated_power(b: &mut Board, e: &Engine, cyl: &Cylinder, means: &[Means; 2]) {
+    let (s, n) = e.stroke_and_rpm();
+    let areas = [cyl.cover.area_cm2, cyl.crank.area_cm2];
+    let of = |p: [f64; 2]| model::indicated_power([(areas[0], p[0]), (areas[1], p[1])], s, n);
+    let (value, exact) = (
+        of([means[0].1.g, means[1].1.g]),
+        of([means[0].3, means[1].3]),
+    );
+    // One at of either side's p_m moves N_i by at most the larger area's share.
+    let weight = of([1.0, 0.0]).max(of([0.0, 1.0]));
+    if !(value.is_finite() && exact.is_finite() && weight.is_finite()) {
+        // A speed or an area that a number cannot carry into the power: no row.
+        return;
+    }
+    let name = &cyl.name;
+    b.set_context(|| name.clone());
+    let inputs = [means[0].1.id, means[1].1.id];
+    let power = b.reckon(
+        value,
+        "PS",
+        Label::NONE,
+        Weighted {
+            inputs: &inputs,
+            weight,
+        },
+        N_POWER,
+    );
+    b.check(
+        &power,
+        "indicated power N_i from the sides’ p_m (Simpson)",
+        "PS",
+        "LH H, Gl. 65-68",
+        exact,
+        || exact,
+    );
+    b.clear_context();
 }
 
 /// The reduction factor of a side read off its working stroke's highest ordinate: R = a₁/a

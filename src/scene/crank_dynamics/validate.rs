@@ -20,6 +20,7 @@ impl DynamicsScene {
         let r = self.mechanism.check(f)?;
         self.mechanism.check_rod(f, r)?;
         self.speed.check(f)?;
+        self.speed.check_revolutions(f, r)?;
         self.check_rays(f)?;
         if self.outputs.is_empty() {
             return Err(f.bad("outputs", "ask for at least one output".into()));
