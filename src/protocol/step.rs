@@ -145,6 +145,9 @@ pub enum Role {
     Velocity,
     /// A guide or support: heavy with hatching.
     Guide,
+    /// A result drawn beside the curve it is reduced from: medium dashed (KG Abb. 1062's
+    /// η·T beside T, "gestrichelte Linie").
+    Reduced,
 }
 
 /// Where a part of a figure stands on the sheet: its row (down the sheet) and column

@@ -56,6 +56,7 @@ pub fn class(role: Role) -> &'static str {
         Role::Force => "force",
         Role::Velocity => "velocity",
         Role::Guide => "guide",
+        Role::Reduced => "reduced",
     }
 }
 
@@ -72,6 +73,7 @@ pub fn css() -> String {
 .force{{stroke-width:0.35;marker-end:url(#arrow)}}\
 .velocity{{stroke-width:0.35;marker-end:url(#arrow-open)}}\
 .guide{{stroke-width:0.6}}\
+.reduced{{stroke-width:0.35;stroke-dasharray:3 1.2}}\
 .hatch{{stroke-width:0.18}}\
 .leader{{stroke-width:0.12}}\
 circle.pt{{fill:#000;stroke:none}}\

@@ -126,14 +126,16 @@ impl Builder<'_> {
         };
         self.b.clear_context();
         // Where η < 1, KG Abb. 1062 draws the turning force before and after the reduction:
-        // T in a full line, η·T, which the resistance is measured against, apart from it.
-        let name = if full.is_empty() { "T" } else { "η·T" };
-        if !full.is_empty() {
+        // T in a full line, η·T, which the resistance is measured against, dashed
+        // ("gestrichelte Linie").
+        let role = if full.is_empty() {
+            Role::Result.named("T")
+        } else {
             self.b
-                .curve(&full, Trace::Polygon, Role::Given.named("T"), N_CURVE_FULL);
-        }
-        self.b
-            .curve(&pts, Trace::Polygon, Role::Result.named(name), N_CURVE);
+                .curve(&full, Trace::Polygon, Role::Result.named("T"), N_CURVE_FULL);
+            Role::Reduced.named("η·T")
+        };
+        self.b.curve(&pts, Trace::Polygon, role, N_CURVE);
         let mean = self.mean_line(&frame, &out)?;
         self.excess_areas(&pts, (&mean.0, &mean.1))?;
         // The single cylinders' curves after the areas' signs, so that their names are
