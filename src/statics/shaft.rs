@@ -584,10 +584,14 @@ impl Combine<'_> {
     /// the same rule over the closed-form M_b.
     fn diameter(&self, b: &mut Board, x: f64, mb: &H<f64>, kb: f64) {
         let d_mm = |m: f64| 10.0 * super::sizing::shaft_diameter_cm(100.0 * m, kb);
-        let d = d_mm(mb.g);
-        b.set_context(|| format!("x = {} m", crate::fmt::num(x, 4)));
+        let (d, closed, largest) = (d_mm(mb.g), d_mm(self.mb_closed(x)), d_mm(self.mref));
         // dd/dM = d/(3M): how far d moves for one kg·m of the ordinate's error.
         let weight = d / (3.0 * mb.g.abs());
+        if ![d, closed, largest, weight].iter().all(|v| v.is_finite()) {
+            // A k_b so small that no number holds the diameter: no row.
+            return;
+        }
+        b.set_context(|| format!("x = {} m", crate::fmt::num(x, 4)));
         let h = b.reckon(
             d,
             "mm",
@@ -598,14 +602,13 @@ impl Combine<'_> {
             },
             N_D,
         );
-        let largest = d_mm(self.mref);
         b.check(
             &h,
             "shaft diameter d for M_b at k_b",
             "mm",
             "LH C.7, Aufgabe 7: M_b = 0,1·d³·k_b",
             largest,
-            || d_mm(self.mb_closed(x)),
+            || closed,
         );
         b.clear_context();
     }
