@@ -557,8 +557,8 @@ impl Builder<'_> {
             );
         }
         let k = self.dr.force_scale;
-        let name = &self.e.cylinders[c].name;
-        self.b.set_context(|| name.clone());
+        let cylinder = &self.e.cylinders[c].name;
+        self.b.set_context(|| cylinder.clone());
         let sides = [
             (cf::Stroke::Out, "P_p1", "pump force P_p1 (outstroke)"),
             (cf::Stroke::Return, "P_p2", "pump force P_p2 (return)"),

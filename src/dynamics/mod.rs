@@ -213,8 +213,7 @@ impl Engine {
     /// The stroke s (m) and the revolutions per minute n = 60·v/(2πr).
     pub fn stroke_and_rpm(&self) -> (f64, f64) {
         let k = &self.kinematics;
-        let s = 2.0 * k.r / 1000.0;
-        (s, 60.0 * k.v / (2.0 * std::f64::consts::PI * k.r / 1000.0))
+        (2.0 * k.r / 1000.0, model::revolutions_per_minute(k.v, k.r))
     }
 
     /// Indicated power of each cylinder from its exact mean pressures (LH Gl. 68), times η:

@@ -165,6 +165,12 @@ pub fn area_cm2(bore_mm: f64, rod_mm: f64) -> f64 {
     std::f64::consts::PI / 4.0 * ((bore_mm / 10.0).powi(2) - (rod_mm / 10.0).powi(2))
 }
 
+/// Revolutions per minute of a crank of radius `r_mm` whose pin runs at `v` m/s:
+/// n = 60·v/(2πr) (LH H).
+pub fn revolutions_per_minute(v: f64, r_mm: f64) -> f64 {
+    60.0 * v / (2.0 * std::f64::consts::PI * r_mm / 1000.0)
+}
+
 /// Indicated power of a double-acting cylinder (PS, LH Gl. 68):
 /// `(F_D p_m^D + F_K p_m^K) · s · n / (75 · 60)`, areas in cm², p_m in at, s in m, n per min.
 pub fn indicated_power(sides: [(f64, f64); 2], s_m: f64, n: f64) -> f64 {

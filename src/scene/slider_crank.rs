@@ -406,7 +406,7 @@ impl Speed {
     /// field, so that no power or force reckoned from them overflows.
     pub(super) fn check_revolutions(&self, f: Fields, r: f64) -> Result<(), SceneError> {
         let v = self.crank_pin_speed(r);
-        let n = 60.0 * v / (2.0 * std::f64::consts::PI * r / 1000.0);
+        let n = crate::dynamics::model::revolutions_per_minute(v, r);
         if v.is_finite() && n.is_finite() {
             return Ok(());
         }
