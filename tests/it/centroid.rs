@@ -77,6 +77,39 @@ fn self_intersecting_polygons_are_refused_with_the_edges_named() {
     assert!(construct_centroid(&mut b, &points(&bow), &d).is_err());
 }
 
+#[test]
+fn a_square_whose_part_centroids_lie_on_one_line() {
+    // A square standing on a corner, fanned from its left corner: both triangles have their
+    // centroids on the vertical diagonal, (cx, ±r/3), so their vertical weights act on one
+    // line, which the force system sums without a funicular polygon (LH A.2, Abb. 2). Found
+    // by the random polygons below: that sum's moment once came out with its sign turned.
+    let (cx, r) = (-1.0516917909315904, 0.3);
+    let pts: Vec<[f64; 2]> = (0..4)
+        .map(|i| {
+            let a = std::f64::consts::TAU * i as f64 / 4.0;
+            [cx + r * a.cos(), r * a.sin()]
+        })
+        .collect();
+    let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(300.0);
+    let d = CentroidDrawing {
+        length_scale: 25.0,
+        area_scale: 0.05,
+        fan_from: 2,
+    };
+    let c = construct_centroid(&mut b, &points(&pts), &d).unwrap();
+    for k in b.steps().iter().flat_map(|s| &s.checks) {
+        assert!(
+            k.passed,
+            "{}: {} vs {}",
+            k.quantity, k.constructed, k.closed_form
+        );
+    }
+    assert!(
+        (c.centroid.x - cx).abs() < 1e-9 && c.centroid.y.abs() < 1e-9,
+        "{c:?}"
+    );
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(96))]
     /// Star-shaped random polygons (simple by construction): the construction finds the

@@ -63,8 +63,15 @@ fn every_check_passes_at_many_angles_for_every_rod_ratio() {
         // The two curves' areas of acceleration and retardation balance: two more.
         // And the piston path by the arc drawn once (LH Abb. 49) at every angle. A finite
         // rod adds Tolle's CD read off (LH B.3) and the paths' difference u at 90° (LH B.1).
+        // Esselborn's position on the return: its angle, and where the rod is finite the
+        // right angle at A′ (LH B.2's 100°44′).
         let finite = 2 * usize::from(lambda > 0.0);
-        assert_eq!(checks.len(), 72 * 12 + 2 + 5 + 2 + finite, "λ = {lambda}");
+        let ret = 1 + usize::from(lambda > 0.0);
+        assert_eq!(
+            checks.len(),
+            72 * 12 + 2 + 5 + 2 + finite + ret,
+            "λ = {lambda}"
+        );
         for c in &checks {
             assert!(c.constructed.is_finite() && c.closed_form.is_finite());
             assert!(

@@ -43,12 +43,55 @@ fn lh_s1_forces_on_one_line_of_action() {
         f(2.0, 0.0, -250.0, 0.0),
         f(3.0, 0.0, 50.0, 0.0),
     ];
-    let (_, r) = run(&forces, &[]);
+    let (b, r) = run(&forces, &[]);
     match r.resultant {
         Resultant::Force { r, moment, .. } => {
             assert!((r.x - 150.0).abs() < 1e-9 && r.y.abs() < 1e-9);
             assert!(moment.abs() < 1e-9);
         }
+        o => panic!("{o:?}"),
+    }
+    // LH Abb. 2: the forces laid off one under the other and summed; no pole and no
+    // funicular polygon, whose strings would all pass through one point of the line.
+    let steps = b.steps();
+    let drawn = |w: &str| steps.iter().any(|s| s.caption.contains(w));
+    assert!(!drawn("pole") && !drawn("string"));
+    let sum = (steps.iter().flat_map(|s| &s.checks))
+        .find(|c| c.quantity.starts_with("resultant along the common line"))
+        .expect("the algebraic sum is checked");
+    assert!(
+        (sum.constructed - 150.0).abs() < 1e-9,
+        "{}",
+        sum.constructed
+    );
+}
+
+#[test]
+fn forces_on_one_line_that_cancel_are_in_equilibrium_lh_abb_1() {
+    // LH Abb. 1: P − P₁ = 0, on a vertical line, and a force resolved along two lines.
+    let forces = [f(0.0, 0.0, 0.0, 200.0), f(0.0, 2.0, 0.0, -200.0)];
+    let res = [Resolution {
+        force: 1,
+        along: [0.0, 60.0],
+        equilibrant: false,
+    }];
+    let (b, r) = run(&forces, &res);
+    assert_eq!(r.resultant, Resultant::Equilibrium);
+    assert!(b.steps().iter().all(|s| !s.caption.contains("pole")));
+    // 200 kg straight down: −230.94 kg along 60° (pointing down-left) and +115.47 along 0°.
+    let c = r.components[0];
+    assert!((c.first - 115.470053837925).abs() < 1e-9, "{c:?}");
+    assert!((c.second + 230.940107675850).abs() < 1e-9, "{c:?}");
+}
+
+#[test]
+fn a_force_a_hair_off_the_line_keeps_the_funicular_polygon() {
+    // 1 mm off a 3 m line: not one line of action, so the pole and strings are drawn.
+    let forces = [f(0.0, 0.0, 500.0, 0.0), f(3.0, 0.001, -150.0, 0.0)];
+    let (b, r) = run(&forces, &[]);
+    assert!(b.steps().iter().any(|s| s.caption.contains("pole")));
+    match r.resultant {
+        Resultant::Force { r, .. } => assert!((r.x - 350.0).abs() < 1e-9),
         o => panic!("{o:?}"),
     }
 }

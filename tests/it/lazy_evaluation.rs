@@ -234,7 +234,8 @@ fn esselborn_alone_constructs_one_position_and_no_crank_division() {
     let t = by_topic(&b);
     assert_eq!(t.get(&Topic::PistonPath), None);
     assert_eq!(t.get(&Topic::Forces), None);
-    assert_eq!(count(&b, "crank angle of the rod perpendicular"), 1);
+    // On the outstroke and on the return (LH B.2: 79°16′ and 100°44′).
+    assert_eq!(count(&b, "crank angle of the rod perpendicular"), 2);
     assert_eq!(count(&b, "piston velocity at Esselborn"), 1);
     // No velocities constructed, no mean piston speed read off them (LH Gl. 26).
     assert_eq!(count(&b, "v / c_m"), 0);

@@ -93,6 +93,30 @@ const N_ANGLE: Note = note(
     "LH B.2",
     Topic::Velocity,
 );
+const N_A2: Note = note(
+    "on the return: the arc about B cuts the crank circle again, under the piston line, at A′",
+    Some("Kurbelstellung für c_max auf dem Rückgang"),
+    "LH B.2, Abb. 52",
+    Topic::Velocity,
+);
+const N_CRANK2: Note = note(
+    "crank OA′ and rod A′B on the return",
+    Some("Kurbel und Schubstange"),
+    "LH B.2, Abb. 52",
+    Topic::Velocity,
+);
+const N_DEAD2: Note = note(
+    "the dead centre where the return begins",
+    Some("Totpunkt"),
+    "LH B.2",
+    Topic::Velocity,
+);
+const N_ANGLE2: Note = note(
+    "crank angle of A′, counted from the dead centre where the return begins",
+    Some("Kurbelwinkel auf dem Rückgang"),
+    "LH B.2",
+    Topic::Velocity,
+);
 const N_RIGHT: Note = note(
     "the angle at A between crank and rod",
     Some("rechter Winkel bei A"),
@@ -118,8 +142,9 @@ const N_C: Note = note(
     Topic::Velocity,
 );
 
-/// Esselborn's figure: the crosshead B (or a point of the infinite rod), the pin A, the rod.
-type Position = (H<Point>, H<Point>, H<Line>);
+/// Esselborn's figure: the crosshead B (or a point of the infinite rod), the pin A, the rod,
+/// and the rod-length arc about B where the rod is finite.
+type Position = (H<Point>, H<Point>, H<Line>, Option<H<Circle>>);
 
 impl Builder<'_> {
     /// Esselborn's construction, the velocity there by the parallel to the rod, and the exact
@@ -128,7 +153,7 @@ impl Builder<'_> {
         let f = self.frame()?;
         let (o, axis, vertical, circle, dead) =
             (f.o, f.piston_line, f.vertical, f.crank_circle, f.dead);
-        let (b_pt, a, rod) = if self.d.finite_rod {
+        let (b_pt, a, rod, arc) = if self.d.finite_rod {
             self.esselborn_point(o, axis, circle, dead)?
         } else {
             self.infinite_rod_point(o, axis, vertical, circle)?
@@ -167,6 +192,7 @@ impl Builder<'_> {
         );
         self.against_mean_speed(&c, (lam, phi));
         self.v_over_mean_speed();
+        self.on_the_return((b_pt, a, rod, arc))?;
         let exact = cf::max_velocity_angle(lam);
         Ok(MaxVelocity {
             esselborn_deg: angle.g,
@@ -297,7 +323,7 @@ impl Builder<'_> {
         b.segment(&o, &a, Role::Result, N_CRANK);
         b.segment(&a, &bp, Role::Result, N_CRANK);
         let rod = b.line_through(&bp, &a, Role::Construction, N_CRANK)?;
-        Ok((bp, a, rod))
+        Ok((bp, a, rod, Some(arc)))
     }
 
     /// The infinitely long rod stays parallel to the piston line: it is perpendicular to the
@@ -321,7 +347,55 @@ impl Builder<'_> {
         b.segment(&o, &a, Role::Result, N_CRANK);
         let rod = b.parallel(&axis, &a, Role::Construction, N_ROD_INF);
         let bp = b.lay_off(&a, &rod, -self.r, Role::Result, N_ROD_INF)?;
-        Ok((bp, a, rod))
+        Ok((bp, a, rod, None))
+    }
+
+    /// The same position on the return (LH B.2: 100°44′ on the return against 79°16′ on the
+    /// outstroke): the rod-length arc about B cuts the crank circle a second time, under the
+    /// piston line, at A′ (the infinite rod: the crank straight down). Its angle is read from
+    /// the dead centre where the return begins, as LH counts the return's angles.
+    fn on_the_return(&mut self, (bp, a, _, arc): Position) -> Result<(), ConstructionError> {
+        let f = self.frame()?;
+        let (o, axis, vertical, circle, dead) =
+            (f.o, f.piston_line, f.vertical, f.crank_circle, f.dead);
+        let b = &mut *self.b;
+        // A′ is A mirrored in the piston line; the return begins opposite the first dead centre.
+        let under = Point::new(a.g.x, 2.0 * o.g.y - a.g.y);
+        let opposite = Point::from(2.0 * o.g.coords - dead.g.coords);
+        let a2 = match arc {
+            Some(arc) => {
+                b.cut_circle_circle(&circle, &arc, Branch::Near(under), Label::plain("A′"), N_A2)?
+            }
+            None => b.cut_line_circle(
+                &vertical,
+                &circle,
+                Branch::Near(under),
+                Label::plain("A′"),
+                N_A2,
+            )?,
+        };
+        b.segment(&o, &a2, Role::Result, N_CRANK2);
+        if arc.is_some() {
+            b.segment(&a2, &bp, Role::Result, N_CRANK2);
+        }
+        let start =
+            b.cut_line_circle(&axis, &circle, Branch::Near(opposite), Label::NONE, N_DEAD2)?;
+        let angle = b.measure_angle(&o, &start, &a2, Label::plain("α′"), N_ANGLE2);
+        let lam = self.lambda();
+        self.b.check(
+            &angle,
+            "crank angle of the rod perpendicular to the crank on the return (Esselborn)",
+            "°",
+            "180° − α, α from tg α = L/R (LH Abb. 52)",
+            90.0,
+            || 180.0 - cf::rod_perpendicular_angle(lam),
+        );
+        if arc.is_some() {
+            let right = self.b.measure_angle(&a2, &o, &bp, Label::NONE, N_RIGHT);
+            let what = "angle between crank and rod at A′ (the return)";
+            self.b.check(&right, what, "°", "LH Abb. 52", 90.0, || 90.0);
+        }
+        Ok(())
     }
 
     /// The piston velocity at A by the parallel to the rod through the end of v (KG Abb. 1049).

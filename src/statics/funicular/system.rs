@@ -9,7 +9,9 @@ use super::{
 };
 use crate::kernel::tolerance::{REL_CLOSURE_EPS, REL_LAYOUT_EPS, REL_LOCAL_FRAME, REL_TIE_EPS};
 use crate::kernel::{Line, Point, Vector};
-use crate::protocol::{Board, ConstructionError, Cut, Label, Role, Scale, H};
+use crate::protocol::{Board, ConstructionError, Cut, Label, Note, Role, Scale, H};
+
+mod collinear;
 
 /// Length of a force's arrow in the position plan (mm): the plan shows place and sense only.
 const ARROW_MM: f64 = 12.0;
@@ -34,15 +36,26 @@ struct System<'a, 'b> {
     origin: &'static str,
 }
 
-/// The force polygon: its corners, the resultant's length on the sheet and its components.
+/// The position plan: each force's line of action and point of application, and the
+/// rightmost point of application on the sheet (mm).
+type Plan = (Vec<H<Line>>, Vec<H<Point>>, f64);
+
+/// The force polygon: its corners, each force's side, the closing side's ends, the
+/// resultant's length on the sheet and its components.
 struct Polygon {
+    /// The chain's corners, for the pole's rays (empty where no funicular polygon follows).
     pts: Vec<H<Point>>,
+    /// Each force's side: its tail and its head.
+    sides: Vec<(H<Point>, H<Point>)>,
+    /// The closing side R, from `first` to `last`.
+    first: H<Point>,
+    last: H<Point>,
     /// The sum of its sides (mm): what its closing side is judged against.
     sides_mm: f64,
     axis_x: H<Line>,
     r_len: f64,
-    rx: H<f64>,
-    ry: H<f64>,
+    /// R as read off (kg).
+    r: Vector,
 }
 
 /// Constructs the force polygon, the funicular polygon and the resultant (or couple) of a
@@ -138,7 +151,11 @@ fn build(
         reach,
         origin,
     };
-    let (lines, xmax) = s.position_plan()?;
+    let plan = s.position_plan()?;
+    if let Some(u) = s.common_line() {
+        return s.on_one_line(&plan, u, resolutions);
+    }
+    let (lines, _, xmax) = plan;
     let poly = s.force_polygon(&lines, xmax)?;
     let pole_at = match dr.pole {
         Some(p) => poly.pts[0].g + p / dr.force_scale,
@@ -159,28 +176,40 @@ fn build(
         |_, j| Ok(lines[j]),
     )?
     .strings;
-    let (resultant, resultant_line) = s.resultant(&poly, &rays.pole, &start, &strings)?;
-    let mut components = Vec::new();
-    for (j, res) in resolutions.iter().enumerate() {
-        components.push(s.resolution(j, res, &poly.pts)?);
-    }
-    Ok(SystemResults {
-        resultant,
-        resultant_line,
-        components,
-    })
+    let outcome = s.resultant(&poly, &rays.pole, &start, &strings)?;
+    s.resolved(outcome, &poly, resolutions)
 }
 
 impl System<'_, '_> {
+    /// The results: the resultant found, and each resolution asked for, made on the force
+    /// polygon's sides.
+    fn resolved(
+        &mut self,
+        (resultant, resultant_line): (Resultant, Option<H<Line>>),
+        poly: &Polygon,
+        resolutions: &[Resolution],
+    ) -> Result<SystemResults, ConstructionError> {
+        let mut components = Vec::new();
+        for (j, res) in resolutions.iter().enumerate() {
+            components.push(self.resolution(j, res, &poly.sides)?);
+        }
+        Ok(SystemResults {
+            resultant,
+            resultant_line,
+            components,
+        })
+    }
+
     /// Sheet point of a point in m.
     fn sheet(&self, p: Point) -> Point {
         Point::new(p.x * self.k, p.y * self.k)
     }
 
-    /// Points of application, arrows and lines of action: the lines, and the rightmost point
-    /// of application on the sheet.
-    fn position_plan(&mut self) -> Result<(Vec<H<Line>>, f64), ConstructionError> {
+    /// Points of application, arrows and lines of action: the lines, the points, and the
+    /// rightmost point of application on the sheet.
+    fn position_plan(&mut self) -> Result<Plan, ConstructionError> {
         let mut lines = Vec::with_capacity(self.forces.len());
+        let mut apps = Vec::with_capacity(self.forces.len());
         let mut xmax = f64::MIN;
         for (i, f) in self.forces.iter().enumerate() {
             let v = f.f;
@@ -210,8 +239,9 @@ impl System<'_, '_> {
             b.segment(&tail, &a, Role::Force, N_ARROW);
             lines.push(b.line_dir(&a, v, Role::Construction, N_LINE)?);
             xmax = xmax.max(a.g.x);
+            apps.push(a);
         }
-        Ok((lines, xmax))
+        Ok((lines, apps, xmax))
     }
 
     /// The forces laid off head to tail, each parallel to its line of action; the closing
@@ -265,12 +295,14 @@ impl System<'_, '_> {
         );
         let sides_mm = self.forces.iter().map(|f| f.f.x.hypot(f.f.y)).sum::<f64>() / fs;
         Ok(Polygon {
+            sides: pts.windows(2).map(|w| (w[0], w[1])).collect(),
+            first: p0,
+            last: end,
             pts,
             sides_mm,
             axis_x,
             r_len,
-            rx,
-            ry,
+            r: Vector::new(rx.g, ry.g),
         })
     }
 
@@ -293,7 +325,7 @@ impl System<'_, '_> {
         let closed = poly.r_len <= tol.max(REL_CLOSURE_EPS * poly.sides_mm);
         let out = match cut {
             Cut::Point(x, _) if !closed => {
-                let (r, line) = self.resultant_force(poly, &x)?;
+                let (r, line) = self.resultant_force(poly, &x, Role::Result)?;
                 (r, Some(line))
             }
             Cut::Coincident => (Resultant::Equilibrium, None),
@@ -309,38 +341,37 @@ impl System<'_, '_> {
             }
         };
         if let Resultant::Equilibrium = out.0 {
-            // Both polygons close: the checks are that R = 0 (above) and ΣM = 0.
-            let mscale = Scale::new(self.dr.force_scale / self.k, "kg·m");
-            let (mref, m_cf) = (self.fmax * self.reach, self.m_cf);
-            let b = &mut *self.b;
-            let z = b.measure(
-                start,
-                start,
-                &poly.axis_x,
-                mscale,
-                Label::NONE,
-                N_FIRST_LAST,
-            );
-            let what = "moment of the system (equilibrium)";
-            b.check(&z, what, "kg·m", "ΣM = x·Fy − y·Fx", mref, || m_cf);
+            self.no_moment(poly, start, N_FIRST_LAST);
         }
         Ok(out)
     }
 
-    /// The resultant through X, parallel to R of the force polygon, and its moment about the
-    /// origin: |R| times the signed distance of its line, read off and checked.
+    /// Both polygons close: the checks are that R = 0 (read off before) and ΣM = 0.
+    fn no_moment(&mut self, poly: &Polygon, start: &H<Point>, note: Note) {
+        let mscale = Scale::new(self.dr.force_scale / self.k, "kg·m");
+        let (mref, m_cf) = (self.fmax * self.reach, self.m_cf);
+        let b = &mut *self.b;
+        let z = b.measure(start, start, &poly.axis_x, mscale, Label::NONE, note);
+        let what = "moment of the system (equilibrium)";
+        b.check(&z, what, "kg·m", "ΣM = x·Fy − y·Fx", mref, || m_cf);
+    }
+
+    /// The resultant through X, parallel to R of the force polygon, its line drawn in `pen`,
+    /// and its moment about the origin: |R| times the signed distance of its line, read off
+    /// and checked.
     fn resultant_force(
         &mut self,
         poly: &Polygon,
         x: &H<Point>,
+        pen: Role,
     ) -> Result<(Resultant, H<Line>), ConstructionError> {
-        let (p0, end) = (poly.pts[0], poly.pts[poly.pts.len() - 1]);
+        let (p0, end) = (poly.first, poly.last);
         let (k, fs) = (self.k, self.dr.force_scale);
         let (mref, m_cf) = (self.fmax * self.reach, self.m_cf);
         let b = &mut *self.b;
         // The direction of R in the force plan, carried over through X.
         let r_dir = b.line_through(&p0, &end, Role::Auxiliary, N_RESULTANT)?;
-        let r_line = b.parallel(&r_dir, x, Role::Result, N_R_LINE);
+        let r_line = b.parallel(&r_dir, x, pen, N_R_LINE);
         let o = b.point(Point::origin(), Role::Given, N_R_MOMENT);
         let foot = b.foot(&r_line, &o, Role::Construction, N_R_MOMENT);
         let normal = H {
@@ -355,7 +386,7 @@ impl System<'_, '_> {
         let what = format!("moment of the resultant about the {}", self.origin);
         b.check(&d, what, "kg·m", "ΣM = x·Fy − y·Fx", mref, || m_cf);
         let r = Resultant::Force {
-            r: Vector::new(poly.rx.g, poly.ry.g),
+            r: poly.r,
             through: Point::new(x.g.x / k, x.g.y / k),
             moment: d.g,
         };
@@ -406,7 +437,7 @@ impl System<'_, '_> {
         &mut self,
         j: usize,
         res: &Resolution,
-        pts: &[H<Point>],
+        sides: &[(H<Point>, H<Point>)],
     ) -> Result<Components, ConstructionError> {
         let n = self.forces.len();
         let f = self.forces.get(res.force).ok_or_else(|| {
@@ -417,10 +448,11 @@ impl System<'_, '_> {
         })?;
         let (s1, c1) = crate::kernel::angle::sin_cos_deg(res.along[0]);
         let (s2, c2) = crate::kernel::angle::sin_cos_deg(res.along[1]);
+        let (t, h) = sides[res.force];
         let (tail, head, fv) = if res.equilibrant {
-            (pts[res.force + 1], pts[res.force], -f.f)
+            (h, t, -f.f)
         } else {
-            (pts[res.force], pts[res.force + 1], f.f)
+            (t, h, f.f)
         };
         let (kg, unit, fmax) = (self.kg, self.dr.unit, self.fmax);
         let b = &mut *self.b;
