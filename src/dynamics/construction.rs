@@ -54,7 +54,7 @@ const N_PUMP_RECT: Note = note(
 const N_PUMP_READ: Note = note(
     "the pump force taken off the rectangle",
     Some("Pumpenkraft"),
-    "KG Abb. 1065-1066",
+    "KG Abb. 1053, 1065",
     Topic::Forces,
 );
 const N_CURVE_STEAM: Note = note(
