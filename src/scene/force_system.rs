@@ -1,5 +1,6 @@
-//! The force-system scene: forces in the plane, their resultant by the funicular polygon, and
-//! resolutions along two lines (LH A.1-4, C.2, Aufgabe 2).
+//! The force-system scene: forces in the plane, their resultant by the funicular polygon (or,
+//! on one line of action, as their algebraic sum), and resolutions along two lines (LH A.1-4,
+//! C.2, Aufgabe 2).
 
 use super::defaults::nice_at_least;
 use super::error::SceneError;
@@ -283,7 +284,7 @@ impl ForceSystemScene {
 
 impl super::Procedure for ForceSystemScene {
     const NAME: &'static str = "force_system";
-    const ABOUT: &'static str = "forces in the plane: force and funicular polygons, resultant, couple, resolution along two lines (LH I A, C.1-2)";
+    const ABOUT: &'static str = "forces in the plane: force and funicular polygons, resultant, couple, resolution along two lines, forces on one line (LH I A, C.1-2)";
     const OUTPUTS: &'static [&'static str] = &[];
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
         ("resolutions", "resolve"),
