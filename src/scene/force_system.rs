@@ -87,7 +87,8 @@ pub struct ForceDrawingSpec {
     /// Force scale, kg per mm of sheet.
     #[serde(default)]
     pub force_scale_kg_per_mm: Option<f64>,
-    /// The pole relative to the start of the force polygon [x, y] (kg).
+    /// The pole relative to the start of the force polygon [x, y] (kg). Forces on one line
+    /// of action are summed without one (LH Abb. 2), and it is not used.
     #[serde(default)]
     pub pole_kg: Option<[f64; 2]>,
 }
