@@ -380,13 +380,15 @@ pub fn run(listener: TcpListener, site: Site) {
 /// A short answer written without waiting long, then the connection closed.
 fn refuse(stream: &mut TcpStream, status: u16, text: &str) {
     let _ = stream.set_write_timeout(Some(Duration::from_millis(200)));
-    let _ = write!(
-        stream,
+    // One write, not one per formatted piece: the connection is closed right after, with the
+    // client's request unread, and a reset may cut off whatever has not left yet.
+    let answer = format!(
         "HTTP/1.1 {status} {}\r\nContent-Type: text/plain; charset=utf-8\r\nContent-Length: {}\r\n\
          Connection: close\r\n\r\n{text}",
         reason(status),
         text.len()
     );
+    let _ = stream.write_all(answer.as_bytes());
 }
 
 fn reason(status: u16) -> &'static str {

@@ -104,7 +104,9 @@ fn serve_stays_up_under_idle_slow_and_oversized_clients() {
     let big = format!("GET /{} HTTP/1.1\r\n", "a".repeat(2 << 20));
     let answer = ask(&addr, &big);
     assert!(
-        answer.contains(" 431 ") || answer.contains(" 503 ") || answer == "write failed",
+        answer.starts_with("HTTP/1.1 431")
+            || answer.starts_with("HTTP/1.1 503")
+            || answer == "write failed",
         "{answer}"
     );
     // A normal client is served once the idle ones have had their time (HEAD_DEADLINE).
@@ -114,7 +116,9 @@ fn serve_stays_up_under_idle_slow_and_oversized_clients() {
         if a.contains(" 200 ") {
             break;
         }
-        assert!(a.contains(" 503 ") || a.is_empty(), "{a}");
+        // A refused connection is closed with its request unread: the client may see the
+        // status line cut off after the code ("HTTP/1.1 503"), or nothing.
+        assert!(a.starts_with("HTTP/1.1 503") || a.is_empty(), "{a}");
         assert!(t.elapsed() < Duration::from_secs(15), "never served: {a}");
         std::thread::sleep(Duration::from_millis(200));
     }
