@@ -230,8 +230,10 @@ fn external_polygon(
     grow(bx, at, at);
     pt[0] = Some(start);
     let mut cur = start;
+    let (t, case) = (ctx.t, &ctx.case.name);
     for (i, &fi) in order.iter().enumerate() {
-        let f = ctx.ext.forces[fi].1;
+        let (j, f) = ctx.ext.forces[fi];
+        b.set_context(|| format!("{case}: external force at joint {}", t.joints[j].name));
         let along = b.line_dir(&cur, f, Role::Auxiliary, N_EXT)?;
         let last = i + 1 == order.len();
         let lab = if last {
@@ -252,6 +254,7 @@ fn external_polygon(
         }
         cur = next;
     }
+    b.set_context(|| case.clone());
     Ok(())
 }
 
@@ -359,9 +362,12 @@ pub(super) fn joint_polygon(
     let u = sp.of_half[ha];
     let (px, py) = (pt[sp.of_half[ha ^ 1]]?, pt[sp.of_half[hb]]?);
     let name = &t.joints[v].name;
-    b.set_context(|| format!("{}: joint {name}", case.name));
+    let member = |h: usize| &t.members[h / 2].name;
+    b.set_context(|| format!("{}: joint {name}, member {}", case.name, member(ha)));
     let la = b.parallel(&mline[ha / 2], &px, Role::Construction, N_PAR);
+    b.set_context(|| format!("{}: joint {name}, member {}", case.name, member(hb)));
     let lb = b.parallel(&mline[hb / 2], &py, Role::Construction, N_PAR);
+    b.set_context(|| format!("{}: joint {name}", case.name));
     match b.meet(&la, &lb, space_label(u), N_SPACE) {
         Cut::Point(p, _) => {
             pt[u] = Some(p);
