@@ -384,6 +384,37 @@ impl Board {
             .map(|l| &l.summary)
     }
 
+    /// The situation the next steps are made in ("dead load: joint III"), where one is set
+    /// and the board records: a shared construction names its objects within it.
+    pub fn context(&self) -> Option<std::sync::Arc<str>> {
+        self.context.clone()
+    }
+
+    /// Sets the context to `base` (the caller's, from [`Board::context`]) followed by
+    /// `what` ("dead load: pole ray 2"; "pole ray 2" where there was none), for steps that
+    /// make no check: only a board that keeps its drawing names them, so that a board that
+    /// keeps only its checks spends nothing on it (a beam of a million loads).
+    pub fn set_context_within(&mut self, base: Option<&str>, what: impl FnOnce() -> String) {
+        if self.is_drawing() {
+            self.set_context(|| match base {
+                Some(c) => format!("{c}: {}", what()),
+                None => what(),
+            });
+        }
+    }
+
+    /// Puts back a context taken with [`Board::context`] after
+    /// [`Board::set_context_within`].
+    pub fn restore_context(&mut self, base: Option<std::sync::Arc<str>>) {
+        if !self.is_drawing() {
+            return;
+        }
+        match base {
+            Some(c) => self.set_context_recorded(c),
+            None => self.clear_context(),
+        }
+    }
+
     /// The situation ("θ = 30°") of a step, on a board that keeps its drawing or only its
     /// checks.
     pub fn context_of(&self, step: StepId) -> Option<&str> {

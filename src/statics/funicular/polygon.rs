@@ -85,7 +85,10 @@ pub fn pole_and_rays(
 ) -> Result<Rays, ConstructionError> {
     let pole = b.point(pole_at, Role::Given.named("O"), N_POLE);
     let mut rays = Vec::with_capacity(corners.len());
+    // Each ray named within the caller’s context ("dead load: ray 2").
+    let base = b.context();
     for (i, p) in corners.iter().enumerate() {
+        b.set_context_within(base.as_deref(), || format!("ray {i}"));
         let ray = b
             .line_through(&pole, p, Role::Construction, N_RAY)
             .map_err(|_| {
@@ -98,6 +101,7 @@ pub fn pole_and_rays(
             })?;
         rays.push(ray);
     }
+    b.restore_context(base);
     Ok(Rays { pole, rays })
 }
 
@@ -148,12 +152,20 @@ pub fn strings(
     let n = rays.len().saturating_sub(1);
     let mut strings = Vec::with_capacity(n + 1);
     let mut corners = Vec::with_capacity(n);
+    // Each string and corner named within the caller's context ("dead load: string 2"),
+    // which the line of action, the caller's own step, keeps.
+    let base = b.context();
+    b.set_context_within(base.as_deref(), || "string 0".into());
     strings.push(b.parallel(&rays[0], start, style.role, N_STRING));
     for j in 0..n {
         let corner = if j == 0 && start_on_first {
             *start
         } else {
+            b.restore_context(base.clone());
             let line = line_of_action(b, j)?;
+            b.set_context_within(base.as_deref(), || {
+                format!("corner {j} of the string polygon")
+            });
             b.meet_point(&strings[j], &line, Label::quiet("II", j as u32), N_CORNER)
                 .map_err(|_| {
                     ConstructionError::unsupported(
@@ -166,8 +178,10 @@ pub fn strings(
                 })?
         };
         corners.push(corner);
+        b.set_context_within(base.as_deref(), || format!("string {}", j + 1));
         strings.push(b.parallel(&rays[j + 1], &corner, style.role, N_STRING));
     }
+    b.restore_context(base);
     Ok(Strings { strings, corners })
 }
 
