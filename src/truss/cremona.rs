@@ -331,7 +331,8 @@ fn draw_truss(
     } = *c;
     let k = 1000.0 / dr.length_scale;
     // Each step names its object in its context ("dead load: member 5"), as the walk-through
-    // and the figure's layers show it.
+    // and the figure's layers show it; a board that keeps only its checks skips the names (no
+    // check is made in these steps).
     let jp: Vec<H<Point>> = t
         .joints
         .iter()
@@ -339,14 +340,18 @@ fn draw_truss(
         .map(|(i, j)| {
             let p = Point::from(j.at.coords * k);
             grow(truss_box, p, Point::origin());
-            b.set_context(|| format!("{}: joint {}", case.name, j.name));
+            if b.is_drawing() {
+                b.set_context(|| format!("{}: joint {}", case.name, j.name));
+            }
             b.point(p, Role::Given.labelled(joint_label(t, i)), N_JOINT)
         })
         .collect();
     let mut mline = Vec::with_capacity(t.members.len());
     for (m, mem) in t.members.iter().enumerate() {
         let [i, j] = mem.ends;
-        b.set_context(|| format!("{}: member {}", case.name, mem.name));
+        if b.is_drawing() {
+            b.set_context(|| format!("{}: member {}", case.name, mem.name));
+        }
         mline.push(b.line_through(
             &jp[i],
             &jp[j],
@@ -363,7 +368,9 @@ fn draw_truss(
     let mut rlines: Vec<Option<H<Line>>> = vec![None; t.supports.len()];
     for (si, s) in t.supports.iter().enumerate() {
         let label = support_label(t, si);
-        b.set_context(|| format!("{}: support {}", case.name, s.name));
+        if b.is_drawing() {
+            b.set_context(|| format!("{}: support {}", case.name, s.name));
+        }
         match s.kind {
             SupportKind::Roller { dir } => {
                 let line = b.line_dir(&jp[s.joint], dir, Role::Guide.labelled(label), N_SUPPORT)?;
@@ -399,7 +406,9 @@ fn draw_loads(
     });
     for l in &loads {
         let head = jp[l.joint];
-        b.set_context(|| format!("{}: load at joint {}", case.name, t.joints[l.joint].name));
+        if b.is_drawing() {
+            b.set_context(|| format!("{}: load at joint {}", case.name, t.joints[l.joint].name));
+        }
         let tail = b.point(head.g - l.force / dr.force_scale, Role::Given, N_LOAD);
         grow(truss_box, tail.g, Point::origin());
         b.segment(
