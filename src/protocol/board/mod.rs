@@ -391,7 +391,7 @@ impl Board {
     }
 
     /// Sets the context to `base` (the caller's, from [`Board::context`]) followed by
-    /// `what` ("dead load: pole ray 2"; "pole ray 2" where there was none), for steps that
+    /// `what` ("dead load: ray 2"; "ray 2" where there was none), for steps that
     /// make no check: only a board that keeps its drawing names them, so that a board that
     /// keeps only its checks spends nothing on it (a beam of a million loads).
     pub fn set_context_within(&mut self, base: Option<&str>, what: impl FnOnce() -> String) {
