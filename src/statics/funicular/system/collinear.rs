@@ -6,7 +6,7 @@
 //! parallel a few mm under the last, its tail squared down from the head before it, and R on a
 //! parallel under them all, between the start and the end of the chain squared down.
 
-use super::{Plan, Polygon, System, SystemResults};
+use super::{Plan, Polygon, System, SystemResults, ARROW_MM, GAP_MM};
 use crate::kernel::tolerance::{PARALLEL_SIN_EPS, REL_CLOSURE_EPS, REL_POSITION_EPS};
 use crate::kernel::{cross, Point, Vector};
 use crate::protocol::{note, Board, ConstructionError, Label, Note, Role, Topic, H};
@@ -14,11 +14,8 @@ use crate::statics::funicular::{Resolution, Resultant};
 
 /// How far each force's parallel lies under the last one's (mm).
 const STAGGER_MM: f64 = 5.0;
-/// Gap between the position plan and the chain (mm).
-const GAP_MM: f64 = 30.0;
-/// R's arrow in the position plan: its length (as the forces' arrows) and its gap past the
-/// last point of application (mm).
-const ARROW_MM: f64 = 12.0;
+/// R's arrow in the position plan (as long as the forces' arrows, [`ARROW_MM`]): its gap past
+/// the last point of application (mm).
 const ARROW_GAP_MM: f64 = 16.0;
 
 const N_START_ONE_LINE: Note = note(
