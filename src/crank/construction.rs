@@ -544,6 +544,9 @@ struct Builder<'a> {
     cache: Vec<Cache>,
     /// Where the shaft centre O stands on the sheet.
     origin: Point,
+    /// The caller's context when the construction began (an engine's cylinder, "HP"): every
+    /// angle's context is set within it ("HP, θ = 30°").
+    base: Option<std::sync::Arc<str>>,
 }
 
 /// Constructs the requested slider-crank quantities at every crank angle on `board`.
@@ -637,6 +640,7 @@ pub fn construct_at(
 ) -> Result<CrankResults, ConstructionError> {
     let thetas = angles.thetas(drive);
     let n = thetas.len();
+    let board_context = board.context();
     let mut bl = Builder {
         b: board,
         d: drive,
@@ -661,6 +665,7 @@ pub fn construct_at(
         fixed: None,
         origin,
         cache: (0..n).map(|_| Cache::default()).collect(),
+        base: board_context,
     };
     let want_c = request.velocity_parallel || request.velocity_instant_centre;
     // Upper bounds of the steps per angle each output adds (objects: about twice as many).
@@ -676,7 +681,7 @@ pub fn construct_at(
     for i in 0..n {
         bl.angle(i, request)?;
     }
-    bl.b.clear_context();
+    bl.base_context();
     if request.piston_path && drive.finite_rod {
         bl.path_difference()?;
     }
@@ -696,6 +701,26 @@ pub fn construct_at(
 }
 
 impl Builder<'_> {
+    /// Back to the caller's context (none for a crank drawn alone).
+    fn base_context(&mut self) {
+        match &self.base {
+            Some(c) => {
+                let c = c.clone();
+                self.b.set_context(|| c.to_string());
+            }
+            None => self.b.clear_context(),
+        }
+    }
+
+    /// The context of the crank angle θ, within the caller's ("HP, θ = 30°").
+    fn angle_context(&mut self, theta: f64) {
+        let base = self.base.as_deref();
+        self.b.set_context(|| match base {
+            Some(c) => format!("{c}, θ = {}°", crate::fmt::num(theta, 3)),
+            None => format!("θ = {}°", crate::fmt::num(theta, 3)),
+        });
+    }
+
     /// The pin of ray i found from the stroke's division point by the arc with the rod length
     /// (LH Abb. 59), or the perpendicular for the infinite rod (Abb. 60); the dead centres are
     /// the ends of the diameter, where the arc only touches the crank circle.
@@ -703,15 +728,14 @@ impl Builder<'_> {
         let f = self.frame.as_ref().expect("frame built");
         let (circle, o, axis, dead, x0) = (f.crank_circle, f.o, f.piston_line, f.dead, f.x0);
         if self.stroke_points.is_none() {
-            self.b.clear_context();
+            self.base_context();
             let end = self
                 .b
                 .lay_off(&x0, &axis, 2.0 * self.r, Role::Construction, N_STROKE_END)?;
             let pts = self.b.divide_segment(&x0, &end, n, "X", N_STROKE_DIVIDE);
             self.stroke_points = Some(pts);
             let theta = self.thetas[i];
-            self.b
-                .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+            self.angle_context(theta);
         }
         let (k, out) = if i <= n {
             (i, true)
@@ -758,8 +782,7 @@ impl Builder<'_> {
     /// Everything `request` asks for at the i-th crank angle.
     fn angle(&mut self, i: usize, request: &Request) -> Result<(), ConstructionError> {
         let theta = self.thetas[i];
-        self.b
-            .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+        self.angle_context(theta);
         if request.piston_path {
             self.x(i)?;
         }
@@ -904,14 +927,13 @@ impl Builder<'_> {
             if self.divided.is_none() {
                 // Clockwise from the inner dead centre (180° on the sheet): the pin runs over
                 // the upper half on the outstroke.
-                self.b.clear_context();
+                self.base_context();
                 let pts =
                     self.b
                         .divide_circle(&circle, 180.0, n, Turning::Clockwise, "A", N_DIVIDE);
                 self.divided = Some(pts);
                 let theta = self.thetas[i];
-                self.b
-                    .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+                self.angle_context(theta);
             }
             let pin = self.divided.as_ref().expect("divided above")[i];
             let pen = self.pen(i);
@@ -1343,7 +1365,7 @@ impl Builder<'_> {
             let pmax = self.d.piston_force.max_abs() / self.scales.force_scale;
             let gap = 0.15 * (self.r + self.l);
             let centre = self.origin + Vector::new(self.r + gap + pmax * 1.05, 0.0);
-            self.b.clear_context();
+            self.base_context();
             let o = self
                 .b
                 .point(centre, Role::Given.named("O'"), N_POLAR_CENTRE);
@@ -1367,8 +1389,7 @@ impl Builder<'_> {
         let (o, vertical) = (pf.o, pf.vertical);
         if first {
             let theta = self.thetas[i];
-            self.b
-                .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+            self.angle_context(theta);
         }
         let ray_f = self.b.parallel(&ray, &o, Role::Auxiliary, N_POLAR_RAY);
         // P on the crank ray of its own stroke, outward where it drives (LH Abb. 59: the
@@ -1424,7 +1445,7 @@ impl Builder<'_> {
             return Ok(());
         };
         let o = pf.o;
-        self.b.clear_context();
+        self.base_context();
         let circle = self
             .b
             .circle(&o, self.r, Drawn::Whole, Role::Construction, N_POLAR_ZERO)?;

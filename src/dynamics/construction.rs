@@ -615,7 +615,9 @@ impl Builder<'_> {
             polar_diagrams: true,
             ..Request::default()
         };
-        self.b.clear_context();
+        // The crank's steps and checks within the cylinder's name ("HP, θ = 30°").
+        let name = &self.e.cylinders[c].name;
+        self.b.set_context(|| name.clone());
         // Every cylinder's rays by rod-length arcs through its own stroke where the stroke is
         // divided (the angles are the same), at their crank angles otherwise.
         let rays = match self.stroke_parts {
@@ -623,6 +625,7 @@ impl Builder<'_> {
             None => Angles::Degrees(angles),
         };
         let res = crank::construct_at(self.b, &drive, &drawing, &rays, &req, origin)?;
+        self.b.clear_context();
         let t: Vec<f64> = res
             .rows
             .iter()

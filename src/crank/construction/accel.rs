@@ -30,7 +30,7 @@ impl Builder<'_> {
             let lam = self.lambda();
             let a_mm = self.d.v2_over_r() / self.scales.acceleration_scale;
             let below = self.r + 0.15 * (self.r + self.l) + (1.0 + lam) * a_mm;
-            self.b.clear_context();
+            self.base_context();
             let ax = tolle::axis(
                 self.b,
                 Point::new(x0.x + self.r, x0.y - below),
@@ -108,8 +108,7 @@ impl Builder<'_> {
         let (stroke, _) = cf::book_angle(theta);
         if self.tolle.is_none() {
             self.tolle()?;
-            self.b
-                .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+            self.angle_context(theta);
         }
         let t = self.tolle()?;
         let (ax, curve) = (t.axis, t.curves[(stroke == cf::Stroke::Return) as usize]);

@@ -54,7 +54,7 @@ impl Builder<'_> {
         }
         let f = self.frame()?;
         let (x0, axis, dead) = (f.x0, f.piston_line, f.dead);
-        self.b.clear_context();
+        self.base_context();
         let fixed = if self.d.finite_rod {
             let x1 = self.b.lay_off(
                 &x0,
@@ -95,8 +95,7 @@ impl Builder<'_> {
         let fixed = self.fixed()?;
         let theta = self.thetas[i];
         if first {
-            self.b
-                .set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
+            self.angle_context(theta);
         }
         let pin = self.pin(i)?;
         let axis = self.frame()?.piston_line;
