@@ -184,7 +184,11 @@ pub fn construct(
         60 * nc + 40 * per + 6 * divisions,
     );
     let mut res = DynamicsResults::default();
-    let want_t = request.turning_force || request.mean_height || request.power || request.flywheel;
+    let want_t = request.turning_force
+        || request.mean_height
+        || request.power
+        || request.flywheel
+        || request.resistance_line;
     // The sheet: each cylinder a row (its indicator diagrams, its crank figure, its polar
     // diagrams), the turning-force diagram under them, the table under that.
     // The cards' reductions first, as the books begin (LH A), each cylinder's a row of
@@ -205,11 +209,15 @@ pub fn construct(
         bl.b.set_part(row(nc));
         (res.turning, res.turning_ids) = bl.turning_diagram()?;
     }
+    if request.resistance_line && !res.turning.is_empty() {
+        bl.b.set_part(row(nc + 1));
+        res.resistance = Some(bl.resistance_line((&res.turning, &res.turning_ids))?);
+    }
     res.rays = bl.rows();
     bl.b.clear_context();
     let lowest = res.turning.iter().fold(0.0f64, |m, p| m.max(p.1.abs())) / drawing.force_scale;
     let table_at = bl.turning_origin() - crate::kernel::Vector::new(0.0, lowest + 15.0);
-    bl.b.set_part(row(nc + 1));
+    bl.b.set_part(row(nc + 1 + request.resistance_line as usize));
     summary::finish(bl.b, engine, drawing, request, &mut res, table_at);
     bl.b.set_part(Part::default());
     Ok(res)
@@ -600,7 +608,35 @@ impl Builder<'_> {
         let forces: Vec<f64> = (0..n)
             .map(|k| self.rays[c][k].map_or(0.0, |r| r.row_r))
             .collect();
-        let angles: Vec<f64> = (0..n).map(|k| self.crank_deg(c, k)).collect();
+        let origin = Point::new(
+            2.0 * self.r_mm + 20.0 + self.rod_mm(),
+            -(c as f64) * self.row_height,
+        );
+        // The crank's steps and checks within the cylinder's name ("HP, θ = 30°").
+        let name = self.e.cylinders[c].name.clone();
+        let t = self.polar_construction(c, forces, origin, name)?;
+        self.tangential[c] = Some(t.clone());
+        Ok(t)
+    }
+
+    /// The drawn rod's length (mm of the sheet; five cranks for the infinite rod's figure).
+    fn rod_mm(&self) -> f64 {
+        drive(&self.e.kinematics, PistonForce::Constant(0.0)).rod_length / self.dr.length_scale
+    }
+
+    /// The tangential force of the piston `forces` (one per ray, driving positive) on cylinder
+    /// c's rays by the crank's polar construction with its shaft centre at `origin`, every
+    /// step and check within `context`.
+    fn polar_construction(
+        &mut self,
+        c: usize,
+        forces: Vec<f64>,
+        origin: Point,
+        context: String,
+    ) -> Result<Vec<f64>, ConstructionError> {
+        let angles: Vec<f64> = (0..self.thetas.len())
+            .map(|k| self.crank_deg(c, k))
+            .collect();
         let drive = drive(&self.e.kinematics, PistonForce::PerAngle(forces));
         let drawing = Drawing {
             length_scale: self.dr.length_scale,
@@ -608,16 +644,12 @@ impl Builder<'_> {
             velocity_scale: 1.0,
             acceleration_scale: 1.0,
         };
-        let l_mm = drive.rod_length / self.dr.length_scale;
-        let origin = Point::new(2.0 * self.r_mm + 20.0 + l_mm, -(c as f64) * self.row_height);
         let req = Request {
             tangential_force: true,
             polar_diagrams: true,
             ..Request::default()
         };
-        // The crank's steps and checks within the cylinder's name ("HP, θ = 30°").
-        let name = &self.e.cylinders[c].name;
-        self.b.set_context(|| name.clone());
+        self.b.set_context(|| context);
         // Every cylinder's rays by rod-length arcs through its own stroke where the stroke is
         // divided (the angles are the same), at their crank angles otherwise.
         let rays = match self.stroke_parts {
@@ -626,13 +658,9 @@ impl Builder<'_> {
         };
         let res = crank::construct_at(self.b, &drive, &drawing, &rays, &req, origin)?;
         self.b.clear_context();
-        let t: Vec<f64> = res
-            .rows
-            .iter()
+        Ok((res.rows.iter())
             .map(|r| r.tangential_force.unwrap_or(0.0))
-            .collect();
-        self.tangential[c] = Some(t.clone());
-        Ok(t)
+            .collect())
     }
 
     fn rows(&self) -> Vec<Vec<RayRow>> {
@@ -662,5 +690,6 @@ const N_CURVE_B: Note = note(
     Topic::Acceleration,
 );
 
+mod resistance;
 mod turning;
 mod unequal;

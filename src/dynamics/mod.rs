@@ -101,6 +101,9 @@ pub struct DynamicsRequest {
     pub power: bool,
     /// The flywheel: excess work, speeds, moment of inertia.
     pub flywheel: bool,
+    /// The pumps' resistance line beside the steam engine's own turning force (KG Abb.
+    /// 1067); with a pump only.
+    pub resistance_line: bool,
 }
 
 /// One crank ray of one cylinder.
@@ -199,6 +202,21 @@ pub struct DynamicsResults {
     pub power: Option<Power>,
     /// Flywheel.
     pub flywheel: Option<Flywheel>,
+    /// The pumps' resistance line and the steam engine's turning force (KG Abb. 1067).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub resistance: Option<Resistance>,
+}
+
+/// The pumps' resistance line beside the power engine's own turning force (KG Abb. 1067).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Resistance {
+    /// Per shaft angle θ (degrees): the pumps' resistance T_p and the steam engine's
+    /// turning force T_s = T + T_p (kg), as read off the diagram.
+    pub ordinates: Vec<(f64, f64, f64)>,
+    /// The mean resistance by the trapezoid rule over the drawn ordinates (kg).
+    pub mean: f64,
+    /// The exact mean resistance, Σ (P_p1 + P_p2)/π (kg).
+    pub mean_exact: f64,
 }
 
 /// PS in m·kg/s (LH Gl. 63).

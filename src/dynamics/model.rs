@@ -271,6 +271,19 @@ impl Pump {
             cf::Stroke::Return => p2,
         }
     }
+
+    /// The pump's mean resistance at the crank pin over a revolution (kg, KG Abb. 1067):
+    /// its work 2r·(P_p1 + P_p2) spread over the crank circle 2πr, (P_p1 + P_p2)/π.
+    ///
+    /// ```
+    /// use graphostatik::dynamics::model::{area_cm2, Pump};
+    /// let p = Pump { plunger_cm2: area_cm2(285.0, 0.0), rod_cm2: area_cm2(75.0, 0.0), suction_at: 0.45, delivery_at: 5.4, efficiency: 0.9 };
+    /// assert!((p.mean_resistance() - 2293.6).abs() < 0.05); // (3493.4 + 3712.1)/π
+    /// ```
+    pub fn mean_resistance(&self) -> f64 {
+        let (p1, p2) = self.forces();
+        (p1 + p2) / std::f64::consts::PI
+    }
 }
 
 impl Cylinder {
@@ -368,6 +381,35 @@ pub fn turning_force(k: &Kinematics, cyls: &[Cylinder], eta: f64, theta_deg: f64
     eta * cyls
         .iter()
         .map(|c| k.tangential(c, (theta_deg + c.offset_deg).rem_euclid(360.0)))
+        .sum::<f64>()
+}
+
+/// The pumps' resistance on the shaft at shaft angle θ (kg, KG Abb. 1067): each pump's
+/// rectangle P_p1, P_p2 carried through the crank as T_p = P_p·sin(φ ± ψ)/cos ψ, summed over
+/// the cylinders that drive one; positive where it resists. The rectangles give curves like
+/// sine lines ("Sinuslinien ähnliche Kurven").
+pub fn pump_resistance(k: &Kinematics, cyls: &[Cylinder], theta_deg: f64) -> f64 {
+    (cyls.iter())
+        .filter_map(|c| c.pump.map(|p| (c, p)))
+        .map(|(c, p)| {
+            let t = (theta_deg + c.offset_deg).rem_euclid(360.0);
+            cf::tangential_force(p.force(cf::book_angle(t).0), k.lambda, t)
+        })
+        .sum()
+}
+
+/// The power engine's own turning force at shaft angle θ (kg, KG Abb. 1067), which the
+/// pumps' resistance line is compared with: every cylinder's steam force (reduced by the
+/// pump's η where it drives one) less its inertia force, carried through the crank, summed
+/// and times the engine's η.
+pub fn steam_turning_force(k: &Kinematics, cyls: &[Cylinder], eta: f64, theta_deg: f64) -> f64 {
+    eta * (cyls.iter())
+        .map(|c| {
+            let t = (theta_deg + c.offset_deg).rem_euclid(360.0);
+            let (stroke, _) = cf::book_angle(t);
+            let steam = c.drawn_steam_share() * c.steam_force(stroke, k.x_frac(t));
+            cf::tangential_force(steam - k.inertia(c.mass, t), k.lambda, t)
+        })
         .sum::<f64>()
 }
 

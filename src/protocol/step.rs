@@ -145,8 +145,9 @@ pub enum Role {
     Velocity,
     /// A guide or support: heavy with hatching.
     Guide,
-    /// A result drawn beside the curve it is reduced from: medium dashed (KG Abb. 1062's
-    /// η·T beside T, "gestrichelte Linie").
+    /// A result drawn beside the curve it is reduced from or compared with: medium dashed
+    /// (KG Abb. 1062's η·T beside T, "gestrichelte Linie"; Abb. 1067's resistance line
+    /// beside the turning force).
     Reduced,
 }
 

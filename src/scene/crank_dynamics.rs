@@ -279,6 +279,10 @@ super::header::output_enum! {
         Power = "power",
         /// The flywheel (LH J; KG Abb. 1062).
         Flywheel = "flywheel",
+        /// With the effect `pump`: the pumps' resistance line T_p, their rectangles carried
+        /// through a crank figure of their own, beside the steam engine's turning force
+        /// T_s = T + T_p over the developed crank circle (KG Abb. 1067).
+        ResistanceLine = "resistance_line",
     }
 }
 
@@ -356,6 +360,7 @@ impl DynamicsScene {
                 DynamicsOutput::MeanHeight => request.mean_height = true,
                 DynamicsOutput::Power => request.power = true,
                 DynamicsOutput::Flywheel => request.flywheel = true,
+                DynamicsOutput::ResistanceLine => request.resistance_line = true,
             }
         }
         let d = self.drawing.unwrap_or(DynamicsDrawingSpec {

@@ -53,7 +53,7 @@ pub(super) fn finish(
 ) {
     let wanted = request.mean_height || request.power || request.flywheel;
     if res.turning.is_empty() || !wanted {
-        if !res.mean_area.is_empty() {
+        if !res.mean_area.is_empty() || res.resistance.is_some() {
             table(b, e, res, table_at);
         }
         return;
@@ -381,26 +381,7 @@ fn table(b: &mut Board, e: &Engine, res: &DynamicsResults, at: Point) {
     let eta = e.efficiency;
     // Each row names its quantity and unit; the error is in the row's unit.
     let mut rows = vec![vec!["".to_string(), "value".into(), "error".into()]];
-    for (cyl, m) in e.cylinders.iter().zip(&res.mean_area) {
-        let of = if e.cylinders.len() > 1 {
-            format!("{}: ", cyl.name)
-        } else {
-            String::new()
-        };
-        let mut row = |name: String, value: String| rows.push(vec![name, value, "".into()]);
-        row(format!("{of}F′, cover side [cm²]"), num(m.cover_cm2, 1));
-        row(format!("{of}F″, crank side [cm²]"), num(m.crank_cm2, 1));
-        row(format!("{of}F = (F′+F″)/2 [cm²]"), num(m.mean_cm2, 1));
-        let at = crate::fmt::num(m.at_deg, 3);
-        row(
-            format!("{of}F·p_ü − P, largest (θ = {at}°) [kg]"),
-            num(m.difference, 1),
-        );
-        row(
-            format!("{of}the same, of the largest P [%]"),
-            num(100.0 * m.relative, 2),
-        );
-    }
+    mean_area_rows(&mut rows, e, res);
     for m in &res.mean_heights {
         let name = format!("T_m, {} [kg]", m.rule);
         rows.push(vec![name, num(m.t_m, 1), num(m.error, 2)]);
@@ -408,6 +389,7 @@ fn table(b: &mut Board, e: &Engine, res: &DynamicsResults, at: Point) {
     if let Some(x) = res.t_m_exact {
         rows.push(vec!["T_m exact [kg]".into(), num(x, 1), "".into()]);
     }
+    resistance_rows(&mut rows, res);
     if let Some(p) = &res.power {
         let total: f64 = p.from_pressures.iter().sum();
         let n = if eta == 1.0 {
@@ -442,4 +424,46 @@ fn table(b: &mut Board, e: &Engine, res: &DynamicsResults, at: Point) {
         rows.iter_mut().for_each(|r| drop(r.pop()));
     }
     b.table(at, rows, &[], N_TABLE);
+}
+
+/// KG (297)'s rows: each cylinder's effective areas, their mean and the largest departure.
+fn mean_area_rows(rows: &mut Vec<Vec<String>>, e: &Engine, res: &DynamicsResults) {
+    use crate::fmt::num;
+    for (cyl, m) in e.cylinders.iter().zip(&res.mean_area) {
+        let of = if e.cylinders.len() > 1 {
+            format!("{}: ", cyl.name)
+        } else {
+            String::new()
+        };
+        let mut row = |name: String, value: String| rows.push(vec![name, value, "".into()]);
+        row(format!("{of}F′, cover side [cm²]"), num(m.cover_cm2, 1));
+        row(format!("{of}F″, crank side [cm²]"), num(m.crank_cm2, 1));
+        row(format!("{of}F = (F′+F″)/2 [cm²]"), num(m.mean_cm2, 1));
+        let at = crate::fmt::num(m.at_deg, 3);
+        row(
+            format!("{of}F·p_ü − P, largest (θ = {at}°) [kg]"),
+            num(m.difference, 1),
+        );
+        row(
+            format!("{of}the same, of the largest P [%]"),
+            num(100.0 * m.relative, 2),
+        );
+    }
+}
+
+/// KG Abb. 1067's rows: the pumps' mean resistance by the trapezoid rule and exactly.
+fn resistance_rows(rows: &mut Vec<Vec<String>>, res: &DynamicsResults) {
+    use crate::fmt::num;
+    if let Some(r) = &res.resistance {
+        rows.push(vec![
+            "T_pm, trapezoid (Gl. 55) [kg]".into(),
+            num(r.mean, 1),
+            num(r.mean - r.mean_exact, 2),
+        ]);
+        rows.push(vec![
+            "T_pm exact = Σ(P_p1 + P_p2)/π [kg]".into(),
+            num(r.mean_exact, 1),
+            "".into(),
+        ]);
+    }
 }

@@ -102,16 +102,7 @@ impl Builder<'_> {
     /// The diagram: the sum of the cylinders' T at every shaft angle and at 360°, read off and
     /// checked against [`model::turning_force`]. Returns (θ, T) per shaft angle.
     pub(super) fn turning_diagram(&mut self) -> Result<Ordinates, ConstructionError> {
-        let o = self
-            .b
-            .point(self.turning_origin(), Role::Given.named("0"), N_AXIS_O);
-        let axis = self
-            .b
-            .line_dir(&o, Vector::new(1.0, 0.0), Role::Axis, N_AXIS)?;
-        let up = self.b.perpendicular(&axis, &o, Role::Axis, N_ORD);
-        let mm_per_deg = self.r_mm * std::f64::consts::PI / 180.0;
-        super::super::angle_marks(self.b, o.g, (mm_per_deg, 90.0, 360.0), N_ANGLES);
-        let frame = TurningFrame { o, axis, up };
+        let frame = self.developed_circle(self.turning_origin())?;
         let nc = self.e.cylinders.len();
         let (pts, full, singles, (out, ids)) = if self.stroke_parts.is_some() && nc > 1 {
             let u = self.unequal_ordinates(&frame)?;
@@ -146,6 +137,22 @@ impl Builder<'_> {
             self.b.curve(single, Trace::Polygon, mark, N_CURVE_SINGLE);
         }
         Ok((out, ids))
+    }
+
+    /// The crank circle developed on a straight line from `origin`, its ordinate direction,
+    /// and the crank angles written under it every 90°.
+    pub(super) fn developed_circle(
+        &mut self,
+        origin: Point,
+    ) -> Result<TurningFrame, ConstructionError> {
+        let o = self.b.point(origin, Role::Given.named("0"), N_AXIS_O);
+        let axis = self
+            .b
+            .line_dir(&o, Vector::new(1.0, 0.0), Role::Axis, N_AXIS)?;
+        let up = self.b.perpendicular(&axis, &o, Role::Axis, N_ORD);
+        let mm_per_deg = self.r_mm * std::f64::consts::PI / 180.0;
+        super::super::angle_marks(self.b, o.g, (mm_per_deg, 90.0, 360.0), N_ANGLES);
+        Ok(TurningFrame { o, axis, up })
     }
 
     /// The ordinates where every cylinder has a ray at every shaft angle: at each, the

@@ -99,6 +99,9 @@ impl DynamicsScene {
             (false, Some(i)) => return Err(f.bad(&format!("cylinders[{i}].pump"), "is used only with the effect `pump`: add \"pump\": true to `effects`, or leave the pump out".into())),
             _ => {}
         }
+        if !on && self.outputs.contains(&DynamicsOutput::ResistanceLine) {
+            return Err(f.bad("outputs", "`resistance_line` is the resistance of a pump: give a cylinder's `pump` and the effect `pump`, or leave the output out".into()));
+        }
         for (i, c) in self.cylinders.iter().enumerate() {
             let Some(p) = c.pump else { continue };
             let at = format!("cylinders[{i}].pump");
