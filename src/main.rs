@@ -434,13 +434,20 @@ impl Exports {
     fn draw(&self, f: &Path, p: &AnyProblem, board: &Board) -> Result<Drawn, Fail> {
         let meta = p.figure_meta();
         let (svg, lettering) = render::figure_lettered(&meta, board, None);
-        let labels = (lettering.left_out > 0).then(|| {
-            format!(
+        let labels = (lettering.left_out > 0 || lettering.withheld > 0).then(|| {
+            let mut m = format!(
                 "{}: {} of {} labels left out, no room for them on the sheet",
                 f.display(),
                 lettering.left_out,
                 lettering.labels
-            )
+            );
+            if lettering.withheld > 0 {
+                m += &format!(
+                    "; {} names of lines and forces withheld from plans without room for all",
+                    lettering.withheld
+                );
+            }
+            m
         });
         let note = match (labels, failed_checks(f, board)) {
             (Some(a), Some(b)) => Some(format!("{a}\n{b}")),

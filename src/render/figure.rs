@@ -353,6 +353,7 @@ fn draw_object(f: &Frame, obj: &Object, labels: &Placement, g: Group) -> Group {
                     g = g.add(hatching(f, a, b));
                 }
             }
+            g = draw_label(f, obj, labels, g);
         }
         Geom::Circle {
             circle,
@@ -658,6 +659,9 @@ pub struct Lettering {
     pub labels: usize,
     /// Those left out: no free place near their point, nor farther out with a leader.
     pub left_out: usize,
+    /// Names of segments and forces not written because their part of the sheet had no
+    /// room for all of them (a plan is lettered in full or not at all).
+    pub withheld: usize,
 }
 
 /// What the figure test measures of a figure, on the boxes the label placer works with: a
@@ -668,6 +672,8 @@ pub struct FigureReport {
     pub labels: usize,
     /// Those the crowd rule left out.
     pub left_out: usize,
+    /// Names of segments and forces withheld from a part without room for all of them.
+    pub withheld: usize,
     /// Pairs of written labels that overprint each other.
     pub overprints: usize,
     /// Labels over a point's dot.
@@ -718,6 +724,7 @@ pub fn inspect(meta: &FigureMeta, board: &Board) -> FigureReport {
     FigureReport {
         labels: placed.labels,
         left_out: placed.crowded,
+        withheld: placed.withheld,
         overprints: o.pairs,
         on_dots: o.on_dots,
         off_sheet: o.off_sheet,
@@ -857,6 +864,7 @@ fn draw(meta: &FigureMeta, sheet: Sheet<'_>, upto: Option<StepId>) -> (String, L
     let lettering = Lettering {
         labels: labels.labels,
         left_out: labels.crowded,
+        withheld: labels.withheld,
     };
     let mut doc = Document::new()
         .set(

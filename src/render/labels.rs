@@ -19,7 +19,7 @@
 use super::style::{DOT, LABEL_OFFSET};
 use crate::kernel::construct::clip_to_rect;
 use crate::kernel::{Circle, Point, Vector};
-use crate::protocol::{Board, Geom, Label, ObjId};
+use crate::protocol::{Board, Geom, Label, ObjId, Part};
 use parry2d_f64::bounding_volume::{Aabb, BoundingVolume};
 use parry2d_f64::math::Point as PPoint;
 use parry2d_f64::partitioning::Bvh;
@@ -79,6 +79,9 @@ pub(crate) struct Placement {
     pub labels: usize,
     /// How many found no free place and were left out.
     pub crowded: usize,
+    /// Names of segments and forces (S₃, P₂) not written because their part had no room
+    /// for all of them: a plan is lettered in full or not at all.
+    pub withheld: usize,
 }
 
 impl Placement {
@@ -95,6 +98,13 @@ struct Request {
     anchor: Point,
     first: Point,
     size: (f64, f64),
+}
+
+/// The names of the segments and forces of one part of the sheet (a force plan's S₁ … S₇),
+/// placed together or not at all.
+struct Group {
+    part: Part,
+    requests: Vec<Request>,
 }
 
 /// The size of a label's text (width, depth below the baseline).
@@ -178,6 +188,14 @@ impl Taken {
         self.boxes.push(b);
     }
 
+    /// Takes back every box added since there were `len`: the hierarchy keeps their leaves,
+    /// but an empty box meets nothing.
+    fn retract(&mut self, len: usize) {
+        for b in &mut self.boxes[len..] {
+            *b = Aabb::new_invalid();
+        }
+    }
+
     /// Whether `b` lies on the sheet and clear of every label and dot placed.
     fn free(&self, b: &Aabb) -> bool {
         self.sheet.contains(b)
@@ -244,6 +262,15 @@ fn where_first(o: &crate::protocol::Object, circles: &[Circle]) -> Option<(Point
         Geom::Curve { points, .. } => (points.iter())
             .max_by(|a, b| a.y.total_cmp(&b.y))
             .map(|top| (*top, top + Vector::new(1.0, 1.5))),
+        // A segment or a force is lettered beside its middle: a member force S₃ in the force
+        // plan, a reaction A, a resultant R.
+        Geom::Segment { segment } | Geom::Vector { segment } => {
+            let mid = Point::from((segment.a.coords + segment.b.coords) * 0.5);
+            Some((
+                mid,
+                mid + Vector::new(LABEL_OFFSET * 0.6, LABEL_OFFSET * 0.6),
+            ))
+        }
         _ => None,
     }
 }
@@ -298,7 +325,7 @@ pub(crate) fn place(
         stroke_bvh: Bvh::from_leaves(Default::default(), &stroke_boxes),
         strokes,
     };
-    let requests = requests(board, &region, drawn, &mut taken);
+    let (requests, groups) = requests(board, &region, drawn, &mut taken);
     let mut out = Placement {
         labels: requests.len(),
         ..Placement::default()
@@ -313,20 +340,47 @@ pub(crate) fn place(
         taken.add(text_box(placed.at, r.size));
         out.placed.insert(r.id, placed);
     }
+    for g in groups {
+        place_group(&mut taken, g, &mut out);
+    }
     out
 }
 
-/// The labels to place, in the order their objects were made; every drawn point's dot is
-/// put on the sheet as it is met.
+/// A part's names of segments and forces, after every other label: all of them where each
+/// finds a free place, else none (the books letter a plan in full or leave it to its
+/// letters; a plan named in part would leave the reader guessing which line is which).
+fn place_group(taken: &mut Taken, g: Group, out: &mut Placement) {
+    let before = taken.boxes.len();
+    let mut placed = Vec::with_capacity(g.requests.len());
+    for r in &g.requests {
+        let Some(p) = place_one(taken, r) else {
+            taken.retract(before);
+            out.withheld += g.requests.len();
+            return;
+        };
+        taken.add(text_box(p.at, r.size));
+        placed.push((r.id, p));
+    }
+    out.labels += placed.len();
+    out.placed.extend(placed);
+}
+
+/// The labels to place, in the order their objects were made, and apart from them the names
+/// of segments and forces by part, in the order of their parts' first; every drawn point's
+/// dot is put on the sheet as it is met.
 fn requests(
     board: &Board,
     region: &Aabb,
     drawn: &dyn Fn(&Point) -> bool,
     taken: &mut Taken,
-) -> Vec<Request> {
+) -> (Vec<Request>, Vec<Group>) {
     let circles = full_circles(board);
     let inside = |p: &Point| region.contains_local_point(&PPoint::new(p.x, p.y));
     let mut requests = Vec::new();
+    // A segment's or a force's name (S₃ in a force plan, a load P₂) comes after every
+    // point's, line's and curve's: it only takes room they leave (Bow's letters keep theirs
+    // in a crowded plan).
+    let mut groups: Vec<Group> = Vec::new();
     for o in board.objects() {
         // A table's lettering (a heading, an area's sign, an evaluation) is no place for a
         // label either.
@@ -349,15 +403,29 @@ fn requests(
             ));
         }
         if let Some((anchor, first)) = where_first(o, &circles).filter(|(a, _)| inside(a)) {
-            requests.push(Request {
+            let r = Request {
                 id: o.id,
                 anchor,
                 first,
                 size: extent(&o.label),
-            });
+            };
+            match o.geom {
+                Geom::Segment { .. } | Geom::Vector { .. } => {
+                    let part = (board.steps().get((o.step.0 as usize).wrapping_sub(1)))
+                        .map_or(Part::default(), |s| s.part);
+                    match groups.iter_mut().find(|g| g.part == part) {
+                        Some(g) => g.requests.push(r),
+                        None => groups.push(Group {
+                            part,
+                            requests: vec![r],
+                        }),
+                    }
+                }
+                _ => requests.push(r),
+            }
         }
     }
-    requests
+    (requests, groups)
 }
 
 /// The best free position of a label: near its point (where it has always stood, then the
@@ -580,6 +648,37 @@ mod tests {
                 "{name}: {crowded} of {labels} left out"
             );
         }
+    }
+
+    /// A part's names of lines are written all or none: thirty names crowded on a sheet of
+    /// 10 mm are withheld together (taking back those that found room), and one in another
+    /// part takes the room they left.
+    #[test]
+    fn a_part_without_room_for_all_its_names_of_lines_gets_none() {
+        use crate::protocol::{Note, Role, Topic};
+        let n = Note::new("s", Topic::Custom("t"));
+        let mut b = Board::recording();
+        let seg = |b: &mut Board, x: f64, name: String| {
+            let p = b.point(Point::new(x, 0.0), Role::Given, n.clone());
+            let q = b.point(Point::new(x + 1.0, 0.0), Role::Given, n.clone());
+            b.segment(
+                &p,
+                &q,
+                Role::Force.labelled(Label::from_name(&name)),
+                n.clone(),
+            )
+        };
+        b.set_part(Part::at(0, 0));
+        for k in 0..30 {
+            seg(&mut b, -3.0, format!("S{k}"));
+        }
+        b.set_part(Part::at(1, 0));
+        let alone = seg(&mut b, 2.0, "R".into());
+        let placed = place(&b, [-5.0, -5.0, 5.0, 5.0], Vec::new(), &|_| true);
+        assert_eq!((placed.withheld, placed.labels, placed.crowded), (30, 1, 0));
+        assert!(placed.get(alone.id).is_some());
+        let written = (b.objects().iter()).filter(|o| placed.get(o.id).is_some());
+        assert_eq!(written.count(), 1);
     }
 
     #[test]

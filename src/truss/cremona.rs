@@ -404,7 +404,7 @@ fn draw_loads(
         let (pa, pc) = (t.joints[a.joint].at, t.joints[c.joint].at);
         pa.x.total_cmp(&pc.x).then(pa.y.total_cmp(&pc.y))
     });
-    for l in &loads {
+    for (k, l) in loads.iter().enumerate() {
         let head = jp[l.joint];
         if b.is_drawing() {
             b.set_context(|| format!("{}: load at joint {}", case.name, t.joints[l.joint].name));
@@ -414,7 +414,7 @@ fn draw_loads(
         b.segment(
             &tail,
             &head,
-            Role::Force.labelled(Label::indexed("P", 0)),
+            Role::Force.labelled(Label::indexed("P", k as u32 + 1)),
             N_LOAD,
         );
     }
