@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The before/after pictures of docs/img/ (README "Figures"): four bundled figures as
-# d8a2127 drew them (before the sheet layout, the label placer and the crowd rule) and as the
-# working tree draws them, each pair side by side. Needs git, cargo and Python's Pillow.
+# d8a2127 drew them from its own scenes (before the sheet layout, the label placer and the
+# crowd rule; today's scenes have fields it does not know) and as the working tree draws
+# them, each pair side by side. Needs git, cargo and Python's Pillow.
 # Run from the repository's root: bash docs/img/before_after.sh
 set -euo pipefail
 old=d8a2127
@@ -11,7 +12,7 @@ git worktree add -f "$work/old" "$old" >/dev/null
 cargo build -q --bin graphostatik
 for s in kg_abb1043_crank_rocker kg_abb1056_otto_four_cylinders lh_j_locomotive_dynamics \
          lh_aufgabe5_crane_bridge; do
-  "$work/target-old/debug/graphostatik" render "scenes/$s.json" --out "$work/before" \
+  "$work/target-old/debug/graphostatik" render "$work/old/scenes/$s.json" --out "$work/before" \
     --format png --dpi 90 -q 2>/dev/null
   target/debug/graphostatik render "scenes/$s.json" --out "$work/after" \
     --format png --dpi 90 -q 2>/dev/null

@@ -431,6 +431,10 @@ pub struct AngleRow {
     pub guide_force: Option<f64>,
     /// Tangential force T by the polar construction (kg).
     pub tangential_force: Option<f64>,
+    /// The same as read off the board, for a caller that lays it off again with the
+    /// dividers ([`Board::transfer`]), so that its bound follows the construction's.
+    #[serde(skip)]
+    pub tangential_read: Option<H<f64>>,
     /// Tangential force T from the parallelogram at the pin (kg).
     pub tangential_force_at_pin: Option<f64>,
     /// Radial force K (kg).
@@ -831,6 +835,7 @@ impl Builder<'_> {
             rod_force: c.s.map(|(s, _)| s.g),
             guide_force: c.s.map(|(_, n)| n.g),
             tangential_force: c.t_polar.map(|h| h.g),
+            tangential_read: c.t_polar,
             tangential_force_at_pin: c.t_res.map(|h| h.g),
             radial_force: c.k.map(|h| h.g),
             acceleration: c.accel.map(|(_, b)| b.g),

@@ -130,7 +130,8 @@ pub(super) struct Builder<'a> {
     r_mm: f64,
     diagrams: Vec<Option<Diagram>>,
     rays: Vec<Vec<Option<Ray>>>,
-    tangential: Vec<Option<Vec<f64>>>,
+    /// Per cylinder, the tangential force on each ray as read off its polar figure.
+    tangential: Vec<Option<Vec<H<f64>>>>,
     row_height: f64,
     /// Per cylinder, the largest force its diagrams draw: the scale its checks are judged at.
     force_refs: Vec<f64>,
@@ -600,9 +601,9 @@ impl Builder<'_> {
 
     /// The tangential force on every ray of cylinder c by the polar construction of
     /// [`crank`] (LH Abb. 65; KG Abb. 1063), beside the cylinder's diagram.
-    fn tangential(&mut self, c: usize) -> Result<Vec<f64>, ConstructionError> {
-        if let Some(t) = &self.tangential[c] {
-            return Ok(t.clone());
+    fn tangential(&mut self, c: usize) -> Result<(), ConstructionError> {
+        if self.tangential[c].is_some() {
+            return Ok(());
         }
         let n = self.thetas.len();
         let forces: Vec<f64> = (0..n)
@@ -615,8 +616,8 @@ impl Builder<'_> {
         // The crank's steps and checks within the cylinder's name ("HP, θ = 30°").
         let name = self.e.cylinders[c].name.clone();
         let t = self.polar_construction(c, forces, origin, name)?;
-        self.tangential[c] = Some(t.clone());
-        Ok(t)
+        self.tangential[c] = Some(t);
+        Ok(())
     }
 
     /// The drawn rod's length (mm of the sheet; five cranks for the infinite rod's figure).
@@ -626,14 +627,14 @@ impl Builder<'_> {
 
     /// The tangential force of the piston `forces` (one per ray, driving positive) on cylinder
     /// c's rays by the crank's polar construction with its shaft centre at `origin`, every
-    /// step and check within `context`.
+    /// step and check within `context`: as read off, per ray.
     fn polar_construction(
         &mut self,
         c: usize,
         forces: Vec<f64>,
         origin: Point,
         context: String,
-    ) -> Result<Vec<f64>, ConstructionError> {
+    ) -> Result<Vec<H<f64>>, ConstructionError> {
         let angles: Vec<f64> = (0..self.thetas.len())
             .map(|k| self.crank_deg(c, k))
             .collect();
@@ -659,7 +660,7 @@ impl Builder<'_> {
         let res = crank::construct_at(self.b, &drive, &drawing, &rays, &req, origin)?;
         self.b.clear_context();
         Ok((res.rows.iter())
-            .map(|r| r.tangential_force.unwrap_or(0.0))
+            .map(|r| r.tangential_read.expect("asked for the tangential force"))
             .collect())
     }
 
@@ -674,7 +675,7 @@ impl Builder<'_> {
                             pressure_force: r.row_p,
                             inertia: r.row_b,
                             resulting: r.row_r,
-                            tangential: self.tangential[c].as_ref().map(|t| t[k]),
+                            tangential: self.tangential[c].as_ref().map(|t| t[k].g),
                         })
                     })
                     .collect()

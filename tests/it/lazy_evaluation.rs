@@ -3,7 +3,7 @@
 
 use graphostatik::crank::*;
 use graphostatik::protocol::BoardConfig;
-use graphostatik::protocol::{Board, StepKind, Topic};
+use graphostatik::protocol::{Board, ObjId, StepKind, Topic, H};
 use std::collections::BTreeMap;
 
 fn run(request: Request, finite_rod: bool) -> Board {
@@ -187,7 +187,18 @@ fn a_board_that_does_not_record_keeps_nothing_and_gives_the_same_values() {
     let mut off = Board::new(BoardConfig::recording(false)).with_figure_size(400.0);
     let a = construct(&mut on, &d, &dr, &Angles::Divisions(24), &full).unwrap();
     let b = construct(&mut off, &d, &dr, &Angles::Divisions(24), &full).unwrap();
-    assert_eq!(a, b);
+    // The same values; the handles of what was read differ (a board that does not record
+    // gives none).
+    let values = |mut r: CrankResults| {
+        for row in &mut r.rows {
+            row.tangential_read = row.tangential_read.map(|h| H {
+                id: ObjId::NONE,
+                ..h
+            });
+        }
+        r
+    };
+    assert_eq!(values(a), values(b));
     assert!(off.steps().is_empty() && off.objects().is_empty());
 }
 

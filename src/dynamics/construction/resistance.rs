@@ -138,10 +138,11 @@ impl Builder<'_> {
     }
 
     /// Every pump's rectangle through a crank figure of its own right of the diagram at
-    /// `origin`, one beside the other; per ray, the sum of their tangential forces T_p.
-    fn pump_tangentials(&mut self, origin: Point) -> Result<Vec<f64>, ConstructionError> {
+    /// `origin`, one beside the other; per pump, its tangential force T_p on each ray as read
+    /// off its polar figure.
+    fn pump_tangentials(&mut self, origin: Point) -> Result<Vec<Vec<H<f64>>>, ConstructionError> {
         let n = self.thetas.len();
-        let mut sum = vec![0.0; n];
+        let mut each = Vec::new();
         let (r, l) = (self.r_mm, self.rod_mm());
         let mut x = origin.x + std::f64::consts::TAU * r + 20.0 + l + r;
         for c in 0..self.e.cylinders.len() {
@@ -153,21 +154,21 @@ impl Builder<'_> {
                 .collect();
             let widest = forces.iter().fold(0.0f64, |m, f| m.max(f.abs())) / self.dr.force_scale;
             let name = format!("{}: pump resistance", self.cyl(c).name);
-            let t = self.polar_construction(c, forces, Point::new(x, origin.y), name)?;
-            sum.iter_mut().zip(&t).for_each(|(s, t)| *s += t);
+            each.push(self.polar_construction(c, forces, Point::new(x, origin.y), name)?);
             // The next pump's figure right of this one's polar diagram.
             x += 2.0 * r + 0.15 * (r + l) + 2.1 * widest + 20.0 + l;
         }
-        Ok(sum)
+        Ok(each)
     }
 
-    /// The ordinate at the k-th shaft angle (k = n is 360°): T_p laid off and read, T carried
-    /// on top of it and T_s read, each checked against its closed form.
+    /// The ordinate at the k-th shaft angle (k = n is 360°): every pump's T_p carried from its
+    /// polar figure, one on top of the other, and read; T carried on top of them and T_s
+    /// read, each checked against its closed form.
     fn resistance_ordinate(
         &mut self,
         fr: &TurningFrame,
         k: usize,
-        (tp, (turning, ids)): (&[f64], Turning<'_>),
+        (tp, (turning, ids)): (&[Vec<H<f64>>], Turning<'_>),
         d: &mut Drawn,
     ) -> Result<(), ConstructionError> {
         let n = turning.len();
@@ -179,7 +180,14 @@ impl Builder<'_> {
         let arc = self.r_mm * theta.to_radians();
         let at = (self.b).lay_off(&fr.o, &fr.axis, arc, Role::Construction, N_ARC)?;
         let ord = (self.b).perpendicular(&fr.axis, &at, Role::Construction, N_ORD);
-        let tp_end = (self.b).lay_off(&at, &ord, tp[kk] / fs, Role::Construction, N_TP)?;
+        let mut tp_end = at;
+        for pump in tp {
+            let reading = Reading {
+                value: &pump[kk],
+                per_mm: fs,
+            };
+            tp_end = (self.b).transfer(&tp_end, &ord, reading, Role::Construction, N_TP)?;
+        }
         let tp_read = (self.b).measure(
             &at,
             &tp_end,

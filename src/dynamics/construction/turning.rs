@@ -5,7 +5,7 @@
 use super::super::model;
 use super::Builder;
 use crate::kernel::{Line, Point, Vector};
-use crate::protocol::{note, ConstructionError, Label, Note, Role, Topic, Trace, H};
+use crate::protocol::{note, ConstructionError, Label, Note, Reading, Role, Topic, Trace, H};
 
 const N_AXIS_O: Note = note(
     "start of the developed crank circle",
@@ -191,7 +191,7 @@ impl Builder<'_> {
         }
         let kk = k % self.thetas.len();
         let t: f64 = (self.tangential.iter())
-            .map(|t| t.as_ref().map_or(0.0, |t| t[kk]))
+            .map(|t| t.as_ref().map_or(0.0, |t| t[kk].g))
             .sum();
         let at = self.b.lay_off(
             foot,
@@ -235,15 +235,21 @@ impl Builder<'_> {
         let Foot { at: a, ord, .. } = self.foot(fr, theta)?;
         let mut end = a;
         for c in 0..self.e.cylinders.len() {
-            let t = self.tangential[c].as_ref().map_or(0.0, |t| t[kk]);
-            let len = self.e.efficiency * t / self.dr.force_scale;
-            end = self.b.lay_off(&end, &ord, len, Role::Force, N_T_EACH)?;
+            // η·T carried from the polar figure with the dividers: its bound follows it.
+            let t = (self.tangential[c].as_ref()).map_or(H::NONE_ZERO, |t| t[kk]);
+            let reading = Reading {
+                value: &t,
+                per_mm: self.dr.force_scale / self.e.efficiency,
+            };
+            end = self
+                .b
+                .transfer(&end, &ord, reading, Role::Force, N_T_EACH)?;
             if let Some(single) = singles.get_mut(c).filter(|_| self.b.is_recording()) {
                 // The first cylinder's lies at the bottom of the sum: its point is the sum's
                 // first; every other is laid off from the circle alone.
                 single.push(match c {
                     0 => end,
-                    _ => (self.b).lay_off(&a, &ord, len, Role::Construction, N_T_SINGLE)?,
+                    _ => (self.b).transfer(&a, &ord, reading, Role::Construction, N_T_SINGLE)?,
                 });
             }
         }

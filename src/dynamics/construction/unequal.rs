@@ -140,8 +140,12 @@ impl Builder<'_> {
             };
             self.b
                 .set_context(|| format!("θ = {}°", crate::fmt::num(f.theta, 3)));
-            let len = eta * t[k] / self.dr.force_scale;
-            let p = (self.b).lay_off(&f.at, &f.ord, len, Role::Construction, N_T_SINGLE)?;
+            let len = eta * t[k].g / self.dr.force_scale;
+            let reading = Reading {
+                value: &t[k],
+                per_mm: self.dr.force_scale / eta,
+            };
+            let p = (self.b).transfer(&f.at, &f.ord, reading, Role::Construction, N_T_SINGLE)?;
             let exact = self.exact_t(c, self.crank_deg(c, k));
             own.push(OwnPoint {
                 theta: f.theta,

@@ -33,6 +33,15 @@ pub struct H<T> {
     pub g: T,
 }
 
+impl H<f64> {
+    /// The number 0 of no object: what a caller carries where nothing was read (its
+    /// transfer lays off nothing and carries no bound).
+    pub const NONE_ZERO: H<f64> = H {
+        id: ObjId::NONE,
+        g: 0.0,
+    };
+}
+
 /// The outcome of a line–line intersection on the board: a point, or the named degenerate case.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Cut {
