@@ -88,6 +88,8 @@ pub fn construct(
         })
         .collect();
     let mut depth = 0.0;
+    // Per cylinder, its tangential force at every shaft angle as read off its polar figure.
+    let mut reads: Vec<Vec<H<f64>>> = Vec::with_capacity(e.cylinders.len());
     // Each cylinder's row: its gas pressure diagram, its piston-force diagram over the
     // developed cycle, and beside them its crank figure with the polar force plan; the
     // turning-force diagram under the force diagrams, the table under that.
@@ -95,14 +97,15 @@ pub fn construct(
         let forces = force_diagram(b, e, dr, (c, &shafts), &mut depth)?;
         b.set_part(Part::at(c as u16, 2));
         let t = tangential(b, e, dr, (c, &shafts, &forces), depth)?;
-        for (row, (f, t)) in rows.iter_mut().zip(forces.iter().zip(t)) {
-            row.cylinders.push([f.0, f.1, t]);
-            row.turning += t;
+        for (row, (f, t)) in rows.iter_mut().zip(forces.iter().zip(&t)) {
+            row.cylinders.push([f.0, f.1, t.g]);
+            row.turning += t.g;
         }
+        reads.push(t);
     }
     let t_m_exact = super::mean_turning_force(&e.kinematics, &e.cylinders, e.cycle_deg);
     b.set_part(Part::at(e.cylinders.len() as u16, 1));
-    let t_m = turning_diagram(b, e, dr, (&rows, t_m_exact), depth)?;
+    let t_m = turning_diagram(b, e, dr, (&rows, &reads, t_m_exact), depth)?;
     b.set_part(Part::default());
     Ok(GasResults {
         rows,
@@ -295,14 +298,14 @@ fn force_ray(
 }
 
 /// Cylinder c's tangential force at every shaft angle by the slider-crank's polar
-/// construction from its resulting forces, drawn beside the diagrams.
+/// construction from its resulting forces, drawn beside the diagrams: as read off.
 fn tangential(
     b: &mut Board,
     e: &GasEngine,
     dr: &GasDrawing,
     (c, shafts, forces): (usize, &[f64], &[(f64, f64)]),
     depth: f64,
-) -> Result<Vec<f64>, ConstructionError> {
+) -> Result<Vec<H<f64>>, ConstructionError> {
     let cyl = &e.cylinders[c];
     let k = &e.kinematics;
     let drive = CrankDrive {
@@ -336,7 +339,7 @@ fn tangential(
     Ok(res
         .rows
         .iter()
-        .map(|r| r.tangential_force.unwrap_or(0.0))
+        .map(|r| r.tangential_read.unwrap_or(H::NONE_ZERO))
         .collect())
 }
 
@@ -348,7 +351,7 @@ fn turning_diagram(
     b: &mut Board,
     e: &GasEngine,
     dr: &GasDrawing,
-    (rows, exact): (&[GasRow], f64),
+    (rows, reads, exact): (&[GasRow], &[Vec<H<f64>>], f64),
     depth: f64,
 ) -> Result<f64, ConstructionError> {
     let k = &e.kinematics;
@@ -365,19 +368,10 @@ fn turning_diagram(
     )?;
     let fs = Scale::new(dr.force_scale, "kg");
     let (mut pts, mut ids) = (Vec::new(), Vec::new());
-    for r in rows {
+    for (i, r) in rows.iter().enumerate() {
         b.set_context(|| format!("shaft {}°", crate::fmt::num(r.shaft, 3)));
         let (foot, up) = ordinate(b, (&axis.0, &axis.1), r.shaft * dr.mm_per_deg)?;
-        let tip = b.lay_off(
-            &foot,
-            &up,
-            r.turning / dr.force_scale,
-            Role::Force,
-            n(
-                "the cylinders’ tangential forces added on the ordinate",
-                Some("Drehkraft"),
-            ),
-        )?;
+        let tip = add_up(b, dr, (&foot, &up), reads.iter().map(|t| &t[i]))?;
         let t = b.measure(
             &foot,
             &tip,
@@ -412,6 +406,36 @@ fn turning_diagram(
     b.set_part(Part::at(row + 1, 1));
     mean_table(b, e, (mean, exact, &ids), y - top / dr.force_scale - 15.0);
     Ok(mean)
+}
+
+/// The cylinders' tangential forces carried from their polar figures one on top of the
+/// other with the dividers on the ordinate at `foot` (so that the sum's bound follows each
+/// reading): one cylinder's as a force, several thin and their sum as the force. Returns
+/// the sum's end.
+fn add_up<'a>(
+    b: &mut Board,
+    dr: &GasDrawing,
+    (foot, up): (&H<Point>, &H<Line>),
+    reads: impl ExactSizeIterator<Item = &'a H<f64>>,
+) -> Result<H<Point>, ConstructionError> {
+    let note = n(
+        "the cylinders’ tangential forces added on the ordinate",
+        Some("Drehkraft"),
+    );
+    let one = reads.len() == 1;
+    let piece = if one { Role::Force } else { Role::Construction };
+    let mut tip = *foot;
+    for t in reads {
+        let reading = Reading {
+            value: t,
+            per_mm: dr.force_scale,
+        };
+        tip = b.transfer(&tip, up, reading, piece, note.clone())?;
+    }
+    if !one {
+        b.segment(foot, &tip, Role::Force, note);
+    }
+    Ok(tip)
 }
 
 /// The mean of the turning force's ordinates (the trapezoid rule on the periodic curve),
