@@ -276,16 +276,7 @@ impl Builder<'_> {
             reference,
             || rules::trapezoid_xy(&exact),
         );
-        let at = self.b.lay_off(
-            &fr.o,
-            &fr.up,
-            drawn / self.dr.force_scale,
-            Role::Construction.named("T_pm"),
-            N_MEAN,
-        )?;
-        let line = self.b.parallel(&fr.axis, &at, Role::Auxiliary, N_MEAN_LINE);
-        let tau = std::f64::consts::TAU;
-        (self.b).lay_off(&at, &line, self.r_mm * tau, Role::Auxiliary, N_MEAN_LINE)?;
+        self.mean_height(fr, (drawn, "T_pm"), (N_MEAN, N_MEAN_LINE))?;
         Ok(drawn)
     }
 }

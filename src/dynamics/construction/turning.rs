@@ -283,21 +283,27 @@ impl Builder<'_> {
             .chain(out.first().map(|p| (360.0, p.1)))
             .collect();
         let mean = super::super::rules::trapezoid_xy(&pts);
+        self.mean_height(fr, (mean, "T_m"), (N_MEAN_AT, N_MEAN_LINE))
+    }
+
+    /// A mean height `value` (kg) laid off from the developed circle's start, named `name`,
+    /// and carried along the whole circle, 2πr. Returns the line's ends, at 0° and at 360°.
+    pub(super) fn mean_height(
+        &mut self,
+        fr: &TurningFrame,
+        (value, name): (f64, &'static str),
+        (at_note, line_note): (Note, Note),
+    ) -> Result<(H<Point>, H<Point>), ConstructionError> {
         let m = self.b.lay_off(
             &fr.o,
             &fr.up,
-            mean / self.dr.force_scale,
-            Role::Construction.named("T_m"),
-            N_MEAN_AT,
+            value / self.dr.force_scale,
+            Role::Construction.named(name),
+            at_note,
         )?;
-        let line = self.b.parallel(&fr.axis, &m, Role::Auxiliary, N_MEAN_LINE);
-        let end = self.b.lay_off(
-            &m,
-            &line,
-            self.r_mm * std::f64::consts::TAU,
-            Role::Auxiliary,
-            N_MEAN_LINE,
-        )?;
+        let line = self.b.parallel(&fr.axis, &m, Role::Auxiliary, line_note.clone());
+        let tau = std::f64::consts::TAU;
+        let end = (self.b).lay_off(&m, &line, self.r_mm * tau, Role::Auxiliary, line_note)?;
         Ok((m, end))
     }
 }
