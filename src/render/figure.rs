@@ -655,7 +655,8 @@ pub fn figure(meta: &FigureMeta, board: &Board, upto: Option<StepId>) -> String 
 /// rule left out for want of room (each label that is written overprints nothing).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Lettering {
-    /// The labels of the figure's points and curves.
+    /// The labels to be written: of its points, lines and curves, and the names of lines
+    /// and forces of the parts that have room for all of theirs.
     pub labels: usize,
     /// Those left out: no free place near their point, nor farther out with a leader.
     pub left_out: usize,
@@ -668,7 +669,7 @@ pub struct Lettering {
 /// figure reads like a plate when [`FigureReport::is_clean`].
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct FigureReport {
-    /// The labels of its points and curves.
+    /// The labels to be written (as [`Lettering::labels`]).
     pub labels: usize,
     /// Those the crowd rule left out.
     pub left_out: usize,

@@ -75,7 +75,8 @@ pub(crate) struct Placed {
 #[derive(Debug, Default)]
 pub(crate) struct Placement {
     placed: HashMap<ObjId, Placed>,
-    /// How many labels were to be written.
+    /// How many labels were to be written: every point's, line's and curve's, and the names
+    /// of lines and forces of the parts that had room for all of theirs.
     pub labels: usize,
     /// How many found no free place and were left out.
     pub crowded: usize,
@@ -236,8 +237,8 @@ fn unplaced(board: &Board) -> Placement {
 }
 
 /// The point a label letters and where it has always stood: a point's, radially outward on
-/// a whole circle or up and to the right; a curve's, over its highest point. `None` for an
-/// object without a drawn label.
+/// a whole circle or up and to the right; a line's or a segment's, beside its middle; a
+/// curve's, over its highest point. `None` for an object without a drawn label.
 fn where_first(o: &crate::protocol::Object, circles: &[Circle]) -> Option<(Point, Point)> {
     if o.label.is_empty() {
         return None;

@@ -301,7 +301,9 @@ impl Builder<'_> {
             Role::Construction.named(name),
             at_note,
         )?;
-        let line = self.b.parallel(&fr.axis, &m, Role::Auxiliary, line_note.clone());
+        let line = self
+            .b
+            .parallel(&fr.axis, &m, Role::Auxiliary, line_note.clone());
         let tau = std::f64::consts::TAU;
         let end = (self.b).lay_off(&m, &line, self.r_mm * tau, Role::Auxiliary, line_note)?;
         Ok((m, end))
