@@ -23,10 +23,10 @@ from PIL import Image, ImageDraw
 work = sys.argv[1]
 # Which part of each sheet to show (fractions of width and height), and the width of a side.
 views = {
-    "kg_abb1043_crank_rocker": ((0.0, 0.17, 0.5, 0.8), 620),
+    "kg_abb1043_crank_rocker": ((0.0, 0.205, 0.56, 0.8), 620),
     "kg_abb1056_otto_four_cylinders": ((0.0, 0.0, 1.0, 1.0), 620),
-    "lh_j_locomotive_dynamics": ((0.55, 0.05, 1.0, 0.45), 520),
-    "lh_aufgabe5_crane_bridge": ((0.0, 0.014, 0.16, 0.04), 620),
+    "lh_j_locomotive_dynamics": ((0.55, 0.07, 1.0, 0.45), 520),
+    "lh_aufgabe5_crane_bridge": ((0.0, 0.0145, 0.16, 0.044), 620),
 }
 for name, ((x0, y0, x1, y1), side) in views.items():
     pair = []
