@@ -233,9 +233,9 @@ fn external_polygon(
     let (t, case) = (ctx.t, &ctx.case.name);
     for (i, &fi) in order.iter().enumerate() {
         let (j, f) = ctx.ext.forces[fi];
-        if b.is_drawing() {
-            b.set_context(|| format!("{case}: external force at joint {}", t.joints[j].name));
-        }
+        b.set_context_within(Some(case), || {
+            format!("external force at joint {}", t.joints[j].name)
+        });
         let along = b.line_dir(&cur, f, Role::Auxiliary, N_EXT)?;
         let last = i + 1 == order.len();
         let lab = if last {
@@ -367,14 +367,10 @@ pub(super) fn joint_polygon(
     let member = |h: usize| &t.members[h / 2].name;
     // Each parallel names its member on a board that keeps its drawing (no check is made in
     // them); the joint's checks below keep the joint's context.
-    let drawing = b.is_drawing();
-    if drawing {
-        b.set_context(|| format!("{}: joint {name}, member {}", case.name, member(ha)));
-    }
+    let within = Some(case.name.as_str());
+    b.set_context_within(within, || format!("joint {name}, member {}", member(ha)));
     let la = b.parallel(&mline[ha / 2], &px, Role::Construction, N_PAR);
-    if drawing {
-        b.set_context(|| format!("{}: joint {name}, member {}", case.name, member(hb)));
-    }
+    b.set_context_within(within, || format!("joint {name}, member {}", member(hb)));
     let lb = b.parallel(&mline[hb / 2], &py, Role::Construction, N_PAR);
     b.set_context(|| format!("{}: joint {name}", case.name));
     match b.meet(&la, &lb, space_label(u), N_SPACE) {

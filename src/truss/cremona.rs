@@ -340,18 +340,14 @@ fn draw_truss(
         .map(|(i, j)| {
             let p = Point::from(j.at.coords * k);
             grow(truss_box, p, Point::origin());
-            if b.is_drawing() {
-                b.set_context(|| format!("{}: joint {}", case.name, j.name));
-            }
+            b.set_context_within(Some(&case.name), || format!("joint {}", j.name));
             b.point(p, Role::Given.labelled(joint_label(t, i)), N_JOINT)
         })
         .collect();
     let mut mline = Vec::with_capacity(t.members.len());
     for (m, mem) in t.members.iter().enumerate() {
         let [i, j] = mem.ends;
-        if b.is_drawing() {
-            b.set_context(|| format!("{}: member {}", case.name, mem.name));
-        }
+        b.set_context_within(Some(&case.name), || format!("member {}", mem.name));
         mline.push(b.line_through(
             &jp[i],
             &jp[j],
@@ -368,9 +364,7 @@ fn draw_truss(
     let mut rlines: Vec<Option<H<Line>>> = vec![None; t.supports.len()];
     for (si, s) in t.supports.iter().enumerate() {
         let label = support_label(t, si);
-        if b.is_drawing() {
-            b.set_context(|| format!("{}: support {}", case.name, s.name));
-        }
+        b.set_context_within(Some(&case.name), || format!("support {}", s.name));
         match s.kind {
             SupportKind::Roller { dir } => {
                 let line = b.line_dir(&jp[s.joint], dir, Role::Guide.labelled(label), N_SUPPORT)?;
@@ -406,9 +400,8 @@ fn draw_loads(
     });
     for (k, l) in loads.iter().enumerate() {
         let head = jp[l.joint];
-        if b.is_drawing() {
-            b.set_context(|| format!("{}: load at joint {}", case.name, t.joints[l.joint].name));
-        }
+        let at = &t.joints[l.joint].name;
+        b.set_context_within(Some(&case.name), || format!("load at joint {at}"));
         let tail = b.point(head.g - l.force / dr.force_scale, Role::Given, N_LOAD);
         grow(truss_box, tail.g, Point::origin());
         b.segment(
