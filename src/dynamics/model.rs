@@ -272,6 +272,12 @@ impl Pump {
         }
     }
 
+    /// The larger of its two forces (kg): the scale its rectangle is drawn and judged at.
+    pub fn largest_force(&self) -> f64 {
+        let (p1, p2) = self.forces();
+        p1.abs().max(p2.abs())
+    }
+
     /// The pump's mean resistance at the crank pin over a revolution (kg, KG Abb. 1067):
     /// its work 2r·(P_p1 + P_p2) spread over the crank circle 2πr, (P_p1 + P_p2)/π.
     ///

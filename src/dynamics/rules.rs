@@ -39,6 +39,20 @@ pub fn trapezoid_xy(p: &[(f64, f64)]) -> f64 {
         / width
 }
 
+/// Mean height by the trapezoid rule over a whole revolution: the ordinates (θ in degrees, y)
+/// from 0° on, closed at 360° by the first, the curve being periodic.
+///
+/// ```
+/// use graphostatik::dynamics::rules::trapezoid_revolution;
+/// assert_eq!(trapezoid_revolution(&[(0.0, 2.0), (180.0, 0.0)]), 1.0);
+/// ```
+pub fn trapezoid_revolution(p: &[(f64, f64)]) -> f64 {
+    let closed: Vec<(f64, f64)> = (p.iter().copied())
+        .chain(p.first().map(|q| (360.0, q.1)))
+        .collect();
+    trapezoid_xy(&closed)
+}
+
 /// Mean height by Simpson's rule (LH Gl. 56-58); `None` unless the number of strips is even.
 pub fn simpson(a: &[f64]) -> Option<f64> {
     // Weights 1, 4, 2, 4, …, 4, 1 over 3n.

@@ -404,10 +404,7 @@ fn largest_force(k: &Kinematics, c: &Cylinder) -> f64 {
         * peak(&c.cover.indicator).max(peak(&c.crank.indicator));
     // The pump's rectangle is drawn at the same scale (at 5,400 at delivery it made a sheet
     // of 35 m, at 4.3e9 at the construction never ended).
-    let pump = c.pump.map_or(0.0, |p| {
-        let (p1, p2) = p.forces();
-        p1.abs().max(p2.abs())
-    });
+    let pump = c.pump.map_or(0.0, |p| p.largest_force());
     p.max(c.mass * k.a() * (1.0 + k.lambda)).max(pump)
 }
 

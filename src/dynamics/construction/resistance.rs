@@ -81,8 +81,10 @@ const N_MEAN_LINE: Note = note(
 /// and the objects they were read as.
 type Turning<'a> = (&'a [(f64, f64)], &'a [ObjId]);
 
-/// On every ordinate: the ends of T_p and T_s, and the two read off.
+/// The pumps' scale, and on every ordinate: the ends of T_p and T_s, and the two read off.
 struct Drawn {
+    /// The scale the pumps' checks are judged at: their largest forces, summed.
+    pump_ref: f64,
     tp_ends: Vec<H<Point>>,
     ts_ends: Vec<H<Point>>,
     tp: Vec<H<f64>>,
@@ -104,6 +106,9 @@ impl Builder<'_> {
         let frame = self.developed_circle(origin)?;
         let n = turning.0.len();
         let mut d = Drawn {
+            pump_ref: (self.e.cylinders.iter())
+                .filter_map(|c| c.pump.map(|p| p.largest_force()))
+                .sum(),
             tp_ends: Vec::with_capacity(n + 1),
             ts_ends: Vec::with_capacity(n + 1),
             tp: Vec::with_capacity(n + 1),
@@ -197,9 +202,7 @@ impl Builder<'_> {
             N_TP_READ,
         );
         let (kin, cyls, eta) = (self.e.kinematics, &self.e.cylinders, self.e.efficiency);
-        let pump_ref = (cyls.iter())
-            .filter_map(|c| c.pump.map(|p| p.forces().0.abs().max(p.forces().1.abs())))
-            .sum::<f64>();
+        let pump_ref = d.pump_ref;
         self.b.check(
             &tp_read,
             "pumps’ resistance T_p = P_p·sin(φ ± ψ)/cos ψ",
@@ -250,15 +253,12 @@ impl Builder<'_> {
         thetas: &[f64],
         tp: &[H<f64>],
     ) -> Result<f64, ConstructionError> {
-        let closed = |v: &dyn Fn(usize) -> f64| -> Vec<(f64, f64)> {
-            (0..=thetas.len())
-                .map(|k| match k {
-                    k if k == thetas.len() => (360.0, v(0)),
-                    k => (thetas[k], v(k)),
-                })
+        let at = |v: &dyn Fn(f64, usize) -> f64| -> Vec<(f64, f64)> {
+            (thetas.iter().enumerate())
+                .map(|(k, &t)| (t, v(t, k)))
                 .collect()
         };
-        let drawn = rules::trapezoid_xy(&closed(&|k| tp[k].g));
+        let drawn = rules::trapezoid_revolution(&at(&|_, k| tp[k].g));
         let ids: Vec<ObjId> = tp.iter().map(|h| h.id).collect();
         let weighted = Weighted {
             inputs: &ids,
@@ -266,7 +266,7 @@ impl Builder<'_> {
         };
         let mean = (self.b).reckon(drawn, "kg", Label::plain("T_pm"), weighted, N_MEAN);
         let (kin, cyls) = (self.e.kinematics, &self.e.cylinders);
-        let exact = closed(&|k| model::pump_resistance(&kin, cyls, thetas[k]));
+        let exact = at(&|t, _| model::pump_resistance(&kin, cyls, t));
         let reference = tp.iter().fold(0.0f64, |m, h| m.max(h.g.abs()));
         self.b.check(
             &mean,
@@ -274,7 +274,7 @@ impl Builder<'_> {
             "kg",
             "KG Abb. 1067; LH Gl. 55",
             reference,
-            || rules::trapezoid_xy(&exact),
+            || rules::trapezoid_revolution(&exact),
         );
         self.mean_height(fr, (drawn, "T_pm"), (N_MEAN, N_MEAN_LINE))?;
         Ok(drawn)

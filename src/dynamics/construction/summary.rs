@@ -112,11 +112,6 @@ fn mean_heights(
     let mut ords: Vec<f64> = turning.iter().map(|p| p.1).collect();
     ords.push(ords[0]);
     let equal = equal_strips(turning);
-    let xy: Vec<(f64, f64)> = turning
-        .iter()
-        .copied()
-        .chain(turning.first().map(|p| (360.0, p.1)))
-        .collect();
     let pts = drawn(e, dr, turning);
     let length = pts.last().map_or(0.0, |p| p.0);
     let to_tm = |area_mm2: f64| area_mm2 / length * dr.force_scale;
@@ -127,7 +122,7 @@ fn mean_heights(
     let polygon = -rules::polygon_area(&closed);
     let mut out = vec![MeanHeight {
         rule: "trapezoid (Gl. 55)".into(),
-        t_m: rules::trapezoid_xy(&xy),
+        t_m: rules::trapezoid_revolution(turning),
         error: 0.0,
     }];
     let trap = b.reckon(out[0].t_m, "kg", Label::plain("T_m"), ords_read, N_MEAN);

@@ -277,12 +277,7 @@ impl Builder<'_> {
         fr: &TurningFrame,
         out: &[(f64, f64)],
     ) -> Result<(H<Point>, H<Point>), ConstructionError> {
-        let pts: Vec<(f64, f64)> = out
-            .iter()
-            .copied()
-            .chain(out.first().map(|p| (360.0, p.1)))
-            .collect();
-        let mean = super::super::rules::trapezoid_xy(&pts);
+        let mean = super::super::rules::trapezoid_revolution(out);
         self.mean_height(fr, (mean, "T_m"), (N_MEAN_AT, N_MEAN_LINE))
     }
 
