@@ -49,6 +49,7 @@ fn girder(joints: usize) -> (Truss, Vec<LoadCase>) {
         vec![LoadCase {
             name: "P".into(),
             loads,
+            force_scale: None,
         }],
     )
 }

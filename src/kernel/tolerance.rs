@@ -80,6 +80,11 @@ pub const PARALLEL_DEG_EPS: f64 = 1e-9;
 /// dead centre) has no direction for its arrowhead. A nanometre of paper, far below a pen.
 pub const MIN_DRAWN_MM: f64 = 1e-9;
 
+/// Two segments whose ends lie closer than this on the sheet (mm) are one line to the eye:
+/// a quarter of the thinnest pen (0.18 mm). Members of equal force in a plan (a chord's
+/// panels, the members of an unloaded cantilever) share a line and one label, "S₁, S₂".
+pub const SAME_LINE_MM: f64 = 0.045;
+
 /// A force below this many kg is written as 0 and classed as a zero-force member: the plan
 /// is exact to about 1e-12 of the loads, so anything below a gram is rounding.
 pub const ZERO_KG: f64 = 1e-3;

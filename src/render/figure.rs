@@ -263,18 +263,36 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
     f
 }
 
-fn label_text(f: &Frame, at: &Point, label: &Label) -> Text {
+fn label_text(f: &Frame, at: &Point, label: &Label, joined: &[Label]) -> Text {
     let mut t = Text::new(sheet_text(&subscripts(&label.base)).into_owned())
         .set("x", f.x(at))
         .set("y", f.y(at));
+    let mut low = false;
     if let Some(i) = label.index {
-        t = t.add(
-            TSpan::new(i.to_string())
-                .set("dy", "0.9")
-                .set("font-size", "2.4px"),
-        );
+        t = t.add(index_span(i));
+        low = true;
+    }
+    // The names of segments drawn on the same line follow on it: "S₁, S₂".
+    for l in joined {
+        let mut next = TSpan::new(format!(", {}", sheet_text(&subscripts(&l.base))));
+        if low {
+            next = next.set("dy", "-0.9");
+        }
+        t = t.add(next);
+        low = false;
+        if let Some(i) = l.index {
+            t = t.add(index_span(i));
+            low = true;
+        }
     }
     t
+}
+
+/// A label's index, written lowered and small after its letters.
+fn index_span(i: u32) -> TSpan {
+    TSpan::new(i.to_string())
+        .set("dy", "0.9")
+        .set("font-size", "2.4px")
 }
 
 /// A circle: whole, or only the short compass arcs at the points constructed on it.
@@ -316,7 +334,7 @@ fn draw_label(f: &Frame, obj: &Object, labels: &Placement, g: Group) -> Group {
     let Some(pl) = labels.get(obj.id) else {
         return g;
     };
-    let mut g = g.add(label_text(f, &pl.at, &obj.label));
+    let mut g = g.add(label_text(f, &pl.at, &obj.label, labels.joined(obj.id)));
     if let Some((a, b)) = pl.leader {
         g = g.add(sheet_line(f, "leader", a, b));
     }

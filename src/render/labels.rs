@@ -18,6 +18,7 @@
 
 use super::style::{DOT, LABEL_OFFSET};
 use crate::kernel::construct::clip_to_rect;
+use crate::kernel::tolerance::{MIN_DRAWN_MM, SAME_LINE_MM};
 use crate::kernel::{Circle, Point, Vector};
 use crate::protocol::{Board, Geom, Label, ObjId, Part};
 use parry2d_f64::bounding_volume::{Aabb, BoundingVolume};
@@ -83,6 +84,9 @@ pub(crate) struct Placement {
     /// Names of segments and forces (S₃, P₂) not written because their part had no room
     /// for all of them: a plan is lettered in full or not at all.
     pub withheld: usize,
+    /// The names written after an object's own, of the segments drawn on its line ("S₁, S₂"
+    /// where two members of a plan carry the same force).
+    joined: HashMap<ObjId, Vec<Label>>,
 }
 
 impl Placement {
@@ -90,10 +94,17 @@ impl Placement {
     pub fn get(&self, id: ObjId) -> Option<&Placed> {
         self.placed.get(&id)
     }
+
+    /// The names written after `id`'s own, on one line with it: those of the segments drawn
+    /// on the same line.
+    pub fn joined(&self, id: ObjId) -> &[Label] {
+        self.joined.get(&id).map_or(&[], Vec::as_slice)
+    }
 }
 
 /// A label to place: its object, the point it letters, where it has always stood, the size of
 /// its text ([`extent`], reckoned once for all its candidates).
+#[derive(Clone, Copy)]
 struct Request {
     id: ObjId,
     anchor: Point,
@@ -102,11 +113,42 @@ struct Request {
 }
 
 /// The names of the segments and forces of one part of the sheet (a force plan's S₁ … S₇),
-/// placed together or not at all.
+/// placed together or not at all. Segments of one kind drawn on one line share a request:
+/// `ends` are each request's segment and kind, `joined` the names written after its own (each
+/// with the request it makes alone).
 struct Group {
     part: Part,
     requests: Vec<Request>,
+    ends: Vec<(Point, Point, Kind)>,
+    joined: Vec<Vec<(Request, Label)>>,
 }
+
+impl Group {
+    /// Adds the name of the segment `a`–`b`: to the request of a segment of its kind drawn
+    /// on the same line, if there is one (its text then reads "S₁, S₂"), else as a request of
+    /// its own. A load drawn along a member keeps its own name.
+    fn add(&mut self, r: Request, (a, b): (Point, Point), kind: Kind, label: &Label) {
+        let same = |&(p, q, k): &(Point, Point, Kind)| {
+            let near = |u: Point, v: Point| (u - v).norm() < SAME_LINE_MM;
+            k == kind && ((near(p, a) && near(q, b)) || (near(p, b) && near(q, a)))
+        };
+        match self.ends.iter().position(same) {
+            Some(i) => self.joined[i].push((r, label.clone())),
+            None => {
+                self.requests.push(r);
+                self.ends.push((a, b, kind));
+                self.joined.push(Vec::new());
+            }
+        }
+    }
+}
+
+/// What a named segment is: a force (an arrow) or not, and its role on the sheet.
+type Kind = (bool, crate::protocol::Role);
+
+/// The width (mm) of the ", " between names written on one line: a comma and a space of the
+/// serif face, about 0.64 em, taken as one average character and a fifth.
+const JOIN_SEPARATOR: f64 = 1.2 * CHAR;
 
 /// The size of a label's text (width, depth below the baseline).
 fn extent(label: &Label) -> (f64, f64) {
@@ -350,20 +392,68 @@ pub(crate) fn place(
 /// A part's names of segments and forces, after every other label: all of them where each
 /// finds a free place, else none (the books letter a plan in full or leave it to its
 /// letters; a plan named in part would leave the reader guessing which line is which).
+///
+/// The names of segments on one line are written together ("S₁, S₂"); where the part has
+/// no room for that, each on its own.
 fn place_group(taken: &mut Taken, g: Group, out: &mut Placement) {
+    let names = g.requests.len() + g.joined.iter().map(Vec::len).sum::<usize>();
+    let together = g.joined.iter().any(|j| !j.is_empty());
+    let placed = (together.then(|| try_group(taken, &g, true)).flatten())
+        .or_else(|| try_group(taken, &g, false));
+    let Some((placed, joins)) = placed else {
+        out.withheld += names;
+        return;
+    };
+    out.labels += names;
+    out.placed.extend(placed);
+    for (i, joined) in g.joined.into_iter().enumerate() {
+        if joins.contains(&i) {
+            out.joined.insert(
+                g.requests[i].id,
+                joined.into_iter().map(|(_, l)| l).collect(),
+            );
+        }
+    }
+}
+
+/// Every name of a group placed, those on one line `together` or each alone: the places and
+/// which requests were written together; `None`, with nothing taken, where one has no room.
+#[allow(clippy::type_complexity)]
+fn try_group(
+    taken: &mut Taken,
+    g: &Group,
+    together: bool,
+) -> Option<(Vec<(ObjId, Placed)>, Vec<usize>)> {
     let before = taken.boxes.len();
     let mut placed = Vec::with_capacity(g.requests.len());
-    for r in &g.requests {
-        let Some(p) = place_one(taken, r) else {
-            taken.retract(before);
-            out.withheld += g.requests.len();
-            return;
+    let mut joins = Vec::new();
+    for (i, (r, joined)) in g.requests.iter().zip(&g.joined).enumerate() {
+        let ok = if together && !joined.is_empty() {
+            let size = joined.iter().fold(r.size, |(w, d), (q, _)| {
+                (w + JOIN_SEPARATOR + q.size.0, d.max(q.size.1))
+            });
+            joins.push(i);
+            take_place(taken, &Request { size, ..*r }, &mut placed)
+        } else {
+            let mut alone = std::iter::once(r).chain(joined.iter().map(|(q, _)| q));
+            alone.all(|q| take_place(taken, q, &mut placed))
         };
-        taken.add(text_box(p.at, r.size));
-        placed.push((r.id, p));
+        if !ok {
+            taken.retract(before);
+            return None;
+        }
     }
-    out.labels += placed.len();
-    out.placed.extend(placed);
+    Some((placed, joins))
+}
+
+/// Places `r` where [`place_one`] finds room and takes that room; false where there is none.
+fn take_place(taken: &mut Taken, r: &Request, placed: &mut Vec<(ObjId, Placed)>) -> bool {
+    let Some(p) = place_one(taken, r) else {
+        return false;
+    };
+    taken.add(text_box(p.at, r.size));
+    placed.push((r.id, p));
+    true
 }
 
 /// The labels to place, in the order their objects were made, and apart from them the names
@@ -411,16 +501,26 @@ fn requests(
                 size: extent(&o.label),
             };
             match o.geom {
-                Geom::Segment { .. } | Geom::Vector { .. } => {
+                // A segment too short to be drawn (a zero force) has no line to name.
+                Geom::Segment { segment } | Geom::Vector { segment }
+                    if (segment.b - segment.a).norm() <= MIN_DRAWN_MM => {}
+                Geom::Segment { segment } | Geom::Vector { segment } => {
                     let part = (board.steps().get((o.step.0 as usize).wrapping_sub(1)))
                         .map_or(Part::default(), |s| s.part);
-                    match groups.iter_mut().find(|g| g.part == part) {
-                        Some(g) => g.requests.push(r),
-                        None => groups.push(Group {
-                            part,
-                            requests: vec![r],
-                        }),
-                    }
+                    let i = match groups.iter().position(|g| g.part == part) {
+                        Some(i) => i,
+                        None => {
+                            groups.push(Group {
+                                part,
+                                requests: Vec::new(),
+                                ends: Vec::new(),
+                                joined: Vec::new(),
+                            });
+                            groups.len() - 1
+                        }
+                    };
+                    let kind = (matches!(o.geom, Geom::Vector { .. }), o.role);
+                    groups[i].add(r, (segment.a, segment.b), kind, &o.label);
                 }
                 _ => requests.push(r),
             }
@@ -671,7 +771,11 @@ mod tests {
         };
         b.set_part(Part::at(0, 0));
         for k in 0..30 {
-            seg(&mut b, -3.0, format!("S{k}"));
+            let y = f64::from(k) * 0.1;
+            let p = b.point(Point::new(-3.0, y), Role::Given, n.clone());
+            let q = b.point(Point::new(-2.0, y), Role::Given, n.clone());
+            let name = Label::from_name(&format!("S{k}"));
+            b.segment(&p, &q, Role::Force.labelled(name), n.clone());
         }
         b.set_part(Part::at(1, 0));
         let alone = seg(&mut b, 2.0, "R".into());
@@ -680,6 +784,38 @@ mod tests {
         assert!(placed.get(alone.id).is_some());
         let written = (b.objects().iter()).filter(|o| placed.get(o.id).is_some());
         assert_eq!(written.count(), 1);
+    }
+
+    /// Members of equal force drawn on one line of a plan share one name, "S₁, S₂"; a force
+    /// of another kind on that line (a load along a member) keeps its own, and a segment too
+    /// short to be drawn (a zero force) is not named.
+    #[test]
+    fn segments_on_one_line_share_a_name_and_zero_ones_get_none() {
+        use crate::protocol::{Note, Role, Topic};
+        let n = Note::new("s", Topic::Custom("t"));
+        let mut b = Board::recording();
+        let p = b.point(Point::new(0.0, 0.0), Role::Given, n.clone());
+        let q = b.point(Point::new(30.0, 0.0), Role::Given, n.clone());
+        let q2 = b.point(Point::new(30.0, 0.01), Role::Given, n.clone());
+        let name = |s: &str| Role::Result.labelled(Label::from_name(s));
+        let s1 = b.segment(&p, &q, name("S1"), n.clone());
+        let s2 = b.segment(&q2, &p, name("S2"), n.clone());
+        let load = b.segment(
+            &p,
+            &q,
+            Role::Force.labelled(Label::from_name("P1")),
+            n.clone(),
+        );
+        let zero = b.segment(&p, &p, name("S3"), n.clone());
+        let placed = place(&b, [-50.0, -50.0, 50.0, 50.0], Vec::new(), &|_| true);
+        assert!(placed.get(s1.id).is_some() && placed.get(s2.id).is_none());
+        let joined: Vec<String> = (placed.joined(s1.id).iter())
+            .map(|l| l.to_string())
+            .collect();
+        assert_eq!(joined, ["S2"]);
+        assert!(placed.get(load.id).is_some() && placed.joined(load.id).is_empty());
+        assert!(placed.get(zero.id).is_none());
+        assert_eq!((placed.labels, placed.withheld, placed.crowded), (3, 0, 0));
     }
 
     #[test]

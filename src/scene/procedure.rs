@@ -282,7 +282,7 @@ fn too_spread<P: Procedure>(problem: &P::Problem, origin: &str) -> Option<SceneE
 
 /// The refusal of a figure of `mm` across, set by the scale `field`, too large or too small
 /// for a sheet.
-fn wrong_size((mm, field): (f64, &str), origin: &str) -> Option<SceneError> {
+pub(super) fn wrong_size((mm, field): (f64, &str), origin: &str) -> Option<SceneError> {
     if field.is_empty() {
         return None;
     }

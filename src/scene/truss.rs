@@ -143,6 +143,10 @@ pub struct LoadCaseSpec {
     pub name: String,
     /// Loads at joints.
     pub loads: Vec<JointLoadSpec>,
+    /// The force scale (kg per mm) of this case's plan, where it is drawn at another than
+    /// `drawing.force_scale_kg_per_mm` (each plan read at its own scale, LH Aufgabe 5).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub force_scale_kg_per_mm: Option<f64>,
 }
 
 /// A train of vertical loads on consecutive joints of a path, moved one joint at a time.
@@ -156,6 +160,11 @@ pub struct MovingLoadSpec {
     pub path: Vec<String>,
     /// The loads of the train (kg, downwards), on consecutive joints of the path.
     pub loads_kg: Vec<f64>,
+    /// The force scale (kg per mm) of every position's plan, where they are drawn at another
+    /// than `drawing.force_scale_kg_per_mm`: a crane's plans larger than the dead load's, as
+    /// LH Aufgabe 5 draws each plan at its own scale.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub force_scale_kg_per_mm: Option<f64>,
 }
 
 /// The roof whose loads the truss carries (LH B.3, Gl. 3-10).
@@ -231,6 +240,15 @@ pub struct JointLoadSpec {
 }
 
 impl JointLoadSpec {
+    /// Its magnitude (kg), by `kg` or by `kg_xy`; 0 where it gives neither.
+    fn magnitude(&self) -> f64 {
+        match (self.kg, self.kg_xy) {
+            (Some(kg), _) => kg.abs(),
+            (None, Some([x, y])) => x.hypot(y),
+            (None, None) => 0.0,
+        }
+    }
+
     /// The force, given where the joints are; `Err` says what is wrong with the spec.
     fn vector(&self, at: &HashMap<&str, [f64; 2]>) -> Result<Vector, String> {
         match (self.kg, self.kg_xy, self.angle_deg, &self.toward) {
@@ -310,6 +328,7 @@ impl TrussScene {
                 ],
             )?;
         }
+        self.check_case_scales(origin)?;
         if !self.diagonal_pairs.is_empty() {
             self.check_pairs(origin, &self.member_index(), &truss)?;
         } else if self.diagonal_mode.is_some() {
@@ -531,6 +550,32 @@ impl TrussScene {
         (self.joints.iter().enumerate())
             .map(|(i, j)| (j.name.as_str(), i))
             .collect()
+    }
+
+    /// The load cases' and moving loads' own force scales, where given: as the drawing's,
+    /// and the plan drawn at one no larger than a sheet (the sum of its loads at most
+    /// [`MAX_SHEET_MM`](super::procedure::MAX_SHEET_MM) long).
+    fn check_case_scales(&self, origin: &str) -> Result<(), SceneError> {
+        let cases = self.load_cases.iter().enumerate().map(|(i, c)| {
+            let total: f64 = c.loads.iter().map(JointLoadSpec::magnitude).sum();
+            (format!("load_cases[{i}]"), c.force_scale_kg_per_mm, total)
+        });
+        let moving = self.moving_loads.iter().enumerate().map(|(i, m)| {
+            let total: f64 = m.loads_kg.iter().map(|kg| kg.abs()).sum();
+            (format!("moving_loads[{i}]"), m.force_scale_kg_per_mm, total)
+        });
+        for (at, scale, total) in cases.chain(moving) {
+            let Some(kg_per_mm) = scale else { continue };
+            let field = format!("{at}.force_scale_kg_per_mm");
+            optional_positive(origin, &[(field.as_str(), scale)])?;
+            let mm = total / kg_per_mm;
+            if mm > super::procedure::MAX_SHEET_MM {
+                if let Some(e) = super::procedure::wrong_size((mm, &field), origin) {
+                    return Err(e);
+                }
+            }
+        }
+        Ok(())
     }
 
     /// At least one load case (or a roof, or a moving load); the roof's numbers, every load
@@ -958,6 +1003,7 @@ impl TrussScene {
                         force: l.vector(&at).unwrap_or_else(|_| Vector::zeros()),
                     })
                     .collect(),
+                force_scale: c.force_scale_kg_per_mm,
             }
         }));
         for mv in &self.moving_loads {
@@ -973,6 +1019,7 @@ impl TrussScene {
                             force: Vector::new(0.0, -kg),
                         })
                         .collect(),
+                    force_scale: mv.force_scale_kg_per_mm,
                 });
             }
         }
@@ -1047,12 +1094,14 @@ impl super::Procedure for TrussScene {
     const GEOMETRY_FIELD: &'static str = "joints";
 
     fn sheet_extent(p: &TrussProblem) -> (f64, &'static str) {
+        // The cases at the figure's force scale; one at its own was measured when read.
+        let d = &p.drawing;
         let load = p
             .cases
             .iter()
+            .filter(|c| c.force_scale.is_none())
             .map(|c| c.loads.iter().map(|l| l.force.norm()).sum::<f64>())
             .fold(0.0, f64::max);
-        let d = &p.drawing;
         super::fields::larger(
             p.truss.size() * 1000.0 / d.length_scale,
             load / d.force_scale,
@@ -1117,10 +1166,9 @@ impl super::Procedure for TrussScene {
                 &problem.source,
                 "force plan (Kräfteplan), tension +, compression −",
             ),
-            scales: vec![
-                ScaleBar::length(d.length_scale, "m"),
-                ScaleBar::force(d.force_scale),
-            ],
+            scales: std::iter::once(ScaleBar::length(d.length_scale, "m"))
+                .chain(cremona::force_scales(&problem.cases, d).map(ScaleBar::force))
+                .collect(),
         }
     }
 }

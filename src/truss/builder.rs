@@ -478,7 +478,11 @@ impl Truss {
                 force: Vector::new(px, py),
             });
         }
-        Ok(LoadCase { name, loads: out })
+        Ok(LoadCase {
+            name,
+            loads: out,
+            force_scale: None,
+        })
     }
 
     /// Scales a drafter would choose: the truss about 150 mm across, the largest load case

@@ -63,7 +63,8 @@ pub use super::plan::{CaseResult, ReactionForce, TrussDrawing, ZERO_FORCE_REL};
 ///     ],
 /// );
 /// let case = LoadCase { name: "P".into(),
-///     loads: vec![JointLoad { joint: 2, force: Vector::new(0.0, -1000.0) }] };
+///     loads: vec![JointLoad { joint: 2, force: Vector::new(0.0, -1000.0) }],
+///     force_scale: None };
 /// let mut b = Board::recording().with_figure_size(400.0);
 /// let r = construct_truss(&mut b, &t, &[case],
 ///     &TrussDrawing { length_scale: 20.0, force_scale: 20.0 }).unwrap();
@@ -139,6 +140,11 @@ fn construct(
         vec![None; cases.len()]
     };
     for (case, sol) in cases.iter().zip(sols) {
+        // A case with a force scale of its own draws its plan (and its loads) at it.
+        let dr = &TrussDrawing {
+            force_scale: case.force_scale.unwrap_or(dr.force_scale),
+            ..*dr
+        };
         let c = Case {
             t,
             g: g.as_ref(),
@@ -156,9 +162,14 @@ fn construct(
         b.clear_context();
         // Several cases: each row under its case's name (dead load, wind, snow), as the
         // plates head their plans.
-        if cases.len() > 1 {
-            let name = vec![vec![case.name.clone()]];
+        let heading = (rows.heading.take())
+            .or_else(|| (cases.len() > 1).then(|| case_heading(cases, case, dr.force_scale)));
+        if let Some(heading) = heading {
+            let name = vec![vec![heading]];
+            let k = 1000.0 / dr.length_scale;
+            let joints_top = (t.joints.iter()).fold(f64::NEG_INFINITY, |y, j| y.max(j.at.y * k));
             let [x0, _, _, y1] = r.truss_box;
+            let y1 = y1.max(joints_top + JOINT_NAMES_MM);
             b.set_part(Part::packed(rows.row, TRUSS));
             b.table(Point::new(x0, y1 + HEADING_MM), name, &[], N_CASE_NAME);
         }
@@ -167,6 +178,38 @@ fn construct(
     }
     b.set_part(Part::default());
     Ok(out)
+}
+
+/// The force scales (kg per mm) the plans of `cases` are drawn at, each once, in the order
+/// of the cases: the figure's, and those of cases with a scale of their own.
+pub fn force_scales<'a>(
+    cases: &'a [LoadCase],
+    dr: &'a TrussDrawing,
+) -> impl Iterator<Item = f64> + 'a {
+    let mut seen: Vec<u64> = Vec::new();
+    cases
+        .iter()
+        .map(|c| c.force_scale.unwrap_or(dr.force_scale))
+        .filter(move |f| {
+            let new = !seen.contains(&f.to_bits());
+            seen.push(f.to_bits());
+            new
+        })
+}
+
+/// A case's heading over its row: its name, and its force scale where the figure's plans
+/// are drawn at more than one ("crane at O9, 1 mm = 100 kg"), as each plan is read at its
+/// own (LH Aufgabe 5).
+pub(super) fn case_heading(cases: &[LoadCase], case: &LoadCase, force_scale: f64) -> String {
+    if cases.iter().any(|c| c.force_scale.is_some()) {
+        format!(
+            "{}, 1 mm = {} kg",
+            case.name,
+            crate::fmt::num(force_scale, 6)
+        )
+    } else {
+        case.name.clone()
+    }
 }
 
 /// The rank test (LH Gl. 2 and more): a mechanism names the joint that can move.
@@ -226,11 +269,14 @@ const MEMBER_NUMBERS: usize = 120;
 
 /// The sheet row the next case of a figure of several truss drawings goes in, and how many
 /// member numbers its drawings have written ([`construct_truss_rows`]).
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Default)]
 pub struct Rows {
     /// The row of the next case ([`Part::row`]; rows go downwards from 0).
     pub row: u16,
     numbers: usize,
+    /// The heading of the next row, where its caller draws the cases of one figure one at a
+    /// time (the tension-only diagonals settle per case): written over it, then cleared.
+    pub(super) heading: Option<String>,
 }
 
 impl Rows {

@@ -62,3 +62,8 @@ pub(crate) const EMPTY: [f64; 4] = [
 
 /// Room between a load case's name and the top of its truss drawing (mm).
 pub(super) const HEADING_MM: f64 = 6.0;
+
+/// Room the names of the top joints take above them (mm): a label's offset and its letters'
+/// height. A case's name stands above them where no load rises higher (LH Abb. 19's dead
+/// load hangs from the bottom chord).
+pub(super) const JOINT_NAMES_MM: f64 = 4.5;

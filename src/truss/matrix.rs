@@ -597,6 +597,7 @@ mod memo_tests {
                     force: Vector::new(0.0, -1000.0),
                 })
                 .collect(),
+            force_scale: None,
         }
     }
 

@@ -145,6 +145,10 @@ pub struct LoadCase {
     pub name: String,
     /// The loads.
     pub loads: Vec<JointLoad>,
+    /// Its own force scale (kg per mm), where its plan is drawn at another scale than the
+    /// figure's: a light moving load's plans larger than the dead load's, each read "unter
+    /// Berücksichtigung des jeweiligen Kräftemaßstabes" (LH B.5, Aufgabe 5).
+    pub force_scale: Option<f64>,
 }
 
 /// A plane truss with its supports.

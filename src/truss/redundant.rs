@@ -10,7 +10,9 @@
 //!   is switched to the other, and the plan is drawn again, until all working diagonals pull.
 //!   The book: "man verfährt so, als wenn die zweite Diagonale nicht vorhanden wäre".
 
-use super::cremona::{construct_plan, construct_truss_rows, CaseResult, Rows, TrussDrawing};
+use super::cremona::{
+    case_heading, construct_plan, construct_truss_rows, CaseResult, Rows, TrussDrawing,
+};
 use super::plan::case_result;
 use super::{LoadCase, Truss};
 use crate::kernel::Vector;
@@ -89,6 +91,11 @@ pub fn construct_pairs(
     let mut out = Vec::with_capacity(cases.len());
     let p = Pairs { t, pairs, dr };
     for case in cases {
+        // Several cases: each row under its case's name, as `construct_truss` heads them.
+        if cases.len() > 1 {
+            let scale = case.force_scale.unwrap_or(dr.force_scale);
+            row.heading = Some(case_heading(cases, case, scale));
+        }
         out.push(match mode {
             PairMode::SplitHalfLoads => p.split_half_loads(b, case, &mut row)?,
             PairMode::TensionOnly => p.tension_only(b, case, &mut row)?,
@@ -130,6 +137,7 @@ impl Pairs<'_> {
                         force: l.force * 0.5,
                     })
                     .collect(),
+                force_scale: case.force_scale,
             };
             let r = construct_truss_rows(b, &sub, &[half], self.dr, row, &[])?;
             for (i, &m) in keep.iter().enumerate() {
@@ -168,6 +176,7 @@ impl Pairs<'_> {
         let c = LoadCase {
             name: format!("{} ({})", case.name, slack_names(t, &drop)),
             loads: case.loads.clone(),
+            force_scale: case.force_scale,
         };
         let ghosts: Vec<[usize; 2]> = drop.iter().map(|&m| t.members[m].ends).collect();
         let r = construct_truss_rows(b, &sub, std::slice::from_ref(&c), self.dr, row, &ghosts)?;

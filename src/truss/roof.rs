@@ -118,6 +118,7 @@ pub fn load_cases(t: &Truss, roof: &Roof) -> Vec<LoadCase> {
             out.push(LoadCase {
                 name: name.into(),
                 loads,
+                force_scale: None,
             });
         }
     }

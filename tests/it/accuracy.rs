@@ -363,6 +363,27 @@ fn a_diagram_too_small_for_its_sheet_is_refused_naming_its_scale() {
         .unwrap()
         .to_string();
     assert!(e.contains("drawing.force_scale_kg_per_mm"), "{e}");
+    // A load case's or a moving load's own force scale is held to the same rules, and named.
+    let crane = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/lh_aufgabe5_crane_bridge.json"
+    ))
+    .unwrap();
+    for (value, says) in [("-100", "must be positive"), ("1e-3", "m across")] {
+        let text = crane.replace(
+            "\"force_scale_kg_per_mm\": 100",
+            &format!("\"force_scale_kg_per_mm\": {value}"),
+        );
+        assert_ne!(text, crane);
+        let e = AnyScene::from_json(&text, "c.json")
+            .err()
+            .unwrap()
+            .to_string();
+        assert!(
+            e.contains("moving_loads[0].force_scale_kg_per_mm") && e.contains(says),
+            "{e}"
+        );
+    }
 }
 
 /// The scotch yoke's sweep: its mean speed 2v/π by the divisions converges as n⁻², as the

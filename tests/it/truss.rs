@@ -48,6 +48,7 @@ fn case(loads: Vec<JointLoad>) -> Vec<LoadCase> {
     vec![LoadCase {
         name: "P".into(),
         loads,
+        force_scale: None,
     }]
 }
 
@@ -1008,10 +1009,12 @@ fn an_empty_load_case_and_a_self_balanced_one_give_clean_plans() {
         LoadCase {
             name: "nothing".into(),
             loads: vec![],
+            force_scale: None,
         },
         LoadCase {
             name: "pulled".into(),
             loads: vec![pull(0, -500.0), pull(4, 500.0)],
+            force_scale: None,
         },
     ];
     let (_, r) = run(&t, &cases);
@@ -1153,6 +1156,29 @@ fn aufgabe_5_table_2_reactions_and_diagonals() {
         }
     }
     assert_eq!(d_off, ["II", "III", "VIII", "IX", "X"]);
+    // Each plan at its own force scale (LH: "unter Berücksichtigung des jeweiligen
+    // Kräftemaßstabes"): the dead load's at 500 kg per mm, the crane's at 100.
+    for c in &r {
+        let kg_per_mm = if c.case == "dead load" { 500.0 } else { 100.0 };
+        for m in c.members.iter().filter(|m| m.force.abs() > 1.0) {
+            let read = m.plan_mm * kg_per_mm;
+            assert!(
+                (read - m.force.abs()).abs() < 1e-6 * read,
+                "{}: {m:?}",
+                c.case
+            );
+        }
+    }
+    let scales = TrussScene::figure_meta(&p).scales;
+    let named: Vec<&str> = scales.iter().map(|s| s.name.as_str()).collect();
+    assert_eq!(
+        named,
+        [
+            "Längenmaßstab 1 : 200",
+            "Kräftemaßstab 1 mm = 500 kg",
+            "Kräftemaßstab 1 mm = 100 kg"
+        ]
+    );
     tabelle_1_span_members(&r);
     // Flat bars: no diagonal is ever in compression.
     for c in &r {
@@ -1288,6 +1314,7 @@ fn reactions_by_moments_agree_with_the_dense_solve() {
     let lc = LoadCase {
         name: "P".into(),
         loads: loads.clone(),
+        force_scale: None,
     };
     let cases: [Vec<Support>; 2] = [
         // Vertical at I and II (parallel), horizontal at III.
