@@ -707,13 +707,7 @@ pub fn construct_at(
 impl Builder<'_> {
     /// Back to the caller's context (none for a crank drawn alone).
     fn base_context(&mut self) {
-        match &self.base {
-            Some(c) => {
-                let c = c.clone();
-                self.b.set_context(|| c.to_string());
-            }
-            None => self.b.clear_context(),
-        }
+        self.b.set_context_to(self.base.clone());
     }
 
     /// The context of the crank angle θ, within the caller's ("HP, θ = 30°").

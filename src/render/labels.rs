@@ -505,8 +505,7 @@ fn requests(
                 Geom::Segment { segment } | Geom::Vector { segment }
                     if (segment.b - segment.a).norm() <= MIN_DRAWN_MM => {}
                 Geom::Segment { segment } | Geom::Vector { segment } => {
-                    let part = (board.steps().get((o.step.0 as usize).wrapping_sub(1)))
-                        .map_or(Part::default(), |s| s.part);
+                    let part = (board.step(o.step)).map_or(Part::default(), |s| s.part);
                     let i = match groups.iter().position(|g| g.part == part) {
                         Some(i) => i,
                         None => {

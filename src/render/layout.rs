@@ -46,7 +46,7 @@ pub fn part_boxes(board: &Board) -> Vec<PartBox> {
         if matches!(o.geom, Geom::Line { .. }) {
             continue;
         }
-        let Some(step) = board.steps().get((o.step.0 as usize).wrapping_sub(1)) else {
+        let Some(step) = board.step(o.step) else {
             continue;
         };
         pts.clear();

@@ -415,11 +415,18 @@ impl Board {
     /// Puts back a context taken with [`Board::context`] after
     /// [`Board::set_context_within`].
     pub fn restore_context(&mut self, base: Option<std::sync::Arc<str>>) {
-        if !self.is_drawing() {
-            return;
+        if self.is_drawing() {
+            self.set_context_to(base);
         }
-        match base {
-            Some(c) => self.set_context_recorded(c),
+    }
+
+    /// Sets the context to one taken with [`Board::context`] (`None` clears it), on a board
+    /// that records: for a construction whose steps and checks are named within its caller's
+    /// situation on every board that records them (the crank's "HP, θ = 30°").
+    pub fn set_context_to(&mut self, context: Option<std::sync::Arc<str>>) {
+        match context {
+            Some(c) if self.recording => self.set_context_recorded(c),
+            Some(_) => {}
             None => self.clear_context(),
         }
     }
@@ -469,6 +476,12 @@ impl Board {
     /// The recorded objects.
     pub fn objects(&self) -> &[Object] {
         &self.objects
+    }
+
+    /// The step with this id (on a board that keeps its drawing).
+    pub fn step(&self, id: StepId) -> Option<&Step> {
+        // Ids are dense and start at 1.
+        self.steps.get((id.0 as usize).wrapping_sub(1))
     }
 
     /// The object with this id.
