@@ -117,10 +117,23 @@ struct Request {
 /// `ends` are each request's segment and kind, `joined` the names written after its own (each
 /// with the request it makes alone).
 struct Group {
-    part: Part,
     requests: Vec<Request>,
     ends: Vec<(Point, Point, Kind)>,
     joined: Vec<Vec<(Request, Label)>>,
+    /// The requests by the cells ([`cell`]) of both ends of their segments: a segment's twin
+    /// is looked for among its neighbours only, so a part's names are grouped in a time
+    /// linear in their number.
+    cells: HashMap<(i64, i64), Vec<usize>>,
+}
+
+/// The cell, `SAME_LINE_MM` wide, that holds `p`: two points nearer than that lie in the
+/// same cell or in neighbouring ones.
+fn cell(p: Point) -> (i64, i64) {
+    // Sheet coordinates are at most metres in millimetres: far inside i64 after the division.
+    (
+        (p.x / SAME_LINE_MM).floor() as i64,
+        (p.y / SAME_LINE_MM).floor() as i64,
+    )
 }
 
 impl Group {
@@ -128,18 +141,36 @@ impl Group {
     /// on the same line, if there is one (its text then reads "S₁, S₂"), else as a request of
     /// its own. A load drawn along a member keeps its own name.
     fn add(&mut self, r: Request, (a, b): (Point, Point), kind: Kind, label: &Label) {
-        let same = |&(p, q, k): &(Point, Point, Kind)| {
-            let near = |u: Point, v: Point| (u - v).norm() < SAME_LINE_MM;
-            k == kind && ((near(p, a) && near(q, b)) || (near(p, b) && near(q, a)))
-        };
-        match self.ends.iter().position(same) {
+        match self.twin(a, b, kind) {
             Some(i) => self.joined[i].push((r, label.clone())),
             None => {
+                let i = self.requests.len();
                 self.requests.push(r);
                 self.ends.push((a, b, kind));
                 self.joined.push(Vec::new());
+                self.cells.entry(cell(a)).or_default().push(i);
+                if cell(b) != cell(a) {
+                    self.cells.entry(cell(b)).or_default().push(i);
+                }
             }
         }
+    }
+
+    /// The first request whose segment is `a`–`b` (either way round, ends within
+    /// `SAME_LINE_MM`) and of `kind`: among those with an end in `a`'s cell or its eight
+    /// neighbours.
+    fn twin(&self, a: Point, b: Point, kind: Kind) -> Option<usize> {
+        let near = |u: Point, v: Point| (u - v).norm() < SAME_LINE_MM;
+        let same = |i: usize| {
+            let (p, q, k) = self.ends[i];
+            k == kind && ((near(p, a) && near(q, b)) || (near(p, b) && near(q, a)))
+        };
+        let (x, y) = cell(a);
+        (x - 1..=x + 1)
+            .flat_map(|cx| (y - 1..=y + 1).map(move |cy| (cx, cy)))
+            .filter_map(|c| self.cells.get(&c))
+            .flat_map(|ids| ids.iter().copied().filter(|&i| same(i)))
+            .min()
     }
 }
 
@@ -407,7 +438,7 @@ fn place_group(taken: &mut Taken, g: Group, out: &mut Placement) {
     out.labels += names;
     out.placed.extend(placed);
     for (i, joined) in g.joined.into_iter().enumerate() {
-        if joins.contains(&i) {
+        if joins.binary_search(&i).is_ok() {
             out.joined.insert(
                 g.requests[i].id,
                 joined.into_iter().map(|(_, l)| l).collect(),
@@ -417,7 +448,8 @@ fn place_group(taken: &mut Taken, g: Group, out: &mut Placement) {
 }
 
 /// Every name of a group placed, those on one line `together` or each alone: the places and
-/// which requests were written together; `None`, with nothing taken, where one has no room.
+/// which requests were written together (ascending); `None`, with nothing taken, where one has
+/// no room.
 #[allow(clippy::type_complexity)]
 fn try_group(
     taken: &mut Taken,
@@ -472,6 +504,7 @@ fn requests(
     // point's, line's and curve's: it only takes room they leave (Bow's letters keep theirs
     // in a crowded plan).
     let mut groups: Vec<Group> = Vec::new();
+    let mut by_part: HashMap<Part, usize> = HashMap::new();
     for o in board.objects() {
         // A table's lettering (a heading, an area's sign, an evaluation) is no place for a
         // label either.
@@ -506,18 +539,15 @@ fn requests(
                     if (segment.b - segment.a).norm() <= MIN_DRAWN_MM => {}
                 Geom::Segment { segment } | Geom::Vector { segment } => {
                     let part = (board.step(o.step)).map_or(Part::default(), |s| s.part);
-                    let i = match groups.iter().position(|g| g.part == part) {
-                        Some(i) => i,
-                        None => {
-                            groups.push(Group {
-                                part,
-                                requests: Vec::new(),
-                                ends: Vec::new(),
-                                joined: Vec::new(),
-                            });
-                            groups.len() - 1
-                        }
-                    };
+                    let i = *by_part.entry(part).or_insert_with(|| {
+                        groups.push(Group {
+                            requests: Vec::new(),
+                            ends: Vec::new(),
+                            joined: Vec::new(),
+                            cells: HashMap::new(),
+                        });
+                        groups.len() - 1
+                    });
                     let kind = (matches!(o.geom, Geom::Vector { .. }), o.role);
                     groups[i].add(r, (segment.a, segment.b), kind, &o.label);
                 }
@@ -869,6 +899,44 @@ mod tests {
             best * 1e3,
             best * 1e6 / labels as f64
         );
+    }
+
+    /// The cost per name of one part with many segments (a generated truss's plan drawn on
+    /// one sheet): every second segment lies on its predecessor's line, so half the names
+    /// are joined. Grouping them looks among neighbouring cells only, so the cost per name
+    /// stays flat as the part grows tenfold.
+    #[test]
+    #[ignore = "a report: cargo test --release --lib labels -- --ignored --nocapture"]
+    fn report_the_cost_per_name_of_a_large_plan() {
+        use crate::protocol::{Note, Role, Topic};
+        for n in [2_000_u32, 20_000] {
+            let note = Note::new("s", Topic::Custom("t"));
+            let mut b = Board::recording();
+            b.set_part(Part::at(0, 0));
+            let side = f64::from(n).sqrt().ceil() as u32;
+            for k in 0..n {
+                let (i, j) = (f64::from((k / 2) % side), f64::from((k / 2) / side));
+                let p = b.point(Point::new(40.0 * i, 12.0 * j), Role::Given, note.clone());
+                let q = b.point(
+                    Point::new(40.0 * i + 30.0, 12.0 * j),
+                    Role::Given,
+                    note.clone(),
+                );
+                let name = Role::Force.labelled(Label::from_name(&format!("S{k}")));
+                b.segment(&p, &q, name, note.clone());
+            }
+            let edge = 40.0 * f64::from(side) + 40.0;
+            let t = std::time::Instant::now();
+            let placed = place(&b, [-10.0, -10.0, edge, edge], Vec::new(), &|_| true);
+            let secs = t.elapsed().as_secs_f64();
+            println!(
+                "{n:6} names in one part: {:.1} ms, {:.2} µs a name ({} written, {} withheld)",
+                secs * 1e3,
+                secs * 1e6 / f64::from(n),
+                placed.labels,
+                placed.withheld
+            );
+        }
     }
 
     #[test]
