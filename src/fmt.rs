@@ -482,6 +482,17 @@ pub fn wrap(text: &str, columns: usize) -> Vec<String> {
     lines
 }
 
+/// Whether a line may end after `word` without parting a phrase: a word ending in a comma,
+/// a colon or a semicolon, or a dash standing alone.
+///
+/// ```
+/// use graphostatik::fmt::ends_phrase;
+/// assert!(ends_phrase("Tafel I:") && ends_phrase("—") && !ends_phrase("Tafel"));
+/// ```
+pub fn ends_phrase(word: &str) -> bool {
+    word.ends_with([',', ':', ';']) || word == "—"
+}
+
 #[cfg(test)]
 mod fast_tests {
     use super::*;

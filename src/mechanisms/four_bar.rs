@@ -18,7 +18,7 @@
 
 use crate::kernel::angle::triangle_angle;
 use crate::kernel::{Branch, Circle, Point, Vector};
-use crate::protocol::{Board, ConstructionError, Drawn, Label, Note, Role, Topic, H};
+use crate::protocol::{Board, ConstructionError, Drawn, Label, Note, Part, Role, Topic, H};
 
 fn n(caption: &'static str, term: Option<&'static str>) -> Note {
     crate::protocol::note(
@@ -558,7 +558,10 @@ fn flag_table(b: &mut Board, fr: &Frame, fb: &FourBar, flagged: &[FourBarRow]) {
     if flagged.is_empty() {
         rows.push(vec!["none".to_string(), String::new()]);
     }
-    let at = Point::new(fr.a.g.x + fr.rocker.g.radius + 10.0, -fr.crank.g.radius);
+    // In a column of its own: the sheet layout sets it a gap right of the mechanism, level
+    // with the foot of the crank circle.
+    b.set_part(TABLE);
+    let at = Point::new(fr.a.g.x, -fr.crank.g.radius);
     b.table(
         at,
         rows,
@@ -568,4 +571,9 @@ fn flag_table(b: &mut Board, fr: &Frame, fb: &FourBar, flagged: &[FourBarRow]) {
             Some("Übertragungswinkel"),
         ),
     );
+    b.set_part(Part::default());
 }
+
+/// The part of the sheet that holds the table of flagged positions: a column right of the
+/// mechanism's.
+const TABLE: Part = Part::at(0, 1);

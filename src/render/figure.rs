@@ -28,10 +28,16 @@ struct Frame {
     /// The title's lines: one, unless the title is wider than the figure would be without
     /// it (then it is wrapped at spaces rather than widening the sheet past the drawing).
     title: Vec<String>,
+    /// The source line's lines, wrapped as the title is (where it is wider than the
+    /// drawing, its scale rows and [`TITLE_MIN_WIDTH`]).
+    source: Vec<String>,
 }
 
 /// How much a title line beyond the first adds to the title block (mm).
 const TITLE_LINE: f64 = 7.5;
+/// How much a source line beyond the first adds to the title block (mm): its 3.5 px text
+/// and a third of that between lines.
+const SOURCE_LINE: f64 = 4.7;
 /// The narrowest width (mm) a title is wrapped to: a sheet this wide takes any title on a
 /// few lines.
 const TITLE_MIN_WIDTH: f64 = 160.0;
@@ -39,7 +45,9 @@ const TITLE_MIN_WIDTH: f64 = 160.0;
 impl Frame {
     /// The height of the title block: title lines, source line and the space under them.
     fn title_block(&self) -> f64 {
-        TITLE_BLOCK + TITLE_LINE * self.title.len().saturating_sub(1) as f64
+        TITLE_BLOCK
+            + TITLE_LINE * self.title.len().saturating_sub(1) as f64
+            + SOURCE_LINE * self.source.len().saturating_sub(1) as f64
     }
     /// Where `p` stands on the sheet (SVG user units), as [`Frame::x`] and [`Frame::y`] write it.
     fn at(&self, p: &Point) -> [f64; 2] {
@@ -211,6 +219,7 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
         height: 0.0,
         clip,
         title: Vec::new(),
+        source: Vec::new(),
     };
     let mut pts = solid;
     for o in board.objects() {
@@ -233,22 +242,23 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
     max_x += 4.0;
     max_y += 4.0;
     min_y -= 4.0;
-    // Wide enough for the source line and the scale rows as well; the title is wrapped to
-    // that width (at least TITLE_MIN_WIDTH) where it is wider.
-    let text_width = [meta.source.chars().count() as f64 * TEXT_CHAR]
-        .into_iter()
-        .chain({
-            let names_at = scale_rows(&meta.scales).1;
-            (meta.scales.iter())
-                .map(move |s| names_at + 2.0 + s.name.chars().count() as f64 * SMALL_CHAR)
-        })
+    // Wide enough for the scale rows as well; the title and the source line are wrapped to
+    // that width (at least TITLE_MIN_WIDTH) where they are wider.
+    let names_at = scale_rows(&meta.scales).1;
+    let text_width = (meta.scales.iter())
+        .map(|s| names_at + 2.0 + s.name.chars().count() as f64 * SMALL_CHAR)
         .fold(0.0, f64::max);
     let inner = (max_x - min_x).max(text_width).max(TITLE_MIN_WIDTH);
-    let title = crate::fmt::wrap(&meta.title, (inner / TITLE_CHAR).floor() as usize);
-    let title_width = (title.iter())
-        .map(|l| l.chars().count() as f64 * TITLE_CHAR)
-        .fold(0.0, f64::max);
-    let width = (max_x - min_x).max(text_width).max(title_width) + 2.0 * MARGIN;
+    let (title, title_width) = wrapped(&meta.title, inner, TITLE_CHAR);
+    let (source, source_width) = match meta.source.is_empty() {
+        true => (Vec::new(), 0.0),
+        false => wrapped(&meta.source, inner, TEXT_CHAR),
+    };
+    let width = (max_x - min_x)
+        .max(text_width)
+        .max(title_width)
+        .max(source_width)
+        + 2.0 * MARGIN;
     let mut f = Frame {
         min_x,
         min_y,
@@ -257,10 +267,48 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
         height: 0.0,
         clip,
         title,
+        source,
     };
     f.height =
         (max_y - min_y) + 2.0 * MARGIN + f.title_block() + SCALE_ROW * meta.scales.len() as f64;
     f
+}
+
+/// The longest title or source line whose wrap is balanced (characters).
+const BALANCED_CHARS: usize = 400;
+
+/// `text` wrapped at spaces to lines of at most `width` (mm) in characters `char_width`
+/// wide, and the width of its widest line (a word wider than `width` stands on a line of
+/// its own and widens the sheet).
+///
+/// Of the breaks that take the fewest lines, those that part the fewest phrases
+/// ([`crate::fmt::ends_phrase`]: "v = 7 m/s" and "Tafel I" stay whole), and of those the
+/// narrowest: balanced lines, not one word under a full line.
+fn wrapped(text: &str, width: f64, char_width: f64) -> (Vec<String>, f64) {
+    // No line is wider than the text; a text longer than BALANCED_CHARS is wrapped at the
+    // full width only (each trial wrap costs its length).
+    let len = text.chars().count();
+    let columns = ((width / char_width).floor() as usize).min(len);
+    let parted = |lines: &[String]| {
+        let ends = lines.iter().rev().skip(1);
+        ends.filter(|l| {
+            !l.split(' ')
+                .next_back()
+                .is_some_and(crate::fmt::ends_phrase)
+        })
+        .count()
+    };
+    let fewest = crate::fmt::wrap(text, columns.max(1)).len();
+    let narrowest = if len > BALANCED_CHARS { columns } else { 1 };
+    let lines = (narrowest.max(1)..=columns.max(1))
+        .map(|c| crate::fmt::wrap(text, c))
+        .filter(|l| l.len() == fewest)
+        .min_by_key(|l| parted(l))
+        .unwrap_or_else(|| crate::fmt::wrap(text, columns.max(1)));
+    let widest = (lines.iter())
+        .map(|l| l.chars().count() as f64 * char_width)
+        .fold(0.0, f64::max);
+    (lines, widest)
 }
 
 fn label_text(f: &Frame, at: &Point, label: &Label, joined: &[Label]) -> Text {
@@ -585,12 +633,12 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> Group {
                 .set("y", num(MARGIN + 6.0 + TITLE_LINE * k as f64, 3)),
         );
     }
-    if !meta.source.is_empty() {
-        let below = TITLE_LINE * f.title.len().saturating_sub(1) as f64;
+    let below = TITLE_LINE * f.title.len().saturating_sub(1) as f64;
+    for (k, line) in f.source.iter().enumerate() {
         g = g.add(
-            Text::new(sheet_text(&meta.source).into_owned())
+            Text::new(sheet_text(line).into_owned())
                 .set("x", num(MARGIN, 3))
-                .set("y", num(MARGIN + 12.0 + below, 3)),
+                .set("y", num(MARGIN + 12.0 + below + SOURCE_LINE * k as f64, 3)),
         );
     }
     // Scale bars, one to a row, under the figure.
@@ -915,7 +963,38 @@ fn draw(meta: &FigureMeta, sheet: Sheet<'_>, upto: Option<StepId>) -> (String, L
 
 #[cfg(test)]
 mod tests {
-    use super::largest_empty_square;
+    use super::{largest_empty_square, wrapped};
+
+    /// A source line is broken between phrases where it can be, into balanced lines, and a
+    /// width of a sheet of any size is no loop over its width.
+    #[test]
+    fn titles_wrap_between_phrases_into_balanced_lines() {
+        let source =
+            "LH Gl. 34, Abb. 56; KG (295), Abb. 1050 — R = 315 mm, infinitely long rod, v = 7 m/s";
+        let (lines, widest) = wrapped(source, 160.0, 2.0);
+        assert_eq!(
+            lines,
+            [
+                "LH Gl. 34, Abb. 56; KG (295), Abb. 1050 —",
+                "R = 315 mm, infinitely long rod, v = 7 m/s"
+            ]
+        );
+        assert_eq!(widest, 2.0 * 42.0);
+        // No phrase end to break at: the last line is not one word under a full one.
+        let (lines, _) = wrapped(
+            "Compound engine the cards reduced to piston forces",
+            160.0,
+            3.4,
+        );
+        assert_eq!(
+            lines,
+            ["Compound engine the cards", "reduced to piston forces"]
+        );
+        let (lines, _) = wrapped(source, f64::MAX, 2.0);
+        assert_eq!(lines, [source]);
+        let (lines, _) = wrapped(source, f64::NAN, 2.0);
+        assert!(lines.iter().all(|l| !l.contains(' ')), "{lines:?}");
+    }
 
     #[test]
     fn the_largest_empty_square_of_a_grid() {
