@@ -344,6 +344,12 @@ const N_POLAR_MEASURE: Note = note(
     "KG (303); LH Gl. 48",
     Topic::Forces,
 );
+const N_POLAR_OC: Note = note(
+    "T drawn as the force OC along the vertical axis",
+    Some("Tangentialdruck"),
+    "LH Abb. 65; KG Abb. 1063",
+    Topic::Forces,
+);
 
 const N_STROKE_END: Note = note(
     "the stroke laid off along the piston line",
@@ -1422,7 +1428,7 @@ impl Builder<'_> {
             Label::quiet("T", i as u32),
             N_POLAR_MEASURE,
         );
-        self.b.segment(&o, &cpt, Role::Force, N_POLAR_MEASURE);
+        self.b.segment(&o, &cpt, Role::Force, N_POLAR_OC);
         let (p, lam, theta) = (self.d.piston_force.at(i), self.lambda(), self.thetas[i]);
         self.b.check(
             &t,

@@ -16,6 +16,12 @@
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{Board, ConstructionError, Label, Note, Role, Scale, Topic, Weighted, H};
 
+/// The situation of the steps of the outstroke's parabola (the curve above the axis at the
+/// inner dead centre, T or B₀) and of the return stroke's (T′, B′₀).
+pub(crate) const OUTSTROKE: &str = "outstroke";
+/// See [`OUTSTROKE`].
+pub(crate) const RETURN_STROKE: &str = "return stroke";
+
 fn n(caption: &'static str, term: &'static str, book: &'static str) -> Note {
     crate::protocol::note(caption, Some(term), book, Topic::Acceleration)
 }
@@ -332,8 +338,14 @@ pub(crate) fn envelope(b: &mut Board, c: &TolleCurve, parts: usize) -> Vec<H<Poi
         "Teilung der Tangenten",
         "LH Abb. 55",
     );
-    let p = b.divide_segment(&c.t, &c.d, parts, "", div.clone());
-    let q = b.divide_segment(&c.d, &c.t1, parts, "", div.clone());
+    let p = b.naming(
+        || "tangent TD".into(),
+        |b| b.divide_segment(&c.t, &c.d, parts, "", div.clone()),
+    );
+    let q = b.naming(
+        || "tangent DT₁".into(),
+        |b| b.divide_segment(&c.d, &c.t1, parts, "", div.clone()),
+    );
     let join = n(
         "join 1 with 1, 2 with 2, …: tangents of the parabola",
         "Umhüllende",
@@ -346,9 +358,15 @@ pub(crate) fn envelope(b: &mut Board, c: &TolleCurve, parts: usize) -> Vec<H<Poi
     );
     let mut out = vec![c.t];
     for k in 1..parts {
-        b.segment(&p[k], &q[k], Role::Construction, join.clone());
         let s = k as f64 / parts as f64;
-        if let Ok(pt) = b.divide_at(&p[k], &q[k], s, Label::NONE, touch.clone()) {
+        let contact = b.naming(
+            || format!("{k} with {k}"),
+            |b| {
+                b.segment(&p[k], &q[k], Role::Construction, join.clone());
+                b.divide_at(&p[k], &q[k], s, Label::NONE, touch.clone())
+            },
+        );
+        if let Ok(pt) = contact {
             out.push(pt);
         }
     }
@@ -369,8 +387,14 @@ pub(crate) fn point_at(
         "Teilung der Tangenten",
         "LH Abb. 55",
     );
-    let p = b.divide_at(&c.t, &c.d, s, Label::NONE, div.clone())?;
-    let q = b.divide_at(&c.d, &c.t1, s, Label::NONE, div.clone())?;
+    let p = b.naming(
+        || "tangent TD".into(),
+        |b| b.divide_at(&c.t, &c.d, s, Label::NONE, div.clone()),
+    )?;
+    let q = b.naming(
+        || "tangent DT₁".into(),
+        |b| b.divide_at(&c.d, &c.t1, s, Label::NONE, div.clone()),
+    )?;
     b.segment(
         &p,
         &q,

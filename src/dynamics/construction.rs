@@ -3,7 +3,7 @@
 use super::model::{self, Cylinder};
 use super::{DynamicsDrawing, DynamicsRequest, DynamicsResults, Engine, RayRow};
 use crate::crank::closed_form as cf;
-use crate::crank::tolle::{self, TolleAxis, TolleCurve};
+use crate::crank::tolle::{self, TolleAxis, TolleCurve, OUTSTROKE, RETURN_STROKE};
 use crate::crank::{self, Angles, CrankDrive, Drawing, PistonForce, Request};
 use crate::kernel::{Line, Point};
 use crate::protocol::{
@@ -306,16 +306,27 @@ impl Builder<'_> {
         if self.diagrams[c].is_none() {
             let k = self.e.kinematics;
             let middle = Point::new(0.0, -(c as f64) * self.row_height);
-            self.b.clear_context();
+            // The situation: the cylinder, and the stroke whose parabola a step draws.
+            let cyl = self.e.cylinders[c].name.clone();
+            let within = |b: &mut Board, stroke: &str| match (cyl.is_empty(), stroke.is_empty()) {
+                (true, true) => b.clear_context(),
+                (false, true) => b.set_context(|| cyl.clone()),
+                (true, false) => b.set_context(|| stroke.to_string()),
+                (false, false) => b.set_context(|| format!("{cyl}, {stroke}")),
+            };
+            within(self.b, "");
             let axis = tolle::axis(self.b, middle, self.r_mm, Topic::Forces)?;
             let mass = self.cyl(c).mass;
             let curves = if mass > 0.0 {
                 let a_mm = mass * k.a() / self.dr.force_scale;
                 let cp = tolle::point_c(self.b, &axis, self.r_mm, k.lambda)?;
+                within(self.b, OUTSTROKE);
                 let (out, _) = tolle::curve(self.b, &axis, &cp, a_mm, k.lambda, 1.0, "B₀")?;
+                within(self.b, RETURN_STROKE);
                 let (ret, _) = tolle::curve(self.b, &axis, &cp, a_mm, k.lambda, -1.0, "B'₀")?;
                 self.check_cd(c, (&axis, &cp, &out));
-                for cv in [out, ret] {
+                for (cv, stroke) in [(out, OUTSTROKE), (ret, RETURN_STROKE)] {
+                    within(self.b, stroke);
                     tolle::balance(self.b, &axis, &cv);
                     let pts = tolle::envelope(self.b, &cv, 10);
                     if pts.len() >= 2 {
@@ -331,6 +342,7 @@ impl Builder<'_> {
             } else {
                 None
             };
+            self.b.clear_context();
             self.diagrams[c] = Some(Diagram { axis, curves });
         }
         Ok(self.diagrams[c].as_ref().expect("set above"))

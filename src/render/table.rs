@@ -189,12 +189,14 @@ fn check_cells(
     count: Option<(u64, u64)>,
 ) {
     cells.cell(|s| push_uint_padded(s, step.0.into(), 3));
-    // The situation, and the object where the quantity does not name it: "P: joint B0,
-    // member 5".
+    // The situation, and the object where the quantity does not name it and the situation
+    // names it not already: "P: joint B0, member 5".
     cells.cell(|s| {
         let context = context.unwrap_or("");
         s.push_str(context);
-        if let Some(object) = &c.object {
+        let named =
+            |o: &str| context == o || context.strip_suffix(o).is_some_and(|h| h.ends_with(", "));
+        if let Some(object) = c.object.as_deref().filter(|o| !named(o)) {
             if !context.is_empty() {
                 s.push_str(", ");
             }

@@ -236,7 +236,7 @@ fn external_polygon(
         b.set_context_within(Some(case), || {
             format!("external force at joint {}", t.joints[j].name)
         });
-        let along = b.line_dir(&cur, f, Role::Auxiliary, N_EXT)?;
+        let along = b.line_dir(&cur, f, Role::Auxiliary, N_EXT_DIR)?;
         let last = i + 1 == order.len();
         let lab = if last {
             Label::NONE
@@ -300,13 +300,14 @@ impl<'a> Found<'a> {
             }
             let (l, r) = (self.space_of_half[2 * m], self.space_of_half[2 * m + 1]);
             if let (Some(pl), Some(pr)) = (pt[l], pt[r]) {
-                b.segment(
-                    &pl,
-                    &pr,
-                    Role::Result.labelled(member_label(b, t, m)),
-                    N_FORCE,
+                let v = b.naming(
+                    || format!("member {}", t.members[m].name),
+                    |b| {
+                        let name = Role::Result.labelled(member_label(b, t, m));
+                        b.segment(&pl, &pr, name, N_SIDE);
+                        b.measure(&pl, &pr, &mline[m], kg, member_label(b, t, m), N_FORCE)
+                    },
                 );
-                let v = b.measure(&pl, &pr, &mline[m], kg, member_label(b, t, m), N_FORCE);
                 check_member(b, t, &v, m, sol, self.reference);
                 self.forces[m] = Some(v.g);
                 self.ids[m] = v.id;

@@ -81,10 +81,20 @@ pub fn construct_truss(
     construct(b, t, cases, dr, true, &mut Rows::default(), &[])
 }
 
+/// A member left out of a truss but drawn dashed in its drawing (a counter-diagonal out of
+/// action, LH B.5): its name, for the step's situation, and its two joints.
+#[derive(Debug, Clone, Copy)]
+pub struct SlackMember<'a> {
+    /// The member's name in the whole truss ("60").
+    pub name: &'a str,
+    /// Its joints, as indices into the truss drawn.
+    pub ends: [usize; 2],
+}
+
 /// As [`construct_truss`], drawing the cases' rows from `rows.top` (mm) downwards and moving
 /// it below them: for figures that draw several trusses (sub-trusses, counter-diagonals
-/// switched per case) one under the other. `slack` are joint pairs of members left out of
-/// this truss but drawn dashed in its drawing (counter-diagonals out of action).
+/// switched per case) one under the other. `slack` are the members left out of this truss
+/// but drawn dashed in its drawing (counter-diagonals out of action).
 ///
 /// # Errors
 /// As [`construct_truss`].
@@ -94,7 +104,7 @@ pub fn construct_truss_rows(
     cases: &[LoadCase],
     dr: &TrussDrawing,
     rows: &mut Rows,
-    slack: &[[usize; 2]],
+    slack: &[SlackMember<'_>],
 ) -> Result<Vec<CaseResult>, ConstructionError> {
     construct(b, t, cases, dr, true, rows, slack)
 }
@@ -122,7 +132,7 @@ fn construct(
     dr: &TrussDrawing,
     checked: bool,
     rows: &mut Rows,
-    slack: &[[usize; 2]],
+    slack: &[SlackMember<'_>],
 ) -> Result<Vec<CaseResult>, ConstructionError> {
     // The rank test at every size: sparse for the usual square system, the SVD for the rest
     // up to DENSE_MAX_JOINTS, the pebble game above. The plan alone is not tested: a truss
@@ -257,7 +267,7 @@ struct Case<'a> {
     sol: Option<&'a Solution>,
     dr: &'a TrussDrawing,
     sup: Supports,
-    slack: &'a [[usize; 2]],
+    slack: &'a [SlackMember<'a>],
     /// Whether this case's drawing letters its members with their numbers.
     numbered: bool,
 }
@@ -404,7 +414,9 @@ fn draw_truss(
             N_MEMBER,
         )?);
     }
-    for &[i, j] in slack {
+    for m in slack {
+        let [i, j] = m.ends;
+        b.set_context_within(Some(&case.name), || format!("member {}", m.name));
         b.segment(&jp[i], &jp[j], Role::Auxiliary, N_SLACK);
     }
     let mut rlines: Vec<Option<H<Line>>> = vec![None; t.supports.len()];
@@ -517,10 +529,14 @@ fn write_table(b: &mut Board, result: &CaseResult, zero_kg: f64, plan_box: [f64;
 
 /// Zero-force members (Nullstäbe) marked in the truss drawing.
 fn mark_zero_members(b: &mut Board, t: &Truss, result: &CaseResult, jp: &[H<Point>], zero_kg: f64) {
+    let base = b.context();
+    let case = result.case.as_str();
     for (m, f) in result.members.iter().enumerate() {
         if f.force.abs() <= zero_kg {
             let [i, j] = t.members[m].ends;
+            b.set_context_within(Some(case), || format!("member {}", t.members[m].name));
             b.segment(&jp[i], &jp[j], Role::Auxiliary.named("0"), N_ZERO);
         }
     }
+    b.restore_context(base);
 }

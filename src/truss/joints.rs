@@ -49,6 +49,12 @@ const N_CLOSE: Note = note(
     "LH B.4, Abb. 17a",
     Topic::Cremona,
 );
+const N_SIDE: Note = note(
+    "member force drawn: the side of the joint polygon along the member",
+    Some("Stabkraft"),
+    "LH B.4, Abb. 17a",
+    Topic::Cremona,
+);
 const N_FORCE: Note = note(
     "member force: tension if it points away from the joint (Regel 1)",
     Some("Stabkraft"),
@@ -318,14 +324,15 @@ impl<'a> Polygons<'a> {
     fn read(&self, b: &mut Board, v: usize, from: &H<Point>, to: &H<Point>, m: usize) -> H<f64> {
         let t = self.ctx.t;
         let kg = Scale::kg(self.ctx.dr.force_scale);
-        b.segment(
-            from,
-            to,
-            Role::Result.labelled(member_label(b, t, m)),
-            N_FORCE,
-        );
         let on_v = t.members[m].ends[0] == v;
         let (p, q) = if on_v { (from, to) } else { (to, from) };
-        b.measure(p, q, &self.ctx.mline[m], kg, member_label(b, t, m), N_FORCE)
+        b.naming(
+            || format!("member {}", t.members[m].name),
+            |b| {
+                let name = Role::Result.labelled(member_label(b, t, m));
+                b.segment(from, to, name, N_SIDE);
+                b.measure(p, q, &self.ctx.mline[m], kg, member_label(b, t, m), N_FORCE)
+            },
+        )
     }
 }

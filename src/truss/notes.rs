@@ -69,6 +69,13 @@ pub(super) const N_AXIS: Note = note(
     Topic::Reactions,
 );
 
+pub(super) const N_EXT_DIR: Note = note(
+    "direction of the external force through the last corner of the force polygon",
+    Some("Krafteck der äußeren Kräfte"),
+    "LH B.4, Regel 2",
+    Topic::Cremona,
+);
+
 pub(super) const N_EXT: Note = note(
     "external force laid on, clockwise round the truss",
     Some("Krafteck der äußeren Kräfte"),
@@ -94,6 +101,13 @@ pub(super) const N_SPACE: Note = note(
     "joint polygon closed: the two unknown member forces meet",
     Some("Knotenpunktpolygon"),
     "LH B.4, Regel 2",
+    Topic::Cremona,
+);
+
+pub(super) const N_SIDE: Note = note(
+    "member force drawn: the side of the polygon between its two spaces",
+    Some("Stabkraft"),
+    "LH B.4, Abb. 17",
     Topic::Cremona,
 );
 

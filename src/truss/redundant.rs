@@ -11,7 +11,7 @@
 //!   The book: "man verfährt so, als wenn die zweite Diagonale nicht vorhanden wäre".
 
 use super::cremona::{
-    case_heading, construct_plan, construct_truss_rows, CaseResult, Rows, TrussDrawing,
+    case_heading, construct_plan, construct_truss_rows, CaseResult, Rows, SlackMember, TrussDrawing,
 };
 use super::plan::case_result;
 use super::{LoadCase, Truss};
@@ -178,7 +178,12 @@ impl Pairs<'_> {
             loads: case.loads.clone(),
             force_scale: case.force_scale,
         };
-        let ghosts: Vec<[usize; 2]> = drop.iter().map(|&m| t.members[m].ends).collect();
+        let ghosts: Vec<SlackMember> = (drop.iter())
+            .map(|&m| SlackMember {
+                name: &t.members[m].name,
+                ends: t.members[m].ends,
+            })
+            .collect();
         let r = construct_truss_rows(b, &sub, std::slice::from_ref(&c), self.dr, row, &ghosts)?;
         let mut forces = vec![0.0; n];
         let mut plan = vec![0.0; n];

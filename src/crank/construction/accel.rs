@@ -39,7 +39,16 @@ impl Builder<'_> {
             )?;
             let c_pt = tolle::point_c(self.b, &ax, self.r, lam)?;
             let mut curves = Vec::with_capacity(2);
-            for (sense, name) in [(1.0, "T"), (-1.0, "T'")] {
+            let base = self.b.context();
+            for (sense, name, stroke) in [
+                (1.0, "T", tolle::OUTSTROKE),
+                (-1.0, "T'", tolle::RETURN_STROKE),
+            ] {
+                // The situation: the caller's (a cylinder), and the stroke.
+                self.b.set_context(|| match &base {
+                    Some(c) => format!("{c}, {stroke}"),
+                    None => stroke.to_string(),
+                });
                 let (c, cut) = tolle::curve(self.b, &ax, &c_pt, a_mm, lam, sense, name)?;
                 let oc = self.b.measure(
                     &ax.o,
@@ -72,6 +81,7 @@ impl Builder<'_> {
                 }
                 curves.push(c);
             }
+            self.b.set_context_to(base);
             self.tolle = Some(Tolle {
                 axis: ax,
                 curves: [curves[0], curves[1]],

@@ -412,6 +412,42 @@ impl Board {
         }
     }
 
+    /// Runs `steps` with their context naming `what` after the caller's ("dead load: joint
+    /// I" becomes "dead load: joint I, member 1"), on a board that records (so that its checks
+    /// read alike with and without the drawing); the caller's context is put back after. For steps of one situation that differ only in
+    /// their object (the two member forces read off a joint's polygon), so that each has a
+    /// situation of its own in the walk-through. A check made within names `what` once: the
+    /// check table leaves out an object its context names already.
+    ///
+    /// ```
+    /// use graphostatik::kernel::Point;
+    /// use graphostatik::protocol::{Board, Note, Role, Topic};
+    /// let n = Note::new("member force", Topic::Custom("doc"));
+    /// let mut b = Board::recording();
+    /// b.set_context(|| "dead load: joint I".into());
+    /// b.naming(|| "member 1".into(), |b| b.point(Point::new(0.0, 0.0), Role::Result, n.clone()));
+    /// b.point(Point::new(1.0, 0.0), Role::Result, n);
+    /// let contexts: Vec<_> = b.steps().iter().map(|s| s.context.as_deref()).collect();
+    /// assert_eq!(contexts, [Some("dead load: joint I, member 1"), Some("dead load: joint I")]);
+    /// ```
+    pub fn naming<R>(
+        &mut self,
+        what: impl FnOnce() -> String,
+        steps: impl FnOnce(&mut Board) -> R,
+    ) -> R {
+        if !self.recording {
+            return steps(self);
+        }
+        let base = self.context();
+        self.set_context(|| match &base {
+            Some(c) => format!("{c}, {}", what()),
+            None => what(),
+        });
+        let out = steps(self);
+        self.set_context_to(base);
+        out
+    }
+
     /// Puts back a context taken with [`Board::context`] after
     /// [`Board::set_context_within`].
     pub fn restore_context(&mut self, base: Option<std::sync::Arc<str>>) {
