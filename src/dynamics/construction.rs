@@ -308,35 +308,42 @@ impl Builder<'_> {
             let middle = Point::new(0.0, -(c as f64) * self.row_height);
             // The situation: the cylinder, and the stroke whose parabola a step draws.
             let cyl = self.e.cylinders[c].name.clone();
-            let within = |b: &mut Board, stroke: &str| match (cyl.is_empty(), stroke.is_empty()) {
-                (true, true) => b.clear_context(),
-                (false, true) => b.set_context(|| cyl.clone()),
-                (true, false) => b.set_context(|| stroke.to_string()),
-                (false, false) => b.set_context(|| format!("{cyl}, {stroke}")),
+            let situation = |b: &mut Board| match cyl.is_empty() {
+                true => b.clear_context(),
+                false => b.set_context(|| cyl.clone()),
             };
-            within(self.b, "");
+            situation(self.b);
             let axis = tolle::axis(self.b, middle, self.r_mm, Topic::Forces)?;
             let mass = self.cyl(c).mass;
             let curves = if mass > 0.0 {
                 let a_mm = mass * k.a() / self.dr.force_scale;
                 let cp = tolle::point_c(self.b, &axis, self.r_mm, k.lambda)?;
-                within(self.b, OUTSTROKE);
-                let (out, _) = tolle::curve(self.b, &axis, &cp, a_mm, k.lambda, 1.0, "B₀")?;
-                within(self.b, RETURN_STROKE);
-                let (ret, _) = tolle::curve(self.b, &axis, &cp, a_mm, k.lambda, -1.0, "B'₀")?;
+                let curve = |b: &mut Board, sign: f64, name: &'static str| {
+                    let stroke = if sign > 0.0 { OUTSTROKE } else { RETURN_STROKE };
+                    let curve =
+                        |b: &mut Board| tolle::curve(b, &axis, &cp, a_mm, k.lambda, sign, name);
+                    b.naming(|| stroke.into(), curve)
+                };
+                let (out, _) = curve(self.b, 1.0, "B₀")?;
+                let (ret, _) = curve(self.b, -1.0, "B'₀")?;
                 self.check_cd(c, (&axis, &cp, &out));
+                situation(self.b);
                 for (cv, stroke) in [(out, OUTSTROKE), (ret, RETURN_STROKE)] {
-                    within(self.b, stroke);
-                    tolle::balance(self.b, &axis, &cv);
-                    let pts = tolle::envelope(self.b, &cv, 10);
-                    if pts.len() >= 2 {
-                        self.b.curve(
-                            &pts,
-                            Trace::Smooth,
-                            Role::Construction.named("B"),
-                            N_CURVE_B,
-                        );
-                    }
+                    self.b.naming(
+                        || stroke.into(),
+                        |b| {
+                            tolle::balance(b, &axis, &cv);
+                            let pts = tolle::envelope(b, &cv, 10);
+                            if pts.len() >= 2 {
+                                b.curve(
+                                    &pts,
+                                    Trace::Smooth,
+                                    Role::Construction.named("B"),
+                                    N_CURVE_B,
+                                );
+                            }
+                        },
+                    );
                 }
                 Some([out, ret])
             } else {

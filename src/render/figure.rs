@@ -4,15 +4,12 @@ use super::extent::*;
 use super::labels::{self, Placement};
 use super::style::class as class_of;
 use super::style::*;
+use super::xml::El;
 use crate::fmt::{num, sheet_text, subscripts};
 use crate::kernel::construct::clip_to_rect;
 use crate::kernel::tolerance::{MIN_DRAWN_MM, NICE_SCALE_SLACK};
 use crate::kernel::{Point, Vector};
 use crate::protocol::{Board, FigureMeta, Geom, Label, Object, Role, ScaleBar, Step, StepId};
-use svg::node::element::{
-    Circle as SCircle, Definitions, Group, Line as SLine, Marker, Path, Style, TSpan, Text, Title,
-};
-use svg::Document;
 
 /// Sheet coordinates (mm, y up) to SVG user units (mm, y down), and the drawn region.
 struct Frame {
@@ -288,7 +285,7 @@ fn wrapped(text: &str, width: f64, char_width: f64) -> (Vec<String>, f64) {
     // No line is wider than the text; a text longer than BALANCED_CHARS is wrapped at the
     // full width only (each trial wrap costs its length).
     let len = text.chars().count();
-    let columns = ((width / char_width).floor() as usize).min(len);
+    let columns = ((width / char_width).floor() as usize).min(len).max(1);
     let parted = |lines: &[String]| {
         let ends = lines.iter().rev().skip(1);
         ends.filter(|l| {
@@ -298,21 +295,24 @@ fn wrapped(text: &str, width: f64, char_width: f64) -> (Vec<String>, f64) {
         })
         .count()
     };
-    let fewest = crate::fmt::wrap(text, columns.max(1)).len();
+    // The full width takes the fewest lines; of the narrower wraps that take as few, the one
+    // that parts the fewest phrases, and of those the narrowest (the first found).
+    let full = crate::fmt::wrap(text, columns);
+    let fewest = full.len();
     let narrowest = if len > BALANCED_CHARS { columns } else { 1 };
-    let lines = (narrowest.max(1)..=columns.max(1))
-        .map(|c| crate::fmt::wrap(text, c))
-        .filter(|l| l.len() == fewest)
+    let narrower = (narrowest..columns).map(|c| crate::fmt::wrap(text, c));
+    let lines = (narrower.filter(|l| l.len() == fewest))
+        .chain(std::iter::once(full))
         .min_by_key(|l| parted(l))
-        .unwrap_or_else(|| crate::fmt::wrap(text, columns.max(1)));
+        .expect("the full width is a candidate");
     let widest = (lines.iter())
         .map(|l| l.chars().count() as f64 * char_width)
         .fold(0.0, f64::max);
     (lines, widest)
 }
 
-fn label_text(f: &Frame, at: &Point, label: &Label, joined: &[Label]) -> Text {
-    let mut t = Text::new(sheet_text(&subscripts(&label.base)).into_owned())
+fn label_text(f: &Frame, at: &Point, label: &Label, joined: &[Label]) -> El {
+    let mut t = El::text("text", sheet_text(&subscripts(&label.base)).into_owned())
         .set("x", f.x(at))
         .set("y", f.y(at));
     let mut low = false;
@@ -322,7 +322,7 @@ fn label_text(f: &Frame, at: &Point, label: &Label, joined: &[Label]) -> Text {
     }
     // The names of segments drawn on the same line follow on it: "S₁, S₂".
     for l in joined {
-        let mut next = TSpan::new(format!(", {}", sheet_text(&subscripts(&l.base))));
+        let mut next = El::text("tspan", format!(", {}", sheet_text(&subscripts(&l.base))));
         if low {
             next = next.set("dy", "-0.9");
         }
@@ -337,8 +337,8 @@ fn label_text(f: &Frame, at: &Point, label: &Label, joined: &[Label]) -> Text {
 }
 
 /// A label's index, written lowered and small after its letters.
-fn index_span(i: u32) -> TSpan {
-    TSpan::new(i.to_string())
+fn index_span(i: u32) -> El {
+    El::text("tspan", i.to_string())
         .set("dy", "0.9")
         .set("font-size", "2.4px")
 }
@@ -350,11 +350,11 @@ fn draw_circle(
     circle: &crate::kernel::Circle,
     full: bool,
     marks: &[f64],
-    g: Group,
-) -> Group {
+    g: El,
+) -> El {
     if full {
         return g.add(
-            SCircle::new()
+            El::new("circle")
                 .set("class", class)
                 .set("cx", f.x(&circle.center))
                 .set("cy", f.y(&circle.center))
@@ -373,12 +373,12 @@ fn draw_circle(
     if d.is_empty() {
         g
     } else {
-        g.add(Path::new().set("class", class).set("d", d.trim_end()))
+        g.add(El::new("path").set("class", class).set("d", d.trim_end()))
     }
 }
 
 /// The label of `obj` where the placement put it, with its leader where it stands off.
-fn draw_label(f: &Frame, obj: &Object, labels: &Placement, g: Group) -> Group {
+fn draw_label(f: &Frame, obj: &Object, labels: &Placement, g: El) -> El {
     let Some(pl) = labels.get(obj.id) else {
         return g;
     };
@@ -389,13 +389,13 @@ fn draw_label(f: &Frame, obj: &Object, labels: &Placement, g: Group) -> Group {
     g
 }
 
-fn draw_object(f: &Frame, obj: &Object, labels: &Placement, g: Group) -> Group {
+fn draw_object(f: &Frame, obj: &Object, labels: &Placement, g: El) -> El {
     let class = class(obj.role);
     let mut g = g;
     match &obj.geom {
         Geom::Point { at } if f.contains(at) => {
             g = g.add(
-                SCircle::new()
+                El::new("circle")
                     .set("class", "pt")
                     .set("cx", f.x(at))
                     .set("cy", f.y(at))
@@ -432,7 +432,7 @@ fn draw_object(f: &Frame, obj: &Object, labels: &Placement, g: Group) -> Group {
             let r = num(arc.circle.radius, 3);
             let large = if arc.sweep_deg.abs() > 180.0 { 1 } else { 0 };
             let sweep = if arc.sweep_deg > 0.0 { 1 } else { 0 };
-            g = g.add(Path::new().set("class", class).set(
+            g = g.add(El::new("path").set("class", class).set(
                 "d",
                 format!("M{} A{r},{r} 0 {large},{sweep} {}", f.xy(&a), f.xy(&b)),
             ));
@@ -443,7 +443,7 @@ fn draw_object(f: &Frame, obj: &Object, labels: &Placement, g: Group) -> Group {
             } else {
                 polygon_path(f, points)
             };
-            g = g.add(Path::new().set("class", class).set("d", d));
+            g = g.add(El::new("path").set("class", class).set("d", d));
             g = draw_label(f, obj, labels, g);
         }
         Geom::Table { at, rows } => {
@@ -457,11 +457,11 @@ fn draw_object(f: &Frame, obj: &Object, labels: &Placement, g: Group) -> Group {
 }
 
 /// One block of a table, its top-left corner at `at`.
-fn draw_table(f: &Frame, at: Point, rows: &[Vec<String>], g: Group) -> Group {
+fn draw_table(f: &Frame, at: Point, rows: &[Vec<String>], g: El) -> El {
     if is_heading(rows) {
         let p = Point::new(at.x, at.y - 0.8 * HEADING_ROW);
         return g.add(
-            Text::new(sheet_text(&subscripts(&rows[0][0])).into_owned())
+            El::text("text", sheet_text(&subscripts(&rows[0][0])).into_owned())
                 .set("class", "heading")
                 .set("x", f.x(&p))
                 .set("y", f.y(&p)),
@@ -486,7 +486,7 @@ fn draw_table(f: &Frame, at: Point, rows: &[Vec<String>], g: Group) -> Group {
                 (x, "start")
             };
             g = g.add(
-                Text::new(sheet_text(&subscripts(cell)).into_owned())
+                El::text("text", sheet_text(&subscripts(cell)).into_owned())
                     .set("class", "small")
                     .set("x", f.x(&Point::new(px, y)))
                     .set("y", f.y(&Point::new(px, y)))
@@ -509,8 +509,8 @@ fn draw_table(f: &Frame, at: Point, rows: &[Vec<String>], g: Group) -> Group {
 }
 
 /// A straight line on the sheet from `a` to `b` in the given class.
-fn sheet_line(f: &Frame, class: &str, a: Point, b: Point) -> SLine {
-    SLine::new()
+fn sheet_line(f: &Frame, class: &str, a: Point, b: Point) -> El {
+    El::new("line")
         .set("class", class)
         .set("x1", f.x(&a))
         .set("y1", f.y(&a))
@@ -519,7 +519,7 @@ fn sheet_line(f: &Frame, class: &str, a: Point, b: Point) -> SLine {
 }
 
 /// Short slanted strokes under a guide, on its right-hand side.
-fn hatching(f: &Frame, a: Point, b: Point) -> Path {
+fn hatching(f: &Frame, a: Point, b: Point) -> El {
     let v = b - a;
     let len = v.norm();
     let u = v / len;
@@ -538,7 +538,7 @@ fn hatching(f: &Frame, a: Point, b: Point) -> Path {
         let p = a + u * (i as f64 * step);
         d.push_str(&format!("M{} L{} ", f.xy(&p), f.xy(&(p + slant))));
     }
-    Path::new().set("class", "hatch").set("d", d.trim_end())
+    El::new("path").set("class", "hatch").set("d", d.trim_end())
 }
 
 /// The polygon through the points (closed with `Z` if the last point repeats the first).
@@ -578,8 +578,8 @@ fn smooth_path(f: &Frame, pts: &[Point]) -> String {
 }
 
 /// An arrowhead marker 3.2 × 1.3 mm, tip at the end of the line.
-fn arrow_marker(id: &str, d: &str, style: &str) -> Marker {
-    Marker::new()
+fn arrow_marker(id: &str, d: &str, style: &str) -> El {
+    El::new("marker")
         .set("id", id)
         .set("viewBox", "0 0 10 4")
         .set("refX", "10")
@@ -588,12 +588,12 @@ fn arrow_marker(id: &str, d: &str, style: &str) -> Marker {
         .set("markerHeight", "1.3")
         .set("markerUnits", "userSpaceOnUse")
         .set("orient", "auto")
-        .add(Path::new().set("d", d).set("style", style))
+        .add(El::new("path").set("d", d).set("style", style))
 }
 
 /// Filled arrowheads for forces, open ones for velocities.
-fn defs() -> Definitions {
-    Definitions::new()
+fn defs() -> El {
+    El::new("defs")
         .add(arrow_marker(
             "arrow",
             "M0,0 L10,2 L0,4 z",
@@ -620,14 +620,14 @@ fn nice_below(x: f64) -> f64 {
     base
 }
 
-fn sheet_layer(f: &Frame, meta: &FigureMeta) -> Group {
-    let mut g = Group::new()
+fn sheet_layer(f: &Frame, meta: &FigureMeta) -> El {
+    let mut g = El::new("g")
         .set("id", "sheet")
         .set("inkscape:groupmode", "layer")
         .set("inkscape:label", "000 sheet: title and scales");
     for (k, line) in f.title.iter().enumerate() {
         g = g.add(
-            Text::new(sheet_text(line).into_owned())
+            El::text("text", sheet_text(line).into_owned())
                 .set("class", "title")
                 .set("x", num(MARGIN, 3))
                 .set("y", num(MARGIN + 6.0 + TITLE_LINE * k as f64, 3)),
@@ -636,7 +636,7 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> Group {
     let below = TITLE_LINE * f.title.len().saturating_sub(1) as f64;
     for (k, line) in f.source.iter().enumerate() {
         g = g.add(
-            Text::new(sheet_text(line).into_owned())
+            El::text("text", sheet_text(line).into_owned())
                 .set("x", num(MARGIN, 3))
                 .set("y", num(MARGIN + 12.0 + below + SOURCE_LINE * k as f64, 3)),
         );
@@ -666,21 +666,21 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> Group {
                 num(y, 3)
             ));
         }
-        g = g.add(Path::new().set("class", "given").set("d", d));
+        g = g.add(El::new("path").set("class", "given").set("d", d));
         g = g.add(
-            Text::new("0")
+            El::text("text", "0")
                 .set("class", "small")
                 .set("x", num(x - 0.7, 3))
                 .set("y", num(y + 3.2, 3)),
         );
         g = g.add(
-            Text::new(row.end)
+            El::text("text", row.end)
                 .set("class", "small")
                 .set("x", num(x + len - 1.0, 3))
                 .set("y", num(y + 3.2, 3)),
         );
         g = g.add(
-            Text::new(sheet_text(&s.name).into_owned())
+            El::text("text", sheet_text(&s.name).into_owned())
                 .set("class", "small")
                 .set("x", num(MARGIN + names_at, 3))
                 .set("y", num(y + 1.0, 3)),
@@ -689,9 +689,9 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> Group {
     g
 }
 
-fn layer(board: &Board, f: &Frame, labels: &Placement, step: &Step, current: bool) -> Group {
+fn layer(board: &Board, f: &Frame, labels: &Placement, step: &Step, current: bool) -> El {
     let id = step.id.to_string();
-    let mut g = Group::new()
+    let mut g = El::new("g")
         .set("id", format!("step-{id}"))
         .set("inkscape:groupmode", "layer")
         .set("inkscape:label", sheet_text(&step.title()).into_owned())
@@ -933,7 +933,7 @@ fn draw(meta: &FigureMeta, sheet: Sheet<'_>, upto: Option<StepId>) -> (String, L
         left_out: labels.crowded,
         withheld: labels.withheld,
     };
-    let mut doc = Document::new()
+    let mut doc = El::document()
         .set(
             "xmlns:inkscape",
             "http://www.inkscape.org/namespaces/inkscape",
@@ -944,8 +944,8 @@ fn draw(meta: &FigureMeta, sheet: Sheet<'_>, upto: Option<StepId>) -> (String, L
             "viewBox",
             format!("0 0 {} {}", num(f.width, 3), num(f.height, 3)),
         )
-        .add(Title::new(sheet_text(&meta.title).into_owned()))
-        .add(Style::new(css()))
+        .add(El::text("title", sheet_text(&meta.title).into_owned()))
+        .add(El::text("style", css()))
         .add(defs())
         .add(sheet_layer(&f, meta));
     for step in board.steps() {
@@ -956,7 +956,7 @@ fn draw(meta: &FigureMeta, sheet: Sheet<'_>, upto: Option<StepId>) -> (String, L
         }
         doc = doc.add(layer(board, &f, &labels, step, Some(step.id) == upto));
     }
-    let mut s = doc.to_string();
+    let mut s = doc.write();
     s.push('\n');
     (s, lettering)
 }

@@ -15,6 +15,7 @@ mod plot;
 mod style;
 mod table;
 mod walkthrough;
+mod xml;
 
 pub use crate::protocol::{FigureMeta, ScaleBar};
 pub use book::{book_rows, book_table_text, BookRow, Verdict};

@@ -14,6 +14,11 @@ function svg() { return figure.querySelector('svg'); }
 function el(id) { return document.getElementById(id); }
 
 // A JSON pointer's value, and its setting (missing objects and arrays made on the way).
+function getField(obj, ptr) {
+  return ptr.split('/').slice(1).reduce(function (o, p) {
+    return o === null || o === undefined ? o : o[p.replace(/~1/g, '/').replace(/~0/g, '~')];
+  }, obj);
+}
 function setField(obj, ptr, v) {
   var parts = ptr.split('/').slice(1).map(function (p) { return p.replace(/~1/g, '/').replace(/~0/g, '~'); });
   var o = obj;
@@ -91,6 +96,136 @@ function sameHandle(a, i) {
   return null;
 }
 
+// The figure in place as text and nodes, so that a replay whose figure has the same elements
+// in the same order (a drag moves points; it seldom adds or drops one) sets the attributes
+// and texts that changed instead of parsing a new SVG and laying it out anew. The figure is
+// written one tag or one text per line: `lines` is its text by line, `els[i]` the element
+// line i opens (null for an end tag or a text), `root[i]` the line of the outermost `text`,
+// `style` or `title` around line i (-1 outside one), `end[i]` the line closing element i.
+var shown = null;
+function kindOf(line) {
+  if (line.charCodeAt(0) !== 60) return '#';
+  if (line.charCodeAt(1) === 47) return '/';
+  var m = /^<([^\s/>]+)/.exec(line);
+  return m ? m[1] : '?';
+}
+function remember(root, text) {
+  var lines = text.split('\n'), all = [root].concat(Array.prototype.slice.call(root.getElementsByTagName('*')));
+  var els = new Array(lines.length), roots = new Array(lines.length), end = new Array(lines.length);
+  var open = [], j = 0, outer = -1;
+  shown = null;
+  for (var i = 0; i < lines.length; i++) {
+    var k = kindOf(lines[i]), l = lines[i];
+    roots[i] = outer;
+    els[i] = null;
+    if (k === '/') {
+      var s = open.pop();
+      if (s === undefined) return;
+      end[s] = i;
+      if (s === outer) outer = -1;
+    } else if (k !== '#') {
+      var e = all[j++];
+      if (!e || e.localName !== k) return;
+      els[i] = e;
+      if (l.slice(-2) !== '/>' && l.indexOf('</') < 0) {
+        open.push(i);
+        if (outer < 0 && (k === 'text' || k === 'style' || k === 'title')) outer = i;
+      }
+    } else if (outer < 0 && l !== '') {
+      return;
+    }
+  }
+  if (j === all.length && open.length === 0) shown = { svg: root, lines: lines, els: els, root: roots, end: end };
+}
+function decode(v) {
+  return v.indexOf('&') < 0 ? v : v.replace(/&lt;/g, '<').replace(/&gt;/g, '>').replace(/&amp;/g, '&');
+}
+function attributes(line) {
+  var out = {}, re = /\s([^\s=]+)="([^"]*)"/g, m;
+  while ((m = re.exec(line))) out[m[1]] = m[2];
+  return out;
+}
+function setAttributes(e, was, now) {
+  var a = attributes(was), b = attributes(now), k;
+  for (k in b) if (a[k] !== b[k]) e.setAttribute(k, decode(b[k]));
+  for (k in a) if (!(k in b)) e.removeAttribute(k);
+}
+// Puts the figure `text` in place of the one shown by changing what changed; false where
+// its elements differ from those shown (then it is parsed anew).
+function patch(text) {
+  if (!shown || shown.svg !== svg()) return false;
+  var lines = text.split('\n'), old = shown.lines, changed = [], i;
+  if (lines.length !== old.length) return false;
+  for (i = 0; i < lines.length; i++) {
+    if (lines[i] === old[i]) continue;
+    var k = kindOf(lines[i]);
+    if (k !== kindOf(old[i]) || k === '/' || (k === '#' && shown.root[i] < 0)) return false;
+    changed.push(i);
+  }
+  var redone = {};
+  // The root's size and view box are set anew even where unchanged: a drag holds the sheet
+  // under the pointer by changing them.
+  setAttributes(shown.svg, '', lines[0]);
+  changed.forEach(function (i) {
+    var r = shown.root[i];
+    if (r >= 0 && r !== i) {
+      if (!redone[r]) { redone[r] = true; rewrite(r, lines); }
+    } else if (i > 0) {
+      setAttributes(shown.els[i], old[i], lines[i]);
+      var inline = /^<[^>]*>(.*)<\/[^>]*>$/.exec(lines[i]);
+      if (inline) shown.els[i].textContent = decode(inline[1]);
+    }
+  });
+  shown.lines = lines;
+  return true;
+}
+// Writes the content of the text, style or title element opened on line r anew, from the
+// new figure's lines, and takes in the elements it now holds.
+function rewrite(r, lines) {
+  var e = shown.els[r], end = shown.end[r];
+  e.innerHTML = '\n' + lines.slice(r + 1, end).join('\n') + '\n';
+  var inner = e.getElementsByTagName('*'), j = 0;
+  for (var i = r + 1; i < end; i++) if (shown.els[i]) shown.els[i] = inner[j++];
+}
+// Whether the figure on the page is what a fresh parse of the last answer gives: every
+// element's name, attributes and text, in order; the page's own marks (the handles, the
+// current step, shown and hidden layers, the sheet held under the pointer) aside. '' when
+// it is, else the first difference (for the browser tests).
+function figureIsAnswer() {
+  var holder = document.createElement('div');
+  holder.innerHTML = last.svg;
+  var list = function (root) {
+    return [root].concat(Array.prototype.slice.call(root.getElementsByTagName('*')))
+      .filter(function (e) { return !e.closest('.gs-handles'); });
+  };
+  var a = list(holder.querySelector('svg')), b = list(svg());
+  if (a.length !== b.length) return 'elements: ' + a.length + ' in the answer, ' + b.length + ' shown';
+  var own = /^(style|data-view-box|data-width|data-height)$/;
+  var cls = function (e) {
+    return (e.getAttribute('class') || '').split(' ').filter(function (c) {
+      return c && c !== 'current' && c !== 'wt-hover';
+    }).join(' ');
+  };
+  var text = function (e) {
+    return Array.prototype.filter.call(e.childNodes, function (n) { return n.nodeType === 3; })
+      .map(function (n) { return n.data; }).join('|');
+  };
+  for (var i = 0; i < a.length; i++) {
+    var x = a[i], y = b[i], where = i + ' (' + x.localName + ')';
+    if (x.localName !== y.localName) return 'element ' + where + ' shown as ' + y.localName;
+    var names = {};
+    Array.prototype.forEach.call(x.attributes, function (at) { names[at.name] = 1; });
+    Array.prototype.forEach.call(y.attributes, function (at) { names[at.name] = 1; });
+    for (var n in names) {
+      if (own.test(n) || (i === 0 && drag && /^(viewBox|width|height)$/.test(n))) continue;
+      var u = n === 'class' ? cls(x) : x.getAttribute(n), v = n === 'class' ? cls(y) : y.getAttribute(n);
+      if (u !== v) return 'element ' + where + ', ' + n + ': ' + u + ' in the answer, ' + v + ' shown';
+    }
+    if (text(x) !== text(y)) return 'element ' + where + ': text ' + text(x) + ' in the answer, ' + text(y) + ' shown';
+  }
+  return '';
+}
+
 // Puts a built answer in place: figure, step list, handles, sliders' values, summary.
 var phases = {};
 function mark(name, t) { var n = performance.now(); phases[name] = (phases[name] || 0) + n - t; return n; }
@@ -99,13 +234,19 @@ function mark(name, t) { var n = performance.now(); phases[name] = (phases[name]
 // the pointer rests (`settle`).
 var stale = false;
 function apply(a, light) {
-  var t = performance.now();
-  var holder = document.createElement('div');
-  holder.innerHTML = a.svg;
-  var next = holder.querySelector('svg');
-  t = mark('parse', t);
-  svg().replaceWith(next);
-  t = mark('swap', t);
+  var t = performance.now(), next;
+  if (patch(a.svg)) {
+    next = svg();
+    t = mark('patch', t);
+  } else {
+    var holder = document.createElement('div');
+    holder.innerHTML = a.svg;
+    next = holder.querySelector('svg');
+    t = mark('parse', t);
+    svg().replaceWith(next);
+    remember(next, a.svg);
+    t = mark('swap', t);
+  }
   var walk = window.graphostatikWalk;
   if (a.page !== undefined && a.step_count === walk.pages) {
     walk.swapFigure(a.items[0]);
@@ -260,20 +401,43 @@ window.graphostatikSite = {
   ready: false,
   times: times,
   phases: phases,
+  figureIsAnswer: figureIsAnswer,
   scene: function () { return clone(scene); },
   good: function () { return clone(good); },
   // The last construction put in place: its steps, checks (with bounds) and handles.
   answer: function () { return last && { steps: last.step_count, checks: last.checks,
     failed: last.failed, handles: last.handles }; },
-  // Replays the scene `n` times as it stands, as a drag does (engine and page update, ms
-  // each); `full` also puts the step list in place each time, as the end of a drag does.
+  // Replays the scene `n` times as a drag makes it, each replay drawing a figure other than
+  // the one shown: the first handle moved by 0.5 to 2 mm (a crank turned by 2 to 8 degrees)
+  // from where it was, in turn; the scene is put back after. Engine and page update, ms each,
+  // of the replays the engine took; `full` also puts the step list in place each time, as
+  // the end of a drag does.
   bench: function (n, full) {
-    var out = [];
-    for (var i = 0; i < n; i++) { var t = replay(true, !full); if (t) out.push(t); }
+    var out = [], h = handles[0], was = clone(scene);
+    for (var i = 0; i < n; i++) {
+      if (h) nudge(h, was, i);
+      var t = replay(true, !full);
+      if (t && t.ok) out.push(t);
+    }
+    scene = was;
+    replay(true, false);
     settle();
     return out;
   }
 };
+// The i-th of the bench's moves of handle h, from its value in `base` (an angle the scene
+// leaves to its default: from where the handle stands).
+function nudge(h, base, i) {
+  var d = h.drag, v = getField(base, d.field), m = 0.5 * (i % 4 + 1);
+  if (d.kind === 'point' && v && v.length === 2) {
+    setField(scene, d.field, [v[0] + m * d.per_mm, v[1] + m * d.per_mm]);
+  } else if (d.kind === 'angle') {
+    if (typeof v !== 'number') {
+      v = d.zero_deg + d.sense * Math.atan2(h.center[1] - h.at[1], h.at[0] - h.center[0]) * 180 / Math.PI;
+    }
+    setField(scene, d.field, ((v + 4 * m) % 360 + 360) % 360);
+  }
+}
 window.graphostatikEngine().then(function (x) {
   engine = x;
   // The first replay in the page: the figure, steps and handles from here on are the

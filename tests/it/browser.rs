@@ -459,9 +459,14 @@ fn a_student_drags_a_joint_and_a_crank_pin_in_the_site() {
         &json!(true),
         "joint V moved left and up in the scene",
     );
+    // Mid-drag the figure is set in place (what changed changed); it is what a fresh parse
+    // of the engine's answer gives.
+    let same = "return window.graphostatikSite.figureIsAnswer();";
+    assert_eq!(s.script(same), json!(""), "mid-drag");
     let png = s.screenshot();
     keep_screenshot(&png, "site-drag.png", &dir);
     s.pointer(None, &[], true);
+    assert_eq!(s.script(same), json!(""), "after the drag");
     let (after, failed) = checks(&s);
     assert_eq!(failed, 0, "every check passes after the drag");
     assert_eq!(after.len(), before.len());
@@ -514,6 +519,7 @@ fn a_student_drags_a_joint_and_a_crank_pin_in_the_site() {
         "the error gone once the joint is back",
     );
     assert_eq!(checks(&s).1, 0);
+    assert_eq!(s.script(same), json!(""), "after the refusal and back");
 
     // The crank page: a quarter turn of the pin at θ = 30° moves it to about 120°.
     s.goto(&format!(
@@ -561,6 +567,9 @@ fn a_student_drags_a_joint_and_a_crank_pin_in_the_site() {
         before.iter().zip(&after).any(|(a, b)| (a - b).abs() > 1e-6),
         "the velocities changed"
     );
+    assert_eq!(s.script(same), json!(""), "after the crank's drag");
+    let patched = s.script("return window.graphostatikSite.phases.patch > 0;");
+    assert_eq!(patched, json!(true), "a replay set the figure in place");
     let errors = s.console_errors();
     assert!(errors.is_empty(), "console errors: {errors:?}");
     drop(s);

@@ -414,10 +414,11 @@ impl Board {
 
     /// Runs `steps` with their context naming `what` after the caller's ("dead load: joint
     /// I" becomes "dead load: joint I, member 1"), on a board that records (so that its checks
-    /// read alike with and without the drawing); the caller's context is put back after. For steps of one situation that differ only in
-    /// their object (the two member forces read off a joint's polygon), so that each has a
-    /// situation of its own in the walk-through. A check made within names `what` once: the
-    /// check table leaves out an object its context names already.
+    /// read alike with and without the drawing); the caller's context is put back after. For
+    /// steps of one situation that differ only in their object (the two member forces read
+    /// off a joint's polygon), so that each has a situation of its own in the walk-through. A
+    /// check made within names `what` once: the check table leaves out an object its context
+    /// names already.
     ///
     /// ```
     /// use graphostatik::kernel::Point;
