@@ -171,6 +171,32 @@ pub fn replay_page(scene: &str, origin: &str, page: Option<usize>) -> String {
     })
 }
 
+/// [`replay_page`] with the figure apart: the answer as JSON with an empty `svg`, and the
+/// figure's SVG (empty where the scene is refused). The browser's engine answers so: the
+/// figure is the bulk of the answer (the Otto engine's 0.69 MB), and inside JSON each of its
+/// quotes is escaped on the way out and unescaped on the way in.
+///
+/// ```
+/// let scene = std::fs::read_to_string("scenes/lh_abb22_funicular.json").unwrap();
+/// let (json, svg) = graphostatik::web::replay_apart(&scene, "abb22.json", Some(0));
+/// let a: serde_json::Value = serde_json::from_str(&json).unwrap();
+/// assert_eq!((a["ok"].as_bool(), a["svg"].as_str()), (Some(true), Some("")));
+/// assert!(svg.starts_with("<svg "));
+/// ```
+pub fn replay_apart(scene: &str, origin: &str, page: Option<usize>) -> (String, String) {
+    let (answer, svg) = match build_page(scene, origin, page) {
+        Ok(mut b) => {
+            let svg = std::mem::take(&mut b.svg);
+            (Answer::Built(Box::new(b)), svg)
+        }
+        Err(error) => (Answer::Refused { ok: false, error }, String::new()),
+    };
+    let json = serde_json::to_string(&answer).unwrap_or_else(|e| {
+        serde_json::json!({ "ok": false, "error": format!("{origin}: {e}") }).to_string()
+    });
+    (json, svg)
+}
+
 /// The construction of `text` with everything the page shows.
 pub fn build(text: &str, origin: &str) -> Result<Built, String> {
     build_page(text, origin, None)

@@ -1,9 +1,10 @@
 //! The graphostatik engine for the browser: `graphostatik::web::replay` behind a plain C ABI,
-//! so that the page needs no generated glue (`site/engine.js` calls these five functions).
+//! so that the page needs no generated glue (`site/engine.js` calls these seven functions).
 //!
 //! The page copies the scene's name and text into buffers it asks [`gs_alloc`] for, calls
 //! [`gs_replay`] and reads the answer (JSON, UTF-8) at [`gs_out_ptr`] for the length
-//! `gs_replay` returned. A panic cannot unwind out of WebAssembly: it traps, after the hook
+//! `gs_replay` returned, and the figure (SVG, apart from the JSON) at [`gs_svg_ptr`] for
+//! [`gs_svg_len`] bytes. A panic cannot unwind out of WebAssembly: it traps, after the hook
 //! below has kept its message, which the page reads with [`gs_panic_ptr`] and
 //! [`gs_panic_len`] before it starts a fresh instance. Nothing here uses threads, clocks or
 //! files.
@@ -13,6 +14,8 @@ use std::cell::RefCell;
 thread_local! {
     /// The last answer, kept until the next call.
     static OUT: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
+    /// The last answer's figure (SVG), kept until the next call.
+    static SVG: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
     /// The message of a panic, kept for the page.
     static PANIC: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
 }
@@ -57,7 +60,11 @@ pub unsafe extern "C" fn gs_replay(
     let text = Vec::from_raw_parts(text, text_len, text_len.max(1));
     let name = String::from_utf8_lossy(&name).into_owned();
     let answer = match std::str::from_utf8(&text) {
-        Ok(t) => graphostatik::web::replay_page(t, &name, usize::try_from(page).ok()),
+        Ok(t) => {
+            let (json, svg) = graphostatik::web::replay_apart(t, &name, usize::try_from(page).ok());
+            SVG.with(|o| *o.borrow_mut() = svg.into_bytes());
+            json
+        }
         Err(e) => {
             // The byte offset of the first invalid byte, as a line and column.
             let before = &text[..e.valid_up_to()];
@@ -69,6 +76,7 @@ pub unsafe extern "C" fn gs_replay(
                     .map_or(0, |i| i + 1)
                 + 1;
             let error = format!("{name}:{line}:{col}: the scene is not UTF-8 text");
+            SVG.with(|o| o.borrow_mut().clear());
             format!("{{\"ok\":false,\"error\":{}}}", json_string(&error))
         }
     };
@@ -77,6 +85,18 @@ pub unsafe extern "C" fn gs_replay(
         *o = answer.into_bytes();
         o.len()
     })
+}
+
+/// Where the last answer's figure starts (its `svg` field is empty: the figure is apart).
+#[no_mangle]
+pub extern "C" fn gs_svg_ptr() -> *const u8 {
+    SVG.with(|o| o.borrow().as_ptr())
+}
+
+/// The length of the last answer's figure (0 where the scene was refused).
+#[no_mangle]
+pub extern "C" fn gs_svg_len() -> usize {
+    SVG.with(|o| o.borrow().len())
 }
 
 /// Where the last answer starts.

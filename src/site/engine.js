@@ -31,7 +31,10 @@ Engine.prototype.replay = function (name, text, page) {
     err.trapped = true;
     throw err;
   }
-  return JSON.parse(this.read(this.x.gs_out_ptr(), len));
+  var a = JSON.parse(this.read(this.x.gs_out_ptr(), len));
+  // The figure comes apart from the JSON (its quotes unescaped).
+  if (a.ok) a.svg = this.read(this.x.gs_svg_ptr(), this.x.gs_svg_len());
+  return a;
 };
 // A fresh engine: the module is compiled once per page, instantiated per call.
 window.graphostatikEngine = function () {

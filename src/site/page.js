@@ -99,9 +99,12 @@ function sameHandle(a, i) {
 // The figure in place as text and nodes, so that a replay whose figure has the same elements
 // in the same order (a drag moves points; it seldom adds or drops one) sets the attributes
 // and texts that changed instead of parsing a new SVG and laying it out anew. The figure is
-// written one tag or one text per line: `lines` is its text by line, `els[i]` the element
-// line i opens (null for an end tag or a text), `root[i]` the line of the outermost `text`,
-// `style` or `title` around line i (-1 outside one), `end[i]` the line closing element i.
+// written one tag or one text per line. It is kept by the root's children (the title, the
+// style, the definitions, the sheet and one layer per step): a child whose elements changed
+// (a label that took a leader) is parsed alone and put in place of the old one. A child is
+// kept as `lines` (its text by line), `els[i]` (the element line i opens; null for an end
+// tag or a text), `root[i]` (the line of the outermost `text`, `style` or `title` around
+// line i, -1 outside one) and `end[i]` (the line that closes the element of line i).
 var shown = null;
 function kindOf(line) {
   if (line.charCodeAt(0) !== 60) return '#';
@@ -109,33 +112,84 @@ function kindOf(line) {
   var m = /^<([^\s/>]+)/.exec(line);
   return m ? m[1] : '?';
 }
-function remember(root, text) {
-  var lines = text.split('\n'), all = [root].concat(Array.prototype.slice.call(root.getElementsByTagName('*')));
-  var els = new Array(lines.length), roots = new Array(lines.length), end = new Array(lines.length);
-  var open = [], j = 0, outer = -1;
-  shown = null;
-  for (var i = 0; i < lines.length; i++) {
-    var k = kindOf(lines[i]), l = lines[i];
+function opens(line) { return line.slice(-2) !== '/>' && line.indexOf('</') < 0; }
+// The root's children as line ranges [first, last]; null where the text is not one root
+// element written a tag or a text per line.
+function children(lines) {
+  var out = [], depth = 0, first = -1;
+  for (var i = 1; i < lines.length; i++) {
+    var l = lines[i], k = kindOf(l);
+    if (k === '/') {
+      depth--;
+      if (depth < 0) {
+        for (var j = i + 1; j < lines.length; j++) if (lines[j] !== '') return null;
+        return out;
+      }
+      if (depth === 0) out.push([first, i]);
+    } else if (k === '#') {
+      if (depth === 0 && l !== '') return null;
+    } else if (opens(l)) {
+      if (depth === 0) first = i;
+      depth++;
+    } else if (depth === 0) {
+      out.push([i, i]);
+    }
+  }
+  return null;
+}
+// A child of the root as the page keeps it, or null where its element and its lines differ.
+// Inside a text, style or title, `txt[i]` is the text node of text line i (the element's
+// child between the tags around it).
+function keep(el, lines) {
+  var all = [el].concat(Array.prototype.slice.call(el.getElementsByTagName('*')));
+  var n = lines.length, els = new Array(n), roots = new Array(n), end = new Array(n), txt = new Array(n);
+  var open = [], cur = {}, j = 0, outer = -1;
+  // Moves the cursor of the element opened on line p past its next child of node type t
+  // (or past node `to`), and gives that child.
+  var next = function (p, t, to) {
+    var kids = els[p].childNodes, c = cur[p] || 0;
+    while (c < kids.length && (to ? kids[c] !== to : kids[c].nodeType !== t)) c++;
+    cur[p] = c + 1;
+    return kids[c];
+  };
+  for (var i = 0; i < n; i++) {
+    var l = lines[i], k = kindOf(l), p = open[open.length - 1];
     roots[i] = outer;
     els[i] = null;
     if (k === '/') {
       var s = open.pop();
-      if (s === undefined) return;
+      if (s === undefined) return null;
       end[s] = i;
       if (s === outer) outer = -1;
     } else if (k !== '#') {
       var e = all[j++];
-      if (!e || e.localName !== k) return;
+      if (!e || e.localName !== k) return null;
       els[i] = e;
-      if (l.slice(-2) !== '/>' && l.indexOf('</') < 0) {
+      if (outer >= 0 && next(p, 1, e) !== e) return null;
+      if (opens(l)) {
         open.push(i);
         if (outer < 0 && (k === 'text' || k === 'style' || k === 'title')) outer = i;
       }
-    } else if (outer < 0 && l !== '') {
-      return;
+    } else if (outer < 0) {
+      return null;
+    } else {
+      // A text of several lines (a style sheet) is one node.
+      txt[i] = i > 0 && kindOf(lines[i - 1]) === '#' ? txt[i - 1] : next(p, 3);
     }
   }
-  if (j === all.length && open.length === 0) shown = { svg: root, lines: lines, els: els, root: roots, end: end };
+  return j === all.length && open.length === 0
+    ? { el: el, lines: lines, els: els, root: roots, end: end, txt: txt } : null;
+}
+function remember(svgEl, text) {
+  var lines = text.split('\n'), ranges = children(lines), kids = svgEl.children, out = [];
+  shown = null;
+  if (!ranges || ranges.length !== kids.length) return;
+  for (var i = 0; i < ranges.length; i++) {
+    var c = keep(kids[i], lines.slice(ranges[i][0], ranges[i][1] + 1));
+    if (!c) return;
+    out.push(c);
+  }
+  shown = { svg: svgEl, kids: out };
 }
 function decode(v) {
   return v.indexOf('&') < 0 ? v : v.replace(/&lt;/g, '<').replace(/&gt;/g, '>').replace(/&amp;/g, '&');
@@ -150,42 +204,74 @@ function setAttributes(e, was, now) {
   for (k in b) if (a[k] !== b[k]) e.setAttribute(k, decode(b[k]));
   for (k in a) if (!(k in b)) e.removeAttribute(k);
 }
-// Puts the figure `text` in place of the one shown by changing what changed; false where
-// its elements differ from those shown (then it is parsed anew).
+// The lines of child c that changed, or null where an element changed (its name, or an
+// element or end tag for a text).
+function changes(c, lines) {
+  if (lines.length !== c.lines.length) return null;
+  var out = [];
+  for (var i = 0; i < lines.length; i++) {
+    if (lines[i] === c.lines[i]) continue;
+    var k = kindOf(lines[i]);
+    if (k !== kindOf(c.lines[i]) || k === '/' || (k === '#' && c.root[i] < 0)) return null;
+    out.push(i);
+  }
+  return out;
+}
+// Puts the figure `text` in place of the one shown by changing what changed; false where the
+// root's children differ from those shown (then it is parsed anew).
 function patch(text) {
   if (!shown || shown.svg !== svg()) return false;
-  var lines = text.split('\n'), old = shown.lines, changed = [], i;
-  if (lines.length !== old.length) return false;
-  for (i = 0; i < lines.length; i++) {
-    if (lines[i] === old[i]) continue;
-    var k = kindOf(lines[i]);
-    if (k !== kindOf(old[i]) || k === '/' || (k === '#' && shown.root[i] < 0)) return false;
-    changed.push(i);
-  }
-  var redone = {};
+  var lines = text.split('\n'), ranges = children(lines);
+  if (!ranges || ranges.length !== shown.kids.length) return false;
   // The root's size and view box are set anew even where unchanged: a drag holds the sheet
   // under the pointer by changing them.
   setAttributes(shown.svg, '', lines[0]);
-  changed.forEach(function (i) {
-    var r = shown.root[i];
-    if (r >= 0 && r !== i) {
-      if (!redone[r]) { redone[r] = true; rewrite(r, lines); }
-    } else if (i > 0) {
-      setAttributes(shown.els[i], old[i], lines[i]);
-      var inline = /^<[^>]*>(.*)<\/[^>]*>$/.exec(lines[i]);
-      if (inline) shown.els[i].textContent = decode(inline[1]);
+  for (var i = 0; i < ranges.length; i++) {
+    var c = shown.kids[i], now = lines.slice(ranges[i][0], ranges[i][1] + 1), changed = changes(c, now);
+    if (changed) {
+      if (!update(c, now, changed)) { shown = null; return false; }
+    } else {
+      var holder = document.createElementNS(NS, 'svg');
+      holder.innerHTML = now.join('\n');
+      var el = holder.firstElementChild, kept = el && keep(el, now);
+      if (!kept) { shown = null; return false; }
+      c.el.replaceWith(el);
+      shown.kids[i] = kept;
     }
-  });
-  shown.lines = lines;
+  }
   return true;
 }
-// Writes the content of the text, style or title element opened on line r anew, from the
-// new figure's lines, and takes in the elements it now holds.
-function rewrite(r, lines) {
-  var e = shown.els[r], end = shown.end[r];
-  e.innerHTML = '\n' + lines.slice(r + 1, end).join('\n') + '\n';
-  var inner = e.getElementsByTagName('*'), j = 0;
-  for (var i = r + 1; i < end; i++) if (shown.els[i]) shown.els[i] = inner[j++];
+// Sets the changed lines of child c in place: a tag's attributes, a text's node; a text
+// whose node does not hold the old line alone (a style sheet's) has its text, style or title
+// written anew.
+function update(c, lines, changed) {
+  var redone = {};
+  changed.forEach(function (i) {
+    var r = c.root[i];
+    if (redone[r]) return;
+    if (kindOf(lines[i]) === '#') {
+      var t = c.txt[i];
+      if (t && t.data === '\n' + decode(c.lines[i]) + '\n') t.data = '\n' + decode(lines[i]) + '\n';
+      else { redone[r] = true; rewrite(c, r, lines); }
+    } else {
+      setAttributes(c.els[i], c.lines[i], lines[i]);
+      var inline = /^<[^>]*>(.*)<\/[^>]*>$/.exec(lines[i]);
+      if (inline) c.els[i].textContent = decode(inline[1]);
+    }
+  });
+  c.lines = lines;
+  // A text written anew holds new nodes: the child is taken in again.
+  if (Object.keys(redone).length) {
+    var kept = keep(c.el, lines);
+    if (kept) for (var k in kept) c[k] = kept[k];
+    else return false;
+  }
+  return true;
+}
+// Writes the content of the text, style or title element opened on line r of child c anew,
+// from the new lines.
+function rewrite(c, r, lines) {
+  c.els[r].innerHTML = '\n' + lines.slice(r + 1, c.end[r]).join('\n') + '\n';
 }
 // Whether the figure on the page is what a fresh parse of the last answer gives: every
 // element's name, attributes and text, in order; the page's own marks (the handles, the
@@ -229,13 +315,17 @@ function figureIsAnswer() {
 // Puts a built answer in place: figure, step list, handles, sliders' values, summary.
 var phases = {};
 function mark(name, t) { var n = performance.now(); phases[name] = (phases[name] || 0) + n - t; return n; }
+// Whether a replay's figure is set in place where it can be (else always parsed anew; the
+// latency bench compares the two).
+var inPlace = true, patched = false;
 // While the pointer moves (`light`), the engine answers with the current step's item alone
 // and only the figure and that step's details are put in place; the step list follows when
 // the pointer rests (`settle`).
 var stale = false;
 function apply(a, light) {
   var t = performance.now(), next;
-  if (patch(a.svg)) {
+  patched = inPlace && patch(a.svg);
+  if (patched) {
     next = svg();
     t = mark('patch', t);
   } else {
@@ -301,6 +391,12 @@ function replay(force, light) {
   try {
     a = light ? engine.replay(name + '.json', text, window.graphostatikWalk.step())
       : engine.replay(name + '.json', text);
+    // A drag that changes the number of steps (a crank leaving a dead centre) needs the
+    // whole step list: the answer for a drag holds the current step's item alone.
+    if (light && a.ok && a.step_count !== window.graphostatikWalk.pages) {
+      a = engine.replay(name + '.json', text);
+      light = false;
+    }
   } catch (e) {
     showError(String(e.message || e).split('\n')[0]);
     if (e.trapped) { engine = null; window.graphostatikEngine().then(function (x) { engine = x; }); }
@@ -316,7 +412,7 @@ function replay(force, light) {
     apply(a, light);
   }
   var t2 = performance.now();
-  var t = { engine: t1 - t0, total: t2 - t0, ok: a.ok };
+  var t = { engine: t1 - t0, total: t2 - t0, ok: a.ok, inPlace: a.ok && patched };
   times.push(t);
   el('gs-time').textContent = a.ok ? 'replayed in ' + t.total.toFixed(1) + ' ms' : '';
   return t;
@@ -402,6 +498,8 @@ window.graphostatikSite = {
   times: times,
   phases: phases,
   figureIsAnswer: figureIsAnswer,
+  // Sets whether replays set the figure in place where they can (true when the page opens).
+  setInPlace: function (on) { inPlace = !!on; if (!on) shown = null; },
   scene: function () { return clone(scene); },
   good: function () { return clone(good); },
   // The last construction put in place: its steps, checks (with bounds) and handles.
