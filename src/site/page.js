@@ -286,7 +286,10 @@ function figureIsAnswer() {
   };
   var a = list(holder.querySelector('svg')), b = list(svg());
   if (a.length !== b.length) return 'elements: ' + a.length + ' in the answer, ' + b.length + ' shown';
-  var own = /^(style|data-view-box|data-width|data-height)$/;
+  // The page's own: a layer's display (its style), the sheet's size kept during a drag.
+  var own = function (e, n) {
+    return (n === 'style' && e.localName === 'g') || /^data-(view-box|width|height)$/.test(n);
+  };
   var cls = function (e) {
     return (e.getAttribute('class') || '').split(' ').filter(function (c) {
       return c && c !== 'current' && c !== 'wt-hover';
@@ -303,7 +306,7 @@ function figureIsAnswer() {
     Array.prototype.forEach.call(x.attributes, function (at) { names[at.name] = 1; });
     Array.prototype.forEach.call(y.attributes, function (at) { names[at.name] = 1; });
     for (var n in names) {
-      if (own.test(n) || (i === 0 && drag && /^(viewBox|width|height)$/.test(n))) continue;
+      if (own(x, n) || (i === 0 && drag && /^(viewBox|width|height)$/.test(n))) continue;
       var u = n === 'class' ? cls(x) : x.getAttribute(n), v = n === 'class' ? cls(y) : y.getAttribute(n);
       if (u !== v) return 'element ' + where + ', ' + n + ': ' + u + ' in the answer, ' + v + ' shown';
     }
@@ -334,8 +337,12 @@ function apply(a, light) {
     next = holder.querySelector('svg');
     t = mark('parse', t);
     svg().replaceWith(next);
-    remember(next, a.svg);
     t = mark('swap', t);
+    // The new figure's lines and nodes, for the next replay to patch.
+    if (inPlace) {
+      remember(next, a.svg);
+      t = mark('keep', t);
+    }
   }
   var walk = window.graphostatikWalk;
   if (a.page !== undefined && a.step_count === walk.pages) {
@@ -499,7 +506,7 @@ window.graphostatikSite = {
   phases: phases,
   figureIsAnswer: figureIsAnswer,
   // Sets whether replays set the figure in place where they can (true when the page opens).
-  setInPlace: function (on) { inPlace = !!on; if (!on) shown = null; },
+  setInPlace: function (on) { inPlace = !!on; shown = null; },
   scene: function () { return clone(scene); },
   good: function () { return clone(good); },
   // The last construction put in place: its steps, checks (with bounds) and handles.
