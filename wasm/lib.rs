@@ -1,4 +1,4 @@
-//! The graphostatik engine for the browser: `graphostatik::web::replay` behind a plain C ABI,
+//! The graphostatik engine for the browser: `graphostatik::web::replay_apart` behind a C ABI,
 //! so that the page needs no generated glue (`site/engine.js` calls these seven functions).
 //!
 //! The page copies the scene's name and text into buffers it asks [`gs_alloc`] for, calls
