@@ -377,6 +377,20 @@ fn write_site(scenes: &[&str], out: &Path) {
 
 /// The screen centre of the first handle called `name` that is in view (a truss draws each
 /// joint once per load case; the pane may be scrolled to the last).
+/// Where on the screen the handle `name` turns about (its centre), in CSS pixels.
+fn center_at(s: &Session, name: &str) -> (f64, f64) {
+    let v = s.script(&format!(
+        "var h = window.graphostatikSite.answer().handles.filter(function (h) {{\
+           return h.name === {name:?}; }})[0];\
+         var m = document.querySelector('#wt-figure svg').getScreenCTM();\
+         var p = new DOMPoint(h.center[0], h.center[1]).matrixTransform(m); return [p.x, p.y];"
+    ));
+    let a = v
+        .as_array()
+        .unwrap_or_else(|| panic!("no centre of {name}"));
+    (a[0].as_f64().unwrap(), a[1].as_f64().unwrap())
+}
+
 fn handle_at(s: &Session, name: &str) -> (f64, f64) {
     let v = s.script(&format!(
         "var hs = document.querySelectorAll('.gs-handle');\
@@ -534,14 +548,7 @@ fn a_student_drags_a_joint_and_a_crank_pin_in_the_site() {
     );
     let (before, _) = checks(&s);
     let (px, py) = handle_at(&s, "crank pin at θ = 30°");
-    let (ox, oy) = s
-        .script("var h = window.graphostatikSite.answer().handles.filter(function (h) {\
-                 return h.name === 'crank pin at θ = 30°'; })[0];\
-                 var m = document.querySelector('#wt-figure svg').getScreenCTM();\
-                 var p = new DOMPoint(h.center[0], h.center[1]).matrixTransform(m); return [p.x, p.y];")
-        .as_array()
-        .map(|a| (a[0].as_f64().unwrap(), a[1].as_f64().unwrap()))
-        .unwrap();
+    let (ox, oy) = center_at(&s, "crank pin at θ = 30°");
     let (rx, ry) = (px - ox, py - oy);
     let arc: Vec<(f64, f64)> = (1..=8)
         .map(|k| {
@@ -571,14 +578,7 @@ fn a_student_drags_a_joint_and_a_crank_pin_in_the_site() {
     // The pin at the dead centre θ = 0° turned off it: the construction has a step fewer
     // (no dead-centre case), and the step list follows while the pointer moves.
     let (px, py) = handle_at(&s, "crank pin at θ = 0°");
-    let (ox, oy) = s
-        .script("var h = window.graphostatikSite.answer().handles.filter(function (h) {\
-                 return h.name === 'crank pin at θ = 0°'; })[0];\
-                 var m = document.querySelector('#wt-figure svg').getScreenCTM();\
-                 var p = new DOMPoint(h.center[0], h.center[1]).matrixTransform(m); return [p.x, p.y];")
-        .as_array()
-        .map(|a| (a[0].as_f64().unwrap(), a[1].as_f64().unwrap()))
-        .unwrap();
+    let (ox, oy) = center_at(&s, "crank pin at θ = 0°");
     let (rx, ry) = (px - ox, py - oy);
     let arc: Vec<(f64, f64)> = (1..=4)
         .map(|k| {
