@@ -166,7 +166,12 @@ pub fn replay_page(scene: &str, origin: &str, page: Option<usize>) -> String {
         Ok(b) => Answer::Built(Box::new(b)),
         Err(error) => Answer::Refused { ok: false, error },
     };
-    serde_json::to_string(&answer).unwrap_or_else(|e| {
+    answer_json(&answer, origin)
+}
+
+/// The answer as JSON; a failure to write it, as a refusal naming `origin`.
+fn answer_json(answer: &Answer, origin: &str) -> String {
+    serde_json::to_string(answer).unwrap_or_else(|e| {
         serde_json::json!({ "ok": false, "error": format!("{origin}: {e}") }).to_string()
     })
 }
@@ -191,10 +196,7 @@ pub fn replay_apart(scene: &str, origin: &str, page: Option<usize>) -> (String, 
         }
         Err(error) => (Answer::Refused { ok: false, error }, String::new()),
     };
-    let json = serde_json::to_string(&answer).unwrap_or_else(|e| {
-        serde_json::json!({ "ok": false, "error": format!("{origin}: {e}") }).to_string()
-    });
-    (json, svg)
+    (answer_json(&answer, origin), svg)
 }
 
 /// The construction of `text` with everything the page shows.
