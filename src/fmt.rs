@@ -310,7 +310,16 @@ pub fn sheet_text(s: &str) -> std::borrow::Cow<'_, str> {
             || c == '\u{fffe}'
             || c == '\u{ffff}'
     };
-    if s.chars().any(bad) {
+    // Read by byte first: a sheet's text seldom holds a control character, and U+FFFE and
+    // U+FFFF are the only ones above ASCII, both led by the byte 0xEF in UTF-8.
+    // (A tab or a line break is suspect too; the chars tell.) Folded by blocks, so that the
+    // compiler can test a block's bytes at once.
+    let suspect = |block: &[u8]| {
+        (block.iter()).fold(false, |any, &b| {
+            any | (b < 0x20) | (b == 0x7f) | (b == 0xef)
+        })
+    };
+    if s.as_bytes().chunks(64).any(suspect) && s.chars().any(bad) {
         s.chars()
             .map(|c| if bad(c) { '\u{fffd}' } else { c })
             .collect::<String>()

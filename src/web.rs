@@ -333,3 +333,28 @@ fn sliders(preview: Option<&Preview>, text: &str, origin: &str) -> Result<Vec<Sl
     }
     Ok(out)
 }
+
+#[cfg(test)]
+mod tests {
+    /// A drag's answer names its page's steps as the full step list does, alike steps told
+    /// apart the same way ("joint load P₀ (3 of 4)"): the page's name is found without naming
+    /// every step.
+    #[test]
+    fn a_page_alone_is_named_as_in_the_list() {
+        for scene in ["lh_aufgabe4_shed_roof", "kg_abb1043_crank_rocker"] {
+            let path = format!("{}/scenes/{scene}.json", env!("CARGO_MANIFEST_DIR"));
+            let text = std::fs::read_to_string(path).unwrap();
+            let all = super::build(&text, "x.json").unwrap();
+            let ordinal = |i: &&String| {
+                (i.split(" (").skip(1))
+                    .any(|p| p.starts_with(|c: char| c.is_ascii_digit()) && p.contains(" of "))
+            };
+            let told_apart = all.items.iter().filter(ordinal).count();
+            assert!(told_apart > 0, "{scene}: no steps alike");
+            for k in (0..all.items.len()).step_by(7) {
+                let one = super::build_page(&text, "x.json", Some(k)).unwrap();
+                assert_eq!(one.items, [all.items[k].clone()], "{scene}, page {k}");
+            }
+        }
+    }
+}

@@ -122,8 +122,21 @@ pub fn walkthrough_item_list(board: &Board, grouping: Grouping) -> Vec<String> {
 /// The item of page `k` alone ([`walkthrough_item_list`]'s `k`-th), for a live page that
 /// shows only the current page's details while the student drags; `None` past the last.
 pub fn walkthrough_item(board: &Board, grouping: Grouping, k: usize) -> Option<String> {
-    let names = step_names(board);
-    (page_groups(board, grouping).get(k)).map(|group| group_item(group, &names))
+    let groups = page_groups(board, grouping);
+    let group = groups.get(k)?;
+    // Only this page's steps are named: a drag asks for one page on each pointer move, and
+    // the crane bridge's 5,438 names took a fifth of its replay.
+    let named = plain_names(board);
+    let mut names = vec![String::new(); named.len()];
+    for s in group {
+        if let Some(i) = (s.id.0 as usize)
+            .checked_sub(1)
+            .filter(|&i| i < named.len())
+        {
+            names[i] = told_apart(board, &named, i);
+        }
+    }
+    Some(group_item(group, &names))
 }
 
 /// Each step's name in the walk-through, so that no two steps of one situation read alike,
@@ -144,6 +157,39 @@ pub fn walkthrough_item(board: &Board, grouping: Grouping, k: usize) -> Option<S
 /// assert_eq!(names, ["given point A", "given point (1 of 2)", "given point (2 of 2)"]);
 /// ```
 pub fn step_names(board: &Board) -> Vec<String> {
+    let named = plain_names(board);
+    let key = |i: usize| (&named[i], board.steps()[i].context.as_deref());
+    let mut count: foldhash::HashMap<_, usize> = Default::default();
+    for i in 0..named.len() {
+        *count.entry(key(i)).or_default() += 1;
+    }
+    let mut seen: foldhash::HashMap<_, usize> = Default::default();
+    (0..named.len())
+        .map(|i| match count[&key(i)] {
+            1 => named[i].clone(),
+            n => {
+                let k = seen.entry(key(i)).or_default();
+                *k += 1;
+                format!("{} ({k} of {n})", named[i])
+            }
+        })
+        .collect()
+}
+
+/// Step `i`'s name of [`step_names`] from the names before telling alike steps apart: its
+/// plain name, or which of the steps of that name and situation it is.
+fn told_apart(board: &Board, named: &[String], i: usize) -> String {
+    let context = |j: usize| board.steps()[j].context.as_deref();
+    let alike = |j: &usize| named[*j] == named[i] && context(*j) == context(i);
+    match (0..named.len()).filter(alike).count() {
+        1 => named[i].clone(),
+        n => format!("{} ({} of {n})", named[i], (0..=i).filter(alike).count()),
+    }
+}
+
+/// Each step's caption with the names of the objects it draws (or reads from), before steps
+/// of one name are told apart.
+fn plain_names(board: &Board) -> Vec<String> {
     let label = |id: &crate::protocol::ObjId| {
         let l = &board.object(*id)?.label;
         (!l.base.is_empty()).then(|| match l.index {
@@ -159,7 +205,7 @@ pub fn step_names(board: &Board) -> Vec<String> {
     // A name the caption says already ("ordinate line through O") is not said twice.
     let said =
         |caption: &str, name: &str| caption.split([' ', ',', ':', '(', ')']).any(|w| w == name);
-    let named: Vec<String> = (board.steps().iter())
+    (board.steps().iter())
         .map(|s| {
             let mut objs: Vec<String> = s.outputs.iter().filter_map(label).collect();
             if objs.is_empty() {
@@ -178,22 +224,6 @@ pub fn step_names(board: &Board) -> Vec<String> {
                 );
             }
             name
-        })
-        .collect();
-    let key = |i: usize| (&named[i], board.steps()[i].context.as_deref());
-    let mut count: std::collections::HashMap<_, usize> = Default::default();
-    for i in 0..named.len() {
-        *count.entry(key(i)).or_default() += 1;
-    }
-    let mut seen: std::collections::HashMap<_, usize> = Default::default();
-    (0..named.len())
-        .map(|i| match count[&key(i)] {
-            1 => named[i].clone(),
-            n => {
-                let k = seen.entry(key(i)).or_default();
-                *k += 1;
-                format!("{} ({k} of {n})", named[i])
-            }
         })
         .collect()
 }
@@ -373,7 +403,7 @@ var svg, layers, items, full, k = 0, zoom = false;
 // place after each replay and binds them again).
 function bind() {
   svg = document.querySelector('#wt-figure svg');
-  layers = Array.prototype.slice.call(svg.querySelectorAll('g[data-step]'));
+  layers = stepLayers(svg);
   items = Array.prototype.slice.call(document.querySelectorAll('#wt-steps li'));
   full = svg.getAttribute('viewBox');
   items.forEach(function (li, j) {
@@ -383,9 +413,14 @@ function bind() {
   });
 }
 bind();
+// The figure's step layers: children of its root (read off the children: a selector
+// searches all of the crane bridge's 17,000 elements).
+function stepLayers(root) {
+  return Array.prototype.filter.call(root.children, function (g) { return g.hasAttribute('data-step'); });
+}
 function range(li) { return [Number(li.getAttribute('data-first')), Number(li.getAttribute('data-last'))]; }
 function setLayers(root, r) {
-  Array.prototype.forEach.call(root.querySelectorAll('g[data-step]'), function (g) {
+  stepLayers(root).forEach(function (g) {
     var s = Number(g.getAttribute('data-step'));
     g.style.display = s <= r[1] ? '' : 'none';
     g.classList.toggle('current', s >= r[0] && s <= r[1]);
@@ -404,14 +439,17 @@ function boxOf(lo, hi) {
   });
   return box;
 }
+// Setting the view box lays the figure out anew even where the value is the same (a tenth of
+// a second on the largest sheets): it is set only where it changes.
+function setView(v) { if (svg.getAttribute('viewBox') !== v) svg.setAttribute('viewBox', v); }
 function zoomTo(r) {
   // A step that only measures draws nothing: zoom to the last step before it that drew.
   var box = boxOf(r[0], r[1]);
   for (var lo = r[0] - 1; !box && lo >= 1; lo--) box = boxOf(lo, lo);
-  if (!box) { svg.setAttribute('viewBox', full); return; }
+  if (!box) { setView(full); return; }
   var w = Math.max(box.x2 - box.x, 20), h = Math.max(box.y2 - box.y, 20);
   var cx = (box.x + box.x2) / 2, cy = (box.y + box.y2) / 2;
-  svg.setAttribute('viewBox', [cx - 0.65 * w, cy - 0.65 * h, 1.3 * w, 1.3 * h].join(' '));
+  setView([cx - 0.65 * w, cy - 0.65 * h, 1.3 * w, 1.3 * h].join(' '));
 }
 // On a sheet larger than its pane, the pane scrolls so that the step's new objects are in
 // view (zoom aside).
@@ -444,7 +482,7 @@ function show(i, how) {
   items.forEach(function (li, j) { li.classList.toggle('wt-on', j === k); });
   document.getElementById('wt-now').innerHTML = items[k].innerHTML;
   document.getElementById('wt-count').textContent = 'step ' + (k + 1) + ' / ' + items.length;
-  if (zoom) zoomTo(r); else { svg.setAttribute('viewBox', full); follow(r); }
+  if (zoom) zoomTo(r); else { setView(full); follow(r); }
   items[k].scrollIntoView({ block: 'nearest' });
   if (!window.history || !window.history.replaceState || how === 'pop') return;
   if ((how || 'push') === 'push' && k !== was) window.history.pushState({ step: k + 1 }, '', '#' + (k + 1));
@@ -530,7 +568,7 @@ show(isFinite(start) && start > 0 ? start - 1 : 0, 'replace');
 // page's item as the replay gives it.
 function swapFigure(now) {
   svg = document.querySelector('#wt-figure svg');
-  layers = Array.prototype.slice.call(svg.querySelectorAll('g[data-step]'));
+  layers = stepLayers(svg);
   full = svg.getAttribute('viewBox');
   var r = range(items[k]);
   layers.forEach(function (g) {

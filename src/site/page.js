@@ -57,8 +57,22 @@ function showError(text) {
 function clearError() { var e = el('wt-error'); if (e && e.getAttribute('data-live')) e.remove(); }
 
 function drawHandles() {
-  var s = svg();
-  var old = s.querySelector('g.gs-handles');
+  var s = svg(), old = s.lastElementChild;
+  if (!old || old.getAttribute('class') !== 'gs-handles') old = null;
+  // A drag's replay moves the handles: where they are the same handles, they are moved.
+  var same = old && old.children.length === handles.length && handles.every(function (h, i) {
+    var c = old.children[i];
+    return c.getAttribute('class') === 'gs-handle gs-' + h.drag.kind &&
+      c.textContent === h.name + ': drag to move it';
+  });
+  if (same) {
+    handles.forEach(function (h, i) {
+      var c = old.children[i], x = String(h.at[0]), y = String(h.at[1]);
+      if (c.getAttribute('cx') !== x) c.setAttribute('cx', x);
+      if (c.getAttribute('cy') !== y) c.setAttribute('cy', y);
+    });
+    return;
+  }
   if (old) old.remove();
   var g = document.createElementNS(NS, 'g');
   g.setAttribute('class', 'gs-handles');
@@ -199,6 +213,27 @@ function attributes(line) {
   while ((m = re.exec(line))) out[m[1]] = m[2];
   return out;
 }
+// The sheet's size and view box stay as they were while a drag holds the sheet: the answer's
+// wait in the element's data set until the pointer is released, and the sheet is moved under
+// the pointer by a CSS translation, which the browser composes without laying the figure out
+// again. A root attribute is set only where it changed: setting the view box, even to the
+// value it has, lays out every text anew (~120 ms for the crane bridge's 5,299).
+var HELD = /^(viewBox|width|height)$/;
+function setRoot(s, line) {
+  var a = attributes(line);
+  for (var k in a) {
+    var v = decode(a[k]);
+    if (drag && HELD.test(k)) s.dataset[k] = v;
+    else if (s.getAttribute(k) !== v) s.setAttribute(k, v);
+  }
+}
+// A figure parsed anew during a drag: its size and view box as the drag holds them.
+function hold(s) {
+  ['viewBox', 'width', 'height'].forEach(function (k) { s.dataset[k] = s.getAttribute(k); });
+  s.setAttribute('viewBox', drag.vb);
+  s.setAttribute('width', drag.width);
+  s.setAttribute('height', drag.height);
+}
 function setAttributes(e, was, now) {
   var a = attributes(was), b = attributes(now), k;
   for (k in b) if (a[k] !== b[k]) e.setAttribute(k, decode(b[k]));
@@ -223,9 +258,7 @@ function patch(text) {
   if (!shown || shown.svg !== svg()) return false;
   var lines = text.split('\n'), ranges = children(lines);
   if (!ranges || ranges.length !== shown.kids.length) return false;
-  // The root's size and view box are set anew even where unchanged: a drag holds the sheet
-  // under the pointer by changing them.
-  setAttributes(shown.svg, '', lines[0]);
+  setRoot(shown.svg, lines[0]);
   for (var i = 0; i < ranges.length; i++) {
     var c = shown.kids[i], now = lines.slice(ranges[i][0], ranges[i][1] + 1), changed = changes(c, now);
     if (changed) {
@@ -288,7 +321,7 @@ function figureIsAnswer() {
   if (a.length !== b.length) return 'elements: ' + a.length + ' in the answer, ' + b.length + ' shown';
   // The page's own: a layer's display (its style), the sheet's size kept during a drag.
   var own = function (e, n) {
-    return (n === 'style' && e.localName === 'g') || /^data-(view-box|width|height)$/.test(n);
+    return (n === 'style' && (e.localName === 'g' || e.localName === 'svg')) || /^data-(view-box|width|height)$/.test(n);
   };
   var cls = function (e) {
     return (e.getAttribute('class') || '').split(' ').filter(function (c) {
@@ -360,17 +393,14 @@ function apply(a, light) {
   if (drag) {
     // The sheet stays where it was under the pointer: the held point (or centre) is kept at
     // the same place on the screen while the figure around it is drawn anew.
+    if (!patched) hold(next);
+    else if (next.getAttribute('viewBox') !== drag.vb) next.setAttribute('viewBox', drag.vb);
     var h = sameHandle(a, drag.index);
     if (h) {
       var an = anchor(h), target = drag.h.drag.kind === 'angle' ? drag.a0
         : [drag.p.x - drag.p0.x + drag.a0[0], drag.p.y - drag.p0.y + drag.a0[1]];
-      next.dataset.viewBox = next.getAttribute('viewBox');
-      next.dataset.width = next.getAttribute('width');
-      next.dataset.height = next.getAttribute('height');
-      next.setAttribute('viewBox', [drag.vb[0] + an[0] - target[0], drag.vb[1] + an[1] - target[1],
-        drag.vb[2], drag.vb[3]].join(' '));
-      next.setAttribute('width', drag.width);
-      next.setAttribute('height', drag.height);
+      next.style.transform = 'translate(' + (target[0] - an[0]) / drag.perPx + 'px,' +
+        (target[1] - an[1]) / drag.perPx + 'px)';
     }
   }
   drawHandles();
@@ -439,7 +469,7 @@ figure.addEventListener('pointerdown', function (e) {
   // Sheet units (mm) per screen pixel, from the figure's scale on the screen now.
   var perPx = Math.sqrt(Math.abs(inv.a * inv.d - inv.b * inv.c));
   drag = { h: h, index: i, inv: inv, perPx: perPx, p0: p0, p: p0, a0: anchor(h).slice(),
-    vb: s.getAttribute('viewBox').split(/[ ,]+/).map(Number),
+    vb: s.getAttribute('viewBox'),
     width: s.getAttribute('width'), height: s.getAttribute('height'),
     value: h.drag.value ? h.drag.value.slice() : null };
   figure.setPointerCapture(e.pointerId);
@@ -468,8 +498,12 @@ function endDrag() {
   drag = null;
   figure.classList.remove('gs-dragging');
   var s = svg();
+  s.style.removeProperty('transform');
+  if (!s.getAttribute('style')) s.removeAttribute('style');
   ['viewBox', 'width', 'height'].forEach(function (k) {
-    if (s.dataset[k]) { s.setAttribute(k, s.dataset[k]); delete s.dataset[k]; }
+    if (!s.dataset[k]) return;
+    if (s.getAttribute(k) !== s.dataset[k]) s.setAttribute(k, s.dataset[k]);
+    delete s.dataset[k];
   });
   if (!replay(false, false)) {
     if (stale) settle(); else { window.graphostatikWalk.rebind(); drawHandles(); }
