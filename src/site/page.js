@@ -218,21 +218,18 @@ function attributes(line) {
 // the pointer by a CSS translation, which the browser composes without laying the figure out
 // again. A root attribute is set only where it changed: setting the view box, even to the
 // value it has, lays out every text anew (~120 ms for the crane bridge's 5,299).
-var HELD = /^(viewBox|width|height)$/;
+var HELD = ['viewBox', 'width', 'height'];
 function setRoot(s, line) {
   var a = attributes(line);
   for (var k in a) {
     var v = decode(a[k]);
-    if (drag && HELD.test(k)) s.dataset[k] = v;
+    if (drag && HELD.indexOf(k) >= 0) s.dataset[k] = v;
     else if (s.getAttribute(k) !== v) s.setAttribute(k, v);
   }
 }
 // A figure parsed anew during a drag: its size and view box as the drag holds them.
 function hold(s) {
-  ['viewBox', 'width', 'height'].forEach(function (k) { s.dataset[k] = s.getAttribute(k); });
-  s.setAttribute('viewBox', drag.vb);
-  s.setAttribute('width', drag.width);
-  s.setAttribute('height', drag.height);
+  HELD.forEach(function (k) { s.dataset[k] = s.getAttribute(k); s.setAttribute(k, drag.held[k]); });
 }
 function setAttributes(e, was, now) {
   var a = attributes(was), b = attributes(now), k;
@@ -339,7 +336,7 @@ function figureIsAnswer() {
     Array.prototype.forEach.call(x.attributes, function (at) { names[at.name] = 1; });
     Array.prototype.forEach.call(y.attributes, function (at) { names[at.name] = 1; });
     for (var n in names) {
-      if (own(x, n) || (i === 0 && drag && /^(viewBox|width|height)$/.test(n))) continue;
+      if (own(x, n) || (i === 0 && drag && HELD.indexOf(n) >= 0)) continue;
       var u = n === 'class' ? cls(x) : x.getAttribute(n), v = n === 'class' ? cls(y) : y.getAttribute(n);
       if (u !== v) return 'element ' + where + ', ' + n + ': ' + u + ' in the answer, ' + v + ' shown';
     }
@@ -394,7 +391,8 @@ function apply(a, light) {
     // The sheet stays where it was under the pointer: the held point (or centre) is kept at
     // the same place on the screen while the figure around it is drawn anew.
     if (!patched) hold(next);
-    else if (next.getAttribute('viewBox') !== drag.vb) next.setAttribute('viewBox', drag.vb);
+    // (The walk-through's zoom may have set the view box; the drag holds it.)
+    else if (next.getAttribute('viewBox') !== drag.held.viewBox) next.setAttribute('viewBox', drag.held.viewBox);
     var h = sameHandle(a, drag.index);
     if (h) {
       var an = anchor(h), target = drag.h.drag.kind === 'angle' ? drag.a0
@@ -469,8 +467,7 @@ figure.addEventListener('pointerdown', function (e) {
   // Sheet units (mm) per screen pixel, from the figure's scale on the screen now.
   var perPx = Math.sqrt(Math.abs(inv.a * inv.d - inv.b * inv.c));
   drag = { h: h, index: i, inv: inv, perPx: perPx, p0: p0, p: p0, a0: anchor(h).slice(),
-    vb: s.getAttribute('viewBox'),
-    width: s.getAttribute('width'), height: s.getAttribute('height'),
+    held: { viewBox: s.getAttribute('viewBox'), width: s.getAttribute('width'), height: s.getAttribute('height') },
     value: h.drag.value ? h.drag.value.slice() : null };
   figure.setPointerCapture(e.pointerId);
   figure.classList.add('gs-dragging');
@@ -500,7 +497,7 @@ function endDrag() {
   var s = svg();
   s.style.removeProperty('transform');
   if (!s.getAttribute('style')) s.removeAttribute('style');
-  ['viewBox', 'width', 'height'].forEach(function (k) {
+  HELD.forEach(function (k) {
     if (!s.dataset[k]) return;
     if (s.getAttribute(k) !== s.dataset[k]) s.setAttribute(k, s.dataset[k]);
     delete s.dataset[k];

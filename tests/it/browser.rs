@@ -377,6 +377,19 @@ fn write_site(scenes: &[&str], out: &Path) {
 
 /// The screen centre of the first handle called `name` that is in view (a truss draws each
 /// joint once per load case; the pane may be scrolled to the last).
+fn handle_at(s: &Session, name: &str) -> (f64, f64) {
+    let v = s.script(&format!(
+        "var hs = document.querySelectorAll('.gs-handle');\
+         for (var i = 0; i < hs.length; i++) {{\
+           if (hs[i].querySelector('title').textContent.split(':')[0] !== {name:?}) continue;\
+           var r = hs[i].getBoundingClientRect(), x = r.x + r.width / 2, y = r.y + r.height / 2;\
+           if (x > 40 && y > 40 && x < window.innerWidth - 40 && y < window.innerHeight - 40) return [x, y]; }}\
+         return null;"
+    ));
+    let a = v.as_array().unwrap_or_else(|| panic!("no handle {name}"));
+    (a[0].as_f64().unwrap(), a[1].as_f64().unwrap())
+}
+
 /// Where on the screen the handle `name` turns about (its centre), in CSS pixels.
 fn center_at(s: &Session, name: &str) -> (f64, f64) {
     let v = s.script(&format!(
@@ -388,19 +401,6 @@ fn center_at(s: &Session, name: &str) -> (f64, f64) {
     let a = v
         .as_array()
         .unwrap_or_else(|| panic!("no centre of {name}"));
-    (a[0].as_f64().unwrap(), a[1].as_f64().unwrap())
-}
-
-fn handle_at(s: &Session, name: &str) -> (f64, f64) {
-    let v = s.script(&format!(
-        "var hs = document.querySelectorAll('.gs-handle');\
-         for (var i = 0; i < hs.length; i++) {{\
-           if (hs[i].querySelector('title').textContent.split(':')[0] !== {name:?}) continue;\
-           var r = hs[i].getBoundingClientRect(), x = r.x + r.width / 2, y = r.y + r.height / 2;\
-           if (x > 40 && y > 40 && x < window.innerWidth - 40 && y < window.innerHeight - 40) return [x, y]; }}\
-         return null;"
-    ));
-    let a = v.as_array().unwrap_or_else(|| panic!("no handle {name}"));
     (a[0].as_f64().unwrap(), a[1].as_f64().unwrap())
 }
 
