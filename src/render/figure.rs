@@ -4,7 +4,7 @@ use super::extent::*;
 use super::labels::{self, Placement};
 use super::style::class as class_of;
 use super::style::*;
-use super::xml::El;
+use super::xml::{El, Num};
 use crate::fmt::{num, sheet_text, subscripts};
 use crate::kernel::construct::clip_to_rect;
 use crate::kernel::tolerance::{MIN_DRAWN_MM, NICE_SCALE_SLACK};
@@ -53,14 +53,18 @@ impl Frame {
             self.max_y - p.y + MARGIN + self.title_block(),
         ]
     }
-    fn x(&self, p: &Point) -> String {
-        num(p.x - self.min_x + MARGIN, 3)
+    fn x(&self, p: &Point) -> Num {
+        Num(p.x - self.min_x + MARGIN, 3)
     }
-    fn y(&self, p: &Point) -> String {
-        num(self.max_y - p.y + MARGIN + self.title_block(), 3)
+    fn y(&self, p: &Point) -> Num {
+        Num(self.max_y - p.y + MARGIN + self.title_block(), 3)
     }
     fn xy(&self, p: &Point) -> String {
-        format!("{},{}", self.x(p), self.y(p))
+        let mut s = String::with_capacity(24);
+        crate::fmt::num_into(&mut s, self.x(p).0, 3);
+        s.push(',');
+        crate::fmt::num_into(&mut s, self.y(p).0, 3);
+        s
     }
     fn contains(&self, p: &Point) -> bool {
         let [x0, y0, x1, y1] = self.clip;
@@ -358,7 +362,7 @@ fn draw_circle(
                 .set("class", class)
                 .set("cx", f.x(&circle.center))
                 .set("cy", f.y(&circle.center))
-                .set("r", num(circle.radius, 3)),
+                .set("r", Num(circle.radius, 3)),
         );
     }
     let h = compass_arc_half_angle(circle.radius).to_degrees();
@@ -399,7 +403,7 @@ fn draw_object(f: &Frame, obj: &Object, labels: &Placement, g: El) -> El {
                     .set("class", "pt")
                     .set("cx", f.x(at))
                     .set("cy", f.y(at))
-                    .set("r", num(DOT, 3)),
+                    .set("r", Num(DOT, 3)),
             );
             g = draw_label(f, obj, labels, g);
         }
@@ -629,16 +633,16 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> El {
         g = g.add(
             El::text("text", sheet_text(line).into_owned())
                 .set("class", "title")
-                .set("x", num(MARGIN, 3))
-                .set("y", num(MARGIN + 6.0 + TITLE_LINE * k as f64, 3)),
+                .set("x", Num(MARGIN, 3))
+                .set("y", Num(MARGIN + 6.0 + TITLE_LINE * k as f64, 3)),
         );
     }
     let below = TITLE_LINE * f.title.len().saturating_sub(1) as f64;
     for (k, line) in f.source.iter().enumerate() {
         g = g.add(
             El::text("text", sheet_text(line).into_owned())
-                .set("x", num(MARGIN, 3))
-                .set("y", num(MARGIN + 12.0 + below + SOURCE_LINE * k as f64, 3)),
+                .set("x", Num(MARGIN, 3))
+                .set("y", Num(MARGIN + 12.0 + below + SOURCE_LINE * k as f64, 3)),
         );
     }
     // Scale bars, one to a row, under the figure.
@@ -670,20 +674,20 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> El {
         g = g.add(
             El::text("text", "0")
                 .set("class", "small")
-                .set("x", num(x - 0.7, 3))
-                .set("y", num(y + 3.2, 3)),
+                .set("x", Num(x - 0.7, 3))
+                .set("y", Num(y + 3.2, 3)),
         );
         g = g.add(
             El::text("text", row.end)
                 .set("class", "small")
-                .set("x", num(x + len - 1.0, 3))
-                .set("y", num(y + 3.2, 3)),
+                .set("x", Num(x + len - 1.0, 3))
+                .set("y", Num(y + 3.2, 3)),
         );
         g = g.add(
             El::text("text", sheet_text(&s.name).into_owned())
                 .set("class", "small")
-                .set("x", num(MARGIN + names_at, 3))
-                .set("y", num(y + 1.0, 3)),
+                .set("x", Num(MARGIN + names_at, 3))
+                .set("y", Num(y + 1.0, 3)),
         );
     }
     g

@@ -5,17 +5,22 @@
 //! escapes each value by three `str::replace` (three new strings) and sorts each element's
 //! attributes into a new vector. On a figure of thousands of elements that was two thirds of
 //! what drawing it cost (the Otto engine of KG Abb. 1056: 105 of 159 M instructions a replay,
-//! the construction 12 M). [`El`] keeps an element's attributes in a short vector and its
-//! children in another; [`El::write`] gives the bytes the `svg` crate gave: attributes
+//! the construction 12 M). [`El`] keeps an element's attribute values in one buffer and its
+//! children in a vector; [`El::write`] gives the bytes the `svg` crate gave: attributes
 //! sorted by name, `&`, `<` and `>` escaped, a line break before every child that is not
 //! written bare (text is bare in a `title` or `tspan`; the `svg`, `style` and `text`
 //! elements put every child on a line of its own).
 
-/// An SVG element: its name, attributes (in the order set; written sorted) and children.
+/// An SVG element: its name, attributes and children. The attributes' values are written,
+/// escaped, into one buffer of the element as they are set, and indexed by name in name
+/// order, so that writing the element copies them (a string per attribute and a sorted
+/// vector per element were a third of what a figure cost to build and free).
 #[derive(Clone, Debug)]
 pub(crate) struct El {
     name: &'static str,
-    attributes: Vec<(&'static str, String)>,
+    /// Each attribute's name and its value's byte range in `values`, sorted by name.
+    keys: Vec<(&'static str, u32, u32)>,
+    values: String,
     children: Vec<Child>,
 }
 
@@ -26,12 +31,69 @@ enum Child {
     Text(String),
 }
 
+/// A value an attribute can take, written as the `svg` crate wrote it (numbers by their
+/// `Display`, text as it is), escaped.
+pub(crate) trait AttrValue {
+    /// Writes the value, escaped, at the end of `out`.
+    fn write_escaped(self, out: &mut String);
+}
+
+impl AttrValue for &str {
+    fn write_escaped(self, out: &mut String) {
+        escaped(out, self);
+    }
+}
+
+impl AttrValue for String {
+    fn write_escaped(self, out: &mut String) {
+        escaped(out, &self);
+    }
+}
+
+impl AttrValue for &String {
+    fn write_escaped(self, out: &mut String) {
+        escaped(out, self);
+    }
+}
+
+macro_rules! displayed {
+    ($($t:ty),*) => {$(
+        impl AttrValue for $t {
+            fn write_escaped(self, out: &mut String) {
+                use std::fmt::Write;
+                let _ = write!(out, "{self}");
+            }
+        }
+    )*};
+}
+displayed!(i32, u32, usize, f64);
+
+/// A number written with at most `.1` decimals, trailing zeros dropped ([`crate::fmt::num`]),
+/// straight into the element's buffer.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Num(pub f64, pub usize);
+
+impl AttrValue for Num {
+    fn write_escaped(self, out: &mut String) {
+        crate::fmt::num_into(out, self.0, self.1);
+    }
+}
+
+impl std::fmt::Display for Num {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let mut s = String::new();
+        crate::fmt::num_into(&mut s, self.0, self.1);
+        f.write_str(&s)
+    }
+}
+
 impl El {
     /// An empty element.
     pub(crate) fn new(name: &'static str) -> El {
         El {
             name,
-            attributes: Vec::new(),
+            keys: Vec::new(),
+            values: String::new(),
             children: Vec::new(),
         }
     }
@@ -48,13 +110,18 @@ impl El {
         El::new("svg").set("xmlns", "http://www.w3.org/2000/svg")
     }
 
-    /// The element with attribute `key` set to `value` (formatted as the `svg` crate formats
-    /// it: numbers by their `Display`); a key set twice keeps the last value.
-    pub(crate) fn set(mut self, key: &'static str, value: impl Into<svg::node::Value>) -> El {
-        let value = String::from(value.into());
-        match self.attributes.iter_mut().find(|(k, _)| *k == key) {
-            Some(slot) => slot.1 = value,
-            None => self.attributes.push((key, value)),
+    /// The element with attribute `key` set to `value`; a key set twice keeps the last value.
+    pub(crate) fn set(mut self, key: &'static str, value: impl AttrValue) -> El {
+        if self.keys.is_empty() {
+            self.keys.reserve_exact(6);
+            self.values.reserve(48);
+        }
+        let from = self.values.len();
+        value.write_escaped(&mut self.values);
+        let range = (from as u32, self.values.len() as u32);
+        match self.keys.binary_search_by(|(k, ..)| k.cmp(&key)) {
+            Ok(i) => self.keys[i] = (key, range.0, range.1),
+            Err(i) => self.keys.insert(i, (key, range.0, range.1)),
         }
         self
     }
@@ -75,13 +142,11 @@ impl El {
     fn write_into(&self, out: &mut String) {
         out.push('<');
         out.push_str(self.name);
-        let mut sorted: Vec<&(&'static str, String)> = self.attributes.iter().collect();
-        sorted.sort_unstable_by(|a, b| a.0.cmp(b.0));
-        for (key, value) in sorted {
+        for &(key, from, to) in &self.keys {
             out.push(' ');
             out.push_str(key);
             out.push_str("=\"");
-            escaped(out, value);
+            out.push_str(&self.values[from as usize..to as usize]);
             out.push('"');
         }
         if self.children.is_empty() {
