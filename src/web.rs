@@ -16,6 +16,9 @@ use crate::render::{
 use crate::scene::{handles, AnyScene, Handle, Preview};
 use serde::Serialize;
 
+mod patch;
+pub use patch::{figure_patch, FigurePatch};
+
 /// The answer to the page: a construction, or why there is none.
 #[derive(Debug, Clone, Serialize)]
 #[serde(untagged)]

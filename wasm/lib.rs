@@ -1,10 +1,13 @@
 //! The graphostatik engine for the browser: `graphostatik::web::replay_apart` behind a C ABI,
-//! so that the page needs no generated glue (`site/engine.js` calls these seven functions).
+//! so that the page needs no generated glue (`site/engine.js` calls these functions).
 //!
 //! The page copies the scene's name and text into buffers it asks [`gs_alloc`] for, calls
 //! [`gs_replay`] and reads the answer (JSON, UTF-8) at [`gs_out_ptr`] for the length
 //! `gs_replay` returned, and the figure (SVG, apart from the JSON) at [`gs_svg_ptr`] for
-//! [`gs_svg_len`] bytes. A panic cannot unwind out of WebAssembly: it traps, after the hook
+//! [`gs_svg_len`] bytes. The engine keeps the last figure it drew, numbered
+//! ([`gs_figure_id`]); a page that shows that figure says so, and reads what changed from it
+//! (`graphostatik::web::figure_patch`, JSON) at [`gs_patch_ptr`] for [`gs_patch_len`] bytes
+//! instead of the whole figure. A panic cannot unwind out of WebAssembly: it traps, after the hook
 //! below has kept its message, which the page reads with [`gs_panic_ptr`] and
 //! [`gs_panic_len`] before it starts a fresh instance. Nothing here uses threads, clocks or
 //! files.
@@ -14,8 +17,12 @@ use std::cell::RefCell;
 thread_local! {
     /// The last answer, kept until the next call.
     static OUT: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
-    /// The last answer's figure (SVG), kept until the next call.
+    /// The last figure drawn (SVG; a refused scene draws none), kept until the next.
     static SVG: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
+    /// The number of figures drawn: the last one's number.
+    static FIGURE: std::cell::Cell<u32> = const { std::cell::Cell::new(0) };
+    /// What changed from figure `base` to the last one (JSON; empty: ask for the figure).
+    static PATCH: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
     /// The message of a panic, kept for the page.
     static PANIC: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
 }
@@ -41,8 +48,10 @@ pub unsafe extern "C" fn gs_free(ptr: *mut u8, len: usize) {
 
 /// Replays the scene `text` (named `name` in errors): both buffers of [`gs_alloc`] filled
 /// with UTF-8, and freed here. `page` below 0 asks for the full answer, else for the answer
-/// of a drag on that page (`graphostatik::web::replay_page`). Returns the length of the
-/// JSON answer at [`gs_out_ptr`].
+/// of a drag on that page (`graphostatik::web::replay_page`). `base` is the number of the
+/// figure the page shows ([`gs_figure_id`]; below 0: none of this engine's): where it is the
+/// last figure drawn, what changed from it is put at [`gs_patch_ptr`]. Returns the length of
+/// the JSON answer at [`gs_out_ptr`].
 ///
 /// # Safety
 /// Each pointer and length is a buffer [`gs_alloc`] returned for that many bytes, all
@@ -54,15 +63,19 @@ pub unsafe extern "C" fn gs_replay(
     text: *mut u8,
     text_len: usize,
     page: i32,
+    base: i32,
 ) -> usize {
     install_hook();
+    PATCH.with(|p| p.borrow_mut().clear());
     let name = Vec::from_raw_parts(name, name_len, name_len.max(1));
     let text = Vec::from_raw_parts(text, text_len, text_len.max(1));
     let name = String::from_utf8_lossy(&name).into_owned();
     let answer = match std::str::from_utf8(&text) {
         Ok(t) => {
             let (json, svg) = graphostatik::web::replay_apart(t, &name, usize::try_from(page).ok());
-            SVG.with(|o| *o.borrow_mut() = svg.into_bytes());
+            if !svg.is_empty() {
+                keep_figure(svg, base);
+            }
             json
         }
         Err(e) => {
@@ -76,7 +89,6 @@ pub unsafe extern "C" fn gs_replay(
                     .map_or(0, |i| i + 1)
                 + 1;
             let error = format!("{name}:{line}:{col}: the scene is not UTF-8 text");
-            SVG.with(|o| o.borrow_mut().clear());
             format!("{{\"ok\":false,\"error\":{}}}", json_string(&error))
         }
     };
@@ -87,13 +99,49 @@ pub unsafe extern "C" fn gs_replay(
     })
 }
 
-/// Where the last answer's figure starts (its `svg` field is empty: the figure is apart).
+/// Keeps `svg` as the last figure, numbered anew; where the page shows the figure it follows
+/// (`base`), what changed from that one is kept for the page.
+fn keep_figure(svg: String, base: i32) {
+    let id = FIGURE.with(|f| f.get());
+    SVG.with(|o| {
+        let mut o = o.borrow_mut();
+        if u32::try_from(base) == Ok(id) && !o.is_empty() {
+            let old = std::str::from_utf8(&o).unwrap_or_default();
+            if let Some(p) = graphostatik::web::figure_patch(old, &svg) {
+                PATCH.with(|b| *b.borrow_mut() = p.to_json().into_bytes());
+            }
+        }
+        *o = svg.into_bytes();
+    });
+    FIGURE.with(|f| f.set(id % ((1 << 30) - 1) + 1));
+}
+
+/// The number of the last figure drawn (0: none yet; 1 follows 2³⁰ − 1).
+#[no_mangle]
+pub extern "C" fn gs_figure_id() -> u32 {
+    FIGURE.with(|f| f.get())
+}
+
+/// Where what changed from the page's figure starts (JSON: the root's tag where it changed,
+/// the lines `[child, line, text]`, the children `[child, text]` whole).
+#[no_mangle]
+pub extern "C" fn gs_patch_ptr() -> *const u8 {
+    PATCH.with(|o| o.borrow().as_ptr())
+}
+
+/// The length of that patch (0: none; the page reads the whole figure).
+#[no_mangle]
+pub extern "C" fn gs_patch_len() -> usize {
+    PATCH.with(|o| o.borrow().len())
+}
+
+/// Where the last figure starts (the answer's `svg` field is empty: the figure is apart).
 #[no_mangle]
 pub extern "C" fn gs_svg_ptr() -> *const u8 {
     SVG.with(|o| o.borrow().as_ptr())
 }
 
-/// The length of the last answer's figure (0 where the scene was refused).
+/// The length of the last figure (0: none drawn yet).
 #[no_mangle]
 pub extern "C" fn gs_svg_len() -> usize {
     SVG.with(|o| o.borrow().len())

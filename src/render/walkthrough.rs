@@ -571,17 +571,24 @@ var start = Number((window.location.hash ||
 show(isFinite(start) && start > 0 ? start - 1 : 0, 'replace');
 // A new figure of the same construction (a live page's replay while the student drags): the
 // current page's layers on the fresh figure, nothing else touched. `now` is the current
-// page's item as the replay gives it.
-function swapFigure(now) {
-  svg = document.querySelector('#wt-figure svg');
-  layers = stepLayers(svg);
-  full = svg.getAttribute('viewBox');
+// page's item as the replay gives it; `fresh`, where the figure was set in place, the step
+// layers put anew (the others keep what the page set on them).
+function swapFigure(now, fresh) {
   var r = range(items[k]);
-  layers.forEach(function (g) {
+  var set = function (g) {
     var s = Number(g.getAttribute('data-step'));
     if (s > r[1]) g.style.display = 'none';
     else if (s >= r[0]) g.classList.add('current');
-  });
+  };
+  svg = document.querySelector('#wt-figure svg');
+  if (fresh) {
+    if (fresh.length) layers = stepLayers(svg);
+    fresh.forEach(function (g) { if (g.hasAttribute('data-step')) set(g); });
+  } else {
+    layers = stepLayers(svg);
+    layers.forEach(set);
+  }
+  full = svg.getAttribute('viewBox');
   if (now !== undefined) {
     var list = document.createElement('ul');
     list.innerHTML = now;

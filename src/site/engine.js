@@ -21,19 +21,35 @@ Engine.prototype.read = function (ptr, len) {
 // A panic inside the engine traps (WebAssembly.RuntimeError); its message is kept by the
 // engine's hook and thrown here as one line. The instance is not used again after a trap.
 // `page` (optional): the answer of a drag on that page (its step item alone, no step list).
-Engine.prototype.replay = function (name, text, page) {
-  var n = this.put(name), t = this.put(text), len;
+// `shown` (optional): the number of the figure the page shows (an answer's `figureId`); where
+// it is the engine's last figure, the answer's `patch` holds what changed from it (the lines
+// and the root's children that changed; null: none), and its `svg` is read only if asked
+// for (the crane bridge's figure is 2 MB of text to decode).
+Engine.prototype.replay = function (name, text, page, shown) {
+  var n = this.put(name), t = this.put(text), len, x = this.x;
   try {
-    len = this.x.gs_replay(n[0], n[1], t[0], t[1], page === undefined ? -1 : page);
+    len = x.gs_replay(n[0], n[1], t[0], t[1], page === undefined ? -1 : page,
+      shown === undefined || shown === null ? -1 : shown);
   } catch (e) {
     var why = this.x.gs_panic_len() > 0 ? this.read(this.x.gs_panic_ptr(), this.x.gs_panic_len()) : String(e);
     var err = new Error('the engine stopped: ' + why);
     err.trapped = true;
     throw err;
   }
-  var a = JSON.parse(this.read(this.x.gs_out_ptr(), len));
-  // The figure comes apart from the JSON (its quotes unescaped).
-  if (a.ok) a.svg = this.read(this.x.gs_svg_ptr(), this.x.gs_svg_len());
+  var a = JSON.parse(this.read(x.gs_out_ptr(), len)), self = this;
+  if (!a.ok) return a;
+  // The figure comes apart from the JSON (its quotes unescaped), read when it is first asked
+  // for, while it is still the engine's last.
+  var id = x.gs_figure_id(), svg = null;
+  a.figureId = id;
+  Object.defineProperty(a, 'svg', { enumerable: true, get: function () {
+    if (svg === null) {
+      if (x.gs_figure_id() !== id) throw new Error('the figure of an earlier answer is gone');
+      svg = self.read(x.gs_svg_ptr(), x.gs_svg_len());
+    }
+    return svg;
+  } });
+  a.patch = x.gs_patch_len() > 0 ? JSON.parse(this.read(x.gs_patch_ptr(), x.gs_patch_len())) : null;
   return a;
 };
 // A fresh engine: the module is compiled once per page, instantiated per call.

@@ -267,7 +267,34 @@ function patch(text) {
       if (!kept) { shown = null; return false; }
       c.el.replaceWith(el);
       shown.kids[i] = kept;
+      fresh.push(el);
     }
+  }
+  return true;
+}
+// Puts the figure in place from the engine's patch `p` against the figure shown (what changed,
+// found by the engine: web::figure_patch): the root's tag, the lines that changed by child,
+// the children whose elements changed whole. False where it cannot (the figure is then
+// taken whole).
+function applyPatch(p) {
+  if (!shown || shown.svg !== svg()) return false;
+  if (p.root) setRoot(shown.svg, p.root);
+  var by = {};
+  p.lines.forEach(function (x) { (by[x[0]] = by[x[0]] || []).push(x); });
+  for (var k in by) {
+    var c = shown.kids[k];
+    if (!c) { shown = null; return false; }
+    var now = c.lines.slice(), changed = by[k].map(function (x) { now[x[1]] = x[2]; return x[1]; });
+    if (!update(c, now, changed)) { shown = null; return false; }
+  }
+  for (var i = 0; i < p.children.length; i++) {
+    var j = p.children[i][0], lines = p.children[i][1].split('\n'), holder = document.createElementNS(NS, 'svg');
+    holder.innerHTML = p.children[i][1];
+    var el = holder.firstElementChild, kept = el && shown.kids[j] && keep(el, lines);
+    if (!kept) { shown = null; return false; }
+    shown.kids[j].el.replaceWith(el);
+    shown.kids[j] = kept;
+    fresh.push(el);
   }
   return true;
 }
@@ -355,13 +382,18 @@ var inPlace = true, patched = false;
 // and only the figure and that step's details are put in place; the step list follows when
 // the pointer rests (`settle`).
 var stale = false;
+// The number of the engine's figure on the page (the engine answers a replay with what
+// changed from it), and the step layers the last replay put anew (null: the whole figure).
+var figureId = null, fresh = null;
 function apply(a, light) {
   var t = performance.now(), next;
-  patched = inPlace && patch(a.svg);
+  fresh = [];
+  patched = inPlace && (a.patch ? applyPatch(a.patch) : patch(a.svg));
   if (patched) {
     next = svg();
     t = mark('patch', t);
   } else {
+    fresh = null;
     var holder = document.createElement('div');
     holder.innerHTML = a.svg;
     next = holder.querySelector('svg');
@@ -374,9 +406,10 @@ function apply(a, light) {
       t = mark('keep', t);
     }
   }
+  figureId = a.figureId;
   var walk = window.graphostatikWalk;
   if (a.page !== undefined && a.step_count === walk.pages) {
-    walk.swapFigure(a.items[0]);
+    walk.swapFigure(a.items[0], fresh);
     stale = true;
     t = mark('step', t);
   } else {
@@ -424,12 +457,13 @@ function replay(force, light) {
   lastText = text;
   var t0 = performance.now(), a;
   try {
-    a = light ? engine.replay(name + '.json', text, window.graphostatikWalk.step())
-      : engine.replay(name + '.json', text);
+    var base = inPlace && shown ? figureId : null;
+    a = light ? engine.replay(name + '.json', text, window.graphostatikWalk.step(), base)
+      : engine.replay(name + '.json', text, undefined, base);
     // A drag that changes the number of steps (a crank leaving a dead centre) needs the
     // whole step list: the answer for a drag holds the current step's item alone.
     if (light && a.ok && a.step_count !== window.graphostatikWalk.pages) {
-      a = engine.replay(name + '.json', text);
+      a = engine.replay(name + '.json', text, undefined, base);
       light = false;
     }
   } catch (e) {

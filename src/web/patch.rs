@@ -1,0 +1,263 @@
+//! What changed between two figures, for a page that shows the first: the lines that
+//! changed, by the root's child they are in, and the children whose elements changed.
+//!
+//! A drag moves points; it seldom adds or drops an element. The page keeps the figure it shows
+//! by the root's children (the title, the style, the definitions, the sheet, one layer per
+//! step), each as its lines beside its nodes. Given the lines that changed, it sets the
+//! attributes and texts that changed; given a child anew, it parses that child alone. Found
+//! here, the difference costs the engine a comparison of bytes, where the page would split
+//! the whole figure into lines and compare them (the crane bridge's 31,000 lines, 2 MB).
+
+use serde::Serialize;
+
+/// The changes that turn one figure into another: see [`figure_patch`].
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct FigurePatch<'a> {
+    /// The root's opening tag, where it changed.
+    pub root: Option<&'a str>,
+    /// `(child, line, text)`: line `line` of the root's child `child` (its own first line 0)
+    /// is now `text`: a tag with the same name, or a text inside a `text`, `style` or
+    /// `title` element.
+    pub lines: Vec<(usize, usize, &'a str)>,
+    /// `(child, text)`: the root's child `child` whose elements changed, whole.
+    pub children: Vec<(usize, String)>,
+}
+
+impl FigurePatch<'_> {
+    /// Whether the two figures are the same.
+    pub fn is_empty(&self) -> bool {
+        self.root.is_none() && self.lines.is_empty() && self.children.is_empty()
+    }
+
+    /// The patch as the page reads it: `{"root": …, "lines": [[child, line, text], …],
+    /// "children": [[child, text], …]}`.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string(self).unwrap_or_else(|_| String::from("null"))
+    }
+}
+
+/// What changed from the figure `old` to the figure `new` (SVG as the figures are written: a
+/// tag or a text per line), by the root's children; `None` where the two differ in the
+/// number of the root's children, or where either is not written a tag or a text per line
+/// (the page then takes the new figure whole).
+///
+/// ```
+/// use graphostatik::web::figure_patch;
+/// let old = "<svg a=\"1\">\n<g id=\"s\">\n<line x1=\"0\"/>\n</g>\n<g/>\n</svg>\n";
+/// let new = "<svg a=\"2\">\n<g id=\"s\">\n<line x1=\"5\"/>\n</g>\n<g>\n<circle/>\n</g>\n</svg>\n";
+/// let p = figure_patch(old, new).unwrap();
+/// assert_eq!(p.root, Some("<svg a=\"2\">"));
+/// assert_eq!(p.lines, [(0, 1, "<line x1=\"5\"/>")]);
+/// assert_eq!(p.children, [(1, "<g>\n<circle/>\n</g>".to_string())]);
+/// assert!(figure_patch(old, "<svg>\n</svg>\n").is_none());
+/// ```
+pub fn figure_patch<'a>(old: &str, new: &'a str) -> Option<FigurePatch<'a>> {
+    let (a, b) = (lines(old), lines(new));
+    let (ka, kb) = (children(&a)?, children(&b)?);
+    if ka.len() != kb.len() {
+        return None;
+    }
+    let mut out = FigurePatch {
+        root: (a[0] != b[0]).then_some(b[0]),
+        ..FigurePatch::default()
+    };
+    for (k, (ra, rb)) in ka.iter().zip(&kb).enumerate() {
+        let (was, now) = (&a[ra.0..=ra.1], &b[rb.0..=rb.1]);
+        if was == now {
+            continue;
+        }
+        match changed_lines(was, now) {
+            Some(changed) => out
+                .lines
+                .extend(changed.into_iter().map(|i| (k, i, now[i]))),
+            None => out.children.push((k, now.join("\n"))),
+        }
+    }
+    Some(out)
+}
+
+/// The figure's lines.
+fn lines(text: &str) -> Vec<&str> {
+    text.split('\n').collect()
+}
+
+/// What a line holds: an end tag, a text, or a tag of that name.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Kind<'a> {
+    End,
+    Text,
+    Tag(&'a str),
+}
+
+fn kind(line: &str) -> Kind<'_> {
+    if line.starts_with("</") {
+        Kind::End
+    } else if let Some(rest) = line.strip_prefix('<') {
+        let end = rest
+            .find(|c: char| c.is_whitespace() || c == '/' || c == '>')
+            .unwrap_or(rest.len());
+        Kind::Tag(&rest[..end])
+    } else {
+        Kind::Text
+    }
+}
+
+/// Whether the tag on `line` stays open (its children follow on lines of their own).
+fn opens(line: &str) -> bool {
+    !line.ends_with("/>") && !line.contains("</")
+}
+
+/// The root's children as ranges of lines `[first, last]`; `None` where the text is not one
+/// root element written a tag or a text per line.
+fn children(lines: &[&str]) -> Option<Vec<(usize, usize)>> {
+    let mut out = Vec::new();
+    let (mut depth, mut first) = (0usize, 0usize);
+    for (i, l) in lines.iter().enumerate().skip(1) {
+        match kind(l) {
+            Kind::End if depth == 0 => {
+                return lines[i + 1..].iter().all(|l| l.is_empty()).then_some(out);
+            }
+            Kind::End => {
+                depth -= 1;
+                if depth == 0 {
+                    out.push((first, i));
+                }
+            }
+            Kind::Text if depth == 0 && !l.is_empty() => return None,
+            Kind::Text => {}
+            Kind::Tag(_) if opens(l) => {
+                if depth == 0 {
+                    first = i;
+                }
+                depth += 1;
+            }
+            Kind::Tag(_) if depth == 0 => out.push((i, i)),
+            Kind::Tag(_) => {}
+        }
+    }
+    None
+}
+
+/// The lines of a child that changed, where each holds what it held (a tag of the same name,
+/// or a text inside a `text`, `style` or `title`); `None` where an element changed.
+fn changed_lines(was: &[&str], now: &[&str]) -> Option<Vec<usize>> {
+    if was.len() != now.len() {
+        return None;
+    }
+    let mut out = Vec::new();
+    // The depth of the open elements, and that of the `text`, `style` or `title` we are in.
+    let (mut depth, mut inside) = (0usize, None::<usize>);
+    for (i, (w, n)) in was.iter().zip(now).enumerate() {
+        let k = kind(n);
+        if w != n {
+            let same = match (kind(w), k) {
+                (Kind::Tag(x), Kind::Tag(y)) => x == y && opens(w) == opens(n),
+                (Kind::Text, Kind::Text) => inside.is_some(),
+                _ => false,
+            };
+            if !same {
+                return None;
+            }
+            out.push(i);
+        }
+        match k {
+            Kind::End => {
+                depth = depth.checked_sub(1)?;
+                if inside == Some(depth) {
+                    inside = None;
+                }
+            }
+            Kind::Tag(name) if opens(n) => {
+                if inside.is_none() && matches!(name, "text" | "style" | "title") {
+                    inside = Some(depth);
+                }
+                depth += 1;
+            }
+            _ => {}
+        }
+    }
+    Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::figure_patch;
+
+    /// Lines that keep their kind are patched; a child whose elements changed goes whole.
+    #[test]
+    fn a_patch_turns_the_old_figure_into_the_new() {
+        let old = "<svg>\n<title>A</title>\n<g id=\"1\">\n<text x=\"1\">\nU\n<tspan>0</tspan>\n</text>\n</g>\n<g id=\"2\">\n<line/>\n</g>\n</svg>\n";
+        let new = "<svg>\n<title>A</title>\n<g id=\"1\">\n<text x=\"2\">\nV\n<tspan>1</tspan>\n</text>\n</g>\n<g id=\"2\">\n<circle/>\n</g>\n</svg>\n";
+        let p = figure_patch(old, new).unwrap();
+        assert_eq!(p.root, None);
+        assert_eq!(
+            p.lines,
+            [
+                (1, 1, "<text x=\"2\">"),
+                (1, 2, "V"),
+                (1, 3, "<tspan>1</tspan>")
+            ]
+        );
+        assert_eq!(
+            p.children,
+            [(2, "<g id=\"2\">\n<circle/>\n</g>".to_string())]
+        );
+        assert!(figure_patch(new, new).unwrap().is_empty());
+        // A text outside a text element, or a line that is no tag at the root: whole.
+        let bare = "<svg>\n<g>\nx\n</g>\n</svg>\n";
+        let other = "<svg>\n<g>\ny\n</g>\n</svg>\n";
+        assert_eq!(figure_patch(bare, other).unwrap().children.len(), 1);
+        assert!(figure_patch("<svg>\nx\n</svg>\n", "<svg>\n</svg>\n").is_none());
+    }
+
+    /// The old figure's lines with the patch applied, child by child.
+    fn applied(old: &str, p: &super::FigurePatch) -> String {
+        let lines: Vec<&str> = old.split('\n').collect();
+        let kids = super::children(&lines).unwrap();
+        let mut parts: Vec<Vec<String>> = (kids.iter())
+            .map(|&(a, b)| lines[a..=b].iter().map(|l| l.to_string()).collect())
+            .collect();
+        for &(k, i, t) in &p.lines {
+            parts[k][i] = t.to_string();
+        }
+        for (k, t) in &p.children {
+            parts[*k] = t.split('\n').map(str::to_string).collect();
+        }
+        let mut out = vec![p.root.unwrap_or(lines[0]).to_string()];
+        out.extend(parts.into_iter().flatten());
+        out.push("</svg>".into());
+        out.join("\n") + "\n"
+    }
+
+    /// Bundled scenes with their first handle moved as a drag moves it: the patch applied to
+    /// the old figure gives the new one, byte for byte, and it is smaller than the figure (the
+    /// shed roof's first joint is a support: the whole truss and its four plans move).
+    #[test]
+    fn a_dragged_scene_is_patched_to_its_new_figure() {
+        for (name, h) in [
+            ("lh_aufgabe4_shed_roof", 0),
+            ("lh_abb22_funicular", 0),
+            ("lh_aufgabe3_slewing_crane", 0),
+        ] {
+            let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
+            let text = std::fs::read_to_string(&path).unwrap();
+            let (json, old) = crate::web::replay_apart(&text, name, Some(0));
+            let answer: serde_json::Value = serde_json::from_str(&json).unwrap();
+            let drag = &answer["handles"][h]["drag"];
+            let mut scene: serde_json::Value = serde_json::from_str(&text).unwrap();
+            let field = drag["field"].as_str().unwrap();
+            assert_eq!(drag["kind"], "point", "{name}");
+            let d = drag["per_mm"].as_f64().unwrap();
+            let v = scene.pointer(field).unwrap().as_array().unwrap();
+            let moved: Vec<f64> = v.iter().map(|x| x.as_f64().unwrap() + d).collect();
+            *scene.pointer_mut(field).unwrap() = serde_json::json!(moved);
+            let (_, new) = crate::web::replay_apart(&scene.to_string(), name, Some(0));
+            assert_ne!(old, new, "{name}: the drag changed nothing");
+            let p = figure_patch(&old, &new).unwrap_or_else(|| panic!("{name}: no patch"));
+            assert!(!p.lines.is_empty(), "{name}");
+            assert_eq!(applied(&old, &p), new, "{name}");
+            let size = serde_json::to_string(&p).unwrap().len();
+            assert!(size < new.len(), "{name}: a patch of {size} bytes");
+        }
+    }
+}
