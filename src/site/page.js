@@ -260,16 +260,23 @@ function patch(text) {
     var c = shown.kids[i], now = lines.slice(ranges[i][0], ranges[i][1] + 1), changed = changes(c, now);
     if (changed) {
       if (!update(c, now, changed)) { shown = null; return false; }
-    } else {
-      var holder = document.createElementNS(NS, 'svg');
-      holder.innerHTML = now.join('\n');
-      var el = holder.firstElementChild, kept = el && keep(el, now);
-      if (!kept) { shown = null; return false; }
-      c.el.replaceWith(el);
-      shown.kids[i] = kept;
-      fresh.push(el);
+    } else if (!replaceChild(i, now)) {
+      return false;
     }
   }
+  return true;
+}
+// Puts root child i anew from its lines: parsed alone, taken in, put in place of the one
+// shown and marked fresh (its layers are set up anew). False, and nothing kept of the figure
+// shown, where the lines do not give one element.
+function replaceChild(i, lines) {
+  var holder = document.createElementNS(NS, 'svg');
+  holder.innerHTML = lines.join('\n');
+  var el = holder.firstElementChild, kept = el && shown.kids[i] && keep(el, lines);
+  if (!kept) { shown = null; return false; }
+  shown.kids[i].el.replaceWith(el);
+  shown.kids[i] = kept;
+  fresh.push(el);
   return true;
 }
 // Puts the figure in place from the engine's patch `p` against the figure shown (what changed,
@@ -288,13 +295,7 @@ function applyPatch(p) {
     if (!update(c, now, changed)) { shown = null; return false; }
   }
   for (var i = 0; i < p.children.length; i++) {
-    var j = p.children[i][0], lines = p.children[i][1].split('\n'), holder = document.createElementNS(NS, 'svg');
-    holder.innerHTML = p.children[i][1];
-    var el = holder.firstElementChild, kept = el && shown.kids[j] && keep(el, lines);
-    if (!kept) { shown = null; return false; }
-    shown.kids[j].el.replaceWith(el);
-    shown.kids[j] = kept;
-    fresh.push(el);
+    if (!replaceChild(p.children[i][0], p.children[i][1].split('\n'))) return false;
   }
   return true;
 }
