@@ -76,6 +76,12 @@ pub const REL_TIE_EPS_MOTION: f64 = 1e-9;
 /// digits above where the 2×2 solve loses its last digit.
 pub const PARALLEL_DEG_EPS: f64 = 1e-9;
 
+/// A crossing of two curves over the crank angle (the turning force and its mean, LH J) is
+/// located to this many degrees. The energy curve is stationary there, so ΔE moves by
+/// ½·T′·δ², some 1e-20 of it: the tolerance only bounds the search, far below what the
+/// value can show.
+pub const CROSSING_DEG_EPS: f64 = 1e-10;
+
 /// A segment or force shorter than this on the sheet (mm) is not drawn: a zero force (N at a
 /// dead centre) has no direction for its arrowhead. A nanometre of paper, far below a pen.
 pub const MIN_DRAWN_MM: f64 = 1e-9;
