@@ -4,7 +4,7 @@ use super::extent::*;
 use super::labels::{self, Placement};
 use super::style::class as class_of;
 use super::style::*;
-use super::xml::{El, Num};
+use super::xml::{El, Num, Written};
 use crate::fmt::{num, sheet_text, subscripts};
 use crate::kernel::construct::clip_to_rect;
 use crate::kernel::tolerance::{MIN_DRAWN_MM, NICE_SCALE_SLACK};
@@ -61,10 +61,15 @@ impl Frame {
     }
     fn xy(&self, p: &Point) -> String {
         let mut s = String::with_capacity(24);
-        crate::fmt::num_into(&mut s, self.x(p).0, 3);
-        s.push(',');
-        crate::fmt::num_into(&mut s, self.y(p).0, 3);
+        self.xy_into(&mut s, p);
         s
+    }
+    /// `x,y` of p on the page, at the end of `out` (a path's data written without a string
+    /// for each point).
+    fn xy_into(&self, out: &mut String, p: &Point) {
+        crate::fmt::num_into(out, self.x(p).0, 3);
+        out.push(',');
+        crate::fmt::num_into(out, self.y(p).0, 3);
     }
     fn contains(&self, p: &Point) -> bool {
         let [x0, y0, x1, y1] = self.clip;
@@ -372,7 +377,11 @@ fn draw_circle(
         let b = circle.point_at_deg(m + h);
         let r = num(circle.radius, 3);
         // Counter-clockwise on the sheet (y up) is clockwise on the page: sweep flag 1.
-        d.push_str(&format!("M{} A{r},{r} 0 0,1 {} ", f.xy(&a), f.xy(&b)));
+        d.push('M');
+        f.xy_into(&mut d, &a);
+        d.push_str(&format!(" A{r},{r} 0 0,1 "));
+        f.xy_into(&mut d, &b);
+        d.push(' ');
     }
     if d.is_empty() {
         g
@@ -540,7 +549,11 @@ fn hatching(f: &Frame, a: Point, b: Point) -> El {
     };
     for i in 0..=k {
         let p = a + u * (i as f64 * step);
-        d.push_str(&format!("M{} L{} ", f.xy(&p), f.xy(&(p + slant))));
+        d.push('M');
+        f.xy_into(&mut d, &p);
+        d.push_str(" L");
+        f.xy_into(&mut d, &(p + slant));
+        d.push(' ');
     }
     El::new("path").set("class", "hatch").set("d", d.trim_end())
 }
@@ -550,7 +563,7 @@ fn polygon_path(f: &Frame, pts: &[Point]) -> String {
     let mut d = String::new();
     for (i, p) in pts.iter().enumerate() {
         d.push_str(if i == 0 { "M" } else { " L" });
-        d.push_str(&f.xy(p));
+        f.xy_into(&mut d, p);
     }
     d
 }
@@ -571,12 +584,19 @@ fn smooth_path(f: &Frame, pts: &[Point]) -> String {
             pts[i.clamp(0, n as isize - 1) as usize]
         }
     };
-    let mut d = format!("M{}", f.xy(&pts[0]));
+    let mut d = String::with_capacity(30 * n);
+    d.push('M');
+    f.xy_into(&mut d, &pts[0]);
     for i in 0..(n - 1) as isize {
         let (p0, p1, p2, p3) = (get(i - 1), get(i), get(i + 1), get(i + 2));
         let c1 = p1 + (p2 - p0) / 6.0;
         let c2 = p2 - (p3 - p1) / 6.0;
-        d.push_str(&format!(" C{} {} {}", f.xy(&c1), f.xy(&c2), f.xy(&p2)));
+        d.push_str(" C");
+        f.xy_into(&mut d, &c1);
+        d.push(' ');
+        f.xy_into(&mut d, &c2);
+        d.push(' ');
+        f.xy_into(&mut d, &p2);
     }
     d
 }
@@ -694,12 +714,17 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> El {
 }
 
 fn layer(board: &Board, f: &Frame, labels: &Placement, step: &Step, current: bool) -> El {
-    let id = step.id.to_string();
+    let id = |prefix: &'static str| {
+        Written(move |out: &mut String| {
+            out.push_str(prefix);
+            crate::fmt::push_uint_padded(out, u64::from(step.id.0), 3);
+        })
+    };
     let mut g = El::new("g")
-        .set("id", format!("step-{id}"))
+        .set("id", id("step-"))
         .set("inkscape:groupmode", "layer")
-        .set("inkscape:label", sheet_text(&step.title()).into_owned())
-        .set("data-step", id.clone());
+        .set("inkscape:label", &*sheet_text(&step.title()))
+        .set("data-step", id(""));
     if current {
         g = g.set("class", "current");
     }

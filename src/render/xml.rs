@@ -79,6 +79,16 @@ impl AttrValue for Num {
     }
 }
 
+/// A value its closure writes straight into the element's buffer, unescaped: for text that
+/// needs no escape (digits, ASCII names), without a string of its own.
+pub(crate) struct Written<F>(pub F);
+
+impl<F: FnOnce(&mut String)> AttrValue for Written<F> {
+    fn write_escaped(self, out: &mut String) {
+        (self.0)(out);
+    }
+}
+
 impl std::fmt::Display for Num {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let mut s = String::new();
