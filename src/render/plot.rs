@@ -193,12 +193,18 @@ pub fn accuracy_plot_svg(title: &str, sweeps: &[Sweep]) -> String {
         );
     }
     axes(&mut o, &f);
-    let mut taken: Vec<[f64; 4]> = Vec::new();
+    // Every curve and mark first, then the settings' texts, each clear of every mark, line
+    // and text before it, whichever curve they belong to.
+    let mut marks = Marks::default();
+    let points: Vec<_> = (sweeps.iter().enumerate())
+        .map(|(k, s)| curve(&mut o, &f, s, COLOURS[k % COLOURS.len()], &mut marks))
+        .collect();
+    for (k, pts) in points.iter().enumerate() {
+        settings(&mut o, &f, pts, COLOURS[k % COLOURS.len()], &mut marks);
+    }
     let mut legend_y = f.top() + 14.0;
     for (k, s) in sweeps.iter().enumerate() {
-        let colour = COLOURS[k % COLOURS.len()];
-        curve(&mut o, &f, s, colour, &mut taken);
-        legend_y = legend(&mut o, &f, s, colour, legend_y);
+        legend_y = legend(&mut o, &f, s, COLOURS[k % COLOURS.len()], legend_y);
     }
     o.push_str("</svg>\n");
     o
@@ -262,37 +268,92 @@ fn overlaps(a: &[f64; 4], b: &[f64; 4]) -> bool {
     a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
 }
 
+/// Whether the segment p–q crosses the box b (Liang–Barsky clipping of the segment to it).
+fn crosses(b: &[f64; 4], p: (f64, f64), q: (f64, f64)) -> bool {
+    let (dx, dy) = (q.0 - p.0, q.1 - p.1);
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (den, num) in [
+        (-dx, p.0 - b[0]),
+        (dx, b[2] - p.0),
+        (-dy, p.1 - b[1]),
+        (dy, b[3] - p.1),
+    ] {
+        if den == 0.0 {
+            if num < 0.0 {
+                return false;
+            }
+        } else {
+            let t = num / den;
+            if den < 0.0 {
+                t0 = t0.max(t);
+            } else {
+                t1 = t1.min(t);
+            }
+        }
+    }
+    t0 < t1
+}
+
+/// What the plot holds that a setting's text must keep clear of (px): the boxes of the marks
+/// and of the texts written, and the curves' segments.
+#[derive(Default)]
+struct Marks {
+    boxes: Vec<[f64; 4]>,
+    segments: Vec<((f64, f64), (f64, f64))>,
+}
+
+impl Marks {
+    fn clear(&self, b: &[f64; 4]) -> bool {
+        !self.boxes.iter().any(|t| overlaps(t, b))
+            && !self.segments.iter().any(|&(p, q)| crosses(b, p, q))
+    }
+}
+
 /// Where a setting's text goes beside its point: the first of six places (right above,
-/// right below, left above, left below, above, below) clear of the texts and points already
-/// on the plot and inside it; `None` where none is.
-fn free_place(f: &Frame, (x, y): (f64, f64), text: &str, taken: &[[f64; 4]]) -> Option<(f64, f64)> {
+/// right below, left above, left below, above, below), then the same six twice as far out,
+/// inside the plot and clear of every mark, curve and text already on it; `None` where none
+/// is (the table has every setting).
+fn free_place(f: &Frame, (x, y): (f64, f64), text: &str, marks: &Marks) -> Option<(f64, f64)> {
     let w = text.chars().count() as f64 * CHAR_8;
-    let places = [
-        (x + 4.0, y - 4.0),
-        (x + 4.0, y + 10.0),
-        (x - 4.0 - w, y - 4.0),
-        (x - 4.0 - w, y + 10.0),
-        (x - w / 2.0, y - 6.0),
-        (x - w / 2.0, y + 13.0),
-    ];
+    let places = |d: f64| {
+        [
+            (x + d, y - d),
+            (x + d, y + 6.0 + d),
+            (x - d - w, y - d),
+            (x - d - w, y + 6.0 + d),
+            (x - w / 2.0, y - 2.0 - d),
+            (x - w / 2.0, y + 9.0 + d),
+        ]
+    };
     let inside =
         |b: &[f64; 4]| b[0] >= LEFT && b[2] <= LEFT + PLOT_W + 30.0 && b[1] >= f.top() - 10.0;
-    places.into_iter().find(|&(px, py)| {
+    (places(4.0).into_iter().chain(places(9.0))).find(|&(px, py)| {
         let b = text_box(px, py, text);
-        inside(&b) && !taken.iter().any(|t| overlaps(t, &b))
+        inside(&b) && marks.clear(&b)
     })
 }
 
-fn curve(o: &mut String, f: &Frame, s: &Sweep, colour: &str, taken: &mut Vec<[f64; 4]>) {
-    let pts: Vec<(f64, f64, &str, bool)> = (s.points.iter())
+/// One sweep's points on the plot (px): x, y, the setting, whether the error is exactly 0.
+type PlotPoints<'a> = Vec<(f64, f64, &'a str, bool)>;
+
+/// A sweep's line and marks; its points, for [`settings`].
+fn curve<'a>(
+    o: &mut String,
+    f: &Frame,
+    s: &'a Sweep,
+    colour: &str,
+    marks: &mut Marks,
+) -> PlotPoints<'a> {
+    let pts: PlotPoints = (s.points.iter())
         .map(|p| {
             let rel = s.relative(p);
             (f.px(p.seconds), f.py(rel), p.setting.as_str(), rel <= 0.0)
         })
         .collect();
-    if pts.is_empty() {
-        return;
-    }
+    let on_line: Vec<(f64, f64)> = (pts.iter()).filter(|p| !p.3).map(|p| (p.0, p.1)).collect();
+    marks
+        .segments
+        .extend(on_line.windows(2).map(|w| (w[0], w[1])));
     // The line joins the points with an error; an exact zero is a point on its row.
     let d: Vec<String> = (pts.iter())
         .filter(|p| !p.3)
@@ -311,11 +372,16 @@ fn curve(o: &mut String, f: &Frame, s: &Sweep, colour: &str, taken: &mut Vec<[f6
             o,
             r#"<circle cx="{x:.1}" cy="{y:.1}" r="2.6" fill="{fill}" stroke="{colour}"/>"#
         );
-        taken.push([x - 3.0, y - 3.0, x + 3.0, y + 3.0]);
+        marks.boxes.push([x - 3.0, y - 3.0, x + 3.0, y + 3.0]);
     }
-    for (x, y, label, _) in &pts {
-        if let Some((lx, ly)) = free_place(f, (*x, *y), label, taken) {
-            taken.push(text_box(lx, ly, label));
+    pts
+}
+
+/// The settings' texts at a sweep's points, where there is room.
+fn settings(o: &mut String, f: &Frame, pts: &PlotPoints, colour: &str, marks: &mut Marks) {
+    for (x, y, label, _) in pts {
+        if let Some((lx, ly)) = free_place(f, (*x, *y), label, marks) {
+            marks.boxes.push(text_box(lx, ly, label));
             let _ = write!(
                 o,
                 r#"<text x="{lx:.1}" y="{ly:.1}" font-size="8" fill="{colour}">{}</text>"#,
@@ -411,6 +477,64 @@ mod tests {
             svg.contains(r##"fill="white" stroke="#b03030""##),
             "the zero's open mark"
         );
+    }
+
+    /// The value of attribute `key` in each element of `svg` that has it.
+    fn attrs<'a>(svg: &'a str, key: &str) -> Vec<&'a str> {
+        let pat = format!(" {key}=\"");
+        (svg.match_indices(&pat))
+            .map(|(i, _)| {
+                let rest = &svg[i + pat.len()..];
+                &rest[..rest.find('"').unwrap()]
+            })
+            .collect()
+    }
+
+    /// Two curves that cross: every setting written is clear of both lines and of every mark,
+    /// not only of the curve it belongs to.
+    #[test]
+    fn a_setting_keeps_clear_of_every_curve_and_mark() {
+        let a = [("1", 1e-1, 1e-4), ("2", 1e-3, 1e-3), ("3", 1e-5, 1e-2)];
+        let b = [("x", 1e-5, 1e-4), ("y", 1e-3, 1e-3), ("z", 1e-1, 1e-2)];
+        let svg = accuracy_plot_svg("cross", &[sweep("n", "T", &a), sweep("m", "T", &b)]);
+        let mut segments = Vec::new();
+        for pts in attrs(&svg, "points") {
+            let v: Vec<f64> = pts.split(' ').map(|x| x.parse().unwrap()).collect();
+            let xy: Vec<(f64, f64)> = v.chunks(2).map(|c| (c[0], c[1])).collect();
+            segments.extend(xy.windows(2).map(|w| (w[0], w[1])));
+        }
+        assert_eq!(segments.len(), 4);
+        let num = |v: &str| v.parse::<f64>().unwrap();
+        let (cx, cy) = (attrs(&svg, "cx"), attrs(&svg, "cy"));
+        let dots: Vec<[f64; 4]> = (cx.iter().zip(&cy))
+            .map(|(x, y)| [num(x) - 3.0, num(y) - 3.0, num(x) + 3.0, num(y) + 3.0])
+            .collect();
+        let settings: Vec<&str> = svg.split(r#"font-size="8""#).skip(1).collect();
+        assert!(settings.len() >= 4, "{} of 6 written", settings.len());
+        for (i, t) in svg.match_indices("<text x=\"") {
+            let tag = &svg[i..];
+            if !tag[..tag.find('>').unwrap()].contains(r#"font-size="8""#) {
+                continue;
+            }
+            let label = &tag[tag.find('>').unwrap() + 1..tag.find("</text>").unwrap()];
+            let (x, y) = (num(attrs(tag, "x")[0]), num(attrs(tag, "y")[0]));
+            let b = text_box(x, y, label);
+            assert!(
+                segments.iter().all(|&(p, q)| !crosses(&b, p, q)),
+                "{label} {t}"
+            );
+            assert!(dots.iter().all(|d| !overlaps(d, &b)), "{label} on a mark");
+        }
+    }
+
+    #[test]
+    fn the_segment_test_sees_a_crossing_and_a_miss() {
+        let b = [0.0, 0.0, 10.0, 5.0];
+        assert!(crosses(&b, (-5.0, 2.0), (15.0, 2.0)), "through");
+        assert!(crosses(&b, (5.0, 2.0), (50.0, 50.0)), "from inside");
+        assert!(!crosses(&b, (-5.0, -1.0), (15.0, -1.0)), "above");
+        assert!(!crosses(&b, (11.0, -10.0), (30.0, 10.0)), "beside, slanted");
+        assert!(!crosses(&b, (5.0, 6.0), (5.0, 20.0)), "vertical, below");
     }
 
     #[test]
