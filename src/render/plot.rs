@@ -2,6 +2,8 @@
 //! same as a table.
 
 use crate::fmt::{num, sci};
+use crate::kernel::construct::clip_to_rect;
+use crate::kernel::Point;
 use crate::scene::Sweep;
 use std::fmt::Write;
 
@@ -268,30 +270,11 @@ fn overlaps(a: &[f64; 4], b: &[f64; 4]) -> bool {
     a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
 }
 
-/// Whether the segment p–q crosses the box b (Liang–Barsky clipping of the segment to it).
+/// Whether the segment p–q crosses the box b: the kernel's clipping of a segment to a
+/// rectangle leaves a piece of it inside (a touch at a corner or an edge is no crossing).
 fn crosses(b: &[f64; 4], p: (f64, f64), q: (f64, f64)) -> bool {
-    let (dx, dy) = (q.0 - p.0, q.1 - p.1);
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    for (den, num) in [
-        (-dx, p.0 - b[0]),
-        (dx, b[2] - p.0),
-        (-dy, p.1 - b[1]),
-        (dy, b[3] - p.1),
-    ] {
-        if den == 0.0 {
-            if num < 0.0 {
-                return false;
-            }
-        } else {
-            let t = num / den;
-            if den < 0.0 {
-                t0 = t0.max(t);
-            } else {
-                t1 = t1.min(t);
-            }
-        }
-    }
-    t0 < t1
+    let (p, q) = (Point::new(p.0, p.1), Point::new(q.0, q.1));
+    clip_to_rect(p, q, *b).is_some_and(|(t0, t1)| t0 < t1)
 }
 
 /// What the plot holds that a setting's text must keep clear of (px): the boxes of the marks
@@ -350,14 +333,13 @@ fn curve<'a>(
             (f.px(p.seconds), f.py(rel), p.setting.as_str(), rel <= 0.0)
         })
         .collect();
+    // The line joins the points with an error; an exact zero is a point on its row.
     let on_line: Vec<(f64, f64)> = (pts.iter()).filter(|p| !p.3).map(|p| (p.0, p.1)).collect();
     marks
         .segments
         .extend(on_line.windows(2).map(|w| (w[0], w[1])));
-    // The line joins the points with an error; an exact zero is a point on its row.
-    let d: Vec<String> = (pts.iter())
-        .filter(|p| !p.3)
-        .map(|(x, y, _, _)| format!("{x:.1} {y:.1}"))
+    let d: Vec<String> = (on_line.iter())
+        .map(|(x, y)| format!("{x:.1} {y:.1}"))
         .collect();
     if d.len() > 1 {
         let _ = write!(
