@@ -565,14 +565,16 @@ fn turning_integral(
     eta * each.sum::<f64>()
 }
 
-/// Where g changes sign between a and b (g(a) and g(b) given, of opposite signs; a zero
+/// Where g changes sign between a < b (g(a) and g(b) given, of opposite signs; a zero
 /// counts as positive), to within half of [`CROSSING_DEG_EPS`]: the ITP method (Oliveira and
 /// Takahashi, 2020; interpolate, truncate, project), regula falsi pulled towards the midpoint
 /// and kept within the bisection's worst case. A smooth crossing takes some 8 evaluations
 /// of g, where bisection down to the last bit takes 60; a kink or a flat crossing (a
-/// digitised indicator diagram's corner, a cubic touch) never more than bisection to the
-/// same width and one (34 for a half-degree bracket).
+/// digitised indicator diagram's corner, a cubic touch) by the method's bound no more than
+/// bisection to the same width and one (34 for a half-degree bracket), and two more at most
+/// where rounding keeps the bracket from closing.
 fn crossing(g: &impl Fn(f64) -> f64, (a, fa): (f64, f64), (b, fb): (f64, f64)) -> f64 {
+    debug_assert!(a < b, "{a} {b}");
     // Oriented so that h < 0 at a and h > 0 at b.
     let s = if fa < 0.0 { 1.0 } else { -1.0 };
     let h = |x: f64| s * g(x);
@@ -584,17 +586,16 @@ fn crossing(g: &impl Fn(f64) -> f64, (a, fa): (f64, f64), (b, fb): (f64, f64)) -
         return b;
     }
     let eps = 0.5 * CROSSING_DEG_EPS;
-    let k1 = 0.2 / (b - a).abs();
-    let n_max = ((b - a).abs() / (2.0 * eps)).log2().ceil().max(0.0) as i32 + 1;
+    let k1 = 0.2 / (b - a);
+    let n_max = ((b - a) / (2.0 * eps)).log2().ceil().max(0.0) as i32 + 1;
     let mut j = 0;
-    while (b - a).abs() > 2.0 * eps && j <= n_max + 1 {
+    while b - a > 2.0 * eps && j <= n_max + 1 {
         let mid = 0.5 * (a + b);
-        let r = (eps * 2f64.powi(n_max - j) - 0.5 * (b - a).abs()).max(0.0);
+        let r = (eps * 2f64.powi(n_max - j) - 0.5 * (b - a)).max(0.0);
         let delta = k1 * (b - a) * (b - a);
         let falsi = (yb * a - ya * b) / (yb - ya);
-        let towards = (mid - falsi).signum() * (b - a).signum();
         let truncated = if delta <= (mid - falsi).abs() && falsi.is_finite() {
-            falsi + towards * delta * (b - a).signum()
+            falsi + (mid - falsi).signum() * delta
         } else {
             mid
         };
@@ -618,9 +619,10 @@ fn crossing(g: &impl Fn(f64) -> f64, (a, fa): (f64, f64), (b, fb): (f64, f64)) -
 
 /// The flywheel's energy curve E(θ) = ∫₀^θ (T − T_m) r dθ (m·kg, r in m) for the turning
 /// force of the engine, exactly: its extremes lie where T crosses T_m, found by sampling every
-/// half degree and closing in on each sign change ([`crossing`]), and E there by [`integrate_split`]. Returns (ΔE = E_max − E_min,
-/// shaft angle of the largest speed, of the smallest). A crossing pair closer than half a
-/// degree is not seen (its excess area is below 1e-5 of the diagram's).
+/// half degree and closing in on each sign change ([`crossing`]), and E there by
+/// [`integrate_split`]. Returns (ΔE = E_max − E_min, shaft angle of the largest speed, of the
+/// smallest). A crossing pair closer than half a degree is not seen (its excess area is
+/// below 1e-5 of the diagram's).
 pub fn energy_extremes(k: &Kinematics, cyls: &[Cylinder], eta: f64, t_m: f64) -> (f64, f64, f64) {
     let g = |t: f64| turning_force(k, cyls, eta, t) - t_m;
     let mut roots = Vec::new();
