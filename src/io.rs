@@ -189,8 +189,8 @@ impl Batch {
         Ok(())
     }
 
-    /// Writes every file: all temporaries first, made durable together ([`make_durable`]),
-    /// then the renames, then the folders synced so the renames last too.
+    /// Writes every file: all temporaries first, made durable together (one sync of their
+    /// file system), then the renames, then the folders synced so the renames last too.
     ///
     /// # Errors
     /// The first file that could not be written; then no target has changed.

@@ -619,7 +619,7 @@ fn crossing(g: &impl Fn(f64) -> f64, (a, fa): (f64, f64), (b, fb): (f64, f64)) -
 
 /// The flywheel's energy curve E(θ) = ∫₀^θ (T − T_m) r dθ (m·kg, r in m) for the turning
 /// force of the engine, exactly: its extremes lie where T crosses T_m, found by sampling every
-/// half degree and closing in on each sign change ([`crossing`]), and E there by
+/// half degree and closing in on each sign change by the ITP method, and E there by
 /// [`integrate_split`]. Returns (ΔE = E_max − E_min, shaft angle of the largest speed, of the
 /// smallest). A crossing pair closer than half a degree is not seen (its excess area is
 /// below 1e-5 of the diagram's).

@@ -576,4 +576,4 @@ fn flag_table(b: &mut Board, fr: &Frame, fb: &FourBar, flagged: &[FourBarRow]) {
 
 /// The part of the sheet that holds the table of flagged positions: a column right of the
 /// mechanism's.
-const TABLE: Part = Part::at(0, 1);
+const TABLE: Part = Part::free(0, 1);

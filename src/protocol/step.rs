@@ -178,6 +178,12 @@ pub struct Part {
     /// diagram's base line through the centre of the crank beside it) stays shared.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub packed: bool,
+    /// Whether the part shares nothing with a row or a column (a table of results): the
+    /// layout sets it in a hole of the sheet the other parts leave, where its box fits clear
+    /// of every part and line, nearest to where its row and column would put it; only where
+    /// no hole takes it does it stand in its row and column.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub free: bool,
 }
 
 impl Part {
@@ -187,6 +193,7 @@ impl Part {
             row,
             col,
             packed: false,
+            free: false,
         }
     }
     /// The part in row `row` and column `col`, set out in its row alone ([`Part::packed`]).
@@ -195,6 +202,17 @@ impl Part {
             row,
             col,
             packed: true,
+            free: false,
+        }
+    }
+    /// The part in row `row` and column `col` unless the sheet has a hole its box fits in
+    /// ([`Part::free`]).
+    pub const fn free(row: u16, col: u16) -> Part {
+        Part {
+            row,
+            col,
+            packed: false,
+            free: true,
         }
     }
     /// Whether it is the first row's first column (where a figure that names no part is).

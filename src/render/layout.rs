@@ -13,17 +13,29 @@
 //! polygon and plan, of another size in every load case) belongs to no column: its top is
 //! set level with its row's, and it stands a gap right of the part before it in the row.
 //!
+//! A free part ([`Part::free`]: a table of results, which shares no axis with anything) is
+//! set last, in part order, where it grows the sheet least: in a hole the rows and columns
+//! leave (beside a short row, under a short column) where its box stands a gap clear of
+//! every part and crosses no drawn line, and of such places the one nearest to where its
+//! own row and column would put it. The Diesel engine's table of T_m moves from a row of its
+//! own under the turning-force diagram to the room beside it (KG Abb. 1058: 200 → 165 mm).
+//!
 //! A part's extent is that of its solid drawing (points, segments, vectors, circles, arcs,
 //! curves, tables; not the lines, which the figure clips to the reach of the solids) with
 //! [`PART_MARGIN`] around it for the lettering.
 
-use super::extent::extent_points;
-use crate::kernel::Vector;
+use super::extent::{extent_points, line_ends};
+use crate::kernel::construct::clip_to_rect;
+use crate::kernel::{Point, Vector};
 use crate::protocol::{Board, Geom, Part};
 use std::collections::BTreeMap;
 
 /// The gap between two rows or two columns of parts (mm of the sheet).
 pub const PART_GAP: f64 = 12.0;
+
+/// Places for a free part whose sheets differ in area by less than this share count as
+/// equal, and the one nearer to its row and column is taken.
+pub const SHEET_GROWTH_TIE: f64 = 0.01;
 
 /// Room for the lettering around a part's solid drawing (mm).
 pub const PART_MARGIN: f64 = 6.0;
@@ -145,23 +157,149 @@ fn offsets(boxes: &[PartBox]) -> (BTreeMap<u16, f64>, BTreeMap<u16, f64>) {
     (dy, dx)
 }
 
+/// How far each part that is not free is moved by the rows and columns: [`packed`] parts
+/// in their rows alone, the others with their row (down) and column (across).
+fn grid_shifts(boxes: &[PartBox]) -> BTreeMap<Part, Vector> {
+    let mut boxes = boxes.to_vec();
+    let mut shift = packed(&mut boxes);
+    let (dy, dx) = offsets(&boxes);
+    for b in &boxes {
+        let row = Vector::new(0.0, dy.get(&b.part.row).copied().unwrap_or(0.0));
+        let own = shift.get(&b.part).copied();
+        let across = Vector::new(dx.get(&b.part.col).copied().unwrap_or(0.0), 0.0);
+        shift.insert(b.part, own.unwrap_or(across) + row);
+    }
+    shift
+}
+
+/// `bounds` moved by `d`.
+fn moved(bounds: [f64; 4], d: Vector) -> [f64; 4] {
+    [
+        bounds[0] + d.x,
+        bounds[1] + d.y,
+        bounds[2] + d.x,
+        bounds[3] + d.y,
+    ]
+}
+
+/// Whether the boxes `a` and `b` come closer than [`PART_GAP`].
+fn too_near(a: &[f64; 4], b: &[f64; 4]) -> bool {
+    let g = PART_GAP - 1e-9;
+    a[0] < b[2] + g && b[0] < a[2] + g && a[1] < b[3] + g && b[1] < a[3] + g
+}
+
+/// The lines each part draws, as drawn (their ends past the outermost points on them), to
+/// keep a free part's box off them.
+fn part_lines(board: &Board) -> Vec<(Part, Point, Point)> {
+    (board.objects().iter())
+        .filter_map(|o| {
+            let (a, b) = line_ends(o)?;
+            Some((board.step(o.step)?.part, a, b))
+        })
+        .collect()
+}
+
+/// Where the free part `free` goes beside the boxes `placed`: a gap clear of every placed
+/// box and off every line, where it grows the sheet (the boxes' bounding box) least, and of
+/// such places (within [`SHEET_GROWTH_TIE`]) the one nearest to `wanted`, where the rows and
+/// columns would put it. The places tried are `wanted` and those that set the box's edges a
+/// gap from a placed box's edges or on the sheet's; `None` where none is clear.
+fn hole(
+    placed: &[[f64; 4]],
+    lines: &[(Point, Point)],
+    free: [f64; 4],
+    wanted: [f64; 4],
+) -> Option<Vector> {
+    let union = |s: [f64; 4], b: &[f64; 4]| {
+        [
+            s[0].min(b[0]),
+            s[1].min(b[1]),
+            s[2].max(b[2]),
+            s[3].max(b[3]),
+        ]
+    };
+    let sheet = placed.iter().fold(*placed.first()?, union);
+    let (w, h) = (free[2] - free[0], free[3] - free[1]);
+    let mut xs = vec![sheet[0], sheet[2] - w];
+    let mut ys = vec![sheet[1], sheet[3] - h];
+    for b in placed {
+        xs.extend([b[2] + PART_GAP, b[0] - PART_GAP - w]);
+        ys.extend([b[3] + PART_GAP, b[1] - PART_GAP - h]);
+    }
+    let area = |c: &[f64; 4]| {
+        let u = union(sheet, c);
+        (u[2] - u[0]) * (u[3] - u[1])
+    };
+    let centre = |c: &[f64; 4]| Point::new(0.5 * (c[0] + c[2]), 0.5 * (c[1] + c[3]));
+    let places: Vec<[f64; 4]> = std::iter::once(wanted)
+        .chain(
+            xs.iter()
+                .flat_map(|&x| ys.iter().map(move |&y| [x, y, x + w, y + h])),
+        )
+        .filter(|c| !placed.iter().any(|b| too_near(c, b)))
+        .collect();
+    let least = places.iter().map(area).fold(f64::INFINITY, f64::min);
+    let mut near: Vec<(f64, [f64; 4])> = (places.into_iter())
+        .filter(|c| area(c) <= least * (1.0 + SHEET_GROWTH_TIE))
+        .map(|c| ((centre(&c) - centre(&wanted)).norm(), c))
+        .collect();
+    near.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let clear = |c: &[f64; 4]| {
+        !(lines.iter()).any(|&(a, b)| clip_to_rect(a, b, *c).is_some_and(|(t0, t1)| t0 < t1))
+    };
+    let (_, c) = near.into_iter().find(|(_, c)| clear(c))?;
+    Some(Vector::new(c[0] - free[0], c[1] - free[1]))
+}
+
+/// How far each part is moved: the rows and columns set out, then each free part
+/// ([`Part::free`]) into a hole of the sheet, in part order. A free part no hole takes joins
+/// the rows and columns, and the holes are sought again.
+fn shifts(boxes: &[PartBox], lines: &[(Part, Point, Point)]) -> BTreeMap<Part, Vector> {
+    let everything = grid_shifts(boxes);
+    let (mut grid, mut free): (Vec<PartBox>, Vec<PartBox>) =
+        boxes.iter().partition(|b| !b.part.free);
+    loop {
+        if grid.is_empty() || free.is_empty() {
+            return everything;
+        }
+        let mut shift = grid_shifts(&grid);
+        let mut placed: Vec<[f64; 4]> = (grid.iter())
+            .map(|b| moved(b.bounds, shift[&b.part]))
+            .collect();
+        let mut drawn: Vec<(Point, Point)> = (lines.iter())
+            .filter_map(|(p, a, b)| shift.get(p).map(|d| (a + d, b + d)))
+            .collect();
+        let misfit = free.iter().position(|f| {
+            let wanted = moved(f.bounds, everything[&f.part]);
+            let Some(d) = hole(&placed, &drawn, f.bounds, wanted) else {
+                return true;
+            };
+            shift.insert(f.part, d);
+            placed.push(moved(f.bounds, d));
+            drawn.extend(
+                (lines.iter())
+                    .filter(|l| l.0 == f.part)
+                    .map(|l| (l.1 + d, l.2 + d)),
+            );
+            false
+        });
+        match misfit {
+            None => return shift,
+            Some(k) => grid.push(free.remove(k)),
+        }
+    }
+}
+
 /// The board with its parts set out, or `None` where it draws in one part only (then it is
 /// drawn as constructed).
 pub fn laid_out(board: &Board) -> Option<Board> {
-    let mut boxes = part_boxes(board);
+    let boxes = part_boxes(board);
     if boxes.len() < 2 {
         return None;
     }
-    let own = packed(&mut boxes);
-    let (dy, dx) = offsets(&boxes);
+    let shift = shifts(&boxes, &part_lines(board));
     let mut moved = board.clone();
-    moved.move_parts(|p| {
-        let row = Vector::new(0.0, dy.get(&p.row).copied().unwrap_or(0.0));
-        match own.get(&p) {
-            Some(v) => v + row,
-            None => Vector::new(dx.get(&p.col).copied().unwrap_or(0.0), 0.0) + row,
-        }
-    });
+    moved.move_parts(|p| shift.get(&p).copied().unwrap_or_else(Vector::zeros));
     Some(moved)
 }
 
@@ -236,6 +374,70 @@ mod tests {
         }
         // The narrow row is not spread to the wide row's columns.
         assert!(boxes[5].bounds[2] < boxes[1].bounds[2], "{boxes:?}");
+    }
+
+    /// A board of two rows: a wide part (row 0) over a narrow one (row 1, left), and a
+    /// free table of three rows constructed far away; where `ruled`, the narrow part draws
+    /// a line level with its foot out to a point of the wide part, through the hole beside
+    /// it.
+    fn with_a_table(ruled: bool) -> Board {
+        let n = Note::new("p", Topic::Custom("layout"));
+        let mut b = Board::recording();
+        b.set_part(Part::at(0, 0));
+        b.point(Point::new(0.0, 0.0), Role::Given, n.clone());
+        b.point(Point::new(300.0, 60.0), Role::Given, n.clone());
+        let r = b.point(Point::new(300.0, 0.0), Role::Given, n.clone());
+        b.set_part(Part::at(1, 0));
+        let p = b.point(Point::new(0.0, 0.0), Role::Given, n.clone());
+        b.point(Point::new(100.0, 40.0), Role::Given, n.clone());
+        if ruled {
+            b.line_through(&p, &r, Role::Construction, n.clone())
+                .expect("two points");
+        }
+        b.set_part(Part::free(2, 0));
+        let rows = vec![vec!["T_m".to_string(), "1234.5".to_string()]; 3];
+        b.table(Point::new(-500.0, -500.0), rows, &[], n);
+        b
+    }
+
+    #[test]
+    fn a_free_part_takes_a_hole_beside_a_row_instead_of_a_row_of_its_own() {
+        let table = |b: &Board| part_boxes(b).into_iter().find(|p| p.part.free);
+        let moved = laid_out(&with_a_table(false)).expect("three parts");
+        let boxes = part_boxes(&moved);
+        assert_eq!(overlapping_pairs(&boxes), 0, "{boxes:?}");
+        let t = table(&moved).expect("a table").bounds;
+        // Right of the narrow part, within the wide part's width, not under both rows.
+        let narrow = boxes
+            .iter()
+            .find(|p| p.part == Part::at(1, 0))
+            .unwrap()
+            .bounds;
+        assert!(t[0] >= narrow[2] + PART_GAP - 1e-9, "{t:?} {narrow:?}");
+        assert!(t[1] >= narrow[1] - 1e-9, "{t:?} {narrow:?}");
+        // A line through the hole: the table stands clear of it, still in the hole.
+        let moved = laid_out(&with_a_table(true)).expect("three parts");
+        let boxes = part_boxes(&moved);
+        assert_eq!(overlapping_pairs(&boxes), 0, "{boxes:?}");
+        let t = table(&moved).expect("a table").bounds;
+        let narrow = boxes
+            .iter()
+            .find(|p| p.part == Part::at(1, 0))
+            .unwrap()
+            .bounds;
+        assert!(t[0] >= narrow[2] + PART_GAP - 1e-9, "{t:?} {narrow:?}");
+        let line = (moved.objects().iter())
+            .find_map(line_ends)
+            .expect("the line");
+        assert!(clip_to_rect(line.0, line.1, t).is_none(), "{t:?} {line:?}");
+        // Without it, the table would have stood on the line: the nearest place is lower.
+        let unruled = table(&laid_out(&with_a_table(false)).unwrap())
+            .unwrap()
+            .bounds;
+        assert!(
+            clip_to_rect(line.0, line.1, unruled).is_some(),
+            "{unruled:?}"
+        );
     }
 
     #[test]

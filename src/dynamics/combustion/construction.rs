@@ -403,7 +403,7 @@ fn turning_diagram(
     );
     let mean = mean_of_ordinates(b, e, rows, (&ids, top));
     let row = b.part().row;
-    b.set_part(Part::at(row + 1, 1));
+    b.set_part(Part::free(row + 1, 1));
     mean_table(b, e, (mean, exact, &ids), y - top / dr.force_scale - 15.0);
     Ok(mean)
 }
