@@ -12,6 +12,11 @@
 //! A part that is set out in its row alone ([`Part::packed`]: a truss's drawing, force
 //! polygon and plan, of another size in every load case) belongs to no column: its top is
 //! set level with its row's, and it stands a gap right of the part before it in the row.
+//! Where a row of such parts would make one long strip (LH Aufgabe 3: the truss, its force
+//! polygon and four joint polygons, 713 × 152 mm), the row is tried wrapped at widths
+//! around the long side of an A-series sheet of the parts' area, a row's first two parts
+//! kept side by side; a wrapped layout is taken where it fits a sheet more than
+//! [`WRAP_GAIN`] smaller for a bounding box at most [`WRAP_GROWTH`] larger (391 × 284 mm).
 //!
 //! A free part ([`Part::free`]: a table of results, which shares no axis with anything) is
 //! set last, in part order, where it grows the sheet least: in a hole the rows and columns
@@ -94,32 +99,70 @@ pub fn overlapping_pairs(boxes: &[PartBox]) -> usize {
         .sum()
 }
 
+/// The widths a row of packed parts is tried at before it goes on in a line under it (mm):
+/// around the long side of a sheet in the A series' proportion (√2 : 1, landscape) whose
+/// area is that of all the parts' boxes.
+fn wrap_widths(boxes: &[PartBox]) -> [f64; 4] {
+    let area: f64 = (boxes.iter())
+        .map(|b| (b.bounds[2] - b.bounds[0]) * (b.bounds[3] - b.bounds[1]))
+        .sum();
+    let w = (std::f64::consts::SQRT_2 * area).sqrt();
+    [1.5 * w, 1.25 * w, w, 0.8 * w]
+}
+
+/// The shorter side of the smallest sheet in the A series' proportion, either way round,
+/// that holds `bounds` (mm): what a layout is judged by.
+fn a_side(bounds: [f64; 4]) -> f64 {
+    let (w, h) = (bounds[2] - bounds[0], bounds[3] - bounds[1]);
+    let r = std::f64::consts::SQRT_2;
+    (w / r).max(h).min(w.max(h / r))
+}
+
+/// A wrapped layout is taken only where its sheet is smaller than the unwrapped one's by
+/// more than this share ([`a_side`]), and its parts' bounding box larger by no more than
+/// [`WRAP_GROWTH`]: a row of plans stays one strip unless wrapping it fits a smaller sheet
+/// without leaving a hole beside the shorter line.
+pub const WRAP_GAIN: f64 = 0.1;
+
+/// How much larger a wrapped layout's bounding box may be than the strip's ([`WRAP_GAIN`]).
+pub const WRAP_GROWTH: f64 = 0.1;
+
 /// How far each part set out in its row alone ([`Part::packed`]) is moved: up or down to
 /// the highest top of its row's parts, and across to a gap right of the part before it in
-/// the row (the first at the sheet's left edge); `boxes` moved with them.
-fn packed(boxes: &mut [PartBox]) -> BTreeMap<Part, Vector> {
+/// the row (the first at the sheet's left edge); where that would reach `wrap` (mm) past the
+/// left edge, to the left edge a gap under the line before, except a row's second part (a
+/// truss drawing's force polygon stays beside it). `boxes` moved with them.
+fn packed(boxes: &mut [PartBox], wrap: f64) -> BTreeMap<Part, Vector> {
     let left = boxes
         .iter()
         .map(|b| b.bounds[0])
         .fold(f64::INFINITY, f64::min);
+    let wrap = left + wrap;
     let mut tops: BTreeMap<u16, f64> = BTreeMap::new();
     for b in boxes.iter() {
         let top = tops.entry(b.part.row).or_insert(b.bounds[3]);
         *top = top.max(b.bounds[3]);
     }
     let mut shift = BTreeMap::new();
-    let mut right: BTreeMap<u16, f64> = BTreeMap::new();
+    // Per row: the right end of its line, the line's top and bottom, the parts set so far.
+    let mut lines: BTreeMap<u16, (f64, f64, f64, usize)> = BTreeMap::new();
     // Boxes are in part order: by row, then column.
     for b in boxes.iter_mut().filter(|b| b.part.packed) {
-        let cursor = right.get(&b.part.row).map_or(left, |r| r + PART_GAP);
-        let d = Vector::new(cursor - b.bounds[0], tops[&b.part.row] - b.bounds[3]);
-        b.bounds = [
-            b.bounds[0] + d.x,
-            b.bounds[1] + d.y,
-            b.bounds[2] + d.x,
-            b.bounds[3] + d.y,
-        ];
-        right.insert(b.part.row, b.bounds[2]);
+        let top = tops[&b.part.row];
+        let (w, h) = (b.bounds[2] - b.bounds[0], b.bounds[3] - b.bounds[1]);
+        let line = lines.entry(b.part.row).or_insert((f64::NAN, top, top, 0));
+        let (x, y) = match line.3 {
+            0 => (left, line.1),
+            1 => (line.0 + PART_GAP, line.1),
+            _ if line.0 + PART_GAP + w > wrap => {
+                line.1 = line.2 - PART_GAP;
+                (left, line.1)
+            }
+            _ => (line.0 + PART_GAP, line.1),
+        };
+        let d = Vector::new(x - b.bounds[0], y - b.bounds[3]);
+        b.bounds = moved(b.bounds, d);
+        *line = (x + w, line.1, line.2.min(y - h), line.3 + 1);
         shift.insert(b.part, d);
     }
     shift
@@ -159,9 +202,9 @@ fn offsets(boxes: &[PartBox]) -> (BTreeMap<u16, f64>, BTreeMap<u16, f64>) {
 
 /// How far each part that is not free is moved by the rows and columns: [`packed`] parts
 /// in their rows alone, the others with their row (down) and column (across).
-fn grid_shifts(boxes: &[PartBox]) -> BTreeMap<Part, Vector> {
+fn grid_shifts(boxes: &[PartBox], wrap: f64) -> BTreeMap<Part, Vector> {
     let mut boxes = boxes.to_vec();
-    let mut shift = packed(&mut boxes);
+    let mut shift = packed(&mut boxes, wrap);
     let (dy, dx) = offsets(&boxes);
     for b in &boxes {
         let row = Vector::new(0.0, dy.get(&b.part.row).copied().unwrap_or(0.0));
@@ -254,15 +297,15 @@ fn hole(
 /// How far each part is moved: the rows and columns set out, then each free part
 /// ([`Part::free`]) into a hole of the sheet, in part order. A free part no hole takes joins
 /// the rows and columns, and the holes are sought again.
-fn shifts(boxes: &[PartBox], lines: &[(Part, Point, Point)]) -> BTreeMap<Part, Vector> {
-    let everything = grid_shifts(boxes);
+fn shifts(boxes: &[PartBox], lines: &[(Part, Point, Point)], wrap: f64) -> BTreeMap<Part, Vector> {
+    let everything = grid_shifts(boxes, wrap);
     let (mut grid, mut free): (Vec<PartBox>, Vec<PartBox>) =
         boxes.iter().partition(|b| !b.part.free);
     loop {
         if grid.is_empty() || free.is_empty() {
             return everything;
         }
-        let mut shift = grid_shifts(&grid);
+        let mut shift = grid_shifts(&grid, wrap);
         let mut placed: Vec<[f64; 4]> = (grid.iter())
             .map(|b| moved(b.bounds, shift[&b.part]))
             .collect();
@@ -297,7 +340,33 @@ pub fn laid_out(board: &Board) -> Option<Board> {
     if boxes.len() < 2 {
         return None;
     }
-    let shift = shifts(&boxes, &part_lines(board));
+    let lines = part_lines(board);
+    let sheet = |shift: &BTreeMap<Part, Vector>| {
+        let b = (boxes.iter())
+            .map(|b| moved(b.bounds, shift[&b.part]))
+            .reduce(|s, b| {
+                [
+                    s[0].min(b[0]),
+                    s[1].min(b[1]),
+                    s[2].max(b[2]),
+                    s[3].max(b[3]),
+                ]
+            })
+            .unwrap_or_default();
+        (a_side(b), (b[2] - b[0]) * (b[3] - b[1]))
+    };
+    let strip = shifts(&boxes, &lines, f64::INFINITY);
+    let rows_wrap = boxes.iter().any(|b| b.part.packed);
+    let wraps = wrap_widths(&boxes).into_iter().filter(|_| rows_wrap);
+    let (side, area) = sheet(&strip);
+    let least = (wraps.map(|w| shifts(&boxes, &lines, w)))
+        .map(|s| (sheet(&s), s))
+        .filter(|((_, a), _)| *a <= (1.0 + WRAP_GROWTH) * area)
+        .min_by(|a, b| a.0 .0.total_cmp(&b.0 .0));
+    let shift = match least {
+        Some(((s, _), wrapped)) if s < (1.0 - WRAP_GAIN) * side => wrapped,
+        _ => strip,
+    };
     let mut moved = board.clone();
     moved.move_parts(|p| shift.get(&p).copied().unwrap_or_else(Vector::zeros));
     Some(moved)
@@ -359,8 +428,13 @@ mod tests {
                 b.point(Point::new(w, -40.0), Role::Given, n.clone());
             }
         }
-        let moved = laid_out(&b).expect("six parts");
-        let boxes = part_boxes(&moved);
+        // Unwrapped (wide rows wrap where that saves paper: the next test).
+        let mut boxes = part_boxes(&b);
+        packed(&mut boxes, f64::INFINITY);
+        let (dy, _) = offsets(&boxes);
+        for b in &mut boxes {
+            b.bounds = moved(b.bounds, Vector::new(0.0, dy[&b.part.row]));
+        }
         assert_eq!(overlapping_pairs(&boxes), 0, "{boxes:?}");
         for row in boxes.chunks(3) {
             // Tops level, and each part a gap right of the one before, in every row alone.
@@ -438,6 +512,50 @@ mod tests {
             clip_to_rect(line.0, line.1, unruled).is_some(),
             "{unruled:?}"
         );
+    }
+
+    #[test]
+    fn a_long_row_of_small_plans_wraps_and_a_short_one_does_not() {
+        let n = Note::new("p", Topic::Custom("layout"));
+        // A truss drawing, its force polygon, then `k` small joint polygons, in one row.
+        let row = |k: u16| {
+            let mut b = Board::recording();
+            let sizes = [(200.0, 100.0), (50.0, 100.0)];
+            let small = std::iter::repeat_n((50.0, 50.0), usize::from(k));
+            for (col, (w, h)) in sizes.into_iter().chain(small).enumerate() {
+                b.set_part(Part::packed(0, col as u16));
+                b.point(Point::new(0.0, 0.0), Role::Given, n.clone());
+                b.point(Point::new(w, h), Role::Given, n.clone());
+            }
+            let moved = laid_out(&b).expect("parts");
+            part_boxes(&moved)
+        };
+        let long = row(8);
+        assert_eq!(overlapping_pairs(&long), 0, "{long:?}");
+        // The force polygon beside the drawing, the last polygon on a line under them.
+        assert!((long[1].bounds[3] - long[0].bounds[3]).abs() < 1e-9);
+        assert!(long[9].bounds[3] < long[0].bounds[1], "{long:?}");
+        let side = |bs: &[PartBox]| {
+            let b = bs.iter().fold(bs[0].bounds, |s, b| {
+                let b = b.bounds;
+                [
+                    s[0].min(b[0]),
+                    s[1].min(b[1]),
+                    s[2].max(b[2]),
+                    s[3].max(b[3]),
+                ]
+            });
+            a_side(b)
+        };
+        // Set out in one strip it would need a sheet more than a tenth larger.
+        let width: f64 =
+            long.iter().map(|b| b.bounds[2] - b.bounds[0]).sum::<f64>() + PART_GAP * 9.0;
+        let strip_side = a_side([0.0, 0.0, width, long[0].bounds[3] - long[0].bounds[1]]);
+        assert!(side(&long) < (1.0 - WRAP_GAIN) * strip_side, "{long:?}");
+        // One small polygon: one line, as constructed.
+        let short = row(1);
+        let tops: Vec<f64> = short.iter().map(|b| b.bounds[3]).collect();
+        assert!(tops.iter().all(|t| (t - tops[0]).abs() < 1e-9), "{short:?}");
     }
 
     #[test]
