@@ -118,10 +118,11 @@ fn a_side(bounds: [f64; 4]) -> f64 {
     (w / r).max(h).min(w.max(h / r))
 }
 
-/// A wrapped layout is taken only where its sheet is smaller than the unwrapped one's by
-/// more than this share ([`a_side`]), and its parts' bounding box larger by no more than
-/// [`WRAP_GROWTH`]: a row of plans stays one strip unless wrapping it fits a smaller sheet
-/// without leaving a hole beside the shorter line.
+/// A wrapped layout is taken only where its sheet (the shorter side of the A-series sheet
+/// that holds it) is smaller than the unwrapped one's by more than this share, and its
+/// parts' bounding box larger by no more than [`WRAP_GROWTH`]: a row of plans stays one
+/// strip unless wrapping it fits a smaller sheet without leaving a hole beside the shorter
+/// line.
 pub const WRAP_GAIN: f64 = 0.1;
 
 /// How much larger a wrapped layout's bounding box may be than the strip's ([`WRAP_GAIN`]).
