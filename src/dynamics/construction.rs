@@ -218,8 +218,8 @@ pub fn construct(
     bl.b.clear_context();
     let lowest = res.turning.iter().fold(0.0f64, |m, p| m.max(p.1.abs())) / drawing.force_scale;
     let table_at = bl.turning_origin() - crate::kernel::Vector::new(0.0, lowest + 15.0);
-    let table_row = first + (nc + 1 + request.resistance_line as usize) as u16;
-    bl.b.set_part(Part::free(table_row, 0));
+    let table = row(nc + 1 + request.resistance_line as usize);
+    bl.b.set_part(Part::free(table.row, table.col));
     summary::finish(bl.b, engine, drawing, request, &mut res, table_at);
     bl.b.set_part(Part::default());
     Ok(res)

@@ -145,25 +145,33 @@ fn packed(boxes: &mut [PartBox], wrap: f64) -> BTreeMap<Part, Vector> {
         *top = top.max(b.bounds[3]);
     }
     let mut shift = BTreeMap::new();
-    // Per row: the right end of its line, the line's top and bottom, the parts set so far.
-    let mut lines: BTreeMap<u16, (f64, f64, f64, usize)> = BTreeMap::new();
+    // Per row, the line being set: its right end (none before its first part), its top,
+    // the row's bottom so far, and how many of the row's parts are set.
+    struct Line {
+        right: Option<f64>,
+        top: f64,
+        bottom: f64,
+        parts: usize,
+    }
+    let mut lines: BTreeMap<u16, Line> = BTreeMap::new();
     // Boxes are in part order: by row, then column.
     for b in boxes.iter_mut().filter(|b| b.part.packed) {
         let top = tops[&b.part.row];
         let (w, h) = (b.bounds[2] - b.bounds[0], b.bounds[3] - b.bounds[1]);
-        let line = lines.entry(b.part.row).or_insert((f64::NAN, top, top, 0));
-        let (x, y) = match line.3 {
-            0 => (left, line.1),
-            1 => (line.0 + PART_GAP, line.1),
-            _ if line.0 + PART_GAP + w > wrap => {
-                line.1 = line.2 - PART_GAP;
-                (left, line.1)
-            }
-            _ => (line.0 + PART_GAP, line.1),
-        };
+        let line = (lines.entry(b.part.row)).or_insert(Line {
+            right: None,
+            top,
+            bottom: top,
+            parts: 0,
+        });
+        if line.parts >= 2 && line.right.is_some_and(|r| r + PART_GAP + w > wrap) {
+            (line.right, line.top) = (None, line.bottom - PART_GAP);
+        }
+        let (x, y) = (line.right.map_or(left, |r| r + PART_GAP), line.top);
         let d = Vector::new(x - b.bounds[0], y - b.bounds[3]);
         b.bounds = moved(b.bounds, d);
-        *line = (x + w, line.1, line.2.min(y - h), line.3 + 1);
+        (line.right, line.bottom) = (Some(x + w), line.bottom.min(y - h));
+        line.parts += 1;
         shift.insert(b.part, d);
     }
     shift
@@ -216,6 +224,16 @@ fn grid_shifts(boxes: &[PartBox], wrap: f64) -> BTreeMap<Part, Vector> {
     shift
 }
 
+/// The bounding box of the boxes `a` and `b`.
+fn union(a: [f64; 4], b: &[f64; 4]) -> [f64; 4] {
+    [
+        a[0].min(b[0]),
+        a[1].min(b[1]),
+        a[2].max(b[2]),
+        a[3].max(b[3]),
+    ]
+}
+
 /// `bounds` moved by `d`.
 fn moved(bounds: [f64; 4], d: Vector) -> [f64; 4] {
     [
@@ -254,14 +272,6 @@ fn hole(
     free: [f64; 4],
     wanted: [f64; 4],
 ) -> Option<Vector> {
-    let union = |s: [f64; 4], b: &[f64; 4]| {
-        [
-            s[0].min(b[0]),
-            s[1].min(b[1]),
-            s[2].max(b[2]),
-            s[3].max(b[3]),
-        ]
-    };
     let sheet = placed.iter().fold(*placed.first()?, union);
     let (w, h) = (free[2] - free[0], free[3] - free[1]);
     let mut xs = vec![sheet[0], sheet[2] - w];
@@ -345,14 +355,7 @@ pub fn laid_out(board: &Board) -> Option<Board> {
     let sheet = |shift: &BTreeMap<Part, Vector>| {
         let b = (boxes.iter())
             .map(|b| moved(b.bounds, shift[&b.part]))
-            .reduce(|s, b| {
-                [
-                    s[0].min(b[0]),
-                    s[1].min(b[1]),
-                    s[2].max(b[2]),
-                    s[3].max(b[3]),
-                ]
-            })
+            .reduce(|s, b| union(s, &b))
             .unwrap_or_default();
         (a_side(b), (b[2] - b[0]) * (b[3] - b[1]))
     };
@@ -475,40 +478,38 @@ mod tests {
         b
     }
 
+    /// `with_a_table(ruled)` laid out: its parts overlap nowhere; the table's box and the
+    /// narrow part's, and the board.
+    fn table_set_out(ruled: bool) -> ([f64; 4], [f64; 4], Board) {
+        let moved = laid_out(&with_a_table(ruled)).expect("three parts");
+        let boxes = part_boxes(&moved);
+        assert_eq!(overlapping_pairs(&boxes), 0, "{boxes:?}");
+        let bounds = |f: &dyn Fn(&Part) -> bool| {
+            let b = boxes.iter().find(|b| f(&b.part)).expect("the part");
+            b.bounds
+        };
+        let table = bounds(&|p| p.free);
+        let narrow = bounds(&|p| *p == Part::at(1, 0));
+        (table, narrow, moved)
+    }
+
     #[test]
     fn a_free_part_takes_a_hole_beside_a_row_instead_of_a_row_of_its_own() {
-        let table = |b: &Board| part_boxes(b).into_iter().find(|p| p.part.free);
-        let moved = laid_out(&with_a_table(false)).expect("three parts");
-        let boxes = part_boxes(&moved);
-        assert_eq!(overlapping_pairs(&boxes), 0, "{boxes:?}");
-        let t = table(&moved).expect("a table").bounds;
         // Right of the narrow part, within the wide part's width, not under both rows.
-        let narrow = boxes
-            .iter()
-            .find(|p| p.part == Part::at(1, 0))
-            .unwrap()
-            .bounds;
-        assert!(t[0] >= narrow[2] + PART_GAP - 1e-9, "{t:?} {narrow:?}");
-        assert!(t[1] >= narrow[1] - 1e-9, "{t:?} {narrow:?}");
+        let (unruled, narrow, _) = table_set_out(false);
+        assert!(
+            unruled[0] >= narrow[2] + PART_GAP - 1e-9,
+            "{unruled:?} {narrow:?}"
+        );
+        assert!(unruled[1] >= narrow[1] - 1e-9, "{unruled:?} {narrow:?}");
         // A line through the hole: the table stands clear of it, still in the hole.
-        let moved = laid_out(&with_a_table(true)).expect("three parts");
-        let boxes = part_boxes(&moved);
-        assert_eq!(overlapping_pairs(&boxes), 0, "{boxes:?}");
-        let t = table(&moved).expect("a table").bounds;
-        let narrow = boxes
-            .iter()
-            .find(|p| p.part == Part::at(1, 0))
-            .unwrap()
-            .bounds;
+        let (t, narrow, moved) = table_set_out(true);
         assert!(t[0] >= narrow[2] + PART_GAP - 1e-9, "{t:?} {narrow:?}");
         let line = (moved.objects().iter())
             .find_map(line_ends)
             .expect("the line");
         assert!(clip_to_rect(line.0, line.1, t).is_none(), "{t:?} {line:?}");
         // Without it, the table would have stood on the line: the nearest place is lower.
-        let unruled = table(&laid_out(&with_a_table(false)).unwrap())
-            .unwrap()
-            .bounds;
         assert!(
             clip_to_rect(line.0, line.1, unruled).is_some(),
             "{unruled:?}"
@@ -536,18 +537,8 @@ mod tests {
         // The force polygon beside the drawing, the last polygon on a line under them.
         assert!((long[1].bounds[3] - long[0].bounds[3]).abs() < 1e-9);
         assert!(long[9].bounds[3] < long[0].bounds[1], "{long:?}");
-        let side = |bs: &[PartBox]| {
-            let b = bs.iter().fold(bs[0].bounds, |s, b| {
-                let b = b.bounds;
-                [
-                    s[0].min(b[0]),
-                    s[1].min(b[1]),
-                    s[2].max(b[2]),
-                    s[3].max(b[3]),
-                ]
-            });
-            a_side(b)
-        };
+        let side =
+            |bs: &[PartBox]| a_side(bs.iter().fold(bs[0].bounds, |s, b| union(s, &b.bounds)));
         // Set out in one strip it would need a sheet more than a tenth larger.
         let width: f64 =
             long.iter().map(|b| b.bounds[2] - b.bounds[0]).sum::<f64>() + PART_GAP * 9.0;
