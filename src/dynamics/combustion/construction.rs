@@ -92,10 +92,15 @@ pub fn construct(
     let mut reads: Vec<Vec<H<f64>>> = Vec::with_capacity(e.cylinders.len());
     // Each cylinder's row: its gas pressure diagram, its piston-force diagram over the
     // developed cycle, and beside them its crank figure with the polar force plan; the
-    // turning-force diagram under the force diagrams, the table under that.
+    // turning-force diagram under the force diagrams, the table under that. One cylinder's
+    // crank figure shares no row with another's: it goes where the sheet has room (a free
+    // part), as the table does.
     for c in 0..e.cylinders.len() {
         let forces = force_diagram(b, e, dr, (c, &shafts), &mut depth)?;
-        b.set_part(Part::at(c as u16, 2));
+        b.set_part(match e.cylinders.len() {
+            1 => Part::free(c as u16, 2),
+            _ => Part::at(c as u16, 2),
+        });
         let t = tangential(b, e, dr, (c, &shafts, &forces), depth)?;
         for (row, (f, t)) in rows.iter_mut().zip(forces.iter().zip(&t)) {
             row.cylinders.push([f.0, f.1, t.g]);
