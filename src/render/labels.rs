@@ -61,6 +61,11 @@ const GRID: f64 = 1e-6;
 /// Rings of candidates farther out, in multiples of the label's offset, each drawn with a
 /// leader.
 const RINGS: [f64; 3] = [2.5, 4.0, 6.0];
+/// Where along its drawn length a line's name goes when none of the places beside its middle
+/// is free, in this order (fractions of the length): a member's number slides along its
+/// member, as the plates write the numbers of crossed diagonals off their crossing (LH Abb.
+/// 19), before it takes a leader.
+const SLIDE: [f64; 4] = [1.0 / 3.0, 2.0 / 3.0, 0.25, 0.75];
 
 /// A placed label: its text's baseline-left point on the sheet (mm), and the leader from its
 /// point where it had to move away.
@@ -110,6 +115,9 @@ struct Request {
     anchor: Point,
     first: Point,
     size: (f64, f64),
+    /// A line's drawn ends, where its name may slide along it ([`SLIDE`]) before it takes a
+    /// leader; `None` for a point's, a curve's or a segment's.
+    slide: Option<(Point, Point)>,
 }
 
 /// The names of the segments and forces of one part of the sheet (a force plan's S₁ … S₇),
@@ -527,11 +535,18 @@ fn requests(
             ));
         }
         if let Some((anchor, first)) = where_first(o, &circles).filter(|(a, _)| inside(a)) {
+            let slide = match &o.geom {
+                Geom::Line { line, extent } => {
+                    Some((line.point_at(extent[0]), line.point_at(extent[1])))
+                }
+                _ => None,
+            };
             let r = Request {
                 id: o.id,
                 anchor,
                 first,
                 size: extent(&o.label),
+                slide,
             };
             match o.geom {
                 // A segment too short to be drawn (a zero force) has no line to name.
@@ -565,6 +580,14 @@ fn place_one(taken: &mut Taken, r: &Request) -> Option<Placed> {
     let near = std::iter::once(r.first).chain(around(r.anchor, 0.6 * LABEL_OFFSET, r.size));
     if let Some(at) = least_crossed(taken, r.size, near) {
         return Some(Placed { at, leader: None });
+    }
+    if let Some((a, b)) = r.slide {
+        let along = SLIDE
+            .iter()
+            .flat_map(|t| around(a + (b - a) * *t, 0.6 * LABEL_OFFSET, r.size));
+        if let Some(at) = least_crossed(taken, r.size, along) {
+            return Some(Placed { at, leader: None });
+        }
     }
     RINGS.iter().find_map(|k| {
         let ring = around(r.anchor, k * LABEL_OFFSET, r.size);
@@ -845,6 +868,32 @@ mod tests {
         assert!(placed.get(load.id).is_some() && placed.joined(load.id).is_empty());
         assert!(placed.get(zero.id).is_none());
         assert_eq!((placed.labels, placed.withheld, placed.crowded), (3, 0, 0));
+    }
+
+    /// A line's name whose places beside the middle are all taken (a table over the middle
+    /// of the line) slides along the line, a third of the way, and needs no leader.
+    #[test]
+    fn a_line_name_slides_along_its_line_before_it_takes_a_leader() {
+        use crate::protocol::{Note, Role, Topic};
+        let n = Note::new("s", Topic::Custom("t"));
+        let mut b = Board::recording();
+        let rows = vec![vec!["XXXXXXXXXX".to_string()]; 4];
+        let (w, h) = super::super::extent::table_size(&rows);
+        assert!(w > 18.0 && h > 10.0, "the table covers the middle's places");
+        b.table(Point::new(30.0 - w / 2.0, h / 2.0), rows, &[], n.clone());
+        let p = b.point(Point::new(0.0, 0.0), Role::Given, n.clone());
+        let q = b.point(Point::new(60.0, 0.0), Role::Given, n.clone());
+        let member = b.line_through(
+            &p,
+            &q,
+            Role::Given.labelled(Label::from_name("7")),
+            n.clone(),
+        );
+        let member = member.expect("two points apart");
+        let placed = place(&b, [-50.0, -50.0, 110.0, 50.0], Vec::new(), &|_| true);
+        let at = *placed.get(member.id).expect("placed");
+        assert!(at.leader.is_none(), "slid, no leader: {at:?}");
+        assert!((at.at.x - 20.0).abs() < 6.0, "a third of the way: {at:?}");
     }
 
     #[test]

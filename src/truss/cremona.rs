@@ -149,11 +149,20 @@ fn construct(
     } else {
         vec![None; cases.len()]
     };
+    let first_scale = dr.length_scale;
     for (case, sol) in cases.iter().zip(sols) {
+        let numbered = rows.numbered(t.members.len());
+        // Of several drawings, the numbered one is drawn at the scale its numbers need: a
+        // Bauplan larger than the load positions' sketches (LH Aufgabe 5, Tafel I).
+        let several = cases.len() > 1 || rows.heading.is_some();
+        let length_scale = match numbered && several {
+            true => numbered_scale(t, dr.length_scale),
+            false => dr.length_scale,
+        };
         // A case with a force scale of its own draws its plan (and its loads) at it.
         let dr = &TrussDrawing {
             force_scale: case.force_scale.unwrap_or(dr.force_scale),
-            ..*dr
+            length_scale,
         };
         let c = Case {
             t,
@@ -163,7 +172,7 @@ fn construct(
             dr,
             sup,
             slack,
-            numbered: rows.numbered(t.members.len()),
+            numbered,
         };
         // Each case a row of the sheet, its parts constructed once, each in its own frame.
         b.set_part(Part::packed(rows.row, TRUSS));
@@ -174,7 +183,10 @@ fn construct(
         // plates head their plans.
         let heading = (rows.heading.take())
             .or_else(|| (cases.len() > 1).then(|| case_heading(cases, case, dr.force_scale)));
-        if let Some(heading) = heading {
+        if let Some(mut heading) = heading {
+            if length_scale != first_scale {
+                heading += &format!(", lengths 1 : {}", crate::fmt::num(length_scale, 3));
+            }
             let name = vec![vec![heading]];
             let k = 1000.0 / dr.length_scale;
             let joints_top = (t.joints.iter()).fold(f64::NEG_INFINITY, |y, j| y.max(j.at.y * k));
@@ -188,6 +200,28 @@ fn construct(
     }
     b.set_part(Part::default());
     Ok(out)
+}
+
+/// The length (mm) a numbered member is drawn at least, where the figure draws several
+/// trusses and may draw the numbered one larger: a number a side of it, and room for a
+/// crossing diagonal's beside it.
+const NUMBERED_MEMBER_MM: f64 = 16.0;
+/// The most a numbered drawing is enlarged over the figure's length scale.
+const MOST_ENLARGED: f64 = 4.0;
+
+/// The length scale 1 : n of a truss drawing that numbers its members among other drawings
+/// at `length_scale`: that scale divided by the least whole factor (at most
+/// [`MOST_ENLARGED`]) that draws the shortest member [`NUMBERED_MEMBER_MM`] long.
+fn numbered_scale(t: &Truss, length_scale: f64) -> f64 {
+    let shortest = (t.members.iter())
+        .map(|m| (t.joints[m.ends[1]].at - t.joints[m.ends[0]].at).norm())
+        .fold(f64::INFINITY, f64::min)
+        * 1000.0
+        / length_scale;
+    if !(shortest > 0.0 && shortest < NUMBERED_MEMBER_MM) {
+        return length_scale;
+    }
+    length_scale / (NUMBERED_MEMBER_MM / shortest).ceil().min(MOST_ENLARGED)
 }
 
 /// The force scales (kg per mm) the plans of `cases` are drawn at, each once, in the order
@@ -539,4 +573,35 @@ fn mark_zero_members(b: &mut Board, t: &Truss, result: &CaseResult, jp: &[H<Poin
         }
     }
     b.restore_context(base);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The numbered drawing of several is enlarged by the least whole factor that draws its
+    /// shortest member 16 mm long, at most four times; a drawing whose members have room
+    /// keeps the figure's scale.
+    #[test]
+    fn a_numbered_drawing_is_enlarged_only_as_far_as_its_numbers_need() {
+        let truss = |side: f64| {
+            Truss::builder()
+                .joint("I", (0.0, 0.0))
+                .joint("II", (side, 0.0))
+                .joint("III", (side / 2.0, side))
+                .member("1", "I", "III")
+                .member("2", "III", "II")
+                .member("3", "I", "II")
+                .pin("I")
+                .roller("II", (0.0, 1.0))
+                .build()
+                .unwrap()
+        };
+        // The crane bridge's panels: 2 m at 1 : 200 are 10 mm, drawn at 1 : 100.
+        assert_eq!(numbered_scale(&truss(2.0), 200.0), 100.0);
+        // 2 m at 1 : 100 are 20 mm: room enough.
+        assert_eq!(numbered_scale(&truss(2.0), 100.0), 100.0);
+        // 0.1 m at 1 : 200 would need 32 times: four at most.
+        assert_eq!(numbered_scale(&truss(0.1), 200.0), 50.0);
+    }
 }
