@@ -277,7 +277,9 @@ impl JointLoadSpec {
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct TrussDrawingSpec {
-    /// Length scale 1 : n.
+    /// Length scale 1 : n. Of several drawings (load cases), the one that numbers the
+    /// members is drawn larger where its shortest member would be under 16 mm (at most four
+    /// times), its heading naming its scale.
     #[serde(default)]
     pub length_scale: Option<f64>,
     /// Force scale, kg per mm.
