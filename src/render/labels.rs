@@ -6,8 +6,10 @@
 //! point, or radially outward on a whole circle), then the eight around it. Of those that are
 //! free, the one that crosses the fewest drawn strokes is taken (the first of equals): a
 //! label in the gap between a joint's members reads better than one across them, and a label
-//! on a line is still legible where one on another label is not. Where none near is free,
-//! rings farther out are tried the same way, and a short leader joins the label to its point.
+//! on a line is still legible where one on another label is not. A line's name (a member's
+//! number) whose places beside the middle are all taken slides along its line first. Where
+//! none near is free, rings farther out are tried the same way, and a short leader joins the
+//! label to its point.
 //! Where even those are taken the label is left out (the crowd rule: the books, too, letter
 //! only some of a crowd of crank positions or load positions), and the figure says how many
 //! it left out. Labels are placed in the order their objects were made, so that the
