@@ -21,16 +21,19 @@ python3 - "$work" <<'PY'
 import sys
 from PIL import Image, ImageDraw
 work = sys.argv[1]
-# Which part of each sheet to show (fractions of width and height), and the width of a side.
+# Which part of each sheet to show (fractions of width and height; a second box for the
+# after side where the sheet's parts moved), and the width of a side.
 views = {
-    "kg_abb1043_crank_rocker": ((0.0, 0.205, 0.56, 0.8), 620),
-    "kg_abb1056_otto_four_cylinders": ((0.0, 0.0, 1.0, 1.0), 620),
-    "lh_j_locomotive_dynamics": ((0.55, 0.07, 1.0, 0.45), 520),
-    "lh_aufgabe5_crane_bridge": ((0.0, 0.0145, 0.16, 0.044), 620),
+    "kg_abb1043_crank_rocker": ((0.0, 0.205, 0.56, 0.8), (0.0, 0.2, 1.0, 0.68), 620),
+    "kg_abb1056_otto_four_cylinders": ((0.0, 0.0, 1.0, 1.0), None, 620),
+    "lh_j_locomotive_dynamics": ((0.55, 0.07, 1.0, 0.45), None, 520),
+    # The crane bridge's numbered Bauplan, at 1 : 200 before and 1 : 100 after.
+    "lh_aufgabe5_crane_bridge": ((0.0, 0.0145, 0.16, 0.044), (0.0, 0.0135, 0.2, 0.057), 620),
 }
-for name, ((x0, y0, x1, y1), side) in views.items():
+for name, (box, after_box, side) in views.items():
     pair = []
     for when in ("before", "after"):
+        x0, y0, x1, y1 = after_box if when == "after" and after_box else box
         im = Image.open(f"{work}/{when}/{name}.png").convert("L")
         w, h = im.size
         im = im.crop((int(x0 * w), int(y0 * h), int(x1 * w), int(y1 * h)))
