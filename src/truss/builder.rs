@@ -445,6 +445,23 @@ impl Truss {
         TrussBuilder::default()
     }
 
+    /// The tests' triangle: joints I (0, 0), II (`w`, 0) and III (`w`/2, `h`), members
+    /// 1 = I-III, 2 = III-II, 3 = I-II, a pin at I and a vertical roller at II.
+    #[cfg(test)]
+    pub(crate) fn triangle(w: f64, h: f64) -> Truss {
+        Truss::builder()
+            .joint("I", (0.0, 0.0))
+            .joint("II", (w, 0.0))
+            .joint("III", (w / 2.0, h))
+            .member("1", "I", "III")
+            .member("2", "III", "II")
+            .member("3", "I", "II")
+            .pin("I")
+            .roller("II", (0.0, 1.0))
+            .build()
+            .unwrap()
+    }
+
     /// The index of the joint with this name.
     pub fn joint_index(&self, name: &str) -> Option<usize> {
         self.joints.iter().position(|j| j.name == name)
@@ -617,17 +634,7 @@ mod tests {
         // steps still lose such a truss (the scene refuses one under a micrometre), but with
         // a typed error, not a hang.
         let s = 1e-300;
-        let t = Truss::builder()
-            .joint("I", (0.0, 0.0))
-            .joint("II", (2.0 * s, 0.0))
-            .joint("III", (s, s))
-            .member("1", "I", "III")
-            .member("2", "III", "II")
-            .member("3", "I", "II")
-            .pin("I")
-            .roller("II", (0.0, 1.0))
-            .build()
-            .unwrap();
+        let t = Truss::triangle(2.0 * s, s);
         let d = t.member_dir(0).0;
         assert!(
             (d - Vector::new(1.0, 1.0) / 2f64.sqrt()).norm() < 1e-15,
