@@ -149,15 +149,16 @@ fn construct(
     } else {
         vec![None; cases.len()]
     };
-    let first_scale = dr.length_scale;
+    let figure_scale = dr.length_scale;
+    // Of several drawings, the numbered one is drawn at the scale its numbers need: a
+    // Bauplan larger than the load positions' sketches (LH Aufgabe 5, Tafel I).
+    let several = cases.len() > 1 || rows.heading.is_some();
     for (case, sol) in cases.iter().zip(sols) {
         let numbered = rows.numbered(t.members.len());
-        // Of several drawings, the numbered one is drawn at the scale its numbers need: a
-        // Bauplan larger than the load positions' sketches (LH Aufgabe 5, Tafel I).
-        let several = cases.len() > 1 || rows.heading.is_some();
-        let length_scale = match numbered && several {
-            true => numbered_scale(t, dr.length_scale),
-            false => dr.length_scale,
+        let length_scale = if numbered && several {
+            numbered_scale(t, figure_scale)
+        } else {
+            figure_scale
         };
         // A case with a force scale of its own draws its plan (and its loads) at it.
         let dr = &TrussDrawing {
@@ -184,7 +185,7 @@ fn construct(
         let heading = (rows.heading.take())
             .or_else(|| (cases.len() > 1).then(|| case_heading(cases, case, dr.force_scale)));
         if let Some(mut heading) = heading {
-            if length_scale != first_scale {
+            if length_scale != figure_scale {
                 heading += &format!(", lengths 1 : {}", crate::fmt::num(length_scale, 3));
             }
             let name = vec![vec![heading]];
@@ -213,8 +214,8 @@ const MOST_ENLARGED: f64 = 4.0;
 /// at `length_scale`: that scale divided by the least whole factor (at most
 /// [`MOST_ENLARGED`]) that draws the shortest member [`NUMBERED_MEMBER_MM`] long.
 fn numbered_scale(t: &Truss, length_scale: f64) -> f64 {
-    let shortest = (t.members.iter())
-        .map(|m| (t.joints[m.ends[1]].at - t.joints[m.ends[0]].at).norm())
+    let shortest = (0..t.members.len())
+        .map(|m| t.member_dir(m).1)
         .fold(f64::INFINITY, f64::min)
         * 1000.0
         / length_scale;
