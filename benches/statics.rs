@@ -16,6 +16,7 @@ use std::hint::black_box;
 use std::time::Instant;
 
 const ALL: BeamRequest = BeamRequest {
+    reactions: true,
     moment_area: true,
     shear_diagram: true,
 };

@@ -80,30 +80,30 @@ pub struct DynamicsDrawing {
     pub force_scale: f64,
 }
 
-/// What to construct; each pulls in only what it needs.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
-pub struct DynamicsRequest {
-    /// Each cylinder's indicator card reduced to the new length, redrawn at a new spring
-    /// scale where one is given, and turned into piston forces by the reduction factor
-    /// (LH A, Abb. 42-45).
-    pub reduction: bool,
-    /// The net-pressure diagram of each cylinder, with the inertia parabolas and the resulting
-    /// curve where the masses are given.
-    pub net_pressure: bool,
-    /// Each cylinder's net piston force by the mean piston area F = (F′+F″)/2 beside the
-    /// net pressure's own (KG 296-297), and the effective areas read back off the drawing.
-    pub mean_area: bool,
-    /// The tangential force on every crank ray and the turning-force diagram.
-    pub turning_force: bool,
-    /// The mean height of the turning-force diagram by every rule.
-    pub mean_height: bool,
-    /// The indicated power from the mean pressures and from T_m.
-    pub power: bool,
-    /// The flywheel: excess work, speeds, moment of inertia.
-    pub flywheel: bool,
-    /// The pumps' resistance line beside the steam engine's own turning force (KG Abb.
-    /// 1067); with a pump only.
-    pub resistance_line: bool,
+crate::protocol::request_set! {
+    /// What a dynamics scene constructs (its `outputs`); each pulls in only what it needs.
+    pub struct DynamicsRequest as "DynamicsOutput" {
+        /// Each cylinder's indicator card reduced: 11 ordinates, the new length, the new
+        /// spring scale, the piston forces by the reduction factor (LH A, Abb. 42-45).
+        reduction,
+        /// Net pressure, inertia and resulting curves (LH Abb. 58; KG Abb. 1055).
+        net_pressure,
+        /// The net piston force by the mean piston area F = (F′+F″)/2 on every ray, beside
+        /// the net pressure's own, and the effective areas read back (KG 296-297, Abb. 1054).
+        mean_area,
+        /// Tangential force on every ray and the turning-force diagram (LH Abb. 67; KG Abb. 1064).
+        turning_force,
+        /// Mean height of the turning-force diagram by every rule (LH G).
+        mean_height,
+        /// Indicated power from the mean pressures and from T_m (LH H).
+        power,
+        /// The flywheel (LH J; KG Abb. 1062).
+        flywheel,
+        /// With the effect `pump`: the pumps' resistance line T_p, their rectangles carried
+        /// through a crank figure of their own, beside the steam engine's turning force
+        /// T_s = T + T_p over the developed crank circle (KG Abb. 1067).
+        resistance_line,
+    }
 }
 
 /// One crank ray of one cylinder.

@@ -224,13 +224,14 @@ impl FourBar {
     }
 }
 
-/// What to construct besides the positions.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct FourBarRequest {
-    /// The rocker's dead positions by the arcs L ± R.
-    pub dead_positions: bool,
-    /// The transmission angle at every position.
-    pub transmission: bool,
+crate::protocol::request_set! {
+    /// What a four-bar scene can ask for besides the positions (its `outputs`).
+    pub struct FourBarRequest as "FourBarOutput" {
+        /// The rocker's dead positions by the arcs L ± R about O.
+        dead_positions,
+        /// The transmission angle at every position, flagged below the limit.
+        transmission,
+    }
 }
 
 /// One crank angle's values read off the construction.

@@ -145,13 +145,14 @@ impl OffsetCrank {
     }
 }
 
-/// What to draw besides the path.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct OffsetRequest {
-    /// The piston velocity by Q.
-    pub velocity: bool,
-    /// The forces S, N and T from the piston force.
-    pub forces: bool,
+crate::protocol::request_set! {
+    /// What an offset-crank scene can ask for besides the path (its `outputs`).
+    pub struct OffsetRequest as "OffsetOutput" {
+        /// The piston velocity by Q on the perpendicular through O.
+        velocity,
+        /// The rod, guide and tangential forces S, N and T from the piston force.
+        forces,
+    }
 }
 
 /// One crank angle's values read off the construction (`None` where not asked for).

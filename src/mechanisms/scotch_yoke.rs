@@ -31,7 +31,8 @@ pub struct Yoke {
     pub crank_radius: f64,
     /// Crank-pin speed v (m/s).
     pub crank_pin_speed: f64,
-    /// The rod of a slider-crank of the same stroke drawn beside it (mm), if any.
+    /// The rod of a slider-crank of the same stroke (mm), drawn beside the yoke where the
+    /// request asks for `slider_crank`.
     pub compare_rod: Option<f64>,
 }
 
@@ -43,13 +44,17 @@ impl Yoke {
     }
 }
 
-/// What to draw.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct YokeRequest {
-    /// The velocity diagram over the stroke.
-    pub velocity: bool,
-    /// The acceleration diagram over the stroke.
-    pub acceleration: bool,
+crate::protocol::request_set! {
+    /// What a scotch-yoke scene can ask for besides the path (its `outputs`).
+    pub struct YokeRequest as "YokeOutput" {
+        /// The velocity c′ over the stroke.
+        velocity,
+        /// The acceleration b′ over the stroke.
+        acceleration,
+        /// The slider-crank of the same stroke, drawn beside and laid into the diagrams
+        /// (with the yoke's `compare_rod`).
+        slider_crank,
+    }
 }
 
 /// One crank angle's values, read off the construction.
@@ -96,7 +101,7 @@ struct Frame {
 /// use graphostatik::protocol::Board;
 /// let yoke = Yoke { crank_radius: 300.0, crank_pin_speed: 5.0, compare_rod: None };
 /// let d = Drawing { length_scale: 10.0, force_scale: 1.0, velocity_scale: 0.1, acceleration_scale: 1.0 };
-/// let rq = YokeRequest { velocity: true, acceleration: true };
+/// let rq = YokeRequest { velocity: true, acceleration: true, slider_crank: false };
 /// let mut b = Board::recording();
 /// let r = construct(&mut b, &yoke, &d, &Angles::Divisions(12), rq).unwrap();
 /// // At 90°: x′ = R, c′ = v, b′ = 0 (KG Abb. 1069).
@@ -110,17 +115,18 @@ pub fn construct(
     angles: &Angles,
     rq: YokeRequest,
 ) -> Result<YokeResults, ConstructionError> {
+    let rod = yoke.compare_rod.filter(|_| rq.slider_crank);
     let drive = CrankDrive {
         crank_radius: yoke.crank_radius,
-        rod_length: yoke.compare_rod.unwrap_or(0.0),
-        finite_rod: yoke.compare_rod.is_some(),
+        rod_length: rod.unwrap_or(0.0),
+        finite_rod: rod.is_some(),
         crank_pin_speed: yoke.crank_pin_speed,
         piston_force: PistonForce::Constant(0.0),
     };
     let thetas = angles.thetas(&drive);
     // Where a slider-crank is compared, it stands in the sheet's first column and the yoke
     // beside it in the second, each with its diagrams under it.
-    if yoke.compare_rod.is_some() {
+    if rod.is_some() {
         b.set_part(YOKE);
     }
     let fr = frame(b, yoke, dr, rq)?;
@@ -150,7 +156,7 @@ pub fn construct(
             );
         }
     }
-    let slider_crank = match yoke.compare_rod {
+    let slider_crank = match rod {
         Some(_) => Some(compare(b, &fr, &drive, dr, (&thetas, rq))?),
         None => None,
     };

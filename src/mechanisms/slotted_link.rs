@@ -118,11 +118,12 @@ impl SlottedLink {
     }
 }
 
-/// What to draw besides the positions.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct LinkRequest {
-    /// The velocity diagram over the table's stroke (Abb. 1072).
-    pub velocity: bool,
+crate::protocol::request_set! {
+    /// What a slotted-link scene can ask for besides the positions (its `outputs`).
+    pub struct LinkRequest as "LinkOutput" {
+        /// The table speed over the stroke (Abb. 1072), with c₁ and c₂.
+        velocity,
+    }
 }
 
 /// One crank angle's values, read off the construction.

@@ -9,6 +9,7 @@ mod config;
 mod error;
 mod figure;
 mod reference;
+pub mod request;
 mod step;
 mod summary;
 mod tracks;
@@ -19,6 +20,7 @@ pub use config::{BoardConfig, Hand, Mode};
 pub use error::{ConstructionError, CutOutcome};
 pub use figure::{nice_at_least, FigureMeta, ScaleBar};
 pub use reference::ReferenceRow;
+pub use request::request_set;
 pub use step::{
     note, Check, Drawn, Geom, Ids, Label, Mark, Note, ObjId, Object, Part, Role, Step, StepId,
     StepKind, Text, Topic, TABLE_BLOCK_ROWS,

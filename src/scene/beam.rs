@@ -26,7 +26,7 @@ super::header::scene_struct! {
         pub stringers_m: Option<Vec<f64>>,
         /// What to construct besides the reactions: `moment_area`, `shear_diagram`.
         #[serde(default)]
-        pub outputs: Vec<BeamOutput>,
+        pub outputs: BeamRequest,
         /// Scales and the pole; any left out are chosen.
         #[serde(default)]
         pub drawing: Option<BeamDrawingSpec>,
@@ -68,18 +68,6 @@ pub struct UniformLoadSpec {
     pub to_m: f64,
     /// Intensity (kg/m), positive downwards.
     pub kg_per_m: f64,
-}
-
-super::header::output_enum! {
-    /// An output of a beam scene (the reactions are always constructed).
-    pub enum BeamOutput {
-        /// Reactions by the closing line (always constructed).
-        Reactions = "reactions",
-        /// The moment area M = y·H.
-        MomentArea = "moment_area",
-        /// The shear diagram and the largest moment.
-        ShearDiagram = "shear_diagram",
-    }
 }
 
 /// Scales and the pole.
@@ -383,10 +371,7 @@ impl BeamScene {
             parabola_divisions: d.parabola_divisions.unwrap_or(8),
             origin: crate::kernel::Point::origin(),
         };
-        let request = BeamRequest {
-            moment_area: self.outputs.contains(&BeamOutput::MomentArea),
-            shear_diagram: self.outputs.contains(&BeamOutput::ShearDiagram),
-        };
+        let request = self.outputs;
         BeamProblem {
             title: self.title.clone(),
             source: self.source.clone().unwrap_or_default(),
@@ -401,7 +386,7 @@ impl BeamScene {
 impl super::Procedure for BeamScene {
     const NAME: &'static str = "beam";
     const ABOUT: &'static str = "a beam on two supports: reactions by the closing line, moment area, shear, parabola by tangents (LH I C.4-6)";
-    const OUTPUTS: &'static [&'static str] = BeamOutput::NAMES;
+    const OUTPUTS: &'static [&'static str] = BeamRequest::NAMES;
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
         ("supports", "beam.supports_m"),
         ("stringers", "stringers_m"),

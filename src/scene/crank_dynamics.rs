@@ -41,7 +41,7 @@ super::header::scene_struct! {
         pub flywheel: Option<FlywheelSpec>,
         /// What to construct: `reduction`, `net_pressure`, `turning_force`, `mean_height`,
         /// `power`, `flywheel`.
-        pub outputs: Vec<DynamicsOutput>,
+        pub outputs: DynamicsRequest,
         /// Scales; any left out are chosen.
         #[serde(default)]
         pub drawing: Option<DynamicsDrawingSpec>,
@@ -260,32 +260,6 @@ pub struct FlywheelSpec {
     pub irregularity: f64,
 }
 
-super::header::output_enum! {
-    /// An output of the dynamics procedure.
-    pub enum DynamicsOutput {
-        /// Each cylinder's indicator card reduced: 11 ordinates, the new length, the new
-        /// spring scale, the piston forces by the reduction factor (LH A, Abb. 42-45).
-        Reduction = "reduction",
-        /// Net pressure, inertia and resulting curves (LH Abb. 58; KG Abb. 1055).
-        NetPressure = "net_pressure",
-        /// The net piston force by the mean piston area F = (F′+F″)/2 on every ray, beside
-        /// the net pressure's own, and the effective areas read back (KG 296-297, Abb. 1054).
-        MeanArea = "mean_area",
-        /// Tangential force on every ray and the turning-force diagram (LH Abb. 67; KG Abb. 1064).
-        TurningForce = "turning_force",
-        /// Mean height of the turning-force diagram by every rule (LH G).
-        MeanHeight = "mean_height",
-        /// Indicated power from the mean pressures and from T_m (LH H).
-        Power = "power",
-        /// The flywheel (LH J; KG Abb. 1062).
-        Flywheel = "flywheel",
-        /// With the effect `pump`: the pumps' resistance line T_p, their rectangles carried
-        /// through a crank figure of their own, beside the steam engine's turning force
-        /// T_s = T + T_p over the developed crank circle (KG Abb. 1067).
-        ResistanceLine = "resistance_line",
-    }
-}
-
 /// Scales of a dynamics drawing.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -350,19 +324,7 @@ impl DynamicsScene {
             },
             irregularity: self.flywheel.map(|f| f.irregularity),
         };
-        let mut request = DynamicsRequest::default();
-        for o in &self.outputs {
-            match o {
-                DynamicsOutput::Reduction => request.reduction = true,
-                DynamicsOutput::NetPressure => request.net_pressure = true,
-                DynamicsOutput::MeanArea => request.mean_area = true,
-                DynamicsOutput::TurningForce => request.turning_force = true,
-                DynamicsOutput::MeanHeight => request.mean_height = true,
-                DynamicsOutput::Power => request.power = true,
-                DynamicsOutput::Flywheel => request.flywheel = true,
-                DynamicsOutput::ResistanceLine => request.resistance_line = true,
-            }
-        }
+        let request = self.outputs;
         let d = self.drawing.unwrap_or(DynamicsDrawingSpec {
             length_scale: None,
             force_scale_kg_per_mm: None,
@@ -508,7 +470,7 @@ impl super::Procedure for DynamicsScene {
     const NAME: &'static str = "crank_dynamics";
     const SIZED_BY: &'static str = "divisions, cylinders, outputs or digitised points";
     const ABOUT: &'static str = "an engine's dynamics: net pressure, inertia, turning force, mean heights, power, flywheel (LH II A, C-J; KG XIV B.4)";
-    const OUTPUTS: &'static [&'static str] = DynamicsOutput::NAMES;
+    const OUTPUTS: &'static [&'static str] = DynamicsRequest::NAMES;
     const GEOMETRY_FIELD: &'static str = "mechanism";
 
     fn sheet_extent(p: &DynamicsProblem) -> (f64, &'static str) {

@@ -22,7 +22,7 @@ super::header::scene_struct! {
         pub angles: AngleSpec,
         /// What to construct besides the positions: `dead_positions`, `transmission`.
         #[serde(default)]
-        pub outputs: Vec<FourBarOutput>,
+        pub outputs: FourBarRequest,
         /// The transmission angle below which a position is flagged (degrees, default 40).
         #[serde(default)]
         pub min_transmission_deg: Option<f64>,
@@ -45,16 +45,6 @@ pub struct LinksSpec {
     pub coupler_mm: f64,
     /// Rocker AB.
     pub rocker_mm: f64,
-}
-
-super::header::output_enum! {
-    /// What a four-bar scene can ask for.
-    pub enum FourBarOutput {
-        /// The rocker's dead positions by the arcs L ± R about O.
-        DeadPositions = "dead_positions",
-        /// The transmission angle at every position, flagged below the limit.
-        Transmission = "transmission",
-    }
 }
 
 /// Scales of a four-bar scene.
@@ -147,10 +137,7 @@ impl FourBarScene {
                 .and_then(|d| d.length_scale)
                 .unwrap_or_else(|| nice(reach / 100.0)),
             thetas,
-            request: FourBarRequest {
-                dead_positions: self.outputs.contains(&FourBarOutput::DeadPositions),
-                transmission: self.outputs.contains(&FourBarOutput::Transmission),
-            },
+            request: self.outputs,
         }
     }
 }
@@ -159,7 +146,7 @@ impl super::Procedure for FourBarScene {
     const NAME: &'static str = "four_bar";
     const SIZED_BY: &'static str = "angles (crank positions)";
     const ABOUT: &'static str = "the crank-rocker (Bogenschubkurbel) and the parallel crank: positions by two circles with the branch named, the rocker's dead positions, the transmission angle flagged below a limit, Grashof's rule (KG XIV, Abb. 1043, 1045)";
-    const OUTPUTS: &'static [&'static str] = FourBarOutput::NAMES;
+    const OUTPUTS: &'static [&'static str] = FourBarRequest::NAMES;
     const GEOMETRY_FIELD: &'static str = "links";
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
         ("frame", "links.frame_mm"),

@@ -49,8 +49,7 @@ mod types;
 
 pub use accuracy::sweeps;
 pub use beam::{
-    BeamDrawingSpec, BeamOutput, BeamProblem, BeamScene, BeamSpec, PointLoadSpec, UniformLoadSpec,
-    MAX_LOADS,
+    BeamDrawingSpec, BeamProblem, BeamScene, BeamSpec, PointLoadSpec, UniformLoadSpec, MAX_LOADS,
 };
 pub use book::BookValue;
 pub use centroid::{CentroidDrawingSpec, CentroidProblem, CentroidScene};
@@ -58,9 +57,8 @@ pub use combustion::{
     CombustionProblem, CombustionScene, GasCylindersSpec, GasDrawingSpec, GasEffects, GasSpec,
 };
 pub use crank_dynamics::{
-    CardSpec, CylinderSpec, DynamicsDrawingSpec, DynamicsEffects, DynamicsOutput, DynamicsProblem,
-    DynamicsScene, FlywheelSpec, IndicatorSpec, MassSpec, PointsSpec, SidePoints, SteamSpec,
-    Weights,
+    CardSpec, CylinderSpec, DynamicsDrawingSpec, DynamicsEffects, DynamicsProblem, DynamicsScene,
+    FlywheelSpec, IndicatorSpec, MassSpec, PointsSpec, SidePoints, SteamSpec, Weights,
 };
 pub use drafting::{
     drafting, drafting_with_progress, DraftedValue, DraftingOptions, DraftingReport,
@@ -69,10 +67,10 @@ pub use error::SceneError;
 pub use force_system::{
     ForceDrawingSpec, ForceSpec, ForceSystemProblem, ForceSystemScene, ResolveSpec,
 };
-pub use four_bar::{FourBarDrawingSpec, FourBarOutput, FourBarProblem, FourBarScene, LinksSpec};
+pub use four_bar::{FourBarDrawingSpec, FourBarProblem, FourBarScene, LinksSpec};
 pub use handles::{handles, Drag, Handle};
 pub use header::{Preview, Slider};
-pub use offset_crank::{OffsetDrawingSpec, OffsetOutput, OffsetProblem, OffsetScene};
+pub use offset_crank::{OffsetDrawingSpec, OffsetProblem, OffsetScene};
 pub use procedure::{
     parse_scene, scene_field, Procedure, ReadContext, SceneHeader, SchemaType, Spread,
 };
@@ -81,10 +79,10 @@ pub use reference::reference_markdown;
 #[cfg(feature = "schema")]
 pub use registry::schema_json;
 pub use registry::{AnyProblem, AnyScene, Entry, REGISTRY};
-pub use scotch_yoke::{YokeCrank, YokeDrawingSpec, YokeOutput, YokeProblem, YokeScene};
+pub use scotch_yoke::{YokeCrank, YokeDrawingSpec, YokeProblem, YokeScene};
 pub use shaft::{ShaftProblem, ShaftScene, TorqueSpec};
 pub use slider_crank::SliderCrankProblem;
-pub use slotted_link::{LinkDrawingSpec, LinkOutput, LinkProblem, LinkScene, LinkSpec};
+pub use slotted_link::{LinkDrawingSpec, LinkProblem, LinkScene, LinkSpec};
 pub use sweep::{Setting, Sweep, SweepPoint};
 pub use truss::{TrussProblem, TrussScene};
 pub use types::*;

@@ -28,23 +28,13 @@ super::header::scene_struct! {
         /// What to draw besides the path and the dead centres: `velocity`, `forces` (needs
         /// `piston_force_kg`).
         #[serde(default)]
-        pub outputs: Vec<OffsetOutput>,
+        pub outputs: OffsetRequest,
         /// The driving piston force P (kg), pushing the piston the way it moves.
         #[serde(default)]
         pub piston_force_kg: Option<f64>,
         /// Scales; any left out are chosen.
         #[serde(default)]
         pub drawing: Option<OffsetDrawingSpec>,
-    }
-}
-
-super::header::output_enum! {
-    /// What an offset-crank scene can ask for.
-    pub enum OffsetOutput {
-        /// The piston velocity by Q on the perpendicular through O.
-        Velocity = "velocity",
-        /// The rod, guide and tangential forces from the piston force.
-        Forces = "forces",
     }
 }
 
@@ -96,7 +86,7 @@ impl OffsetScene {
         }
         self.speed.check(f)?;
         self.angles.check_divisions_or_degrees(f)?;
-        let wants = self.outputs.contains(&OffsetOutput::Forces);
+        let wants = self.outputs.forces;
         match (wants, self.piston_force_kg) {
             (true, None) => {
                 return Err(f.bad(
@@ -166,10 +156,7 @@ impl OffsetScene {
                 force: d.force_scale_kg_per_mm.unwrap_or_else(|| nice(p / 40.0)),
             },
             thetas,
-            request: OffsetRequest {
-                velocity: self.outputs.contains(&OffsetOutput::Velocity),
-                forces: self.outputs.contains(&OffsetOutput::Forces),
-            },
+            request: self.outputs,
         }
     }
 }
@@ -178,7 +165,7 @@ impl super::Procedure for OffsetScene {
     const NAME: &'static str = "offset_crank";
     const SIZED_BY: &'static str = "angles (crank positions) or outputs";
     const ABOUT: &'static str = "the offset (geschränkt) slider-crank: dead centres by the arcs L ± R, the unequal strokes’ crank angles 180° ± δ, path, velocity and forces (KG XIV, Abb. 1046)";
-    const OUTPUTS: &'static [&'static str] = OffsetOutput::NAMES;
+    const OUTPUTS: &'static [&'static str] = OffsetRequest::NAMES;
     const GEOMETRY_FIELD: &'static str = "offset_mm";
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
         ("offset", "offset_mm"),

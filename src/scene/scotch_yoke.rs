@@ -23,7 +23,7 @@ super::header::scene_struct! {
         /// What to draw besides the yoke's path: `velocity`, `acceleration`, and
         /// `slider_crank`, the slider-crank of the same stroke beside it (needs `compare_rod`).
         #[serde(default)]
-        pub outputs: Vec<YokeOutput>,
+        pub outputs: YokeRequest,
         /// The rod of the slider-crank drawn beside the yoke for comparison.
         #[serde(default)]
         pub compare_rod: Option<Rod>,
@@ -44,18 +44,6 @@ pub struct YokeCrank {
     /// Stroke s = 2R in mm.
     #[serde(default)]
     pub stroke_mm: Option<f64>,
-}
-
-super::header::output_enum! {
-    /// What a scotch-yoke scene can ask for.
-    pub enum YokeOutput {
-        /// The velocity c′ over the stroke.
-        Velocity = "velocity",
-        /// The acceleration b′ over the stroke.
-        Acceleration = "acceleration",
-        /// The slider-crank of the same stroke, drawn beside and laid into the diagrams.
-        SliderCrank = "slider_crank",
-    }
 }
 
 /// Scales of a scotch-yoke scene.
@@ -129,7 +117,7 @@ impl YokeScene {
     /// The rod of the comparison: asked for with `slider_crank`, longer than the crank
     /// (`r`) as a slider-crank's rod must be.
     fn check_rod(&self, f: Fields, r: f64) -> Result<(), SceneError> {
-        let wants = self.outputs.contains(&YokeOutput::SliderCrank);
+        let wants = self.outputs.slider_crank;
         match (wants, self.compare_rod) {
             (true, None) => Err(f.bad("compare_rod", "the slider_crank output draws a slider-crank beside the yoke: give its rod, e.g. {\"l_over_r\": 5}".into())),
             (false, Some(_)) => Err(f.bad("compare_rod", "is drawn only with the slider_crank output: add it, or leave the rod out".into())),
@@ -169,10 +157,7 @@ impl YokeScene {
                     .unwrap_or_else(|| nice(yoke.v2_over_r() / 30.0)),
             },
             angles: self.angles.angles(),
-            request: YokeRequest {
-                velocity: self.outputs.contains(&YokeOutput::Velocity),
-                acceleration: self.outputs.contains(&YokeOutput::Acceleration),
-            },
+            request: self.outputs,
         }
     }
 }
@@ -181,7 +166,7 @@ impl super::Procedure for YokeScene {
     const NAME: &'static str = "scotch_yoke";
     const SIZED_BY: &'static str = "angles (crank positions) or outputs";
     const ABOUT: &'static str = "the scotch yoke (Kurbelschleife): path, velocity and acceleration over the stroke, beside the slider-crank of the same stroke (KG XIV, Abb. 1069)";
-    const OUTPUTS: &'static [&'static str] = YokeOutput::NAMES;
+    const OUTPUTS: &'static [&'static str] = YokeRequest::NAMES;
     const GEOMETRY_FIELD: &'static str = "crank";
 
     fn sheet_extent(p: &YokeProblem) -> (f64, &'static str) {

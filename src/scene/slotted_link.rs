@@ -21,7 +21,7 @@ super::header::scene_struct! {
         /// What to draw besides the positions and the angles: `velocity`, the table speed by
         /// KG's parallel through F, its diagram over the stroke, and c₁, c₂.
         #[serde(default)]
-        pub outputs: Vec<LinkOutput>,
+        pub outputs: LinkRequest,
         /// Scales; any left out are chosen.
         #[serde(default)]
         pub drawing: Option<LinkDrawingSpec>,
@@ -39,14 +39,6 @@ pub struct LinkSpec {
     pub centre_distance_mm: f64,
     /// Lever length R = DE (at least e + r).
     pub lever_mm: f64,
-}
-
-super::header::output_enum! {
-    /// What a slotted-link scene can ask for.
-    pub enum LinkOutput {
-        /// The table speed over the stroke (Abb. 1072), with c₁ and c₂.
-        Velocity = "velocity",
-    }
 }
 
 /// Scales of a slotted-link scene.
@@ -143,9 +135,7 @@ impl LinkScene {
                     .unwrap_or_else(|| nice(link.c2() / 40.0)),
             },
             phis,
-            request: LinkRequest {
-                velocity: self.outputs.contains(&LinkOutput::Velocity),
-            },
+            request: self.outputs,
         }
     }
 }
@@ -154,7 +144,7 @@ impl super::Procedure for LinkScene {
     const NAME: &'static str = "slotted_link";
     const SIZED_BY: &'static str = "angles (crank positions) or outputs";
     const ABOUT: &'static str = "the oscillating slotted link (schwingende Kurbelschleife, quick return): working and return angles, β/α, the table's path and speed by the parallel through F, c₁ and c₂ (KG XIV, Abb. 1071-1072, eq. 304-305)";
-    const OUTPUTS: &'static [&'static str] = LinkOutput::NAMES;
+    const OUTPUTS: &'static [&'static str] = LinkRequest::NAMES;
     const GEOMETRY_FIELD: &'static str = "link";
     const INPUT_FIELDS: &'static [(&'static str, &'static str)] = &[
         ("centre_distance", "link.centre_distance_mm"),

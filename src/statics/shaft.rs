@@ -484,6 +484,7 @@ fn plane_moments(
         });
     }
     let req = BeamRequest {
+        reactions: true,
         moment_area: true,
         shear_diagram: false,
     };

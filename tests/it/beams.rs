@@ -20,6 +20,7 @@ fn drawing(h: f64) -> BeamDrawing {
 }
 
 const ALL: BeamRequest = BeamRequest {
+    reactions: true,
     moment_area: true,
     shear_diagram: true,
 };

@@ -27,6 +27,7 @@ fn drawing() -> Drawing {
 const ALL: YokeRequest = YokeRequest {
     velocity: true,
     acceleration: true,
+    slider_crank: true,
 };
 
 /// KG: the yoke's acceleration is the straight line from +v²/R to −v²/R; the slider-crank of

@@ -2,9 +2,7 @@
 
 use super::super::fields::Fields;
 use super::super::SceneError;
-use super::{
-    CylinderSpec, DynamicsOutput, DynamicsScene, IndicatorSpec, MassSpec, SidePoints, SteamSpec,
-};
+use super::{CylinderSpec, DynamicsScene, IndicatorSpec, MassSpec, SidePoints, SteamSpec};
 use crate::kernel::tolerance::MAX_DIVISIONS;
 
 /// At most this many cylinders on one shaft.
@@ -99,7 +97,7 @@ impl DynamicsScene {
             (false, Some(i)) => return Err(f.bad(&format!("cylinders[{i}].pump"), "is used only with the effect `pump`: add \"pump\": true to `effects`, or leave the pump out".into())),
             _ => {}
         }
-        if !on && self.outputs.contains(&DynamicsOutput::ResistanceLine) {
+        if !on && self.outputs.resistance_line {
             return Err(f.bad("outputs", "`resistance_line` is the resistance of a pump: give a cylinder's `pump` and the effect `pump`, or leave the output out".into()));
         }
         for (i, c) in self.cylinders.iter().enumerate() {
@@ -134,7 +132,7 @@ impl DynamicsScene {
     /// The cards: every cylinder's given with the output `reduction` and none without it;
     /// a length and spring scales that draw a card of at most a metre.
     fn check_cards(&self, f: Fields) -> Result<(), SceneError> {
-        let on = self.outputs.contains(&DynamicsOutput::Reduction);
+        let on = self.outputs.reduction;
         for (i, c) in self.cylinders.iter().enumerate() {
             let at = format!("cylinders[{i}].card");
             let Some(card) = c.card else {

@@ -50,7 +50,7 @@ use build::BeamConstruction;
 ///     parabola_divisions: 8, origin: Point::origin() };
 /// let mut board = Board::recording();
 /// let r = construct_beam(&mut board, &beam, &drawing,
-///     &BeamRequest { moment_area: true, shear_diagram: true }).unwrap();
+///     &BeamRequest { reactions: true, moment_area: true, shear_diagram: true }).unwrap();
 /// assert!((r.reactions.a - 400.0).abs() < 1e-9 && (r.reactions.b - 200.0).abs() < 1e-9);
 /// // M under the load = A·a = 400 kg · 2 m (LH Gl. 11).
 /// assert!((r.max_moment.unwrap().moment - 800.0).abs() < 1e-9);

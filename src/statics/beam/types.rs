@@ -27,13 +27,18 @@ pub struct BeamDrawing {
     pub origin: Point,
 }
 
-/// What to construct beyond the reactions (which everything needs).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
-pub struct BeamRequest {
-    /// The moment area: M at every load, support and parabola point, zero moments.
-    pub moment_area: bool,
-    /// The shear diagram and the largest moment where the shear changes sign.
-    pub shear_diagram: bool,
+crate::protocol::request_set! {
+    /// What a beam scene can ask for (its `outputs`); the reactions, which everything
+    /// needs, are always constructed.
+    pub struct BeamRequest as "BeamOutput" {
+        /// The reactions by the closing line: always constructed, named or not.
+        reactions,
+        /// The moment area M = y·H: M at every load, support and parabola point, zero
+        /// moments.
+        moment_area,
+        /// The shear diagram and the largest moment where the shear changes sign.
+        shear_diagram,
+    }
 }
 
 /// Constructed values at one section of the beam.
