@@ -35,9 +35,13 @@ const TITLE_LINE: f64 = 7.5;
 /// How much a source line beyond the first adds to the title block (mm): its 3.5 px text
 /// and a third of that between lines.
 const SOURCE_LINE: f64 = 4.7;
-/// The narrowest width (mm) a title is wrapped to: a sheet this wide takes any title on a
-/// few lines.
+/// The narrowest width (mm) a long title is wrapped to: a sheet this wide takes any title on
+/// a few lines. A shorter title is wrapped to no less than two lines need, so that a small
+/// drawing is not set on a sheet its title alone makes wide.
 const TITLE_MIN_WIDTH: f64 = 160.0;
+/// Characters a title's two lines are allowed beyond half its length (a word that would
+/// overhang the middle).
+const TITLE_HALF_SLACK: f64 = 8.0;
 
 impl Frame {
     /// The height of the title block: title lines, source line and the space under them.
@@ -249,12 +253,16 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
     max_y += 4.0;
     min_y -= 4.0;
     // Wide enough for the scale rows as well; the title and the source line are wrapped to
-    // that width (at least TITLE_MIN_WIDTH) where they are wider.
+    // that width (at least what two lines of the title need, at most TITLE_MIN_WIDTH) where
+    // they are wider.
     let names_at = scale_rows(&meta.scales).1;
     let text_width = (meta.scales.iter())
         .map(|s| names_at + 2.0 + s.name.chars().count() as f64 * SMALL_CHAR)
         .fold(0.0, f64::max);
-    let inner = (max_x - min_x).max(text_width).max(TITLE_MIN_WIDTH);
+    let two_lines = (meta.title.chars().count() as f64 / 2.0 + TITLE_HALF_SLACK) * TITLE_CHAR;
+    let inner = (max_x - min_x)
+        .max(text_width)
+        .max(two_lines.min(TITLE_MIN_WIDTH));
     let (title, title_width) = wrapped(&meta.title, inner, TITLE_CHAR);
     let (source, source_width) = match meta.source.is_empty() {
         true => (Vec::new(), 0.0),
