@@ -39,8 +39,8 @@ super::header::scene_struct! {
         /// What the flywheel must achieve.
         #[serde(default)]
         pub flywheel: Option<FlywheelSpec>,
-        /// What to construct: `reduction`, `net_pressure`, `turning_force`, `mean_height`,
-        /// `power`, `flywheel`.
+        /// What to construct, at least one output (`DynamicsOutput` lists them); each pulls
+        /// in only what it needs.
         pub outputs: DynamicsRequest,
         /// Scales; any left out are chosen.
         #[serde(default)]
