@@ -26,7 +26,7 @@ struct Frame {
     /// it (then it is wrapped at spaces rather than widening the sheet past the drawing).
     title: Vec<String>,
     /// The source line's lines, wrapped as the title is (where it is wider than the
-    /// drawing, its scale rows and [`TITLE_MIN_WIDTH`]).
+    /// drawing, its scale rows and the title's two lines, at most [`TITLE_MIN_WIDTH`]).
     source: Vec<String>,
 }
 

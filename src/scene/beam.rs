@@ -371,13 +371,12 @@ impl BeamScene {
             parabola_divisions: d.parabola_divisions.unwrap_or(8),
             origin: crate::kernel::Point::origin(),
         };
-        let request = self.outputs;
         BeamProblem {
             title: self.title.clone(),
             source: self.source.clone().unwrap_or_default(),
             beam,
             drawing,
-            request,
+            request: self.outputs,
             stringers: self.stringers_m.clone().unwrap_or_default(),
         }
     }

@@ -324,7 +324,6 @@ impl DynamicsScene {
             },
             irregularity: self.flywheel.map(|f| f.irregularity),
         };
-        let request = self.outputs;
         let d = self.drawing.unwrap_or(DynamicsDrawingSpec {
             length_scale: None,
             force_scale_kg_per_mm: None,
@@ -355,7 +354,7 @@ impl DynamicsScene {
                 (_, Some(n)) => crate::crank::Angles::StrokeParts(n),
                 (n, None) => crate::crank::Angles::Divisions(n.unwrap_or(2)),
             },
-            request,
+            request: self.outputs,
         }
     }
 }
