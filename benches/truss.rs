@@ -50,6 +50,7 @@ fn girder(joints: usize) -> (Truss, Vec<LoadCase>) {
             name: "P".into(),
             loads,
             force_scale: None,
+            drawn: true,
         }],
     )
 }

@@ -28,7 +28,7 @@ views = {
     "kg_abb1056_otto_four_cylinders": ((0.0, 0.0, 1.0, 1.0), None, 620),
     "lh_j_locomotive_dynamics": ((0.55, 0.07, 1.0, 0.45), None, 520),
     # The crane bridge's numbered Bauplan, at 1 : 200 before and 1 : 100 after.
-    "lh_aufgabe5_crane_bridge": ((0.0, 0.0145, 0.16, 0.044), (0.0, 0.0135, 0.2, 0.057), 620),
+    "lh_aufgabe5_crane_bridge": ((0.0, 0.0145, 0.16, 0.044), (0.0, 0.031, 0.2, 0.131), 620),
 }
 for name, (box, after_box, side) in views.items():
     pair = []

@@ -184,6 +184,11 @@ pub struct Part {
     /// no hole takes it does it stand in its row and column.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub free: bool,
+    /// Whether the part is constructed and checked but not drawn: a figure leaves its steps
+    /// out (LH Aufgabe 5 draws the plans of the dead load and of three crane positions; the
+    /// other positions are computed, Tabelle 2). Set by [`Board::unseen`](crate::protocol::Board::unseen).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub hidden: bool,
 }
 
 impl Part {
@@ -194,6 +199,7 @@ impl Part {
             col,
             packed: false,
             free: false,
+            hidden: false,
         }
     }
     /// The part in row `row` and column `col`, set out in its row alone ([`Part::packed`]).
@@ -203,6 +209,7 @@ impl Part {
             col,
             packed: true,
             free: false,
+            hidden: false,
         }
     }
     /// The part in row `row` and column `col` unless the sheet has a hole its box fits in
@@ -213,6 +220,7 @@ impl Part {
             col,
             packed: false,
             free: true,
+            hidden: false,
         }
     }
     /// Whether it is the first row's first column (where a figure that names no part is).

@@ -143,7 +143,7 @@ pub(crate) fn placement(meta: &FigureMeta, board: &Board) -> Placement {
 /// curves and of whole circles), for the lettering to keep clear of.
 fn strokes(board: &Board, f: &Frame) -> Vec<(Point, Point)> {
     let mut out = Vec::new();
-    for o in board.objects() {
+    for o in board.drawn_objects() {
         match &o.geom {
             Geom::Line { .. } => out.extend(line_ends(o).and_then(|(a, b)| f.clip_segment(a, b))),
             Geom::Segment { segment } | Geom::Vector { segment } => {
@@ -200,7 +200,7 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
     // The solid parts (circles, segments, vectors, curves, given points such as a pole) span
     // the figure; lines and constructed points are drawn within reach of them.
     let mut solid = Vec::new();
-    for o in board.objects() {
+    for o in board.drawn_objects() {
         let given_point = matches!(o.geom, Geom::Point { .. })
             && board
                 .steps()
@@ -211,7 +211,7 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
         }
     }
     if solid.is_empty() {
-        for o in board.objects() {
+        for o in board.drawn_objects() {
             extent_points(o, &mut solid);
         }
     }
@@ -232,7 +232,7 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
         source: Vec::new(),
     };
     let mut pts = solid;
-    for o in board.objects() {
+    for o in board.drawn_objects() {
         let mut more = Vec::new();
         match &o.geom {
             Geom::Line { .. } => {
@@ -876,7 +876,7 @@ fn emptiest(board: &Board, f: &Frame, placed: &Placement) -> f64 {
         }
     }
     let mut pts = Vec::new();
-    for o in board.objects() {
+    for o in board.drawn_objects() {
         pts.clear();
         extent_points(o, &mut pts);
         match &o.geom {
@@ -990,6 +990,9 @@ fn draw(meta: &FigureMeta, sheet: Sheet<'_>, upto: Option<StepId>) -> (String, L
             if step.id > u {
                 break;
             }
+        }
+        if step.part.hidden {
+            continue;
         }
         doc = doc.add(layer(board, &f, &labels, step, Some(step.id) == upto));
     }

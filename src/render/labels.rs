@@ -304,7 +304,7 @@ impl Taken {
 fn unplaced(board: &Board) -> Placement {
     let circles = full_circles(board);
     let mut out = Placement::default();
-    for o in board.objects() {
+    for o in board.drawn_objects() {
         if let Some((_, first)) = where_first(o, &circles) {
             out.placed.insert(
                 o.id,
@@ -515,7 +515,7 @@ fn requests(
     // in a crowded plan).
     let mut groups: Vec<Group> = Vec::new();
     let mut by_part: HashMap<Part, usize> = HashMap::new();
-    for o in board.objects() {
+    for o in board.drawn_objects() {
         // A table's lettering (a heading, an area's sign, an evaluation) is no place for a
         // label either.
         if let Geom::Table { at, rows } = &o.geom {
@@ -636,8 +636,7 @@ fn nearest_on(b: &Aabb, p: Point) -> Point {
 /// The whole circles of the figure, for the radial first position.
 fn full_circles(board: &Board) -> Vec<Circle> {
     board
-        .objects()
-        .iter()
+        .drawn_objects()
         .filter_map(|o| match &o.geom {
             Geom::Circle {
                 circle, full: true, ..
@@ -691,7 +690,7 @@ pub(crate) fn overprints(
     let tight = |b: Aabb| Aabb::new(b.mins + Vector::repeat(PAD), b.maxs - Vector::repeat(PAD));
     let mut boxes = Vec::new();
     let mut dots = Vec::new();
-    for o in board.objects() {
+    for o in board.drawn_objects() {
         if let Geom::Point { at: p } = &o.geom {
             let inside = sheet
                 .is_none_or(|[x0, y0, x1, y1]| p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1);

@@ -59,7 +59,7 @@ pub struct PartBox {
 pub fn part_boxes(board: &Board) -> Vec<PartBox> {
     let mut boxes: BTreeMap<Part, [f64; 4]> = BTreeMap::new();
     let mut pts = Vec::new();
-    for o in board.objects() {
+    for o in board.drawn_objects() {
         if matches!(o.geom, Geom::Line { .. }) {
             continue;
         }
@@ -253,7 +253,7 @@ fn too_near(a: &[f64; 4], b: &[f64; 4]) -> bool {
 /// The lines each part draws, as drawn (their ends past the outermost points on them), to
 /// keep a free part's box off them.
 fn part_lines(board: &Board) -> Vec<(Part, Point, Point)> {
-    (board.objects().iter())
+    (board.drawn_objects())
         .filter_map(|o| {
             let (a, b) = line_ends(o)?;
             Some((board.step(o.step)?.part, a, b))

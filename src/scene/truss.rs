@@ -10,7 +10,7 @@ use crate::truss::cremona::{self, CaseResult, TrussDrawing};
 use crate::truss::envelope::{Combination, EnvelopeRule};
 use crate::truss::matrix::{self, Determinacy};
 use crate::truss::redundant::{self, PairMode};
-use crate::truss::roof;
+use crate::truss::{positions, roof};
 use crate::truss::{JointLoad, LoadCase, Truss, TrussError};
 use foldhash::{HashMap, HashMapExt};
 use serde::{Deserialize, Serialize};
@@ -165,6 +165,13 @@ pub struct MovingLoadSpec {
     /// LH Aufgabe 5 draws each plan at its own scale.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub force_scale_kg_per_mm: Option<f64>,
+    /// The positions whose plans are drawn, each named by the joint of the path its first
+    /// load stands on (LH Aufgabe 5 draws the plans of crane positions I, II and III). Where
+    /// given, the other positions are constructed and checked but not drawn, and a table of
+    /// every position (its reactions, its most loaded diagonal and vertical) stands in the
+    /// figure, as the book's Tabelle 2. Every position is drawn where not given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub drawn_at: Option<Vec<String>>,
 }
 
 /// The roof whose loads the truss carries (LH B.3, Gl. 3-10).
@@ -308,6 +315,10 @@ pub struct TrussProblem {
     pub pair_mode: Option<PairMode>,
     /// Scales.
     pub drawing: TrussDrawing,
+    /// The moving loads whose drawn positions the scene names: each one's name and
+    /// positions (case indices, along its path), for the table of positions (LH Aufgabe 5,
+    /// Tabelle 2).
+    pub position_tables: Vec<(String, Vec<usize>)>,
 }
 
 impl TrussScene {
@@ -633,6 +644,7 @@ impl TrussScene {
                     "must be finite".into(),
                 ));
             }
+            check_drawn_at(origin, i, mv)?;
         }
         Ok(())
     }
@@ -971,6 +983,7 @@ impl TrussScene {
         let drawing = self.drawing_for(&truss, &cases);
         let combinations = self.combinations_of(&cases);
         let envelope = self.envelope_of(&cases);
+        let position_tables = self.position_tables(&cases);
         TrussProblem {
             envelope,
             title: self.title.clone(),
@@ -980,6 +993,7 @@ impl TrussScene {
             combinations,
             pairs: self.pair_indices(&self.member_index()),
             pair_mode: self.diagonal_mode,
+            position_tables,
             drawing,
         }
     }
@@ -1006,6 +1020,7 @@ impl TrussScene {
                     })
                     .collect(),
                 force_scale: c.force_scale_kg_per_mm,
+                drawn: true,
             }
         }));
         for mv in &self.moving_loads {
@@ -1022,10 +1037,26 @@ impl TrussScene {
                         })
                         .collect(),
                     force_scale: mv.force_scale_kg_per_mm,
+                    drawn: (mv.drawn_at.as_ref()).is_none_or(|d| d.contains(&mv.path[p])),
                 });
             }
         }
         cases
+    }
+
+    /// The positions of each moving load that names its drawn positions, by case index.
+    fn position_tables(&self, cases: &[LoadCase]) -> Vec<(String, Vec<usize>)> {
+        let index: HashMap<&str, usize> = (cases.iter().enumerate())
+            .map(|(i, c)| (c.name.as_str(), i))
+            .collect();
+        (self.moving_loads.iter())
+            .filter(|mv| mv.drawn_at.is_some())
+            .map(|mv| {
+                let at = (0..=mv.path.len() - mv.loads_kg.len())
+                    .map(|p| index[format!("{} at {}", mv.name, mv.path[p]).as_str()]);
+                (mv.name.clone(), at.collect())
+            })
+            .collect()
     }
 
     /// The scene's scales, or chosen: the truss about 150 mm across, the largest case about
@@ -1158,6 +1189,28 @@ impl super::Procedure for TrussScene {
                 &problem.drawing,
             )?,
         };
+        // The tables of positions below the rows of plans drawn (two systems a case where
+        // the diagonals are split).
+        let systems = 1 + usize::from(problem.pair_mode == Some(PairMode::SplitHalfLoads));
+        let rows = problem.cases.iter().filter(|c| c.drawn).count() * systems;
+        for (k, (load, table)) in problem.position_tables.iter().enumerate() {
+            let positions: Vec<(&str, &CaseResult)> = (table.iter())
+                .map(|&i| (problem.cases[i].name.as_str(), &r[i]))
+                .collect();
+            let most = (table.iter().flat_map(|&i| &problem.cases[i].loads))
+                .map(|l| l.force.norm())
+                .fold(0.0, f64::max);
+            let row = u16::try_from(rows + k).unwrap_or(u16::MAX);
+            let zero_kg = cremona::ZERO_FORCE_REL * most;
+            positions::write_positions_table(
+                &mut board,
+                &problem.truss,
+                load,
+                &positions,
+                zero_kg,
+                row,
+            );
+        }
         Ok((board, r))
     }
     fn figure_meta(problem: &TrussProblem) -> FigureMeta {
@@ -1173,6 +1226,29 @@ impl super::Procedure for TrussScene {
                 .collect(),
         }
     }
+}
+
+/// Each joint `drawn_at` names is where a position of the moving load starts, named once.
+fn check_drawn_at(origin: &str, i: usize, mv: &MovingLoadSpec) -> Result<(), SceneError> {
+    let starts = &mv.path[..=mv.path.len() - mv.loads_kg.len()];
+    for (k, j) in mv.drawn_at.iter().flatten().enumerate() {
+        let field = || format!("moving_loads[{i}].drawn_at[{k}]");
+        if !starts.contains(j) {
+            let last = &starts[starts.len() - 1];
+            let message = format!(
+                "`{}` is no position of `{}`: name the path joint its first load stands on \
+                 ({} to {last})",
+                crate::fmt::clip(j, 40),
+                crate::fmt::clip(&mv.name, 40),
+                starts[0]
+            );
+            return Err(invalid(origin, field(), message));
+        }
+        if mv.drawn_at.iter().flatten().take(k).any(|e| e == j) {
+            return Err(invalid(origin, field(), format!("`{j}` is named twice")));
+        }
+    }
+    Ok(())
 }
 
 /// The smallest span of a truss scene (m): below a micrometre the scene is surely not in

@@ -499,6 +499,7 @@ impl Truss {
             name,
             loads: out,
             force_scale: None,
+            drawn: true,
         })
     }
 

@@ -64,7 +64,7 @@ pub use super::plan::{CaseResult, ReactionForce, TrussDrawing, ZERO_FORCE_REL};
 /// );
 /// let case = LoadCase { name: "P".into(),
 ///     loads: vec![JointLoad { joint: 2, force: Vector::new(0.0, -1000.0) }],
-///     force_scale: None };
+///     force_scale: None, drawn: true };
 /// let mut b = Board::recording().with_figure_size(400.0);
 /// let r = construct_truss(&mut b, &t, &[case],
 ///     &TrussDrawing { length_scale: 20.0, force_scale: 20.0 }).unwrap();
@@ -154,7 +154,7 @@ fn construct(
     // Bauplan larger than the load positions' sketches (LH Aufgabe 5, Tafel I).
     let several = cases.len() > 1 || rows.heading.is_some();
     for (case, sol) in cases.iter().zip(sols) {
-        let numbered = rows.numbered(t.members.len());
+        let numbered = case.drawn && rows.numbered(t.members.len());
         let length_scale = if numbered && several {
             numbered_scale(t, figure_scale)
         } else {
@@ -175,6 +175,14 @@ fn construct(
             slack,
             numbered,
         };
+        if !case.drawn {
+            // Constructed and checked all the same, on no row of the sheet.
+            rows.heading = None;
+            b.set_context(|| case.name.clone());
+            out.push(b.unseen(|b| construct_case(b, &c))?.result);
+            b.clear_context();
+            continue;
+        }
         // Each case a row of the sheet, its parts constructed once, each in its own frame.
         b.set_part(Part::packed(rows.row, TRUSS));
         b.set_context(|| case.name.clone());
@@ -184,23 +192,36 @@ fn construct(
         // plates head their plans.
         let heading = (rows.heading.take())
             .or_else(|| (cases.len() > 1).then(|| case_heading(cases, case, dr.force_scale)));
-        if let Some(mut heading) = heading {
-            if length_scale != figure_scale {
-                heading += &format!(", lengths 1 : {}", crate::fmt::num(length_scale, 3));
-            }
-            let name = vec![vec![heading]];
-            let k = 1000.0 / dr.length_scale;
-            let joints_top = (t.joints.iter()).fold(f64::NEG_INFINITY, |y, j| y.max(j.at.y * k));
-            let [x0, _, _, y1] = r.truss_box;
-            let y1 = y1.max(joints_top + JOINT_NAMES_MM);
-            b.set_part(Part::packed(rows.row, TRUSS));
-            b.table(Point::new(x0, y1 + HEADING_MM), name, &[], N_CASE_NAME);
+        if let Some(heading) = heading {
+            write_heading(b, &c, heading, figure_scale, &r, rows.row);
         }
         rows.row += 1;
         out.push(r.result);
     }
     b.set_part(Part::default());
     Ok(out)
+}
+
+/// The case's name over its row, with its length scale where it is not the figure's.
+fn write_heading(
+    b: &mut Board,
+    c: &Case,
+    mut heading: String,
+    figure_scale: f64,
+    r: &CaseOut,
+    row: u16,
+) {
+    let length_scale = c.dr.length_scale;
+    if length_scale != figure_scale {
+        heading += &format!(", lengths 1 : {}", crate::fmt::num(length_scale, 3));
+    }
+    let name = vec![vec![heading]];
+    let k = 1000.0 / length_scale;
+    let joints_top = (c.t.joints.iter()).fold(f64::NEG_INFINITY, |y, j| y.max(j.at.y * k));
+    let [x0, _, _, y1] = r.truss_box;
+    let y1 = y1.max(joints_top + JOINT_NAMES_MM);
+    b.set_part(Part::packed(row, TRUSS));
+    b.table(Point::new(x0, y1 + HEADING_MM), name, &[], N_CASE_NAME);
 }
 
 /// The length (mm) a numbered member is drawn at least, where the figure draws several

@@ -598,6 +598,7 @@ mod memo_tests {
                 })
                 .collect(),
             force_scale: None,
+            drawn: true,
         }
     }
 

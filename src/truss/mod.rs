@@ -38,6 +38,7 @@ pub mod matrix;
 mod notes;
 pub mod pebble;
 mod plan;
+pub mod positions;
 pub mod reactions;
 pub mod redundant;
 mod ritter;
@@ -149,6 +150,13 @@ pub struct LoadCase {
     /// figure's: a light moving load's plans larger than the dead load's, each read "unter
     /// Berücksichtigung des jeweiligen Kräftemaßstabes" (LH B.5, Aufgabe 5).
     pub force_scale: Option<f64>,
+    /// Whether its plan is drawn. A case not drawn is constructed and checked as any other,
+    /// and its results reported, but the figure leaves it out ([`Board::unseen`]): LH
+    /// Aufgabe 5 draws the plans of the dead load and of crane positions I, II and III, and
+    /// computes the other positions (Tabelle 2).
+    ///
+    /// [`Board::unseen`]: crate::protocol::Board::unseen
+    pub drawn: bool,
 }
 
 /// A plane truss with its supports.

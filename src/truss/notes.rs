@@ -138,6 +138,13 @@ pub(super) const N_TABLE: Note = note(
     Topic::Cremona,
 );
 
+pub(super) const N_POSITIONS: Note = note(
+    "table of the moving load's positions: reactions, most loaded diagonal and vertical",
+    Some("Tabelle der Laststellungen"),
+    "LH B.4, Aufgabe 5, Tabelle 2",
+    Topic::Cremona,
+);
+
 pub(super) const N_SLACK: Note = note(
     "counter-diagonal out of action in this case (flat bar, would be compressed)",
     Some("Gegendiagonale"),

@@ -92,7 +92,7 @@ pub fn construct_pairs(
     let p = Pairs { t, pairs, dr };
     for case in cases {
         // Several cases: each row under its case's name, as `construct_truss` heads them.
-        if cases.len() > 1 {
+        if cases.len() > 1 && case.drawn {
             let scale = case.force_scale.unwrap_or(dr.force_scale);
             row.heading = Some(case_heading(cases, case, scale));
         }
@@ -138,6 +138,7 @@ impl Pairs<'_> {
                     })
                     .collect(),
                 force_scale: case.force_scale,
+                drawn: case.drawn,
             };
             let r = construct_truss_rows(b, &sub, &[half], self.dr, row, &[])?;
             for (i, &m) in keep.iter().enumerate() {
@@ -177,6 +178,7 @@ impl Pairs<'_> {
             name: format!("{} ({})", case.name, slack_names(t, &drop)),
             loads: case.loads.clone(),
             force_scale: case.force_scale,
+            drawn: case.drawn,
         };
         let ghosts: Vec<SlackMember> = (drop.iter())
             .map(|&m| SlackMember {

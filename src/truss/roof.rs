@@ -119,6 +119,7 @@ pub fn load_cases(t: &Truss, roof: &Roof) -> Vec<LoadCase> {
                 name: name.into(),
                 loads,
                 force_scale: None,
+                drawn: true,
             });
         }
     }

@@ -49,6 +49,7 @@ fn case(loads: Vec<JointLoad>) -> Vec<LoadCase> {
         name: "P".into(),
         loads,
         force_scale: None,
+        drawn: true,
     }]
 }
 
@@ -625,6 +626,79 @@ fn a_moving_load_gives_one_case_per_position_and_an_envelope() {
     }
 }
 
+/// LH Aufgabe 5 draws the plans of three crane positions and computes the rest (Tabelle 2):
+/// a position not drawn is constructed and checked as a drawn one, leaves the figure, and
+/// stands in the table of positions.
+#[test]
+fn positions_not_drawn_are_checked_and_tabled_but_not_drawn() {
+    let scene = |drawn: &str| {
+        format!(
+            r#"{{ "procedure": "truss", "title": "t",
+        "joints": [ {{ "name": "B0", "at_m": [0, 0] }}, {{ "name": "B1", "at_m": [2, 0] }}, {{ "name": "B2", "at_m": [4, 0] }},
+                    {{ "name": "B3", "at_m": [6, 0] }}, {{ "name": "T1", "at_m": [2, 2] }}, {{ "name": "T2", "at_m": [4, 2] }} ],
+        "members": [ {{ "name": "1", "joints": ["B0", "B1"] }}, {{ "name": "2", "joints": ["B1", "B2"] }},
+                     {{ "name": "3", "joints": ["B2", "B3"] }}, {{ "name": "4", "joints": ["B0", "T1"] }},
+                     {{ "name": "5", "joints": ["T1", "T2"] }}, {{ "name": "6", "joints": ["T2", "B3"] }},
+                     {{ "name": "7", "joints": ["B1", "T1"] }}, {{ "name": "8", "joints": ["B2", "T2"] }},
+                     {{ "name": "9", "joints": ["T1", "B2"] }} ],
+        "supports": [ {{ "joint": "B0", "kind": "pinned" }}, {{ "joint": "B3", "kind": "roller", "direction_deg": 90 }} ],
+        "moving_loads": [ {{ "name": "crane", "path": ["B0", "B1", "B2", "B3"], "loads_kg": [3000, 1000] {drawn} }} ] }}"#
+        )
+    };
+    let build = |drawn: &str| {
+        let any = AnyScene::from_json(&scene(drawn), "m.json").unwrap();
+        let p = any.problem().get::<TrussScene>().unwrap().clone();
+        let (b, r) = TrussScene::construct(&p, BoardConfig::DRAWING).unwrap();
+        let svg = graphostatik::render::figure(&TrussScene::figure_meta(&p), &b, None);
+        (b, r, svg)
+    };
+    let (all, all_r, all_svg) = build("");
+    let (some, some_r, svg) = build(r#", "drawn_at": ["B1"]"#);
+    all_checks_pass(&some);
+    // The same results and the same checks, case by case (less the two rows' headings).
+    assert_eq!(all_r, some_r);
+    let checks = |b: &Board| -> Vec<(String, f64)> {
+        (b.steps().iter().flat_map(|s| &s.checks))
+            .map(|c| (c.quantity.to_string(), c.constructed))
+            .collect()
+    };
+    assert_eq!(checks(&all), checks(&some));
+    // Two of three positions hidden; their steps make no layer and their labels are not
+    // written; the table lists all three positions.
+    let hidden: Vec<_> = (some.steps().iter()).filter(|s| s.part.hidden).collect();
+    assert!(hidden.iter().any(|s| !s.checks.is_empty()));
+    assert!(hidden
+        .iter()
+        .all(|s| s.context.as_deref() != Some("crane at B1")));
+    for s in &hidden {
+        assert!(!svg.contains(&format!("data-step=\"{:03}\"", s.id.0)));
+    }
+    assert!(!all_svg.contains("most loaded diagonal"));
+    assert!(svg.contains("crane: every position, its most loaded diagonal and vertical"));
+    for name in ["crane at B0", "crane at B1", "crane at B2"] {
+        assert!(svg.contains(&format!(">\n{name}\n</text>")), "{name}");
+    }
+    assert!(svg.len() < all_svg.len() * 3 / 4);
+    // A position that is none, or named twice, is refused at its place.
+    for (bad, field, says) in [
+        (
+            r#", "drawn_at": ["B3"]"#,
+            "moving_loads[0].drawn_at[0]",
+            "no position of `crane`",
+        ),
+        (
+            r#", "drawn_at": ["B1", "B1"]"#,
+            "moving_loads[0].drawn_at[1]",
+            "named twice",
+        ),
+    ] {
+        let e = AnyScene::from_json(&scene(bad), "m.json")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains(field) && e.contains(says), "{e}");
+    }
+}
+
 /// A parallel girder of three square panels with both diagonals in every panel (LH Abb. 19):
 /// k = 8, s = 16 = 2k − 3 + 3.
 fn double_diagonal_scene(mode: &str) -> String {
@@ -1010,11 +1084,13 @@ fn an_empty_load_case_and_a_self_balanced_one_give_clean_plans() {
             name: "nothing".into(),
             loads: vec![],
             force_scale: None,
+            drawn: true,
         },
         LoadCase {
             name: "pulled".into(),
             loads: vec![pull(0, -500.0), pull(4, 500.0)],
             force_scale: None,
+            drawn: true,
         },
     ];
     let (_, r) = run(&t, &cases);
@@ -1315,6 +1391,7 @@ fn reactions_by_moments_agree_with_the_dense_solve() {
         name: "P".into(),
         loads: loads.clone(),
         force_scale: None,
+        drawn: true,
     };
     let cases: [Vec<Support>; 2] = [
         // Vertical at I and II (parallel), horizontal at III.

@@ -150,6 +150,10 @@ pub struct Board {
     /// The part of the figure the next steps draw in.
     #[serde(skip)]
     part: Part,
+    /// Whether the steps made now are constructed and checked but not drawn
+    /// ([`Board::unseen`]).
+    #[serde(skip)]
+    unseen: bool,
     #[serde(skip)]
     next_step: u32,
     /// Whether the last cut found only one double point (a tangency).
@@ -202,6 +206,7 @@ impl Board {
             context: None,
             checked_object: None,
             part: Part::default(),
+            unseen: false,
             next_step: 0,
             last_touched: false,
             model: config.model,
@@ -560,7 +565,47 @@ impl Board {
     /// Sets the part of the figure the following steps draw in ([`Part`]): the sheet layout
     /// sets the parts out in rows and columns.
     pub fn set_part(&mut self, part: Part) {
+        self.part = Part {
+            hidden: part.hidden || self.unseen,
+            ..part
+        };
+    }
+
+    /// Runs `f` with its steps constructed and checked as any others, but not drawn: every
+    /// part they draw in is [`Part::hidden`], and a figure leaves them out. The book draws
+    /// a few cases and computes the rest: LH Aufgabe 5 draws the Cremona plans of the dead
+    /// load and of crane positions I, II and III, and finds the others' diagonals by
+    /// D = A / sin δ (Tabelle 2).
+    ///
+    /// ```
+    /// use graphostatik::kernel::Point;
+    /// use graphostatik::protocol::{Board, Note, Part, Role, Topic};
+    /// let mut b = Board::recording();
+    /// let n = |caption: &str| Note::new(caption.to_string(), Topic::Truss);
+    /// b.point(Point::new(0.0, 0.0), Role::Given.named("A"), n("drawn"));
+    /// b.unseen(|b| {
+    ///     b.set_part(Part::at(1, 0));
+    ///     b.point(Point::new(1.0, 0.0), Role::Given.named("B"), n("computed"))
+    /// });
+    /// assert!(!b.steps()[0].part.hidden && b.steps()[1].part.hidden);
+    /// assert_eq!(b.drawn_objects().count(), 1);
+    /// ```
+    pub fn unseen<R>(&mut self, f: impl FnOnce(&mut Board) -> R) -> R {
+        let (was, part) = (self.unseen, self.part);
+        self.unseen = true;
+        self.set_part(part);
+        let r = f(self);
+        self.unseen = was;
         self.part = part;
+        r
+    }
+
+    /// The objects a figure draws: those of the steps not in a [`Part::hidden`] part.
+    pub fn drawn_objects(&self) -> impl Iterator<Item = &Object> + '_ {
+        let steps = &self.steps;
+        self.objects.iter().filter(move |o| {
+            (steps.get((o.step.0 as usize).wrapping_sub(1))).is_none_or(|s| !s.part.hidden)
+        })
     }
 
     /// The part the next steps draw in.
