@@ -60,16 +60,21 @@ pub fn html_text(s: &str) -> String {
         .replace('\'', "&#39;")
 }
 
-/// The steps of each page, in order.
+/// The steps of each page, in order. The steps of a part constructed and checked but not
+/// drawn ([`Part::hidden`](crate::protocol::Part::hidden): a crane position whose plan the
+/// book does not draw) are one page, whatever the grouping: there is nothing to see step by
+/// step.
 fn page_groups(board: &Board, grouping: Grouping) -> Vec<Vec<&Step>> {
-    let steps = board.steps();
-    if grouping == Grouping::Step {
-        return steps.iter().map(|s| vec![s]).collect();
-    }
+    let together = |first: &Step, s: &Step| {
+        let unseen = first.part.hidden && s.part.hidden && first.part.row == s.part.row;
+        let situation =
+            grouping == Grouping::Context && first.context.is_some() && first.context == s.context;
+        unseen || situation
+    };
     let mut groups: Vec<Vec<&Step>> = Vec::new();
-    for s in steps {
+    for s in board.steps() {
         match groups.last_mut() {
-            Some(g) if g[0].context.is_some() && g[0].context == s.context => g.push(s),
+            Some(g) if together(g[0], s) => g.push(s),
             _ => groups.push(vec![s]),
         }
     }
@@ -273,6 +278,13 @@ fn group_item(group: &[&Step], names: &[String]) -> String {
     let first = group[0].id;
     let last = group[group.len() - 1].id;
     let mut lines = String::new();
+    if group[0].part.hidden {
+        let checks: usize = group.iter().map(|s| s.checks.len()).sum();
+        lines.push_str(&format!(
+            "<p class=\"wt-unseen\">not drawn: {} steps constructed, {checks} checks made</p>",
+            group.len()
+        ));
+    }
     for s in group {
         let name = (s.id.0 as usize).checked_sub(1).and_then(|i| names.get(i));
         lines.push_str(&step_detail(s, name.map_or(&*s.caption, String::as_str)));
@@ -380,6 +392,7 @@ main { display: flex; height: calc(100vh - 4em); }
 .wt-glancing, .wt-fail td { color: #b0362a; font-weight: bold; }
 .wt-ok td:last-child { color: #2a6b2a; }
 .wt-outcome { color: #7a4d00; }
+.wt-unseen { margin: 0.2em 0; color: #555; font-style: italic; }
 .wt-checks { border-collapse: collapse; font-size: 0.85em; margin-top: 0.4em; }
 .wt-checks td, .wt-checks th { border-top: 1px solid #ddd; padding: 0.15em 0.4em; text-align: right; vertical-align: top; }
 .wt-checks td { white-space: nowrap; }

@@ -1189,10 +1189,10 @@ impl super::Procedure for TrussScene {
                 &problem.drawing,
             )?,
         };
-        // The tables of positions below the rows of plans drawn (two systems a case where
+        // The tables of positions below the rows of the cases (two systems a case where
         // the diagonals are split).
         let systems = 1 + usize::from(problem.pair_mode == Some(PairMode::SplitHalfLoads));
-        let rows = problem.cases.iter().filter(|c| c.drawn).count() * systems;
+        let rows = problem.cases.len() * systems;
         for (k, (load, table)) in problem.position_tables.iter().enumerate() {
             let positions: Vec<(&str, &CaseResult)> = (table.iter())
                 .map(|&i| (problem.cases[i].name.as_str(), &r[i]))

@@ -176,11 +176,14 @@ fn construct(
             numbered,
         };
         if !case.drawn {
-            // Constructed and checked all the same, on no row of the sheet.
+            // Constructed and checked all the same, in a row of its own that the sheet
+            // leaves out (the walk-through shows the row as one page).
             rows.heading = None;
+            b.set_part(Part::packed(rows.row, TRUSS));
             b.set_context(|| case.name.clone());
             out.push(b.unseen(|b| construct_case(b, &c))?.result);
             b.clear_context();
+            rows.row += 1;
             continue;
         }
         // Each case a row of the sheet, its parts constructed once, each in its own frame.

@@ -679,6 +679,15 @@ fn positions_not_drawn_are_checked_and_tabled_but_not_drawn() {
         assert!(svg.contains(&format!(">\n{name}\n</text>")), "{name}");
     }
     assert!(svg.len() < all_svg.len() * 3 / 4);
+    // The walk-through shows each position not drawn as one page.
+    use graphostatik::render::{walkthrough_item_list, Grouping};
+    let pages = walkthrough_item_list(&some, Grouping::Step);
+    let shown = some.steps().len() - hidden.len();
+    assert_eq!(pages.len(), shown + 2);
+    assert_eq!(
+        (pages.iter()).filter(|p| p.contains("not drawn: ")).count(),
+        2
+    );
     // A position that is none, or named twice, is refused at its place.
     for (bad, field, says) in [
         (
