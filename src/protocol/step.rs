@@ -186,7 +186,8 @@ pub struct Part {
     pub free: bool,
     /// Whether the part is constructed and checked but not drawn: a figure leaves its steps
     /// out (LH Aufgabe 5 draws the plans of the dead load and of three crane positions; the
-    /// other positions are computed, Tabelle 2). Set by [`Board::unseen`](crate::protocol::Board::unseen).
+    /// other positions are computed, Tabelle 2). Set by
+    /// [`Board::unseen`](crate::protocol::Board::unseen).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub hidden: bool,
 }
