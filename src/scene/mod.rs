@@ -84,5 +84,5 @@ pub use shaft::{ShaftProblem, ShaftScene, TorqueSpec};
 pub use slider_crank::SliderCrankProblem;
 pub use slotted_link::{LinkDrawingSpec, LinkProblem, LinkScene, LinkSpec};
 pub use sweep::{Setting, Sweep, SweepPoint};
-pub use truss::{TrussProblem, TrussScene};
+pub use truss::{PositionTable, TrussProblem, TrussScene};
 pub use types::*;

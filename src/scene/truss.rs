@@ -172,6 +172,11 @@ pub struct MovingLoadSpec {
     /// figure, as the book's Tabelle 2. Every position is drawn where not given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub drawn_at: Option<Vec<String>>,
+    /// The book's name of each position, in the order of the path (LH Aufgabe 5 numbers the
+    /// crane's ten positions I to X in Tabelle 2, not in the order they stand on the girder):
+    /// written beside each position's name in the table of positions.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub position_names: Option<Vec<String>>,
 }
 
 /// The roof whose loads the truss carries (LH B.3, Gl. 3-10).
@@ -318,7 +323,18 @@ pub struct TrussProblem {
     /// The moving loads whose drawn positions the scene names: each one's name and
     /// positions (case indices, along its path), for the table of positions (LH Aufgabe 5,
     /// Tabelle 2).
-    pub position_tables: Vec<(String, Vec<usize>)>,
+    pub position_tables: Vec<PositionTable>,
+}
+
+/// A moving load's table of positions (LH Aufgabe 5, Tabelle 2).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PositionTable {
+    /// The moving load's name.
+    pub load: String,
+    /// Its positions as case indices, along its path.
+    pub cases: Vec<usize>,
+    /// The book's name of each position, where the scene gives them.
+    pub names: Option<Vec<String>>,
 }
 
 impl TrussScene {
@@ -1045,7 +1061,7 @@ impl TrussScene {
     }
 
     /// The positions of each moving load that names its drawn positions, by case index.
-    fn position_tables(&self, cases: &[LoadCase]) -> Vec<(String, Vec<usize>)> {
+    fn position_tables(&self, cases: &[LoadCase]) -> Vec<PositionTable> {
         let index: HashMap<&str, usize> = (cases.iter().enumerate())
             .map(|(i, c)| (c.name.as_str(), i))
             .collect();
@@ -1054,7 +1070,11 @@ impl TrussScene {
             .map(|mv| {
                 let at = (0..=mv.path.len() - mv.loads_kg.len())
                     .map(|p| index[format!("{} at {}", mv.name, mv.path[p]).as_str()]);
-                (mv.name.clone(), at.collect())
+                PositionTable {
+                    load: mv.name.clone(),
+                    cases: at.collect(),
+                    names: mv.position_names.clone(),
+                }
             })
             .collect()
     }
@@ -1193,10 +1213,18 @@ impl super::Procedure for TrussScene {
         // the diagonals are split).
         let systems = 1 + usize::from(problem.pair_mode == Some(PairMode::SplitHalfLoads));
         let rows = problem.cases.len() * systems;
-        for (k, (load, table)) in problem.position_tables.iter().enumerate() {
-            let positions: Vec<(&str, &CaseResult)> = (table.iter())
-                .map(|&i| (problem.cases[i].name.as_str(), &r[i]))
+        for (k, pt) in problem.position_tables.iter().enumerate() {
+            // "I (crane at O9)" where the book names the positions.
+            let labels: Vec<String> = (pt.cases.iter().enumerate())
+                .map(|(p, &i)| match &pt.names {
+                    Some(names) => format!("{} ({})", names[p], problem.cases[i].name),
+                    None => problem.cases[i].name.clone(),
+                })
                 .collect();
+            let positions: Vec<(&str, &CaseResult)> = (pt.cases.iter().zip(&labels))
+                .map(|(&i, label)| (label.as_str(), &r[i]))
+                .collect();
+            let table = &pt.cases;
             let most = (table.iter().flat_map(|&i| &problem.cases[i].loads))
                 .map(|l| l.force.norm())
                 .fold(0.0, f64::max);
@@ -1205,7 +1233,7 @@ impl super::Procedure for TrussScene {
             positions::write_positions_table(
                 &mut board,
                 &problem.truss,
-                load,
+                &pt.load,
                 &positions,
                 zero_kg,
                 row,
@@ -1228,9 +1256,27 @@ impl super::Procedure for TrussScene {
     }
 }
 
-/// Each joint `drawn_at` names is where a position of the moving load starts, named once.
+/// Each joint `drawn_at` names is where a position of the moving load starts, named once;
+/// `position_names` names every position.
 fn check_drawn_at(origin: &str, i: usize, mv: &MovingLoadSpec) -> Result<(), SceneError> {
     let starts = &mv.path[..=mv.path.len() - mv.loads_kg.len()];
+    if let Some(names) = &mv.position_names {
+        if names.len() != starts.len() {
+            let message = format!(
+                "give one name for each of the {} positions (the {} loads on a path of {} \
+                 joints), not {}",
+                starts.len(),
+                mv.loads_kg.len(),
+                mv.path.len(),
+                names.len()
+            );
+            return Err(invalid(
+                origin,
+                format!("moving_loads[{i}].position_names"),
+                message,
+            ));
+        }
+    }
     for (k, j) in mv.drawn_at.iter().flatten().enumerate() {
         let field = || format!("moving_loads[{i}].drawn_at[{k}]");
         if !starts.contains(j) {

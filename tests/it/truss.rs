@@ -688,7 +688,11 @@ fn positions_not_drawn_are_checked_and_tabled_but_not_drawn() {
         (pages.iter()).filter(|p| p.contains("not drawn: ")).count(),
         2
     );
-    // A position that is none, or named twice, is refused at its place.
+    // The book's names of the positions stand beside theirs in the table.
+    let (_, _, named) = build(r#", "drawn_at": ["B1"], "position_names": ["III", "I", "II"]"#);
+    assert!(named.contains(">\nI (crane at B1)\n</text>"));
+    // A position that is none, or named twice, or a list of names that is not one a
+    // position, is refused at its place.
     for (bad, field, says) in [
         (
             r#", "drawn_at": ["B3"]"#,
@@ -699,6 +703,11 @@ fn positions_not_drawn_are_checked_and_tabled_but_not_drawn() {
             r#", "drawn_at": ["B1", "B1"]"#,
             "moving_loads[0].drawn_at[1]",
             "named twice",
+        ),
+        (
+            r#", "drawn_at": ["B1"], "position_names": ["I", "II"]"#,
+            "moving_loads[0].position_names",
+            "one name for each of the 3 positions",
         ),
     ] {
         let e = AnyScene::from_json(&scene(bad), "m.json")
