@@ -179,6 +179,20 @@ pub struct MovingLoadSpec {
     pub position_names: Option<Vec<String>>,
 }
 
+impl MovingLoadSpec {
+    /// The path joints its positions start at, one per position: the joint of the first
+    /// load (none where the train is longer than its path, which the scene refuses).
+    fn starts(&self) -> &[String] {
+        &self.path[..(self.path.len() + 1).saturating_sub(self.loads_kg.len())]
+    }
+
+    /// The name of the position whose first load stands on `joint`: its load case's name
+    /// ("crane at B1").
+    fn position_name(&self, joint: &str) -> String {
+        format!("{} at {joint}", self.name)
+    }
+}
+
 /// The roof whose loads the truss carries (LH B.3, Gl. 3-10).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -710,11 +724,7 @@ impl TrussScene {
     /// drives the count.
     fn check_cost(&self, ctx: &ReadContext, truss: &Truss) -> Result<(), SceneError> {
         let origin = ctx.origin;
-        let positions: usize = self
-            .moving_loads
-            .iter()
-            .map(|m| (m.path.len() + 1).saturating_sub(m.loads_kg.len()))
-            .sum();
+        let positions: usize = self.moving_loads.iter().map(|m| m.starts().len()).sum();
         let cases = self.roof_cases(truss).len() + self.load_cases.len() + positions;
         let systems = if self.diagonal_mode == Some(PairMode::SplitHalfLoads) {
             2
@@ -772,8 +782,8 @@ impl TrussScene {
             }
         }
         for (i, mv) in self.moving_loads.iter().enumerate() {
-            for p in 0..=mv.path.len().saturating_sub(mv.loads_kg.len()) {
-                let name = format!("{} at {}", mv.name, mv.path[p]);
+            for start in mv.starts() {
+                let name = mv.position_name(start);
                 if let Some(first) = seen.insert(name.clone(), format!("moving_loads[{i}]")) {
                     return Err(twice(format!("moving_loads[{i}].name"), &name, &first));
                 }
@@ -1040,9 +1050,9 @@ impl TrussScene {
             }
         }));
         for mv in &self.moving_loads {
-            for p in 0..=mv.path.len() - mv.loads_kg.len() {
+            for (p, start) in mv.starts().iter().enumerate() {
                 cases.push(LoadCase {
-                    name: format!("{} at {}", mv.name, mv.path[p]),
+                    name: mv.position_name(start),
                     loads: mv
                         .loads_kg
                         .iter()
@@ -1053,7 +1063,7 @@ impl TrussScene {
                         })
                         .collect(),
                     force_scale: mv.force_scale_kg_per_mm,
-                    drawn: (mv.drawn_at.as_ref()).is_none_or(|d| d.contains(&mv.path[p])),
+                    drawn: (mv.drawn_at.as_ref()).is_none_or(|d| d.contains(start)),
                 });
             }
         }
@@ -1068,8 +1078,7 @@ impl TrussScene {
         (self.moving_loads.iter())
             .filter(|mv| mv.drawn_at.is_some())
             .map(|mv| {
-                let at = (0..=mv.path.len() - mv.loads_kg.len())
-                    .map(|p| index[format!("{} at {}", mv.name, mv.path[p]).as_str()]);
+                let at = (mv.starts().iter()).map(|j| index[mv.position_name(j).as_str()]);
                 PositionTable {
                     load: mv.name.clone(),
                     cases: at.collect(),
@@ -1224,8 +1233,7 @@ impl super::Procedure for TrussScene {
             let positions: Vec<(&str, &CaseResult)> = (pt.cases.iter().zip(&labels))
                 .map(|(&i, label)| (label.as_str(), &r[i]))
                 .collect();
-            let table = &pt.cases;
-            let most = (table.iter().flat_map(|&i| &problem.cases[i].loads))
+            let most = (pt.cases.iter().flat_map(|&i| &problem.cases[i].loads))
                 .map(|l| l.force.norm())
                 .fold(0.0, f64::max);
             let row = u16::try_from(rows + k).unwrap_or(u16::MAX);
@@ -1259,7 +1267,7 @@ impl super::Procedure for TrussScene {
 /// Each joint `drawn_at` names is where a position of the moving load starts, named once;
 /// `position_names` names every position.
 fn check_drawn_at(origin: &str, i: usize, mv: &MovingLoadSpec) -> Result<(), SceneError> {
-    let starts = &mv.path[..=mv.path.len() - mv.loads_kg.len()];
+    let starts = mv.starts();
     if let Some(names) = &mv.position_names {
         if names.len() != starts.len() {
             let message = format!(

@@ -175,28 +175,25 @@ fn construct(
             slack,
             numbered,
         };
-        if !case.drawn {
-            // Constructed and checked all the same, in a row of its own that the sheet
-            // leaves out (the walk-through shows the row as one page).
-            rows.heading = None;
-            b.set_part(Part::packed(rows.row, TRUSS));
-            b.set_context(|| case.name.clone());
-            out.push(b.unseen(|b| construct_case(b, &c))?.result);
-            b.clear_context();
-            rows.row += 1;
-            continue;
-        }
         // Each case a row of the sheet, its parts constructed once, each in its own frame.
+        // A case not drawn is constructed and checked all the same, in a row that the sheet
+        // leaves out (the walk-through shows it as one page).
         b.set_part(Part::packed(rows.row, TRUSS));
         b.set_context(|| case.name.clone());
-        let r = construct_case(b, &c)?;
+        let r = if case.drawn {
+            construct_case(b, &c)?
+        } else {
+            b.unseen(|b| construct_case(b, &c))?
+        };
         b.clear_context();
         // Several cases: each row under its case's name (dead load, wind, snow), as the
         // plates head their plans.
-        let heading = (rows.heading.take())
-            .or_else(|| (cases.len() > 1).then(|| case_heading(cases, case, dr.force_scale)));
-        if let Some(heading) = heading {
-            write_heading(b, &c, heading, figure_scale, &r, rows.row);
+        let heading = rows.heading.take();
+        if case.drawn {
+            let named = || (cases.len() > 1).then(|| case_heading(cases, case, dr.force_scale));
+            if let Some(heading) = heading.or_else(named) {
+                write_heading(b, &c, heading, figure_scale, &r, rows.row);
+            }
         }
         rows.row += 1;
         out.push(r.result);
@@ -532,6 +529,18 @@ fn draw_loads(
     loads
 }
 
+/// A force as the book's tables write it: signed (tension +, compression −) in whole kg,
+/// "0" within `zero_kg`.
+pub(super) fn signed_kg(f: f64, zero_kg: f64) -> String {
+    if f.abs() <= zero_kg {
+        "0".to_string()
+    } else if f > 0.0 {
+        format!("+{}", crate::fmt::num(f, 0))
+    } else {
+        format!("−{}", crate::fmt::num(-f, 0))
+    }
+}
+
 /// The rows of the evaluation: a head, the members, the reactions.
 fn table_rows(result: &CaseResult, zero_kg: f64) -> Vec<Vec<String>> {
     let mut rows = vec![vec![
@@ -541,17 +550,17 @@ fn table_rows(result: &CaseResult, zero_kg: f64) -> Vec<Vec<String>> {
         "Art".to_string(),
     ]];
     for mf in &result.members {
-        let (force, kind) = if mf.force.abs() <= zero_kg {
-            ("0".to_string(), "Nullstab")
+        let kind = if mf.force.abs() <= zero_kg {
+            "Nullstab"
         } else if mf.force > 0.0 {
-            (format!("+{}", crate::fmt::num(mf.force, 0)), "Zug")
+            "Zug"
         } else {
-            (format!("−{}", crate::fmt::num(-mf.force, 0)), "Druck")
+            "Druck"
         };
         rows.push(vec![
             mf.member.clone(),
             crate::fmt::num(mf.plan_mm, 1),
-            force,
+            signed_kg(mf.force, zero_kg),
             kind.to_string(),
         ]);
     }

@@ -5,7 +5,7 @@
 //! V = −Q₁); here every position is constructed and checked (its plan drawn or not), and the
 //! table is read off the plans.
 
-use super::cremona::CaseResult;
+use super::cremona::{signed_kg, CaseResult};
 use super::layout::HEADING_MM;
 use super::notes::N_POSITIONS;
 use super::Truss;
@@ -49,18 +49,6 @@ fn most_loaded(t: &Truss, r: &CaseResult, of: Run) -> Option<(usize, f64)> {
         })
 }
 
-/// A force as the book's tables write it: signed, tension +, compression −, whole kg; "0"
-/// within `zero_kg`.
-fn signed(f: f64, zero_kg: f64) -> String {
-    if f.abs() <= zero_kg {
-        "0".to_string()
-    } else if f > 0.0 {
-        format!("+{}", crate::fmt::num(f, 0))
-    } else {
-        format!("−{}", crate::fmt::num(-f, 0))
-    }
-}
-
 /// The rows of the table: a head (the position, each support's vertical reaction, the most
 /// loaded diagonal and vertical and their forces), then one row per position. The verticals
 /// on the supports are left out: they carry the reactions.
@@ -75,10 +63,10 @@ pub fn positions_rows(
     let mut rows = vec![head];
     for (name, r) in positions {
         let mut row = vec![name.to_string()];
-        row.extend(r.reactions.iter().map(|s| signed(s.force.y, zero_kg)));
+        row.extend(r.reactions.iter().map(|s| signed_kg(s.force.y, zero_kg)));
         for of in [Run::Diagonal, Run::Vertical] {
             match most_loaded(t, r, of) {
-                Some((m, f)) => row.extend([t.members[m].name.clone(), signed(f, zero_kg)]),
+                Some((m, f)) => row.extend([t.members[m].name.clone(), signed_kg(f, zero_kg)]),
                 None => row.extend(["–".to_string(), "–".to_string()]),
             }
         }

@@ -602,10 +602,7 @@ impl Board {
 
     /// The objects a figure draws: those of the steps not in a [`Part::hidden`] part.
     pub fn drawn_objects(&self) -> impl Iterator<Item = &Object> + '_ {
-        let steps = &self.steps;
-        self.objects.iter().filter(move |o| {
-            (steps.get((o.step.0 as usize).wrapping_sub(1))).is_none_or(|s| !s.part.hidden)
-        })
+        (self.objects.iter()).filter(|o| self.step(o.step).is_none_or(|s| !s.part.hidden))
     }
 
     /// The part the next steps draw in.
