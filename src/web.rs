@@ -11,7 +11,7 @@
 
 use crate::protocol::{Board, BoardConfig, FigureMeta, ObjId};
 use crate::render::{
-    figure_with_points, step_names, walkthrough_item, walkthrough_item_list, Grouping,
+    figure_with_points, page_count, step_names, walkthrough_item, walkthrough_item_list, Grouping,
 };
 use crate::scene::{handles, AnyScene, Handle, Preview};
 use serde::Serialize;
@@ -53,6 +53,10 @@ pub struct Built {
     pub page: Option<usize>,
     /// How many steps the construction has.
     pub step_count: usize,
+    /// How many pages its walk-through has: one a step, but one for the steps of a part not
+    /// drawn (the crane bridge's 5,433 steps on 2,080 pages). A drag's answer carries one
+    /// page's item; where this number changed, the page's list of steps is out of date.
+    pub page_count: usize,
     /// Every step: number, name, caption, situation, German term, book (none in an answer
     /// for a drag).
     pub steps: Vec<StepLine>,
@@ -278,6 +282,7 @@ fn built(
         },
         page,
         step_count: steps.len(),
+        page_count: page_count(board, Grouping::Step),
         steps: match page {
             None => step_lines(board),
             Some(_) => Vec::new(),

@@ -27,6 +27,6 @@ pub use table::{
     reference_table_text, summary_json, CheckRow, KindJson, ReferenceTableRow, SummaryJson,
 };
 pub use walkthrough::{
-    html_text, step_names, walkthrough, walkthrough_html, walkthrough_item, walkthrough_item_list,
-    walkthrough_items, walkthrough_page, Grouping, Page, WalkOptions,
+    html_text, page_count, step_names, walkthrough, walkthrough_html, walkthrough_item,
+    walkthrough_item_list, walkthrough_items, walkthrough_page, Grouping, Page, WalkOptions,
 };

@@ -7,7 +7,7 @@ var NS = 'http://www.w3.org/2000/svg';
 var data = JSON.parse(document.getElementById('gs-data').textContent);
 var name = data.name, scene = data.scene, good = clone(scene), handles = data.handles;
 var engine = null, queued = false, drag = null, lastText = JSON.stringify(scene);
-var times = [], last = null;
+var times = [], last = null, counts = { splice: 0, parsed: 0, list: 0 };
 var figure = document.getElementById('wt-figure');
 function clone(v) { return JSON.parse(JSON.stringify(v)); }
 function svg() { return figure.querySelector('svg'); }
@@ -286,6 +286,7 @@ function replaceChild(i, lines) {
 function applyPatch(p) {
   if (!shown || shown.svg !== svg()) return false;
   if (p.root) setRoot(shown.svg, p.root);
+  if (p.splice && !splice(p.splice)) return false;
   var by = {};
   p.lines.forEach(function (x) { (by[x[0]] = by[x[0]] || []).push(x); });
   for (var k in by) {
@@ -297,6 +298,39 @@ function applyPatch(p) {
   for (var i = 0; i < p.children.length; i++) {
     if (!replaceChild(p.children[i][0], p.children[i][1].split('\n'))) return false;
   }
+  return true;
+}
+// Takes out `removed` children of the root from child `at` on and puts the `added` ones (each
+// its text) in their place: a step more or fewer. False, and nothing kept of the figure
+// shown, where the children are not those shown or the texts are not one element each.
+function splice(sp) {
+  var kids = shown.kids;
+  if (sp.at + sp.removed > kids.length) { shown = null; return false; }
+  var holder = document.createElementNS(NS, 'svg');
+  holder.innerHTML = sp.added.join('\n');
+  var els = Array.prototype.slice.call(holder.children), put = [];
+  if (els.length !== sp.added.length) { shown = null; return false; }
+  for (var i = 0; i < els.length; i++) {
+    var kept = keep(els[i], sp.added[i].split('\n'));
+    if (!kept) { shown = null; return false; }
+    put.push(kept);
+  }
+  // (Past the last child: before what the page put after it, the handles.)
+  var after = sp.at + sp.removed < kids.length ? kids[sp.at + sp.removed].el
+    : kids.length ? kids[kids.length - 1].el.nextSibling : null;
+  // Each child is written on lines of its own: the line break after it goes and comes with it.
+  kids.slice(sp.at, sp.at + sp.removed).forEach(function (c) {
+    var n = c.el.nextSibling;
+    if (n && n.nodeType === 3 && n.data === '\n') n.remove();
+    c.el.remove();
+  });
+  els.forEach(function (e) {
+    shown.svg.insertBefore(e, after);
+    shown.svg.insertBefore(document.createTextNode('\n'), after);
+    fresh.push(e);
+  });
+  Array.prototype.splice.apply(kids, [sp.at, sp.removed].concat(put));
+  counts.splice++;
   return true;
 }
 // Sets the changed lines of child c in place: a tag's attributes, a text's node; a text
@@ -386,6 +420,8 @@ var stale = false;
 // The number of the engine's figure on the page (the engine answers a replay with what
 // changed from it), and the step layers the last replay put anew (null: the whole figure).
 var figureId = null, fresh = null;
+// The number of steps of the figure shown (where it changes, the layers are numbered anew).
+var figureSteps = null;
 function apply(a, light) {
   var t = performance.now(), next;
   fresh = [];
@@ -395,6 +431,7 @@ function apply(a, light) {
     t = mark('patch', t);
   } else {
     fresh = null;
+    counts.parsed++;
     var holder = document.createElement('div');
     holder.innerHTML = a.svg;
     next = holder.querySelector('svg');
@@ -408,13 +445,17 @@ function apply(a, light) {
     }
   }
   figureId = a.figureId;
-  var walk = window.graphostatikWalk;
-  if (a.page !== undefined && a.step_count === walk.pages) {
-    walk.swapFigure(a.items[0], fresh);
+  var walk = window.graphostatikWalk, moved = a.step_count !== figureSteps;
+  figureSteps = a.step_count;
+  if (a.page !== undefined) {
+    // A step more or fewer (a crank off its dead centre, a diagonal gone slack) leaves the
+    // list behind until the pointer rests: the figure and the current page follow now.
+    walk.swapFigure(a.items[0], fresh, moved, a.page_count);
     stale = true;
     t = mark('step', t);
   } else {
     el('wt-steps').innerHTML = a.items.join('');
+    counts.list++;
     stale = false;
     t = mark('items', t);
     walk.rebind();
@@ -461,12 +502,6 @@ function replay(force, light) {
     var base = inPlace && shown ? figureId : null;
     a = light ? engine.replay(name + '.json', text, window.graphostatikWalk.step(), base)
       : engine.replay(name + '.json', text, undefined, base);
-    // A drag that changes the number of steps (a crank leaving a dead centre) needs the
-    // whole step list: the answer for a drag holds the current step's item alone.
-    if (light && a.ok && a.step_count !== window.graphostatikWalk.pages) {
-      a = engine.replay(name + '.json', text, undefined, base);
-      light = false;
-    }
   } catch (e) {
     showError(String(e.message || e).split('\n')[0]);
     if (e.trapped) { engine = null; window.graphostatikEngine().then(function (x) { engine = x; }); }
@@ -576,8 +611,12 @@ window.graphostatikSite = {
   scene: function () { return clone(scene); },
   good: function () { return clone(good); },
   // The last construction put in place: its steps, checks (with bounds) and handles.
-  answer: function () { return last && { steps: last.step_count, checks: last.checks,
-    failed: last.failed, handles: last.handles }; },
+  answer: function () { return last && { steps: last.step_count, pages: last.page_count,
+    checks: last.checks, failed: last.failed, handles: last.handles,
+    item: last.page !== undefined ? last.items[0] : null }; },
+  // How often a replay put steps in or took some out of the figure shown (splice), parsed
+  // the figure anew (parsed), and put the whole step list in place (list).
+  counts: counts,
   // Replays the scene `n` times as a drag makes it, each replay drawing a figure other than
   // the one shown: the first handle moved by 0.5 to 2 mm (a crank turned by 2 to 8 degrees)
   // from where it was, in turn; the scene is put back after. Engine and page update, ms each,

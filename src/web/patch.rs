@@ -15,6 +15,12 @@ use serde::Serialize;
 pub struct FigurePatch<'a> {
     /// The root's opening tag, where it changed.
     pub root: Option<&'a str>,
+    /// Where the number of the root's children changed (a step more or fewer: a crank off
+    /// its dead centre, a diagonal gone slack): from child `at` on, `removed` children of the
+    /// old figure give way to `added`, whole. It is applied first: [`FigurePatch::lines`] and
+    /// [`FigurePatch::children`] count the children of the new figure.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub splice: Option<Splice>,
     /// `(child, line, text)`: line `line` of the root's child `child` (its own first line 0)
     /// is now `text`: a tag with the same name, or a text inside a `text`, `style` or
     /// `title` element.
@@ -23,23 +29,41 @@ pub struct FigurePatch<'a> {
     pub children: Vec<(usize, String)>,
 }
 
+/// Children of the root put in place of others: see [`FigurePatch::splice`].
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct Splice {
+    /// The first child replaced (in both figures: the children before it are paired).
+    pub at: usize,
+    /// How many children of the old figure go.
+    pub removed: usize,
+    /// The new figure's children that come in their place, each whole.
+    pub added: Vec<String>,
+}
+
 impl FigurePatch<'_> {
     /// Whether the two figures are the same.
     pub fn is_empty(&self) -> bool {
-        self.root.is_none() && self.lines.is_empty() && self.children.is_empty()
+        self.root.is_none()
+            && self.splice.is_none()
+            && self.lines.is_empty()
+            && self.children.is_empty()
     }
 
-    /// The patch as the page reads it: `{"root": …, "lines": [[child, line, text], …],
-    /// "children": [[child, text], …]}`.
+    /// The patch as the page reads it: `{"root": …, "splice": {"at": …, "removed": …,
+    /// "added": […]}, "lines": [[child, line, text], …], "children": [[child, text], …]}`.
     pub fn to_json(&self) -> String {
         serde_json::to_string(self).unwrap_or_else(|_| String::from("null"))
     }
 }
 
 /// What changed from the figure `old` to the figure `new` (SVG as the figures are written: a
-/// tag or a text per line), by the root's children; `None` where the two differ in the
-/// number of the root's children, or where either is not written a tag or a text per line
-/// (the page then takes the new figure whole).
+/// tag or a text per line), by the root's children; `None` where either is not written a tag
+/// or a text per line (the page then takes the new figure whole).
+///
+/// Where the two have as many children, child `k` of one is paired with child `k` of the
+/// other. Where they have not, those before some child are paired with their namesakes and
+/// those after it from the back, and the children between are spliced: a step put in or
+/// taken out costs its own layer and the lines of the layers after it (their numbers).
 ///
 /// ```
 /// use graphostatik::web::figure_patch;
@@ -49,20 +73,40 @@ impl FigurePatch<'_> {
 /// assert_eq!(p.root, Some("<svg a=\"2\">"));
 /// assert_eq!(p.lines, [(0, 1, "<line x1=\"5\"/>")]);
 /// assert_eq!(p.children, [(1, "<g>\n<circle/>\n</g>".to_string())]);
-/// assert!(figure_patch(old, "<svg>\n</svg>\n").is_none());
+/// // A child more: it is spliced in after the one kept.
+/// let more = "<svg a=\"1\">\n<g id=\"s\">\n<line x1=\"0\"/>\n</g>\n<text>\nA\n</text>\n<g/>\n</svg>\n";
+/// let p = figure_patch(old, more).unwrap();
+/// let s = p.splice.unwrap();
+/// assert_eq!((s.at, s.removed, s.added), (1, 0, vec!["<text>\nA\n</text>".to_string()]));
+/// assert!(figure_patch(old, "<svg>\n<g>\n</svg>\n").is_none());
 /// ```
 pub fn figure_patch<'a>(old: &str, new: &'a str) -> Option<FigurePatch<'a>> {
     let (a, b) = (lines(old), lines(new));
     let (ka, kb) = (children(&a)?, children(&b)?);
-    if ka.len() != kb.len() {
-        return None;
-    }
+    let was: Vec<&[&str]> = ka.iter().map(|r| &a[r.0..=r.1]).collect();
+    let now: Vec<&[&'a str]> = kb.iter().map(|r| &b[r.0..=r.1]).collect();
     let mut out = FigurePatch {
         root: (a[0] != b[0]).then_some(b[0]),
         ..FigurePatch::default()
     };
-    for (k, (ra, rb)) in ka.iter().zip(&kb).enumerate() {
-        let (was, now) = (&a[ra.0..=ra.1], &b[rb.0..=rb.1]);
+    // The pairs: (old child, new child).
+    let pairs: Vec<(usize, usize)> = if was.len() == now.len() {
+        (0..was.len()).map(|k| (k, k)).collect()
+    } else {
+        let (at, pairs) = spliced(&was, &now);
+        let kept = pairs.len();
+        out.splice = Some(Splice {
+            at,
+            removed: was.len() - kept,
+            added: now[at..at + now.len() - kept]
+                .iter()
+                .map(|c| c.join("\n"))
+                .collect(),
+        });
+        pairs
+    };
+    for (i, k) in pairs {
+        let (was, now) = (was[i], now[k]);
         if was == now {
             continue;
         }
@@ -74,6 +118,37 @@ pub fn figure_patch<'a>(old: &str, new: &'a str) -> Option<FigurePatch<'a>> {
         }
     }
     Some(out)
+}
+
+/// The children paired where their numbers differ by `d`: those before child `at` with their
+/// namesakes, those after it `d` apart; `at` where the pairs hold the most alike children (a
+/// pair of equal children counts two, a pair with the same elements one), so that a step put
+/// in or taken out leaves the layers before and after it paired with their own.
+fn spliced(was: &[&[&str]], now: &[&[&str]]) -> (usize, Vec<(usize, usize)>) {
+    let short = was.len().min(now.len());
+    let (da, db) = (was.len() - short, now.len() - short);
+    let score = |i: usize, k: usize| -> i64 {
+        if was[i] == now[k] {
+            2
+        } else {
+            i64::from(changed_lines(was[i], now[k]).is_some())
+        }
+    };
+    let front: Vec<i64> = (0..short).map(|k| score(k, k)).collect();
+    let back: Vec<i64> = (0..short).map(|k| score(k + da, k + db)).collect();
+    let mut sum: i64 = back.iter().sum();
+    let (mut best, mut at) = (sum, 0);
+    for k in 0..short {
+        sum += front[k] - back[k];
+        if sum > best {
+            (best, at) = (sum, k + 1);
+        }
+    }
+    let pairs = (0..at).map(|k| (k, k));
+    (
+        at,
+        pairs.chain((at..short).map(|k| (k + da, k + db))).collect(),
+    )
 }
 
 /// The figure's lines.
@@ -217,6 +292,13 @@ mod tests {
         let mut parts: Vec<Vec<String>> = (kids.iter())
             .map(|&(a, b)| lines[a..=b].iter().map(|l| l.to_string()).collect())
             .collect();
+        if let Some(sp) = &p.splice {
+            let added = sp
+                .added
+                .iter()
+                .map(|c| c.split('\n').map(str::to_string).collect());
+            parts.splice(sp.at..sp.at + sp.removed, added);
+        }
         for &(k, i, t) in &p.lines {
             parts[k][i] = t.to_string();
         }
@@ -258,6 +340,41 @@ mod tests {
             assert_eq!(applied(&old, &p), new, "{name}");
             let size = serde_json::to_string(&p).unwrap().len();
             assert!(size < new.len(), "{name}: a patch of {size} bytes");
+        }
+    }
+    /// A drag that adds or drops a step (the crank pin turned off its dead centre, and back):
+    /// the patch splices the layers between and renumbers those after; applied, it gives the
+    /// new figure byte for byte and is a fraction of it.
+    #[test]
+    fn a_step_more_or_fewer_is_spliced() {
+        let path = format!(
+            "{}/scenes/lh_abb52_esselborn.json",
+            env!("CARGO_MANIFEST_DIR")
+        );
+        let text = std::fs::read_to_string(&path).unwrap();
+        let mut scene: serde_json::Value = serde_json::from_str(&text).unwrap();
+        *scene.pointer_mut("/angles/degrees/0").unwrap() = serde_json::json!(10);
+        let at_dead_centre = crate::web::replay_apart(&text, "a", Some(0));
+        let off = crate::web::replay_apart(&scene.to_string(), "a", Some(0));
+        let count = |json: &str| {
+            serde_json::from_str::<serde_json::Value>(json).unwrap()["step_count"].clone()
+        };
+        assert_ne!(
+            count(&at_dead_centre.0),
+            count(&off.0),
+            "the step count changed"
+        );
+        for (old, new) in [(&at_dead_centre.1, &off.1), (&off.1, &at_dead_centre.1)] {
+            let p = figure_patch(old, new).unwrap();
+            let sp = p.splice.as_ref().expect("a splice");
+            assert!(sp.added.len() + sp.removed > 0);
+            assert_eq!(&applied(old, &p), new);
+            let size = serde_json::to_string(&p).unwrap().len();
+            assert!(
+                size < new.len() / 4,
+                "a patch of {size} bytes for {}",
+                new.len()
+            );
         }
     }
 }

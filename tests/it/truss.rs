@@ -684,10 +684,24 @@ fn positions_not_drawn_are_checked_and_tabled_but_not_drawn() {
     let pages = walkthrough_item_list(&some, Grouping::Step);
     let shown = some.steps().len() - hidden.len();
     assert_eq!(pages.len(), shown + 2);
-    assert_eq!(
-        (pages.iter()).filter(|p| p.contains("not drawn: ")).count(),
-        2
-    );
+    let unseen: Vec<&String> = pages.iter().filter(|p| p.contains("not drawn: ")).collect();
+    assert_eq!(unseen.len(), 2);
+    // A position not drawn is one line in the list (its steps' numbers, how many, the
+    // load case once); its steps, one line each with their checks, are its details.
+    for p in unseen {
+        assert_eq!(p.matches("class=\"wt-step\"").count(), 1, "{p}");
+        let line = &p[..p.find("<div class=\"wt-detail\">").unwrap()];
+        assert!(line.contains("<i>crane at B"), "{line}");
+        assert!(!line.contains(": joint"), "{line}");
+        let subs = p.matches("class=\"wt-sub\"").count();
+        let checks = p.matches("<tr class=\"wt-ok\">").count();
+        assert!(
+            line.contains(&format!(
+                "not drawn: {subs} steps constructed, {checks} checks made"
+            )),
+            "{line}"
+        );
+    }
     // The book's names of the positions stand beside theirs in the table.
     let (_, _, named) = build(r#", "drawn_at": ["B1"], "position_names": ["III", "I", "II"]"#);
     assert!(named.contains(">\nI (crane at B1)\n</text>"));
