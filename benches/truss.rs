@@ -51,6 +51,7 @@ fn girder(joints: usize) -> (Truss, Vec<LoadCase>) {
             loads,
             force_scale: None,
             drawn: true,
+            book_name: None,
         }],
     )
 }

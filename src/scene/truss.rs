@@ -347,8 +347,6 @@ pub struct PositionTable {
     pub load: String,
     /// Its positions as case indices, along its path.
     pub cases: Vec<usize>,
-    /// The book's name of each position, where the scene gives them.
-    pub names: Option<Vec<String>>,
 }
 
 impl TrussScene {
@@ -1047,6 +1045,7 @@ impl TrussScene {
                     .collect(),
                 force_scale: c.force_scale_kg_per_mm,
                 drawn: true,
+                book_name: None,
             }
         }));
         for mv in &self.moving_loads {
@@ -1064,6 +1063,7 @@ impl TrussScene {
                         .collect(),
                     force_scale: mv.force_scale_kg_per_mm,
                     drawn: (mv.drawn_at.as_ref()).is_none_or(|d| d.contains(start)),
+                    book_name: (mv.position_names.as_ref()).and_then(|n| n.get(p).cloned()),
                 });
             }
         }
@@ -1082,7 +1082,6 @@ impl TrussScene {
                 PositionTable {
                     load: mv.name.clone(),
                     cases: at.collect(),
-                    names: mv.position_names.clone(),
                 }
             })
             .collect()
@@ -1224,11 +1223,8 @@ impl super::Procedure for TrussScene {
         let rows = problem.cases.len() * systems;
         for (k, pt) in problem.position_tables.iter().enumerate() {
             // "I (crane at O9)" where the book names the positions.
-            let labels: Vec<String> = (pt.cases.iter().enumerate())
-                .map(|(p, &i)| match &pt.names {
-                    Some(names) => format!("{} ({})", names[p], problem.cases[i].name),
-                    None => problem.cases[i].name.clone(),
-                })
+            let labels: Vec<String> = (pt.cases.iter())
+                .map(|&i| problem.cases[i].title())
                 .collect();
             let positions: Vec<(&str, &CaseResult)> = (pt.cases.iter().zip(&labels))
                 .map(|(&i, label)| (label.as_str(), &r[i]))

@@ -500,6 +500,7 @@ impl Truss {
             loads: out,
             force_scale: None,
             drawn: true,
+            book_name: None,
         })
     }
 

@@ -64,7 +64,7 @@ pub use super::plan::{CaseResult, ReactionForce, TrussDrawing, ZERO_FORCE_REL};
 /// );
 /// let case = LoadCase { name: "P".into(),
 ///     loads: vec![JointLoad { joint: 2, force: Vector::new(0.0, -1000.0) }],
-///     force_scale: None, drawn: true };
+///     force_scale: None, drawn: true, book_name: None };
 /// let mut b = Board::recording().with_figure_size(400.0);
 /// let r = construct_truss(&mut b, &t, &[case],
 ///     &TrussDrawing { length_scale: 20.0, force_scale: 20.0 }).unwrap();
@@ -263,18 +263,18 @@ pub fn force_scales<'a>(
         })
 }
 
-/// A case's heading over its row: its name, and its force scale where the figure's plans
-/// are drawn at more than one ("crane at O9, 1 mm = 100 kg"), as each plan is read at its
-/// own (LH Aufgabe 5).
+/// A case's heading over its row: its name (after the book's, where it has one), and its
+/// force scale where the figure's plans are drawn at more than one ("I (crane at O9), 1 mm =
+/// 100 kg"), as each plan is read at its own (LH Aufgabe 5).
 pub(super) fn case_heading(cases: &[LoadCase], case: &LoadCase, force_scale: f64) -> String {
     if cases.iter().any(|c| c.force_scale.is_some()) {
         format!(
             "{}, 1 mm = {} kg",
-            case.name,
+            case.title(),
             crate::fmt::num(force_scale, 6)
         )
     } else {
-        case.name.clone()
+        case.title()
     }
 }
 

@@ -599,6 +599,7 @@ mod memo_tests {
                 .collect(),
             force_scale: None,
             drawn: true,
+            book_name: None,
         }
     }
 

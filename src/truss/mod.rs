@@ -157,6 +157,21 @@ pub struct LoadCase {
     ///
     /// [`Board::unseen`]: crate::protocol::Board::unseen
     pub drawn: bool,
+    /// The book's name of the case, where the book numbers it: LH Aufgabe 5 calls the crane
+    /// positions I to X (Tabelle 2). Headings and tables write it before the name ("I (crane
+    /// at O9)").
+    pub book_name: Option<String>,
+}
+
+impl LoadCase {
+    /// The case as headings and tables name it: the book's name first where it has one
+    /// ("I (crane at O9)"), else its name.
+    pub fn title(&self) -> String {
+        match &self.book_name {
+            Some(b) => format!("{b} ({})", self.name),
+            None => self.name.clone(),
+        }
+    }
 }
 
 /// A plane truss with its supports.

@@ -94,7 +94,7 @@ pub fn positions_rows(
 /// );
 /// let at = |joint, name: &str| LoadCase { name: name.into(),
 ///     loads: vec![JointLoad { joint, force: Vector::new(0.0, -1000.0) }],
-///     force_scale: None, drawn: name == "at IV" };
+///     force_scale: None, drawn: name == "at IV", book_name: None };
 /// let cases = [at(3, "at IV"), at(2, "at III")];
 /// let mut b = Board::recording().with_figure_size(400.0);
 /// let r = construct_truss(&mut b, &t, &cases,

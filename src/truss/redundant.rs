@@ -139,6 +139,7 @@ impl Pairs<'_> {
                     .collect(),
                 force_scale: case.force_scale,
                 drawn: case.drawn,
+                book_name: case.book_name.clone(),
             };
             let r = construct_truss_rows(b, &sub, &[half], self.dr, row, &[])?;
             for (i, &m) in keep.iter().enumerate() {
@@ -179,6 +180,7 @@ impl Pairs<'_> {
             loads: case.loads.clone(),
             force_scale: case.force_scale,
             drawn: case.drawn,
+            book_name: case.book_name.clone(),
         };
         let ghosts: Vec<SlackMember> = (drop.iter())
             .map(|&m| SlackMember {

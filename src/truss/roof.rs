@@ -120,6 +120,7 @@ pub fn load_cases(t: &Truss, roof: &Roof) -> Vec<LoadCase> {
                 loads,
                 force_scale: None,
                 drawn: true,
+                book_name: None,
             });
         }
     }

@@ -50,6 +50,7 @@ fn case(loads: Vec<JointLoad>) -> Vec<LoadCase> {
         loads,
         force_scale: None,
         drawn: true,
+        book_name: None,
     }]
 }
 
@@ -705,6 +706,11 @@ fn positions_not_drawn_are_checked_and_tabled_but_not_drawn() {
     // The book's names of the positions stand beside theirs in the table.
     let (_, _, named) = build(r#", "drawn_at": ["B1"], "position_names": ["III", "I", "II"]"#);
     assert!(named.contains(">\nI (crane at B1)\n</text>"));
+    // And the heading over the drawn position's row, as the book heads its plans.
+    assert!(
+        named.matches(">\nI (crane at B1)").count() == 2,
+        "the table's row and the heading"
+    );
     // A position that is none, or named twice, or a list of names that is not one a
     // position, is refused at its place.
     for (bad, field, says) in [
@@ -1117,12 +1123,14 @@ fn an_empty_load_case_and_a_self_balanced_one_give_clean_plans() {
             loads: vec![],
             force_scale: None,
             drawn: true,
+            book_name: None,
         },
         LoadCase {
             name: "pulled".into(),
             loads: vec![pull(0, -500.0), pull(4, 500.0)],
             force_scale: None,
             drawn: true,
+            book_name: None,
         },
     ];
     let (_, r) = run(&t, &cases);
@@ -1424,6 +1432,7 @@ fn reactions_by_moments_agree_with_the_dense_solve() {
         loads: loads.clone(),
         force_scale: None,
         drawn: true,
+        book_name: None,
     };
     let cases: [Vec<Support>; 2] = [
         // Vertical at I and II (parallel), horizontal at III.
