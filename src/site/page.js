@@ -517,7 +517,8 @@ function replay(force, light) {
     apply(a, light);
   }
   var t2 = performance.now();
-  var t = { engine: t1 - t0, total: t2 - t0, ok: a.ok, inPlace: a.ok && patched };
+  var t = { engine: t1 - t0, total: t2 - t0, ok: a.ok, inPlace: a.ok && patched,
+    steps: a.ok ? a.step_count : null };
   times.push(t);
   el('gs-time').textContent = a.ok ? 'replayed in ' + t.total.toFixed(1) + ' ms' : '';
   return t;
@@ -619,19 +620,24 @@ window.graphostatikSite = {
   counts: counts,
   // Replays the scene `n` times as a drag makes it, each replay drawing a figure other than
   // the one shown: the first handle moved by 0.5 to 2 mm (a crank turned by 2 to 8 degrees)
-  // from where it was, in turn; the scene is put back after. Engine and page update, ms each,
-  // of the replays the engine took; `full` also puts the step list in place each time, as
-  // the end of a drag does.
+  // from where it was, in turn; the scene is put back after. Engine and page update, ms
+  // each, of the replays the engine took (`steps`: the step count of each; `before`: that
+  // of the figure shown before them), and as `release` the full answer put in place after
+  // them, as when the pointer is released; `full` also puts the step list in place each
+  // time.
   bench: function (n, full) {
     var out = [], h = handles[0], was = clone(scene);
+    out.before = last && last.step_count;
     for (var i = 0; i < n; i++) {
       if (h) nudge(h, was, i);
       var t = replay(true, !full);
       if (t && t.ok) out.push(t);
     }
     scene = was;
-    replay(true, false);
+    // The release: the full answer, the step list put in place.
+    var r = replay(true, false);
     settle();
+    out.release = r && r.ok ? r.total : null;
     return out;
   }
 };

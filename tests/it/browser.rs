@@ -682,7 +682,7 @@ fn replay_latency() {
         out.stdout.len()
     };
     println!(
-        "engine: {:.2} MB, {:.2} MB gzipped\n\n| scene | steps | engine median ms | page median ms, parsed anew | page median ms, in place | page worst ms, in place | set in place | page's phases, mean ms |\n|---|---:|---:|---:|---:|---:|---:|---|",
+        "engine: {:.2} MB, {:.2} MB gzipped\n\n| scene | steps | engine median ms | page median ms, parsed anew | page median ms, in place | page worst ms, in place | set in place | step count changed: replays, worst ms | release ms | page's phases, mean ms |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---|",
         std::fs::metadata(&wasm).unwrap().len() as f64 / 1e6,
         gz as f64 / 1e6
     );
@@ -719,12 +719,15 @@ fn replay_latency() {
              var worst = t.map(total).sort(function (a, b) { return b - a; })[0];\
              var ph = Object.keys(S.phases).filter(function (k) { return S.phases[k] > 0; })\
                .map(function (k) { return k + ' ' + (S.phases[k] / 15).toFixed(1); });\
+             var moved = t.filter(function (x, i) { return x.steps !== (i ? t[i - 1].steps : t.before); });\
+             var movedWorst = moved.map(total).sort(function (a, b) { return b - a; })[0];\
              return [S.answer().steps, median(t, function (x) { return x.engine; }),\
                median(window.gsAnew, total), median(t, total), worst,\
-               t.filter(function (x) { return x.inPlace; }).length, t.length, ph.join(', ')];",
+               t.filter(function (x) { return x.inPlace; }).length, t.length, ph.join(', '),\
+               moved.length ? moved.length + ', worst ' + movedWorst.toFixed(1) : '–', t.release];",
         );
         println!(
-            "| {name} | {} | {:.1} | {:.1} | {:.1} | {:.1} | {} of {} | {} |",
+            "| {name} | {} | {:.1} | {:.1} | {:.1} | {:.1} | {} of {} | {} | {:.1} | {} |",
             v[0],
             v[1].as_f64().unwrap(),
             v[2].as_f64().unwrap(),
@@ -732,6 +735,8 @@ fn replay_latency() {
             v[4].as_f64().unwrap(),
             v[5],
             v[6],
+            v[8].as_str().unwrap_or_default(),
+            v[9].as_f64().unwrap_or(f64::NAN),
             v[7].as_str().unwrap_or_default()
         );
     }
