@@ -174,7 +174,8 @@ pub struct MovingLoadSpec {
     pub drawn_at: Option<Vec<String>>,
     /// The book's name of each position, in the order of the path (LH Aufgabe 5 numbers the
     /// crane's ten positions I to X in Tabelle 2, not in the order they stand on the girder):
-    /// written beside each position's name in the table of positions.
+    /// written before each position's name in the table of positions and in the heading of
+    /// a drawn position ("I (crane at O9)").
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub position_names: Option<Vec<String>>,
 }

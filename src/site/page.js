@@ -420,9 +420,9 @@ var stale = false;
 // The number of the engine's figure on the page (the engine answers a replay with what
 // changed from it), and the step layers the last replay put anew (null: the whole figure).
 var figureId = null, fresh = null;
-// The number of steps of the figure shown (where it changes, the layers are numbered anew).
-var figureSteps = null;
-function apply(a, light) {
+// `moved`: whether `a` has a step more or fewer than the answer put in place before it (its
+// layers are numbered anew).
+function apply(a, moved) {
   var t = performance.now(), next;
   fresh = [];
   patched = inPlace && (a.patch ? applyPatch(a.patch) : patch(a.svg));
@@ -445,8 +445,7 @@ function apply(a, light) {
     }
   }
   figureId = a.figureId;
-  var walk = window.graphostatikWalk, moved = a.step_count !== figureSteps;
-  figureSteps = a.step_count;
+  var walk = window.graphostatikWalk;
   if (a.page !== undefined) {
     // A step more or fewer (a crank off its dead centre, a diagonal gone slack) leaves the
     // list behind until the pointer rests: the figure and the current page follow now.
@@ -513,8 +512,9 @@ function replay(force, light) {
   } else {
     clearError();
     good = clone(scene);
+    var moved = !last || a.step_count !== last.step_count;
     last = a;
-    apply(a, light);
+    apply(a, moved);
   }
   var t2 = performance.now();
   var t = { engine: t1 - t0, total: t2 - t0, ok: a.ok, inPlace: a.ok && patched,
