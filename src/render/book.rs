@@ -2,113 +2,8 @@
 //! check it stands for ([`BookValue`]).
 
 use crate::fmt::num;
-use crate::protocol::Board;
-use crate::scene::BookValue;
-use serde::Serialize;
+pub use crate::scene::{book_rows, BookRow, Verdict};
 use std::fmt::Write;
-
-/// How a printed number stands against the construction.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Verdict {
-    /// Within what the printed number stands for.
-    Reproduced,
-    /// Outside it, for the cause the scene names.
-    Explained,
-    /// Outside it, and no cause is named: the check fails.
-    Unexplained,
-    /// No check of that quantity (and situation) was made: the check fails.
-    NoSuchCheck,
-}
-
-/// One book row.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct BookRow {
-    /// Where the book prints it.
-    pub source: String,
-    /// The check's quantity, and its situation where one was named.
-    pub quantity: String,
-    /// The check's unit.
-    pub unit: String,
-    /// As printed.
-    pub printed: f64,
-    /// What the construction gives.
-    pub constructed: Option<f64>,
-    /// What the book's own inputs give (the check's closed form).
-    pub inputs: Option<f64>,
-    /// What the printed number stands for (±).
-    pub within: f64,
-    /// What `within` stands for.
-    pub basis: String,
-    /// How they stand.
-    pub verdict: Verdict,
-    /// The cause the scene names, where they differ.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub cause: Option<String>,
-}
-
-impl BookRow {
-    /// Reproduced, or explained.
-    pub fn passed(&self) -> bool {
-        matches!(self.verdict, Verdict::Reproduced | Verdict::Explained)
-    }
-}
-
-/// Whether a check stands in the situation `at`: its context, or its context and object as
-/// the check table's context column writes them ("dead load: joint I, member 1").
-fn situated(e: &crate::protocol::CheckEntry, at: &str) -> bool {
-    let context = e.context.unwrap_or("");
-    match &e.check.object {
-        None => e.context == Some(at),
-        Some(object) => {
-            e.context == Some(at)
-                || match at.strip_suffix(&**object) {
-                    Some(head) if context.is_empty() => head.is_empty(),
-                    Some(head) => head.strip_suffix(", ") == Some(context),
-                    None => false,
-                }
-        }
-    }
-}
-
-/// The book rows of `values` against the checks on `board` (every check must be kept:
-/// a board of [`Mode::Checks`](crate::protocol::Mode) with `every`, or a drawing board).
-pub fn book_rows(board: &Board, values: &[BookValue]) -> Vec<BookRow> {
-    let entries = board.check_entries();
-    (values.iter())
-        .map(|v| {
-            let found = entries.iter().find(|e| {
-                *e.check.quantity == *v.check && v.at.as_deref().is_none_or(|at| situated(e, at))
-            });
-            let within = v.tolerance();
-            let verdict = match found {
-                None => Verdict::NoSuchCheck,
-                Some(e) if (e.check.constructed - v.printed).abs() <= within => Verdict::Reproduced,
-                Some(_) if v.cause.is_some() => Verdict::Explained,
-                Some(_) => Verdict::Unexplained,
-            };
-            let quantity = match &v.at {
-                Some(at) => format!("{}, {at}", v.check),
-                None => v.check.clone(),
-            };
-            BookRow {
-                source: v.source.clone(),
-                quantity,
-                unit: found.map_or(String::new(), |e| e.check.unit.to_string()),
-                printed: v.printed,
-                constructed: found.map(|e| e.check.constructed),
-                inputs: found.map(|e| e.check.closed_form),
-                within,
-                basis: (v.basis.clone())
-                    .unwrap_or_else(|| "half a unit of the printed last place".into()),
-                cause: (verdict != Verdict::Reproduced)
-                    .then(|| v.cause.clone())
-                    .flatten(),
-                verdict,
-            }
-        })
-        .collect()
-}
 
 /// The book rows as text, one block a row: the quantity and where the book prints it, then
 /// printed, constructed and the book's inputs side by side, then the verdict and its cause.
@@ -168,7 +63,8 @@ pub fn book_table_text(rows: &[BookRow]) -> String {
 mod tests {
     use super::*;
     use crate::kernel::Point;
-    use crate::protocol::{Note, Role, Scale, Topic};
+    use crate::protocol::{Board, Note, Role, Scale, Topic};
+    use crate::scene::BookValue;
 
     fn value(printed: f64, at: Option<&str>, cause: Option<&str>) -> BookValue {
         BookValue {
@@ -179,6 +75,7 @@ mod tests {
             basis: None,
             source: "a book".into(),
             cause: cause.map(str::to_string),
+            name: None,
         }
     }
 

@@ -87,10 +87,6 @@ impl Frame {
     }
 }
 
-/// How far the drawn region reaches beyond the figure's solid parts, as a fraction of its
-/// larger dimension.
-const CLIP_REACH: f64 = 0.12;
-
 fn bounds(pts: &[Point]) -> [f64; 4] {
     let (mut min_x, mut max_x, mut min_y, mut max_y) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
     for p in pts {
@@ -198,15 +194,17 @@ fn label_region(f: &Frame) -> [f64; 4] {
 
 fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
     // The solid parts (circles, segments, vectors, curves, given points such as a pole) span
-    // the figure; lines and constructed points are drawn within reach of them.
-    let mut solid = Vec::new();
+    // the figure; lines and constructed points are drawn within reach of them. A table the
+    // layout sets where there is room ([`Part::free`](crate::protocol::Part)) widens the
+    // sheet but not that reach, so that no line is drawn on into it.
+    let (mut solid, mut tables) = (Vec::new(), Vec::new());
     for o in board.drawn_objects() {
+        let step = board.steps().get(o.step.0 as usize - 1);
         let given_point = matches!(o.geom, Geom::Point { .. })
-            && board
-                .steps()
-                .get(o.step.0 as usize - 1)
-                .is_some_and(|st| st.kind == crate::protocol::StepKind::Given);
-        if given_point || !matches!(o.geom, Geom::Line { .. } | Geom::Point { .. }) {
+            && step.is_some_and(|st| st.kind == crate::protocol::StepKind::Given);
+        if matches!(o.geom, Geom::Table { .. }) && step.is_some_and(|st| st.part.free) {
+            extent_points(o, &mut tables);
+        } else if given_point || !matches!(o.geom, Geom::Line { .. } | Geom::Point { .. }) {
             extent_points(o, &mut solid);
         }
     }
@@ -232,6 +230,7 @@ fn frame_of(board: &Board, meta: &FigureMeta) -> Frame {
         source: Vec::new(),
     };
     let mut pts = solid;
+    pts.extend(tables);
     for o in board.drawn_objects() {
         let mut more = Vec::new();
         match &o.geom {
@@ -832,7 +831,7 @@ pub fn inspect(meta: &FigureMeta, board: &Board) -> FigureReport {
         overprints: o.pairs,
         on_dots: o.on_dots,
         off_sheet: o.off_sheet,
-        part_overlaps: super::layout::overlapping_pairs(&super::layout::part_boxes(&board)),
+        part_overlaps: super::layout::part_overlaps(&board),
         emptiest_mm: emptiest(&board, &f, &placed),
         area_mm: [region[2] - region[0], region[3] - region[1]],
     }

@@ -19,20 +19,24 @@
 //! [`WRAP_GAIN`] smaller for a bounding box at most [`WRAP_GROWTH`] larger (391 × 284 mm).
 //!
 //! A free part ([`Part::free`]: a table of results, which shares no axis with anything) is
-//! set last, in part order, where it grows the sheet least: in a hole the rows and columns
-//! leave (beside a short row, under a short column) where its box stands a gap clear of
-//! every part and crosses no drawn line, and of such places the one nearest to where its
-//! own row and column would put it. The Diesel engine's table of T_m moves from a row of its
+//! set last, in part order, where it grows the sheet least. First inside the sheet, where
+//! its box meets no stroke, point or table of the parts set before it
+//! (`ink::inner_hole`: LH Abb. 52's table of the book's values goes into the empty
+//! upper left that the pole B₁ high over the crank leaves), of such places the one nearest
+//! to where its own row and column would put it; else in a hole the rows and columns leave
+//! (beside a short row, under a short column) where its box stands a gap clear of every
+//! part and crosses no drawn line. The Diesel engine's table of T_m moves from a row of its
 //! own under the turning-force diagram to the room beside it (KG Abb. 1058: 200 → 165 mm).
-//!
+
 //! A part's extent is that of its solid drawing (points, segments, vectors, circles, arcs,
 //! curves, tables; not the lines, which the figure clips to the reach of the solids) with
 //! [`PART_MARGIN`] around it for the lettering.
 
-use super::extent::{extent_points, line_ends};
-use crate::kernel::construct::clip_to_rect;
+use super::extent::extent_points;
+use super::ink::{inner_hole, part_marks, Mark};
+use super::style::{CLIP_REACH, LINE_OVERSHOOT};
 use crate::kernel::{Point, Vector};
-use crate::protocol::{Board, Geom, Part};
+use crate::protocol::{Board, Geom, Part, StepKind};
 use std::collections::BTreeMap;
 
 /// The gap between two rows or two columns of parts (mm of the sheet).
@@ -55,22 +59,58 @@ pub struct PartBox {
     pub bounds: [f64; 4],
 }
 
-/// The extent of every part a board draws in, in part order.
+/// The extent of every part a board draws in, in part order. Where one part is drawn
+/// beside free parts only (tables, which do not widen the reach of the lines), its extent
+/// is what the figure draws of it: its solid drawing and the points it constructs within
+/// reach of that (12 % of its larger side, as the figure clips lines; a point farther out, an intersection of nearly parallel
+/// rays, is left off the sheet). Otherwise every point counts: the figure's reach is that
+/// of all its parts, and a line of one part may be drawn on to a far point of its own.
 pub fn part_boxes(board: &Board) -> Vec<PartBox> {
-    let mut boxes: BTreeMap<Part, [f64; 4]> = BTreeMap::new();
+    let mut grid = (board.drawn_objects())
+        .filter_map(|o| board.step(o.step))
+        .filter(|s| !s.part.free)
+        .map(|s| s.part);
+    let first = grid.next();
+    let alone = first.is_some() && grid.all(|p| Some(p) == first);
+    let grow = |boxes: &mut BTreeMap<Part, [f64; 4]>, part: Part, pts: &[Point]| {
+        for p in pts.iter().filter(|p| p.x.is_finite() && p.y.is_finite()) {
+            let b = boxes.entry(part).or_insert([p.x, p.y, p.x, p.y]);
+            *b = [b[0].min(p.x), b[1].min(p.y), b[2].max(p.x), b[3].max(p.y)];
+        }
+    };
+    let constructed = |o: &crate::protocol::Object| {
+        matches!(o.geom, Geom::Point { .. })
+            && board
+                .step(o.step)
+                .is_some_and(|s| s.kind != StepKind::Given)
+    };
+    let mut solid: BTreeMap<Part, [f64; 4]> = BTreeMap::new();
     let mut pts = Vec::new();
     for o in board.drawn_objects() {
-        if matches!(o.geom, Geom::Line { .. }) {
+        if matches!(o.geom, Geom::Line { .. }) || constructed(o) {
             continue;
         }
-        let Some(step) = board.step(o.step) else {
+        if let Some(step) = board.step(o.step) {
+            pts.clear();
+            extent_points(o, &mut pts);
+            grow(&mut solid, step.part, &pts);
+        }
+    }
+    let mut boxes = solid.clone();
+    for o in board.drawn_objects().filter(|o| constructed(o)) {
+        let (Some(step), Geom::Point { at }) = (board.step(o.step), &o.geom) else {
             continue;
         };
-        pts.clear();
-        extent_points(o, &mut pts);
-        for p in pts.iter().filter(|p| p.x.is_finite() && p.y.is_finite()) {
-            let b = boxes.entry(step.part).or_insert([p.x, p.y, p.x, p.y]);
-            *b = [b[0].min(p.x), b[1].min(p.y), b[2].max(p.x), b[3].max(p.y)];
+        let near = !alone
+            || solid.get(&step.part).is_none_or(|b| {
+                let reach = CLIP_REACH * (b[2] - b[0]).max(b[3] - b[1]) + LINE_OVERSHOOT;
+                at.x >= b[0] - reach
+                    && at.x <= b[2] + reach
+                    && at.y >= b[1] - reach
+                    && at.y <= b[3] + reach
+            });
+        if near {
+            grow(&mut boxes, step.part, &[*at]);
         }
     }
     (boxes.into_iter())
@@ -94,6 +134,34 @@ pub fn overlapping_pairs(boxes: &[PartBox]) -> usize {
         .map(|(i, a)| {
             (boxes[i + 1..].iter())
                 .filter(|b| overlap(&a.bounds, &b.bounds))
+                .count()
+        })
+        .sum()
+}
+
+/// How many pairs of parts overlap on the board as it is laid out: two boxes that overlap
+/// where neither part is free, else a free part (a table) whose box meets a mark of the
+/// other part (it may stand inside a large part's box where that is empty).
+pub fn part_overlaps(board: &Board) -> usize {
+    let boxes = part_boxes(board);
+    let marks = part_marks(board);
+    let overlap =
+        |a: &[f64; 4], b: &[f64; 4]| a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
+    let touch = |free: &PartBox, other: Part| {
+        (marks.get(&other)).is_some_and(|ms| ms.iter().any(|m| m.meets(free.bounds)))
+    };
+    (boxes.iter().enumerate())
+        .map(|(i, a)| {
+            (boxes[i + 1..].iter())
+                .filter(|b| {
+                    overlap(&a.bounds, &b.bounds)
+                        && match (a.part.free, b.part.free) {
+                            (false, false) => true,
+                            (true, false) => touch(a, b.part),
+                            (false, true) => touch(b, a.part),
+                            (true, true) => touch(a, b.part) || touch(b, a.part),
+                        }
+                })
                 .count()
         })
         .sum()
@@ -250,28 +318,12 @@ fn too_near(a: &[f64; 4], b: &[f64; 4]) -> bool {
     a[0] < b[2] + g && b[0] < a[2] + g && a[1] < b[3] + g && b[1] < a[3] + g
 }
 
-/// The lines each part draws, as drawn (their ends past the outermost points on them), to
-/// keep a free part's box off them.
-fn part_lines(board: &Board) -> Vec<(Part, Point, Point)> {
-    (board.drawn_objects())
-        .filter_map(|o| {
-            let (a, b) = line_ends(o)?;
-            Some((board.step(o.step)?.part, a, b))
-        })
-        .collect()
-}
-
 /// Where the free part `free` goes beside the boxes `placed`: a gap clear of every placed
 /// box and off every line, where it grows the sheet (the boxes' bounding box) least, and of
 /// such places (within [`SHEET_GROWTH_TIE`]) the one nearest to `wanted`, where the rows and
 /// columns would put it. The places tried are `wanted` and those that set the box's edges a
 /// gap from a placed box's edges or on the sheet's; `None` where none is clear.
-fn hole(
-    placed: &[[f64; 4]],
-    lines: &[(Point, Point)],
-    free: [f64; 4],
-    wanted: [f64; 4],
-) -> Option<Vector> {
+fn hole(placed: &[[f64; 4]], marks: &[Mark], free: [f64; 4], wanted: [f64; 4]) -> Option<Vector> {
     let sheet = placed.iter().fold(*placed.first()?, union);
     let (w, h) = (free[2] - free[0], free[3] - free[1]);
     let mut xs = vec![sheet[0], sheet[2] - w];
@@ -298,17 +350,21 @@ fn hole(
         .map(|c| ((centre(&c) - centre(&wanted)).norm(), c))
         .collect();
     near.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let clear = |c: &[f64; 4]| {
-        !(lines.iter()).any(|&(a, b)| clip_to_rect(a, b, *c).is_some_and(|(t0, t1)| t0 < t1))
-    };
+    let clear = |c: &[f64; 4]| !marks.iter().any(|m| m.meets(*c));
     let (_, c) = near.into_iter().find(|(_, c)| clear(c))?;
     Some(Vector::new(c[0] - free[0], c[1] - free[1]))
 }
 
 /// How far each part is moved: the rows and columns set out, then each free part
-/// ([`Part::free`]) into a hole of the sheet, in part order. A free part no hole takes joins
-/// the rows and columns, and the holes are sought again.
-fn shifts(boxes: &[PartBox], lines: &[(Part, Point, Point)], wrap: f64) -> BTreeMap<Part, Vector> {
+/// ([`Part::free`]) in part order into room the sheet has: inside it where its box meets
+/// no mark of the parts set before it ([`inner_hole`]), else in a hole the boxes leave
+/// ([`hole`]). A free part that neither takes joins the rows and columns, and the room is
+/// sought again.
+fn shifts(
+    boxes: &[PartBox],
+    marks: &BTreeMap<Part, Vec<Mark>>,
+    wrap: f64,
+) -> BTreeMap<Part, Vector> {
     let everything = grid_shifts(boxes, wrap);
     let (mut grid, mut free): (Vec<PartBox>, Vec<PartBox>) =
         boxes.iter().partition(|b| !b.part.free);
@@ -320,27 +376,53 @@ fn shifts(boxes: &[PartBox], lines: &[(Part, Point, Point)], wrap: f64) -> BTree
         let mut placed: Vec<[f64; 4]> = (grid.iter())
             .map(|b| moved(b.bounds, shift[&b.part]))
             .collect();
-        let mut drawn: Vec<(Point, Point)> = (lines.iter())
-            .filter_map(|(p, a, b)| shift.get(p).map(|d| (a + d, b + d)))
+        let reach = within_reach(&placed);
+        let mut drawn: Vec<Mark> = (marks.iter())
+            .filter_map(|(p, ms)| Some((*shift.get(p)?, ms)))
+            .flat_map(|(d, ms)| ms.iter().filter_map(move |m| m.moved(d).clipped(reach)))
             .collect();
         let misfit = free.iter().position(|f| {
             let wanted = moved(f.bounds, everything[&f.part]);
-            let Some(d) = hole(&placed, &drawn, f.bounds, wanted) else {
+            let Some(d) = room(&placed, &drawn, f.bounds, wanted) else {
                 return true;
             };
             shift.insert(f.part, d);
             placed.push(moved(f.bounds, d));
-            drawn.extend(
-                (lines.iter())
-                    .filter(|l| l.0 == f.part)
-                    .map(|l| (l.1 + d, l.2 + d)),
-            );
+            let own = marks.get(&f.part).map_or(&[][..], |ms| &ms[..]);
+            drawn.extend(own.iter().map(|m| m.moved(d)));
             false
         });
         match misfit {
             None => return shift,
             Some(k) => grid.push(free.remove(k)),
         }
+    }
+}
+
+/// The region the figure draws lines in, for boxes `placed` (the parts that are not free):
+/// their extent (without [`PART_MARGIN`]) and [`CLIP_REACH`] of its larger side around it,
+/// as the figure clips its lines; a free part is set clear of the lines there, and does not
+/// widen the region.
+fn within_reach(placed: &[[f64; 4]]) -> [f64; 4] {
+    let Some(first) = placed.first() else {
+        return [0.0; 4];
+    };
+    let [x0, y0, x1, y1] = placed.iter().fold(*first, union);
+    let side = (x1 - x0).max(y1 - y0) - 2.0 * PART_MARGIN;
+    let reach = CLIP_REACH * side.max(0.0) + LINE_OVERSHOOT;
+    let m = reach - PART_MARGIN;
+    [x0 - m, y0 - m, x1 + m, y1 + m]
+}
+
+/// How far the free part of box `free` moves: into the sheet the boxes `placed` span where
+/// it meets none of `marks` ([`inner_hole`]), else into a hole beside them ([`hole`]).
+fn room(placed: &[[f64; 4]], marks: &[Mark], free: [f64; 4], wanted: [f64; 4]) -> Option<Vector> {
+    let sheet = placed.iter().fold(*placed.first()?, union);
+    let size = (free[2] - free[0], free[3] - free[1]);
+    let centre = Point::new(0.5 * (wanted[0] + wanted[2]), 0.5 * (wanted[1] + wanted[3]));
+    match inner_hole(sheet, marks, size, centre) {
+        Some(c) => Some(Vector::new(c[0] - free[0], c[1] - free[1])),
+        None => hole(placed, marks, free, wanted),
     }
 }
 
@@ -351,7 +433,7 @@ pub fn laid_out(board: &Board) -> Option<Board> {
     if boxes.len() < 2 {
         return None;
     }
-    let lines = part_lines(board);
+    let marks = part_marks(board);
     let sheet = |shift: &BTreeMap<Part, Vector>| {
         let b = (boxes.iter())
             .map(|b| moved(b.bounds, shift[&b.part]))
@@ -359,11 +441,11 @@ pub fn laid_out(board: &Board) -> Option<Board> {
             .unwrap_or_default();
         (a_side(b), (b[2] - b[0]) * (b[3] - b[1]))
     };
-    let strip = shifts(&boxes, &lines, f64::INFINITY);
+    let strip = shifts(&boxes, &marks, f64::INFINITY);
     let rows_wrap = boxes.iter().any(|b| b.part.packed);
     let wraps = wrap_widths(&boxes).into_iter().filter(|_| rows_wrap);
     let (side, area) = sheet(&strip);
-    let least = (wraps.map(|w| shifts(&boxes, &lines, w)))
+    let least = (wraps.map(|w| shifts(&boxes, &marks, w)))
         .map(|s| (sheet(&s), s))
         .filter(|((_, a), _)| *a <= (1.0 + WRAP_GROWTH) * area)
         .min_by(|a, b| a.0 .0.total_cmp(&b.0 .0));
@@ -379,8 +461,10 @@ pub fn laid_out(board: &Board) -> Option<Board> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::kernel::construct::clip_to_rect;
     use crate::kernel::Point;
     use crate::protocol::{Note, Role, Topic};
+    use crate::render::extent::line_ends;
 
     #[test]
     fn rows_and_columns_are_set_a_gap_apart_and_keep_their_alignment() {
@@ -478,42 +562,44 @@ mod tests {
         b
     }
 
-    /// `with_a_table(ruled)` laid out: its parts overlap nowhere; the table's box and the
-    /// narrow part's, and the board.
-    fn table_set_out(ruled: bool) -> ([f64; 4], [f64; 4], Board) {
+    /// `with_a_table(ruled)` laid out: its parts overlap nowhere; the table's box, the
+    /// boxes of the parts that are not free, and the board.
+    fn table_set_out(ruled: bool) -> ([f64; 4], Vec<[f64; 4]>, Board) {
         let moved = laid_out(&with_a_table(ruled)).expect("three parts");
+        assert_eq!(part_overlaps(&moved), 0);
         let boxes = part_boxes(&moved);
-        assert_eq!(overlapping_pairs(&boxes), 0, "{boxes:?}");
-        let bounds = |f: &dyn Fn(&Part) -> bool| {
-            let b = boxes.iter().find(|b| f(&b.part)).expect("the part");
-            b.bounds
-        };
-        let table = bounds(&|p| p.free);
-        let narrow = bounds(&|p| *p == Part::at(1, 0));
-        (table, narrow, moved)
+        let table = boxes.iter().find(|b| b.part.free).expect("the table");
+        let rest = (boxes.iter().filter(|b| !b.part.free)).map(|b| b.bounds);
+        (table.bounds, rest.collect(), moved)
     }
 
     #[test]
-    fn a_free_part_takes_a_hole_beside_a_row_instead_of_a_row_of_its_own() {
-        // Right of the narrow part, within the wide part's width, not under both rows.
-        let (unruled, narrow, _) = table_set_out(false);
-        assert!(
-            unruled[0] >= narrow[2] + PART_GAP - 1e-9,
-            "{unruled:?} {narrow:?}"
-        );
-        assert!(unruled[1] >= narrow[1] - 1e-9, "{unruled:?} {narrow:?}");
-        // A line through the hole: the table stands clear of it, still in the hole.
-        let (t, narrow, moved) = table_set_out(true);
-        assert!(t[0] >= narrow[2] + PART_GAP - 1e-9, "{t:?} {narrow:?}");
-        let line = (moved.objects().iter())
-            .find_map(line_ends)
-            .expect("the line");
-        assert!(clip_to_rect(line.0, line.1, t).is_none(), "{t:?} {line:?}");
-        // Without it, the table would have stood on the line: the nearest place is lower.
-        assert!(
-            clip_to_rect(line.0, line.1, unruled).is_some(),
-            "{unruled:?}"
-        );
+    fn a_free_part_takes_room_in_the_sheet_instead_of_a_row_of_its_own() {
+        // Within the sheet the other parts span: the empty inside of the wide part's box,
+        // or the hole beside the narrow part.
+        for ruled in [false, true] {
+            let (t, rest, moved) = table_set_out(ruled);
+            let sheet = rest.iter().fold(rest[0], union);
+            assert!(
+                t[0] >= sheet[0] && t[1] >= sheet[1] && t[2] <= sheet[2] && t[3] <= sheet[3],
+                "{t:?} {sheet:?}"
+            );
+            // Clear of every mark of the others: their points and the line.
+            let table = (moved.steps().iter().find(|s| s.part.free)).map(|s| s.id);
+            let others = (moved.drawn_objects()).filter(|o| Some(o.step) != table);
+            for o in others {
+                if let Some((a, b)) = line_ends(o) {
+                    assert!(clip_to_rect(a, b, t).is_none(), "{t:?} {a:?} {b:?}");
+                }
+                if let Geom::Point { at } = o.geom {
+                    assert!(!(at.x > t[0] && at.x < t[2] && at.y > t[1] && at.y < t[3]));
+                }
+            }
+        }
+        // The boxes alone overlap: the table stands inside the wide part's empty box.
+        let (t, rest, _) = table_set_out(false);
+        let inside = |b: &[f64; 4]| t[0] >= b[0] && t[2] <= b[2] && t[1] >= b[1] && t[3] <= b[3];
+        assert!(rest.iter().any(inside), "{t:?} {rest:?}");
     }
 
     #[test]

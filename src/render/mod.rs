@@ -9,6 +9,7 @@ pub mod export;
 mod extent;
 mod figure;
 pub mod forces;
+mod ink;
 mod labels;
 pub mod layout;
 mod plot;

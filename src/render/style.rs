@@ -32,6 +32,9 @@ pub const TABLE_CHAR: f64 = 1.7;
 pub const HEADING_CHAR: f64 = 2.45;
 /// Height of a heading's line (mm).
 pub const HEADING_ROW: f64 = 5.0;
+/// How far the drawn region reaches beyond the figure's solid parts, as a fraction of its
+/// larger dimension: lines are clipped there.
+pub const CLIP_REACH: f64 = 0.12;
 /// How far a construction line runs past the last point constructed on it (mm).
 pub const LINE_OVERSHOOT: f64 = 3.0;
 /// Length of the short compass arc drawn through a point cut on a circle (mm of arc).

@@ -51,7 +51,7 @@ pub use accuracy::sweeps;
 pub use beam::{
     BeamDrawingSpec, BeamProblem, BeamScene, BeamSpec, PointLoadSpec, UniformLoadSpec, MAX_LOADS,
 };
-pub use book::BookValue;
+pub use book::{book_rows, book_table, sheet_rows, BookRow, BookValue, Verdict, SHEET_BOOK_ROWS};
 pub use centroid::{CentroidDrawingSpec, CentroidProblem, CentroidScene};
 pub use combustion::{
     CombustionProblem, CombustionScene, GasCylindersSpec, GasDrawingSpec, GasEffects, GasSpec,

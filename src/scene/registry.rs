@@ -35,8 +35,11 @@ impl Entry {
             outputs: P::OUTPUTS,
             parse: |text, ctx| {
                 parse_scene::<P>(text, ctx).map(|(scene, problem)| AnyScene {
+                    problem: AnyProblem {
+                        book: super::procedure::SceneHeader::book(&scene).into(),
+                        inner: Box::new(ProblemOf::<P>(problem)),
+                    },
                     scene: Box::new(scene),
-                    problem: AnyProblem(Box::new(ProblemOf::<P>(problem))),
                 })
             },
             #[cfg(feature = "schema")]
@@ -325,48 +328,60 @@ impl AnyScene {
     }
 }
 
-/// A constructible problem of any registered procedure.
+/// A constructible problem of any registered procedure, with the numbers its book prints
+/// (the scene's `book` field), which a figure sets beside the construction.
 #[derive(Debug)]
-pub struct AnyProblem(Box<dyn DynProblem>);
+pub struct AnyProblem {
+    inner: Box<dyn DynProblem>,
+    book: std::sync::Arc<[super::BookValue]>,
+}
 
 impl Clone for AnyProblem {
     fn clone(&self) -> Self {
-        AnyProblem(self.0.clone_box())
+        AnyProblem {
+            inner: self.inner.clone_box(),
+            book: self.book.clone(),
+        }
     }
 }
 
 impl AnyProblem {
     /// The procedure's name.
     pub fn procedure(&self) -> &'static str {
-        self.0.name()
+        self.inner.name()
     }
 
     /// The problem as its own type, if it is one: `problem.get::<TrussScene>()` gives the
     /// `TrussProblem`.
     pub fn get<P: Procedure>(&self) -> Option<&P::Problem> {
-        self.0.as_any().downcast_ref::<P::Problem>()
+        self.inner.as_any().downcast_ref::<P::Problem>()
     }
 
     /// Constructs the problem on fresh boards set up by `config` (the results are in the
-    /// protocol).
+    /// protocol); a board that records ends with the table of the book's printed values
+    /// beside the construction ([`super::book_table`]).
     pub fn construct(&self, config: BoardConfig) -> Result<Board, ConstructionError> {
-        self.0.construct(config)
+        let mut board = self.inner.construct(config)?;
+        if board.is_recording() && !self.book.is_empty() {
+            super::book_table(&mut board, &self.book, &self.inner.figure_meta().source);
+        }
+        Ok(board)
     }
 
     /// Title, source and scale bars of the figure.
     pub fn figure_meta(&self) -> FigureMeta {
-        self.0.figure_meta()
+        self.inner.figure_meta()
     }
 
     /// The knobs of the procedure that trade time for accuracy
     /// ([`Procedure::sweeps`]), each setting ready to run.
     pub fn sweeps(&self) -> Vec<Setting<'_>> {
-        self.0.sweeps()
+        self.inner.sweeps()
     }
 
     /// The scene field a construction error comes from, where the procedure can tell.
     pub fn error_field(&self, err: &ConstructionError) -> Option<String> {
-        self.0.error_field(err)
+        self.inner.error_field(err)
     }
 }
 

@@ -133,3 +133,37 @@ fn report_labels_and_emptiest_regions() {
         );
     }
 }
+
+/// The table of the book's printed values goes where the sheet is empty: LH Abb. 52's
+/// velocity curve and the pole B₁ high over the crank leave the upper left free, and the
+/// table takes it without growing the sheet. The book's angles are written as it prints
+/// them (79°16′), the drawn ones beside them.
+#[test]
+fn the_book_values_take_the_sheets_empty_room() {
+    let text = std::fs::read_to_string("scenes/lh_abb52_esselborn.json").unwrap();
+    let mut bare: Value = serde_json::from_str(&text).unwrap();
+    bare.as_object_mut().unwrap().remove("book");
+    let svg = |text: &str| {
+        let scene = AnyScene::from_json(text, "lh_abb52_esselborn.json").unwrap();
+        let problem = scene.problem();
+        let board = problem.construct(BoardConfig::DRAWING).unwrap();
+        let report = inspect(&problem.figure_meta(), &board);
+        assert!(report.is_clean(), "{report:?}");
+        graphostatik::render::figure(&problem.figure_meta(), &board, None)
+    };
+    let (with, without) = (svg(&text), svg(&bare.to_string()));
+    let size = |s: &str| {
+        let view = s.split("viewBox=\"").nth(1).unwrap();
+        view.split('"').next().unwrap().to_string()
+    };
+    assert_eq!(size(&with), size(&without));
+    for cell in [
+        "79°16′",
+        "78°41.4′",
+        "100°44′",
+        "another quantity",
+        "reproduced",
+    ] {
+        assert!(with.contains(cell) && !without.contains(cell), "{cell}");
+    }
+}
