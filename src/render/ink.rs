@@ -179,7 +179,9 @@ impl Raster {
         };
         for m in marks {
             match *m {
-                Mark::Patch(p) => fill(p),
+                // A patch off the sheet (a far point's) marks nothing, not the edge cells.
+                Mark::Patch(p) if m.meets(sheet) => fill(p),
+                Mark::Patch(_) => {}
                 Mark::Stroke(a, b) => {
                     // Only the stroke's part on the sheet, in steps of half a cell.
                     let Some((t0, t1)) = clip_to_rect(a, b, sheet) else {
@@ -337,5 +339,12 @@ mod tests {
         // Below the middle stroke the whole width is free.
         let low = inner_hole(sheet, &marks, (90.0, 40.0), Point::origin()).unwrap();
         assert!(low[3] < 50.0 && low[1] > 0.0 && low[0] > 0.0, "{low:?}");
+        // A patch off the sheet (a far point's) takes no room at its edge.
+        let mut far = marks.to_vec();
+        far.push(Mark::Patch([150.0, 150.0, 160.0, 160.0]));
+        let corner = Point::new(100.0, 100.0);
+        let at = inner_hole(sheet, &far, (30.0, 30.0), corner).unwrap();
+        assert_eq!(at, inner_hole(sheet, &marks, (30.0, 30.0), corner).unwrap());
+        assert!(at[2] == 100.0 && at[3] == 100.0, "{at:?}");
     }
 }
