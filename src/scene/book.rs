@@ -260,11 +260,28 @@ pub fn sheet_rows(rows: &[BookRow]) -> Vec<Vec<String>> {
     out
 }
 
+/// Where the book prints the values: each `source`'s head before its colon ("LH B.2, Gl.
+/// 26"), once each, in order.
+fn book_places(values: &[BookValue]) -> String {
+    let mut places: Vec<&str> = Vec::new();
+    for v in values {
+        let head = v
+            .source
+            .split_once(':')
+            .map_or(&v.source[..], |(h, _)| h)
+            .trim();
+        if !places.contains(&head) {
+            places.push(head);
+        }
+    }
+    places.join("; ")
+}
+
 /// The step that sets the book's printed values on the sheet beside what the construction
 /// gives ([`sheet_rows`]): a table of its own part, which the sheet layout puts in a hole of
 /// the figure, under the drawing where none takes it. Nothing on a board that does not
 /// record, or for a scene of no book values or more than [`SHEET_BOOK_ROWS`].
-pub fn book_table(board: &mut Board, values: &[BookValue], source: &str) {
+pub fn book_table(board: &mut Board, values: &[BookValue]) {
     if !board.is_recording() || values.is_empty() || values.len() > SHEET_BOOK_ROWS {
         return;
     }
@@ -289,7 +306,7 @@ pub fn book_table(board: &mut Board, values: &[BookValue], source: &str) {
         Topic::Custom("book"),
     )
     .term("Zahlenwerte des Buches")
-    .book(source.to_string());
+    .book(book_places(values));
     board.table(Point::new(left, 0.0), rows, &[], note);
 }
 
@@ -365,7 +382,7 @@ mod tests {
             let t = b.tally(1160.0, "kg", "T", &[], note.clone());
             b.check(&t, "T", "kg", "given", 1000.0, || 1160.0);
             let steps = b.steps().len();
-            book_table(&mut b, &vec![value(1160.0); n], "LH J");
+            book_table(&mut b, &vec![value(1160.0); n]);
             (b, steps)
         };
         let (b, steps) = build(Board::recording(), 1);
@@ -373,6 +390,7 @@ mod tests {
         let last = b.steps().last().unwrap();
         assert_eq!(last.part, Part::free(3, 0));
         assert_eq!(last.term_de.as_deref(), Some("Zahlenwerte des Buches"));
+        assert_eq!(last.book, "LH J");
         let table = b.objects().iter().find_map(|o| match &o.geom {
             Geom::Table { rows, .. } => Some(rows.clone()),
             _ => None,

@@ -363,7 +363,7 @@ impl AnyProblem {
     pub fn construct(&self, config: BoardConfig) -> Result<Board, ConstructionError> {
         let mut board = self.inner.construct(config)?;
         if board.is_recording() && !self.book.is_empty() {
-            super::book_table(&mut board, &self.book, &self.inner.figure_meta().source);
+            super::book_table(&mut board, &self.book);
         }
         Ok(board)
     }
