@@ -62,9 +62,10 @@ pub struct PartBox {
 /// The extent of every part a board draws in, in part order. Where one part is drawn
 /// beside free parts only (tables, which do not widen the reach of the lines), its extent
 /// is what the figure draws of it: its solid drawing and the points it constructs within
-/// reach of that (12 % of its larger side, as the figure clips lines; a point farther out, an intersection of nearly parallel
-/// rays, is left off the sheet). Otherwise every point counts: the figure's reach is that
-/// of all its parts, and a line of one part may be drawn on to a far point of its own.
+/// reach of that (12 % of its larger side, as the figure clips lines; a point farther out,
+/// an intersection of nearly parallel rays, is left off the sheet). Otherwise every point
+/// counts: the figure's reach is that of all its parts, and a line of one part may be
+/// drawn on to a far point of its own.
 pub fn part_boxes(board: &Board) -> Vec<PartBox> {
     let mut grid = (board.drawn_objects())
         .filter_map(|o| board.step(o.step))
@@ -126,10 +127,13 @@ pub fn part_boxes(board: &Board) -> Vec<PartBox> {
         .collect()
 }
 
+/// Whether two boxes `[min_x, min_y, max_x, max_y]` overlap (touching edges do not).
+fn overlap(a: &[f64; 4], b: &[f64; 4]) -> bool {
+    a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
+}
+
 /// How many pairs of `boxes` overlap (what the sheet layout is to leave none of).
 pub fn overlapping_pairs(boxes: &[PartBox]) -> usize {
-    let overlap =
-        |a: &[f64; 4], b: &[f64; 4]| a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
     (boxes.iter().enumerate())
         .map(|(i, a)| {
             (boxes[i + 1..].iter())
@@ -145,8 +149,6 @@ pub fn overlapping_pairs(boxes: &[PartBox]) -> usize {
 pub fn part_overlaps(board: &Board) -> usize {
     let boxes = part_boxes(board);
     let marks = part_marks(board);
-    let overlap =
-        |a: &[f64; 4], b: &[f64; 4]| a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3];
     let touch = |free: &PartBox, other: Part| {
         (marks.get(&other)).is_some_and(|ms| ms.iter().any(|m| m.meets(free.bounds)))
     };
