@@ -214,11 +214,32 @@ impl AnyScene {
     /// [`AnyScene::from_json`] for what `ctx` says the scene is read for (its checks alone
     /// may take a larger scene than a figure).
     pub fn read(text: &str, ctx: &ReadContext) -> Result<AnyScene, SceneError> {
-        let origin = ctx.origin;
-        let name = Self::procedure_of(text, origin)?;
-        let e = match name {
-            None => &REGISTRY[0],
-            Some(n) => entry(&n).ok_or_else(|| SceneError::Invalid {
+        // Most scenes are read in one typed pass, their procedure found by the bytes alone;
+        // a scene that does not parse so is read again the long way, so that its error is
+        // the one the scan finds first (a syntax error anywhere before any field).
+        // A scene refused after it parsed is valid JSON, where the quick answer is the
+        // scan's: its error stands.
+        if let Some(found) = super::scan::quick(text) {
+            if let Ok(e) = Self::entry_of(found, ctx.origin) {
+                match (e.unwrap_or(&REGISTRY[0]).parse)(text, ctx) {
+                    Err(SceneError::Json { .. }) => {}
+                    read => return read,
+                }
+            }
+        }
+        let found = super::scan::scan(text).map_err(|e| syntax_error(e, ctx.origin))?;
+        let e = Self::entry_of(found, ctx.origin)?.unwrap_or(&REGISTRY[0]);
+        (e.parse)(text, ctx)
+    }
+
+    /// The registry's entry for a scene's `procedure` field (`None` where it has none).
+    fn entry_of(
+        found: super::scan::Scanned,
+        origin: &str,
+    ) -> Result<Option<&'static Entry>, SceneError> {
+        match Self::procedure_of(found, origin)? {
+            None => Ok(None),
+            Some(n) => entry(&n).map(Some).ok_or_else(|| SceneError::Invalid {
                 origin: origin.to_string(),
                 field: "procedure".into(),
                 message: format!(
@@ -226,15 +247,16 @@ impl AnyScene {
                     crate::fmt::clip(&n, 60),
                     known_names()
                 ),
-            })?,
-        };
-        (e.parse)(text, ctx)
+            }),
+        }
     }
 
     /// The `procedure` field alone; a syntax error anywhere in the file is reported here, at
     /// its own line and column, before any procedure's fields are looked at.
-    fn procedure_of(text: &str, origin: &str) -> Result<Option<String>, SceneError> {
-        let found = super::scan::scan(text).map_err(|e| syntax_error(e, origin))?;
+    fn procedure_of(
+        found: super::scan::Scanned,
+        origin: &str,
+    ) -> Result<Option<String>, SceneError> {
         let invalid = |field: String, message: String| SceneError::Invalid {
             origin: origin.to_string(),
             field,

@@ -11,7 +11,7 @@ use crate::truss::envelope::{Combination, EnvelopeRule};
 use crate::truss::matrix::{self, Determinacy};
 use crate::truss::redundant::{self, PairMode};
 use crate::truss::{positions, roof};
-use crate::truss::{JointLoad, LoadCase, Truss, TrussError};
+use crate::truss::{JointLoad, LoadCase, SmolStr, Truss, TrussError};
 use foldhash::{HashMap, HashMapExt};
 use serde::{Deserialize, Serialize};
 
@@ -81,7 +81,7 @@ super::header::scene_struct! {
 #[serde(deny_unknown_fields)]
 pub struct JointSpec {
     /// Name ("I", "II", …).
-    pub name: String,
+    pub name: SmolStr,
     /// Position [x, y] (m), y up.
     pub at_m: [f64; 2],
 }
@@ -92,9 +92,9 @@ pub struct JointSpec {
 #[serde(deny_unknown_fields)]
 pub struct MemberSpec {
     /// Name ("1", "2", …).
-    pub name: String,
+    pub name: SmolStr,
     /// The two joints it joins, by name.
-    pub joints: [String; 2],
+    pub joints: [SmolStr; 2],
 }
 
 /// A support.
@@ -251,7 +251,7 @@ pub struct CombinationSpec {
 #[serde(deny_unknown_fields)]
 pub struct JointLoadSpec {
     /// The joint, by name.
-    pub joint: String,
+    pub joint: SmolStr,
     /// Magnitude (kg).
     #[serde(default)]
     pub kg: Option<f64>,

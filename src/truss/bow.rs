@@ -301,7 +301,7 @@ impl<'a> Found<'a> {
             let (l, r) = (self.space_of_half[2 * m], self.space_of_half[2 * m + 1]);
             if let (Some(pl), Some(pr)) = (pt[l], pt[r]) {
                 let v = b.naming(
-                    || format!("member {}", t.members[m].name),
+                    || ["member ", t.members[m].name.as_str()].concat(),
                     |b| {
                         let name = Role::Result.labelled(member_label(b, t, m));
                         b.segment(&pl, &pr, name, N_SIDE);
@@ -321,11 +321,11 @@ impl<'a> Found<'a> {
 fn stalls(t: &Truss, g: &PlaneGraph, forces: &[Option<f64>], m: usize) -> ConstructionError {
     let stuck: Vec<String> = (0..t.joints.len())
         .filter(|&v| g.around[v].iter().any(|&h| forces[h / 2].is_none()))
-        .map(|v| t.joints[v].name.clone())
+        .map(|v| t.joints[v].name.to_string())
         .take(6)
         .collect();
     ConstructionError::PlanStalls {
-        member: t.members[m].name.clone(),
+        member: t.members[m].name.to_string(),
         reason: format!(
             "the Cremona plan stalls before member {}: at joints {} three or more member forces are unknown, and no section through three members with two unknown spaces between them gives one of them (Ritter, LH B.4)",
             t.members[m].name,
@@ -373,7 +373,7 @@ pub(super) fn joint_polygon(
     let la = b.parallel(&mline[ha / 2], &px, Role::Construction, N_PAR);
     b.set_context_within(within, || format!("joint {name}, member {}", member(hb)));
     let lb = b.parallel(&mline[hb / 2], &py, Role::Construction, N_PAR);
-    b.set_context(|| format!("{}: joint {name}", case.name));
+    b.set_context(|| [case.name.as_str(), ": joint ", name.as_str()].concat());
     match b.meet(&la, &lb, space_label(u), N_SPACE) {
         Cut::Point(p, _) => {
             pt[u] = Some(p);

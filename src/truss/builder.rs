@@ -1,7 +1,7 @@
 //! A truss built in code, by the names the books give its joints and members.
 
 use super::cremona::{self, CaseResult, TrussDrawing};
-use super::{Joint, JointLoad, LoadCase, Member, Support, Truss};
+use super::{Joint, JointLoad, LoadCase, Member, SmolStr, Support, Truss};
 use crate::kernel::{Point, Vector};
 use crate::protocol::{nice_at_least, Board, ConstructionError};
 use foldhash::{HashMap, HashMapExt};
@@ -143,8 +143,8 @@ struct SupportSpec {
 /// ```
 #[derive(Debug, Clone, Default)]
 pub struct TrussBuilder {
-    joints: Vec<(String, [f64; 2])>,
-    members: Vec<(String, [String; 2])>,
+    joints: Vec<(SmolStr, [f64; 2])>,
+    members: Vec<(SmolStr, [SmolStr; 2])>,
     supports: Vec<SupportSpec>,
     /// Subtracted from every joint's position once the truss is checked (a scene far from
     /// its origin is built in its own frame).
@@ -157,7 +157,7 @@ type Names<'a> = HashMap<&'a str, usize>;
 
 impl TrussBuilder {
     /// A joint (Knotenpunkt) at `(x, y)` m.
-    pub fn joint(mut self, name: impl Into<String>, at: (f64, f64)) -> Self {
+    pub fn joint(mut self, name: impl Into<SmolStr>, at: (f64, f64)) -> Self {
         self.joints.push((name.into(), [at.0, at.1]));
         self
     }
@@ -165,9 +165,9 @@ impl TrussBuilder {
     /// A member (Stab) from joint `a` to joint `b`.
     pub fn member(
         mut self,
-        name: impl Into<String>,
-        a: impl Into<String>,
-        b: impl Into<String>,
+        name: impl Into<SmolStr>,
+        a: impl Into<SmolStr>,
+        b: impl Into<SmolStr>,
     ) -> Self {
         self.members.push((name.into(), [a.into(), b.into()]));
         self
@@ -245,8 +245,13 @@ impl TrussBuilder {
     pub fn build(self) -> Result<Truss, TrussError> {
         let joints = self.check_joints()?;
         self.check_coincident()?;
-        let members = self.check_members(&joints)?;
+        let ends = self.check_members(&joints)?;
         let supports = self.check_supports(&joints)?;
+        drop(joints);
+        // The names move into the truss, checked: no copy of them.
+        let members = (self.members.into_iter().zip(ends))
+            .map(|((name, _), ends)| Member { name, ends })
+            .collect();
         let [ox, oy] = self.origin;
         let joints = self
             .joints
@@ -273,7 +278,7 @@ impl TrussBuilder {
             if let Some(first) = index.insert(name.as_str(), i) {
                 return Err(TrussError::Duplicate {
                     what: "joint",
-                    name: name.clone(),
+                    name: name.to_string(),
                     at: Part::Joint(i),
                     first: Part::Joint(first),
                 });
@@ -301,33 +306,47 @@ impl TrussBuilder {
         }
         let eps = crate::kernel::tolerance::REL_LENGTH_EPS * size.max(f64::MIN_POSITIVE);
         let cell = |v: f64| ((v + 0.0) / eps).floor() as i64;
-        let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+        // Each cell's joints in the order added, as a chain: the cell keeps its first and
+        // last, `next` the one after each (no list of its own a cell).
+        let mut grid: HashMap<(i64, i64), (usize, usize)> =
+            HashMap::with_capacity(self.joints.len());
+        let mut next = vec![usize::MAX; self.joints.len()];
         for (b, (name, [x, y])) in self.joints.iter().enumerate() {
             let (cx, cy) = (cell(*x), cell(*y));
             for dx in -1..=1i64 {
                 for dy in -1..=1i64 {
                     let key = (cx.saturating_add(dx), cy.saturating_add(dy));
-                    for &a in grid.get(&key).map_or(&[][..], |v| v.as_slice()) {
+                    let mut a = grid.get(&key).map_or(usize::MAX, |&(first, _)| first);
+                    while a != usize::MAX {
                         let [ax, ay] = self.joints[a].1;
                         if (ax - x).abs() <= eps && (ay - y).abs() <= eps {
                             return Err(TrussError::Coincident {
-                                joint: name.clone(),
-                                on: self.joints[a].0.clone(),
+                                joint: name.to_string(),
+                                on: self.joints[a].0.to_string(),
                                 at: Part::Joint(b),
                             });
                         }
+                        a = next[a];
                     }
                 }
             }
-            grid.entry((cx, cy)).or_default().push(b);
+            match grid.entry((cx, cy)) {
+                std::collections::hash_map::Entry::Occupied(mut e) => {
+                    next[e.get().1] = b;
+                    e.get_mut().1 = b;
+                }
+                std::collections::hash_map::Entry::Vacant(e) => {
+                    e.insert((b, b));
+                }
+            }
         }
         Ok(())
     }
 
     /// Every member between two known, distinct joints, no two between the same pair, each
-    /// named once.
-    fn check_members(&self, joints: &Names<'_>) -> Result<Vec<Member>, TrussError> {
-        let mut pairs: HashMap<(usize, usize), usize> = HashMap::new();
+    /// named once: the joints each joins.
+    fn check_members(&self, joints: &Names<'_>) -> Result<Vec<[usize; 2]>, TrussError> {
+        let mut pairs: HashMap<(usize, usize), usize> = HashMap::with_capacity(self.members.len());
         let mut names = Names::with_capacity(self.members.len());
         let mut out = Vec::with_capacity(self.members.len());
         for (m, (name, ends)) in self.members.iter().enumerate() {
@@ -337,35 +356,32 @@ impl TrussBuilder {
                     .get(joint.as_str())
                     .ok_or_else(|| TrussError::UnknownJoint {
                         by: format!("member {name}"),
-                        joint: joint.clone(),
+                        joint: joint.to_string(),
                         at: Some((Part::Member(m), e)),
                     })?;
             }
             if at[0] == at[1] {
                 return Err(TrussError::ZeroLength {
-                    member: name.clone(),
+                    member: name.to_string(),
                     at: Part::Member(m),
                 });
             }
             if let Some(first) = pairs.insert((at[0].min(at[1]), at[0].max(at[1])), m) {
                 return Err(TrussError::DuplicateMember {
-                    member: name.clone(),
-                    first: self.members[first].0.clone(),
+                    member: name.to_string(),
+                    first: self.members[first].0.to_string(),
                     at: Part::Member(m),
                 });
             }
             if let Some(first) = names.insert(name.as_str(), m) {
                 return Err(TrussError::Duplicate {
                     what: "member",
-                    name: name.clone(),
+                    name: name.to_string(),
                     at: Part::Member(m),
                     first: Part::Member(first),
                 });
             }
-            out.push(Member {
-                name: name.clone(),
-                ends: at,
-            });
+            out.push(at);
         }
         Ok(out)
     }

@@ -283,7 +283,7 @@ fn determinate(t: &Truss) -> Result<(), ConstructionError> {
     match matrix::analyse(t).determinacy {
         matrix::Determinacy::Determinate => Ok(()),
         matrix::Determinacy::Mechanism { joint, freedoms } => Err(ConstructionError::Mechanism {
-            joint: t.joints[joint].name.clone(),
+            joint: t.joints[joint].name.to_string(),
             freedoms,
         }),
         matrix::Determinacy::OverDeterminate { redundant } => {
@@ -307,7 +307,7 @@ fn plane_drawing(t: &Truss) -> Result<Option<PlaneGraph>, ConstructionError> {
         Ok(g) => Ok(Some(g)),
         Err(faces::GraphError::Crossing) => Ok(None),
         Err(faces::GraphError::Disconnected { joint }) => Err(ConstructionError::Disconnected {
-            joint: t.joints[joint].name.clone(),
+            joint: t.joints[joint].name.to_string(),
         }),
     }
 }

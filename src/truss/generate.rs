@@ -26,14 +26,17 @@ pub fn parallel_chord(web: Web, n: usize, panel: f64, height: f64) -> Truss {
     let n = n.max(2);
     let mut joints: Vec<Joint> = (0..=n)
         .map(|i| Joint {
-            name: format!("B{i}"),
+            name: format!("B{i}").into(),
             at: Point::new(i as f64 * panel, 0.0),
         })
         .collect();
     let mut members = Vec::new();
     let add = |members: &mut Vec<Member>, a: usize, b: usize| {
         let name = (members.len() + 1).to_string();
-        members.push(Member { name, ends: [a, b] });
+        members.push(Member {
+            name: name.into(),
+            ends: [a, b],
+        });
     };
     for i in 0..n {
         add(&mut members, i, i + 1);
@@ -44,7 +47,7 @@ pub fn parallel_chord(web: Web, n: usize, panel: f64, height: f64) -> Truss {
             let t0 = joints.len();
             for i in 0..n {
                 joints.push(Joint {
-                    name: format!("T{i}"),
+                    name: format!("T{i}").into(),
                     at: Point::new((i as f64 + 0.5) * panel, height),
                 });
             }
@@ -61,7 +64,7 @@ pub fn parallel_chord(web: Web, n: usize, panel: f64, height: f64) -> Truss {
             let t0 = joints.len();
             for i in 1..n {
                 joints.push(Joint {
-                    name: format!("T{i}"),
+                    name: format!("T{i}").into(),
                     at: Point::new(i as f64 * panel, height),
                 });
             }

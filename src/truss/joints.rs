@@ -138,7 +138,7 @@ pub(crate) fn joint_polygons(
     b.set_context(|| case.name.clone());
     if let Some(m) = p.force.iter().position(|f| f.is_none()) {
         return Err(ConstructionError::PlanStalls {
-            member: t.members[m].name.clone(),
+            member: t.members[m].name.to_string(),
             joints: Vec::new(),
             reason: format!(
                 "the joint polygons stall before member {}: every joint left has three or more unknown member forces (or two in line)",

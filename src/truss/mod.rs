@@ -48,6 +48,7 @@ pub use builder::{TrussBuilder, TrussError};
 
 use crate::kernel::{Point, Vector};
 use serde::Serialize;
+pub use smol_str::SmolStr;
 use std::any::Any;
 use std::sync::{Arc, Mutex};
 
@@ -55,7 +56,7 @@ use std::sync::{Arc, Mutex};
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Joint {
     /// Its name ("I", "II", … as in the books).
-    pub name: String,
+    pub name: SmolStr,
     /// Position (m).
     pub at: Point,
 }
@@ -64,7 +65,7 @@ pub struct Joint {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Member {
     /// Its name ("1", "2", … as in the books).
-    pub name: String,
+    pub name: SmolStr,
     /// The joints it joins (indices into [`Truss::joints`]).
     pub ends: [usize; 2],
 }

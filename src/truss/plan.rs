@@ -171,7 +171,7 @@ pub(crate) fn check_member(
     reference: f64,
 ) {
     if let Some(sol) = sol {
-        let name = || format!("member {}", t.members[m].name);
+        let name = || ["member ", t.members[m].name.as_str()].concat();
         b.checking(name, |b| {
             b.check(
                 value,
@@ -205,7 +205,7 @@ pub(crate) fn case_result(
             .zip(reactions)
             .map(|(sup, r)| ReactionForce {
                 support: sup.name.clone(),
-                joint: t.joints[sup.joint].name.clone(),
+                joint: t.joints[sup.joint].name.to_string(),
                 force: *r,
                 plan_mm: r.norm() / dr.force_scale,
             })
@@ -215,7 +215,7 @@ pub(crate) fn case_result(
             .iter()
             .enumerate()
             .map(|(m, mem)| MemberForce {
-                member: mem.name.clone(),
+                member: mem.name.to_string(),
                 plan_mm: plan_mm[m],
                 force: forces[m],
                 matrix: matrix[m],

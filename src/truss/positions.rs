@@ -66,7 +66,7 @@ pub fn positions_rows(
         row.extend(r.reactions.iter().map(|s| signed_kg(s.force.y, zero_kg)));
         for of in [Run::Diagonal, Run::Vertical] {
             match most_loaded(t, r, of) {
-                Some((m, f)) => row.extend([t.members[m].name.clone(), signed_kg(f, zero_kg)]),
+                Some((m, f)) => row.extend([t.members[m].name.to_string(), signed_kg(f, zero_kg)]),
                 None => row.extend(["–".to_string(), "–".to_string()]),
             }
         }

@@ -61,7 +61,7 @@ fn small(joints: &[(f64, f64)], members: &[(usize, usize)], roller_deg: f64) -> 
             .iter()
             .enumerate()
             .map(|(i, &(x, y))| Joint {
-                name: format!("K{i}"),
+                name: format!("K{i}").into(),
                 at: Point::new(x, y),
             })
             .collect(),
@@ -69,7 +69,7 @@ fn small(joints: &[(f64, f64)], members: &[(usize, usize)], roller_deg: f64) -> 
             .iter()
             .enumerate()
             .map(|(i, &(a, b))| Member {
-                name: (i + 1).to_string(),
+                name: (i + 1).to_string().into(),
                 ends: [a, b],
             })
             .collect(),
@@ -962,14 +962,17 @@ fn henneberg(t: &Truss, m: usize, x: usize) -> Truss {
     let [u, v] = t.members[m].ends;
     let c = (t.joints[u].at.coords + t.joints[v].at.coords + t.joints[x].at.coords) / 3.0;
     t.joints.push(Joint {
-        name: format!("W{}", t.joints.len()),
+        name: format!("W{}", t.joints.len()).into(),
         at: Point::from(c),
     });
     let w = t.joints.len() - 1;
     t.members.remove(m);
     for e in [u, v, x] {
         let name = (t.members.len() + 100).to_string();
-        t.members.push(Member { name, ends: [w, e] });
+        t.members.push(Member {
+            name: name.into(),
+            ends: [w, e],
+        });
     }
     t
 }
@@ -1711,7 +1714,7 @@ fn the_pebble_game_agrees_with_the_rank_on_random_trusses() {
                     .any(|m| m.ends == [a, b] || m.ends == [b, a])
             {
                 t.members.push(Member {
-                    name: format!("x{a}-{b}"),
+                    name: format!("x{a}-{b}").into(),
                     ends: [a, b],
                 });
             }
@@ -1781,7 +1784,7 @@ fn a_large_truss_that_is_not_determinate_is_named_without_the_svd() {
     // And the construction refuses the mechanism before drawing, naming the joint.
     let mut b = Board::new(BoardConfig::recording(true)).with_figure_size(1000.0);
     let e = construct_truss(&mut b, &t, &case(vec![down(1, 100.0)]), &D).unwrap_err();
-    assert!(e.to_string().contains(&t.joints[joint].name), "{e}");
+    assert!(e.to_string().contains(t.joints[joint].name.as_str()), "{e}");
 }
 
 /// Above the SVD's limit the pebble game's searches have a budget: a truss of members joined
@@ -1799,7 +1802,7 @@ fn a_large_truss_of_members_joined_at_random_is_refused_at_once() {
     };
     let joints: Vec<Joint> = (0..k)
         .map(|i| Joint {
-            name: format!("J{i}"),
+            name: format!("J{i}").into(),
             at: Point::new(
                 (next() % 10_000) as f64 / 100.0,
                 (next() % 10_000) as f64 / 100.0,
@@ -1812,7 +1815,7 @@ fn a_large_truss_of_members_joined_at_random_is_refused_at_once() {
         let (a, b) = ((next() % k as u64) as usize, (next() % k as u64) as usize);
         if a != b && seen.insert((a.min(b), a.max(b))) {
             members.push(Member {
-                name: format!("{}", members.len() + 1),
+                name: format!("{}", members.len() + 1).into(),
                 ends: [a, b],
             });
         }

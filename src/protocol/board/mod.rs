@@ -446,7 +446,15 @@ impl Board {
         }
         let base = self.context();
         self.set_context(|| match &base {
-            Some(c) => format!("{c}, {}", what()),
+            // Joined by hand: `format!` took half the time of a truss check's contexts.
+            Some(c) => {
+                let what = what();
+                let mut s = String::with_capacity(c.len() + 2 + what.len());
+                s.push_str(c);
+                s.push_str(", ");
+                s.push_str(&what);
+                s
+            }
             None => what(),
         });
         let out = steps(self);
