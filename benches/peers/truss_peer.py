@@ -15,7 +15,7 @@ one run, median of several:
 
 Run from the repository root after `cargo build --release`:
 
-    python3 benches/peers/truss_peer.py [--sizes 10,100,1000,10000,100000] [--reps 5]
+    python3 benches/peers/truss_peer.py [--sizes 10,100,1000,10000,100000] [--reps 5] [--exe PATH]
 
 Needs numpy and scipy (`pip install numpy scipy`). Prints a Markdown table.
 """
@@ -134,7 +134,10 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--sizes", default="10,100,1000,10000,100000", help="joints, comma-separated")
     ap.add_argument("--reps", type=int, default=5)
+    ap.add_argument("--exe", default=EXE, help="the graphostatik binary (another build to compare)")
     args = ap.parse_args()
+    global EXE
+    EXE = args.exe
     print("| joints | members | numpy + scipy spsolve, in process | graphostatik check, in process | ratio | graphostatik check, end to end | ratio | members checked |")
     print("|---:|---:|---:|---:|---:|---:|---:|---:|")
     with tempfile.TemporaryDirectory() as tmp:

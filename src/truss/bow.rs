@@ -203,14 +203,19 @@ impl SpaceMap {
     }
 
     /// The joints touching each space, to revisit when it becomes known.
-    fn joints_of_space(&self, t: &Truss) -> Vec<Vec<usize>> {
-        let mut out: Vec<Vec<usize>> = vec![Vec::new(); self.n_spaces];
-        for (h, &s) in self.space_of_half.iter().enumerate() {
-            out[s].push(origin(t, h));
-        }
-        for js in &mut out {
-            js.sort_unstable();
-            js.dedup();
+    fn joints_of_space(&self, t: &Truss) -> faces::Lists {
+        let of_half = self.space_of_half.iter().enumerate();
+        let mut all =
+            faces::Lists::grouped(self.n_spaces, of_half.map(|(h, &s)| (s, origin(t, h))));
+        let mut out = faces::Lists::with_capacity(self.space_of_half.len());
+        for s in 0..all.len() {
+            all[s].sort_unstable();
+            let js = &all[s];
+            out.push(
+                (0..js.len())
+                    .filter(|&i| i == 0 || js[i] != js[i - 1])
+                    .map(|i| js[i]),
+            );
         }
         out
     }

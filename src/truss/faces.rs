@@ -13,12 +13,84 @@
 
 use super::Truss;
 use std::f64::consts::TAU;
+use std::ops::{Index, IndexMut};
+
+/// Lists of indices kept end to end in one allocation (list `i` is `items[start[i]..start[i
+/// + 1]]`): a girder of 10,000 joints has 10,000 lists of members round a joint and as many
+/// faces, which as a `Vec` each took some 20,000 allocations and their growth.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lists {
+    start: Vec<usize>,
+    items: Vec<usize>,
+}
+
+impl Lists {
+    /// `n` lists, each value in the list its key names, in the order given.
+    pub fn grouped(n: usize, pairs: impl Iterator<Item = (usize, usize)> + Clone) -> Lists {
+        let mut start = vec![0; n + 1];
+        for (k, _) in pairs.clone() {
+            start[k + 1] += 1;
+        }
+        for i in 0..n {
+            start[i + 1] += start[i];
+        }
+        let mut fill = start.clone();
+        let mut items = vec![0; start[n]];
+        for (k, v) in pairs {
+            items[fill[k]] = v;
+            fill[k] += 1;
+        }
+        Lists { start, items }
+    }
+
+    /// No lists, with room for `items` values.
+    pub(crate) fn with_capacity(items: usize) -> Lists {
+        Lists {
+            start: vec![0],
+            items: Vec::with_capacity(items),
+        }
+    }
+
+    /// Appends a list.
+    pub(crate) fn push(&mut self, list: impl IntoIterator<Item = usize>) {
+        self.items.extend(list);
+        self.start.push(self.items.len());
+    }
+
+    /// How many lists.
+    pub fn len(&self) -> usize {
+        self.start.len() - 1
+    }
+
+    /// Whether there is no list.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The lists in order.
+    pub fn iter(&self) -> impl Iterator<Item = &[usize]> {
+        self.start.windows(2).map(|w| &self.items[w[0]..w[1]])
+    }
+}
+
+impl Index<usize> for Lists {
+    type Output = [usize];
+    fn index(&self, i: usize) -> &[usize] {
+        &self.items[self.start[i]..self.start[i + 1]]
+    }
+}
+
+impl IndexMut<usize> for Lists {
+    fn index_mut(&mut self, i: usize) -> &mut [usize] {
+        &mut self.items[self.start[i]..self.start[i + 1]]
+    }
+}
 
 /// The plane graph of a truss.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlaneGraph {
     /// Outgoing half-edges of every joint, counter-clockwise by angle.
-    pub around: Vec<Vec<usize>>,
+    pub around: Lists,
     /// Angle of every half-edge (radians, in (−π, π]).
     pub angle: Vec<f64>,
     /// The next half-edge along the same face.
@@ -26,7 +98,7 @@ pub struct PlaneGraph {
     /// The face left of every half-edge.
     pub face_of: Vec<usize>,
     /// Every face as its cycle of half-edges.
-    pub faces: Vec<Vec<usize>>,
+    pub faces: Lists,
     /// The outside face.
     pub outer: usize,
 }
@@ -90,23 +162,23 @@ pub fn plane_graph(t: &Truss) -> Result<PlaneGraph, GraphError> {
 
 /// The direction angle of every half-edge, and the half-edges leaving each joint ordered
 /// counter-clockwise.
-fn half_edges(t: &Truss) -> (Vec<f64>, Vec<Vec<usize>>) {
+fn half_edges(t: &Truss) -> (Vec<f64>, Lists) {
     let nh = 2 * t.members.len();
-    let mut angle = vec![0.0; nh];
-    let mut around: Vec<Vec<usize>> = vec![Vec::new(); t.joints.len()];
-    for h in 0..nh {
-        let d = t.joints[dest(t, h)].at - t.joints[origin(t, h)].at;
-        angle[h] = d.y.atan2(d.x);
-        around[origin(t, h)].push(h);
-    }
-    for list in &mut around {
-        list.sort_by(|&a, &b| angle[a].total_cmp(&angle[b]).then(a.cmp(&b)));
+    let angle: Vec<f64> = (0..nh)
+        .map(|h| {
+            let d = t.joints[dest(t, h)].at - t.joints[origin(t, h)].at;
+            d.y.atan2(d.x)
+        })
+        .collect();
+    let mut around = Lists::grouped(t.joints.len(), (0..nh).map(|h| (origin(t, h), h)));
+    for j in 0..around.len() {
+        around[j].sort_by(|&a, &b| angle[a].total_cmp(&angle[b]).then(a.cmp(&b)));
     }
     (angle, around)
 }
 
 /// A joint the members do not reach from the first one, if there is one.
-fn unreached(t: &Truss, around: &[Vec<usize>]) -> Option<usize> {
+fn unreached(t: &Truss, around: &Lists) -> Option<usize> {
     let k = t.joints.len();
     let mut seen = vec![false; k];
     let mut stack = vec![0];
@@ -126,10 +198,10 @@ fn unreached(t: &Truss, around: &[Vec<usize>]) -> Option<usize> {
 }
 
 /// next(u→v) = the half-edge leaving v clockwise next to v→u: walking it traces a face.
-fn next_half_edges(t: &Truss, around: &[Vec<usize>]) -> Vec<usize> {
+fn next_half_edges(t: &Truss, around: &Lists) -> Vec<usize> {
     let nh = 2 * t.members.len();
     let mut pos = vec![0; nh];
-    for list in around {
+    for list in around.iter() {
         for (i, &h) in list.iter().enumerate() {
             pos[h] = i;
         }
@@ -145,21 +217,23 @@ fn next_half_edges(t: &Truss, around: &[Vec<usize>]) -> Vec<usize> {
 
 /// The faces, each the cycle of half-edges that `next` walks, and the face of every
 /// half-edge.
-fn trace_faces(next: &[usize]) -> (Vec<usize>, Vec<Vec<usize>>) {
+fn trace_faces(next: &[usize]) -> (Vec<usize>, Lists) {
     let mut face_of = vec![usize::MAX; next.len()];
-    let mut faces = Vec::new();
+    let mut faces = Lists::with_capacity(next.len());
     for h0 in 0..next.len() {
         if face_of[h0] != usize::MAX {
             continue;
         }
         let f = faces.len();
-        let mut cycle = Vec::new();
         let mut h = h0;
-        while face_of[h] == usize::MAX {
-            face_of[h] = f;
-            cycle.push(h);
-            h = next[h];
-        }
+        let cycle = std::iter::from_fn(|| {
+            (face_of[h] == usize::MAX).then(|| {
+                face_of[h] = f;
+                let here = h;
+                h = next[h];
+                here
+            })
+        });
         faces.push(cycle);
     }
     (face_of, faces)

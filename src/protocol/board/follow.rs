@@ -127,11 +127,9 @@ impl Board {
         (value, unit): (f64, &'static str),
         how: Derived<'_>,
     ) -> H<f64> {
-        let mark = Mark {
-            label,
-            role: Role::Result,
-        };
-        self.made(mark, value, || Geom::Scalar { value, unit }, how)
+        let id = self.add_number(label, value, unit);
+        self.follow(id, how);
+        H { id, g: value }
     }
 
     /// Files how the object `id` follows from its step's inputs. Inlined, so that a board

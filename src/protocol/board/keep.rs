@@ -104,17 +104,31 @@ impl Board {
             return ObjId::NONE;
         }
         if self.ledger.is_some() {
-            return self.count_object(geom());
+            // Not drawn: its geometry is never made ([`Board::add_number`] keeps a number's
+            // value).
+            return self.count_object(None);
         }
         self.file_object(label, role, geom())
     }
 
+    /// [`Board::add`] for a number: a board that keeps only its checks keeps its value.
+    #[inline]
+    pub(super) fn add_number(&mut self, label: Label, value: f64, unit: &'static str) -> ObjId {
+        if !self.recording {
+            return ObjId::NONE;
+        }
+        if self.ledger.is_some() {
+            return self.count_object(Some(value));
+        }
+        self.file_object(label, Role::Result, Geom::Scalar { value, unit })
+    }
+
     /// An object of a board that keeps only its checks: an id, its bound, its step and,
     /// for a number, its value.
-    pub(super) fn count_object(&mut self, geom: Geom) -> ObjId {
+    pub(super) fn count_object(&mut self, number: Option<f64>) -> ObjId {
         let id = ObjId(self.tracks.len() as u32 + 1);
         self.tracks.push(StepId(self.next_step));
-        if let (Geom::Scalar { value, .. }, Some(l)) = (geom, self.ledger.as_mut()) {
+        if let (Some(value), Some(l)) = (number, self.ledger.as_mut()) {
             l.numbers.push((id, value));
         }
         id
