@@ -131,12 +131,12 @@ def in_process_ms(stderr):
 
 
 def main():
+    global EXE
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--sizes", default="10,100,1000,10000,100000", help="joints, comma-separated")
     ap.add_argument("--reps", type=int, default=5)
     ap.add_argument("--exe", default=EXE, help="the graphostatik binary (another build to compare)")
     args = ap.parse_args()
-    global EXE
     EXE = args.exe
     print("| joints | members | numpy + scipy spsolve, in process | graphostatik check, in process | ratio | graphostatik check, end to end | ratio | members checked |")
     print("|---:|---:|---:|---:|---:|---:|---:|---:|")

@@ -257,9 +257,10 @@ enum Sparse {
 /// pair of sparse solves). The estimate 1/‖A⁻¹u‖ never lies below σ_min and falls to it within
 /// a few steps where σ_min is far below the next singular value, which is where a truss is a
 /// mechanism; so a matrix is called regular only if the estimate stays
-/// [`SPARSE_RANK_MARGIN`] above [`RANK_REL`] × σ_max at every step. Where it does not, u is
-/// (nearly) the motion Aᵀu ≈ 0 no member resists, and the joint it moves most is named.
-/// O(fill) time and memory.
+/// [`SPARSE_RANK_MARGIN`] above [`RANK_REL`] × σ_max at every step, up to
+/// [`SPARSE_RANK_STEPS`] or until it has settled ([`SPARSE_RANK_SETTLED`]). Where it does
+/// not, u is (nearly) the motion Aᵀu ≈ 0 no member resists, and the joint it moves most is
+/// named. O(fill) time and memory.
 fn sparse_test(t: &Truss) -> Sparse {
     let n = 2 * t.joints.len();
     let triplets = equilibrium_triplets(t);
@@ -533,8 +534,50 @@ fn sparse_lu(
     if !triplets.iter().all(|e| e.val.is_finite()) {
         return None;
     }
-    let a = faer::sparse::SparseColMat::<usize, f64>::try_new_from_triplets(n, n, triplets).ok()?;
+    let a = match in_column_order(n, triplets) {
+        Some(a) => a,
+        None => faer::sparse::SparseColMat::try_new_from_triplets(n, n, triplets).ok()?,
+    };
     a.sp_lu().ok()
+}
+
+/// The n × n matrix of `triplets` given column by column, as [`equilibrium_triplets`] gives
+/// them, without faer's sort of every entry: each column's few entries sorted by row, the
+/// same matrix (values as given, zeros kept). `None` where they are not in column order,
+/// repeat a place or lie outside.
+fn in_column_order(
+    n: usize,
+    triplets: &[Triplet],
+) -> Option<faer::sparse::SparseColMat<usize, f64>> {
+    let mut col_ptr = Vec::with_capacity(n + 1);
+    let (mut rows, mut vals) = (
+        Vec::with_capacity(triplets.len()),
+        Vec::with_capacity(triplets.len()),
+    );
+    col_ptr.push(0);
+    let mut k = 0;
+    for c in 0..n {
+        let start = rows.len();
+        while let Some(e) = triplets.get(k).filter(|e| e.col == c) {
+            if e.row >= n {
+                return None;
+            }
+            // Insertion into the column's sorted rows (at most five).
+            let at = start + rows[start..].partition_point(|&r| r < e.row);
+            if rows.get(at) == Some(&e.row) {
+                return None;
+            }
+            rows.insert(at, e.row);
+            vals.insert(at, e.val);
+            k += 1;
+        }
+        col_ptr.push(rows.len());
+    }
+    if k != triplets.len() {
+        return None;
+    }
+    let symbolic = faer::sparse::SymbolicSparseColMat::new_checked(n, n, col_ptr, None, rows);
+    Some(faer::sparse::SparseColMat::new(symbolic, vals))
 }
 
 type Triplet = faer::sparse::Triplet<usize, usize, f64>;
@@ -713,6 +756,37 @@ mod memo_tests {
             }
         }
         assert!(early >= 5, "{early} regular trusses stopped early");
+    }
+
+    #[test]
+    fn the_matrix_built_column_by_column_is_faers_from_triplets() {
+        let mut trusses = vec![
+            parallel_chord(Web::Warren, 7, 2.0, 2.0),
+            parallel_chord(Web::Pratt, 12, 1.5, 3.0),
+        ];
+        // Members numbered from their second joint, a roller at a slant.
+        let mut t = parallel_chord(Web::Howe, 5, 2.0, 1.0);
+        t.members.iter_mut().for_each(|m| m.ends.reverse());
+        t.supports[1].kind = SupportKind::Roller {
+            dir: Vector::new(0.6, 0.8),
+        };
+        trusses.push(t);
+        for t in &trusses {
+            let n = 2 * t.joints.len();
+            let e = equilibrium_triplets(t);
+            let ours = in_column_order(n, &e).expect("in column order");
+            let faers = faer::sparse::SparseColMat::try_new_from_triplets(n, n, &e).unwrap();
+            let (a, b) = (ours.symbolic(), faers.symbolic());
+            assert_eq!(a.col_ptr(), b.col_ptr());
+            assert_eq!(a.row_idx(), b.row_idx());
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(ours.val()), bits(faers.val()));
+        }
+        // Out of column order, or twice at one place: left to faer.
+        let e = [Triplet::new(0, 1, 1.0), Triplet::new(1, 0, 1.0)];
+        assert!(in_column_order(2, &e).is_none());
+        let e = [Triplet::new(0, 0, 1.0), Triplet::new(0, 0, 1.0)];
+        assert!(in_column_order(2, &e).is_none());
     }
 
     #[test]
