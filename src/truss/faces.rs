@@ -15,9 +15,17 @@ use super::Truss;
 use std::f64::consts::TAU;
 use std::ops::{Index, IndexMut};
 
-/// Lists of indices kept end to end in one allocation (list `i` is `items[start[i]..start[i
-/// + 1]]`): a girder of 10,000 joints has 10,000 lists of members round a joint and as many
-/// faces, which as a `Vec` each took some 20,000 allocations and their growth.
+/// Lists of indices kept end to end in one allocation, each read as a slice (`lists[i]`): a
+/// girder of 10,000 joints has 10,000 lists of members round a joint and as many faces,
+/// which as a `Vec` each took some 20,000 allocations and their growth.
+///
+/// ```
+/// use graphostatik::truss::faces::Lists;
+/// // The members at each of three joints, given as (joint, member) in member order.
+/// let at = Lists::grouped(3, [(0, 7), (2, 8), (0, 9)].into_iter());
+/// assert_eq!((&at[0], &at[1], &at[2]), (&[7, 9][..], &[][..], &[8][..]));
+/// assert_eq!(at.iter().map(<[usize]>::len).collect::<Vec<_>>(), [2, 0, 1]);
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Lists {
     start: Vec<usize>,
