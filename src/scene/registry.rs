@@ -216,9 +216,9 @@ impl AnyScene {
     pub fn read(text: &str, ctx: &ReadContext) -> Result<AnyScene, SceneError> {
         // Most scenes are read in one typed pass, their procedure found by the bytes alone;
         // a scene that does not parse so is read again the long way, so that its error is
-        // the one the scan finds first (a syntax error anywhere before any field).
-        // A scene refused after it parsed is valid JSON, where the quick answer is the
-        // scan's: its error stands.
+        // the one the scan finds first (a syntax error anywhere before any field). A scene
+        // refused after it parsed is valid JSON, where the quick answer is the scan's: its
+        // error stands.
         if let Some(found) = super::scan::quick(text) {
             if let Ok(e) = Self::entry_of(found, ctx.origin) {
                 match (e.unwrap_or(&REGISTRY[0]).parse)(text, ctx) {
@@ -251,8 +251,9 @@ impl AnyScene {
         }
     }
 
-    /// The `procedure` field alone; a syntax error anywhere in the file is reported here, at
-    /// its own line and column, before any procedure's fields are looked at.
+    /// The `procedure` field of a scanned scene (a syntax error anywhere in the file was
+    /// reported by the scan, at its own line and column, before any procedure's fields are
+    /// looked at), refused where it is not a text or the scan found a text too long.
     fn procedure_of(
         found: super::scan::Scanned,
         origin: &str,
