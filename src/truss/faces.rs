@@ -228,21 +228,19 @@ fn next_half_edges(t: &Truss, around: &Lists) -> Vec<usize> {
 fn trace_faces(next: &[usize]) -> (Vec<usize>, Lists) {
     let mut face_of = vec![usize::MAX; next.len()];
     let mut faces = Lists::with_capacity(next.len());
+    let mut cycle = Vec::new();
     for h0 in 0..next.len() {
         if face_of[h0] != usize::MAX {
             continue;
         }
         let f = faces.len();
         let mut h = h0;
-        let cycle = std::iter::from_fn(|| {
-            (face_of[h] == usize::MAX).then(|| {
-                face_of[h] = f;
-                let here = h;
-                h = next[h];
-                here
-            })
-        });
-        faces.push(cycle);
+        while face_of[h] == usize::MAX {
+            face_of[h] = f;
+            cycle.push(h);
+            h = next[h];
+        }
+        faces.push(cycle.drain(..));
     }
     (face_of, faces)
 }

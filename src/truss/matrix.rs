@@ -264,23 +264,29 @@ enum Sparse {
 fn sparse_test(t: &Truss) -> Sparse {
     let n = 2 * t.joints.len();
     let triplets = equilibrium_triplets(t);
-    let (mut col1, mut row1) = (vec![0.0f64; n], vec![0.0f64; n]);
-    for e in &triplets {
-        col1[e.col] += e.val.abs();
-        row1[e.row] += e.val.abs();
-    }
-    let norm1 = col1.iter().cloned().fold(0.0, f64::max);
-    let norm_inf = row1.iter().cloned().fold(0.0, f64::max);
-    let smax = (norm1 * norm_inf).sqrt();
+    let floor = sparse_floor(n, &triplets);
     let Some(lu) = factorised(t, || triplets) else {
         return Sparse::Doubtful(None);
     };
-    let floor = SPARSE_RANK_MARGIN * RANK_REL * smax;
     match inverse_iteration(&lu, n, floor, true) {
         None => Sparse::Doubtful(None),
         Some((true, _, _)) => Sparse::Regular,
         Some((false, motion, _)) => Sparse::Doubtful(most_moved(&motion, t.joints.len())),
     }
+}
+
+/// The floor the sparse test's estimate of σ_min must stay above: [`SPARSE_RANK_MARGIN`] ×
+/// [`RANK_REL`] × σ_max, σ_max bounded from above by √(‖A‖₁‖A‖∞) of the n × n matrix given
+/// by its `triplets`.
+fn sparse_floor(n: usize, triplets: &[Triplet]) -> f64 {
+    let (mut col1, mut row1) = (vec![0.0f64; n], vec![0.0f64; n]);
+    for e in triplets {
+        col1[e.col] += e.val.abs();
+        row1[e.row] += e.val.abs();
+    }
+    let norm1 = col1.iter().cloned().fold(0.0, f64::max);
+    let norm_inf = row1.iter().cloned().fold(0.0, f64::max);
+    SPARSE_RANK_MARGIN * RANK_REL * (norm1 * norm_inf).sqrt()
 }
 
 /// Inverse iteration on AAᵀ with A's LU: whether every estimate 1/‖A⁻¹u‖ of σ_min stays
@@ -512,10 +518,7 @@ fn memo<R>(t: &Truss, f: impl FnOnce(&mut Memo) -> R) -> R {
 
 /// The sparse LU of the square equilibrium matrix, made once per truss ([`Memo`]) from
 /// its entries (asked for only where it is made).
-fn factorised<T: std::ops::Deref<Target = [Triplet]>>(
-    t: &Truss,
-    triplets: impl FnOnce() -> T,
-) -> Option<Arc<Lu>> {
+fn factorised(t: &Truss, triplets: impl FnOnce() -> Vec<Triplet>) -> Option<Arc<Lu>> {
     if let Some(lu) = memo(t, |m| m.lu.clone()) {
         return lu;
     }
@@ -713,15 +716,9 @@ mod memo_tests {
     fn floor_and_lu(t: &Truss) -> (f64, usize, Arc<Lu>) {
         let triplets = equilibrium_triplets(t);
         let n = 2 * t.joints.len();
-        let (mut col1, mut row1) = (vec![0.0f64; n], vec![0.0f64; n]);
-        for e in &triplets {
-            col1[e.col] += e.val.abs();
-            row1[e.row] += e.val.abs();
-        }
-        let norm = |v: &[f64]| v.iter().cloned().fold(0.0, f64::max);
-        let smax = (norm(&col1) * norm(&row1)).sqrt();
+        let floor = sparse_floor(n, &triplets);
         let lu = factorised(t, || triplets).expect("a square matrix the LU takes");
-        (SPARSE_RANK_MARGIN * RANK_REL * smax, n, lu)
+        (floor, n, lu)
     }
 
     #[test]
