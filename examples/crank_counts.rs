@@ -6,7 +6,8 @@
 //! valgrind --tool=callgrind target/release/examples/crank_counts recorded 3600
 //! ```
 //!
-//! The first argument is `closed` (the bare closed form), `built` (the construction on a board
+//! The first argument is `closed` (the bare closed form), `lean` (the same sum in one
+//! `sin_cos` and one square root per angle, as `benches/crank.rs` has it), `built` (the construction on a board
 //! that does not record), `recorded` (recorded with every check, the board a figure is drawn
 //! from) or `checked` (every check and bound on the board `check` uses, which keeps the checks
 //! and not the drawing); the second the number of crank angles.
@@ -38,6 +39,21 @@ fn main() {
                 })
                 .sum::<f64>()
         }
+        "lean" => {
+            let (r, l, v, p) = (d.crank_radius, d.rod_length, d.crank_pin_speed, 8700.0);
+            let lam = r / l;
+            let step = std::f64::consts::TAU / n as f64;
+            (0..n)
+                .map(|k| {
+                    let (s, c) = (step * k as f64).sin_cos();
+                    let sp = lam * s;
+                    let cp = ((1.0 - sp) * (1.0 + sp)).sqrt();
+                    let factor = s + s * lam * c / cp;
+                    let force = if 2 * k < n { p } else { -p };
+                    r * (1.0 - c) + l * (1.0 - cp) + (v + force) * factor
+                })
+                .sum::<f64>()
+        }
         "built" | "recorded" | "checked" => {
             let dr = Drawing {
                 length_scale: 10.0,
@@ -60,7 +76,7 @@ fn main() {
             construct(&mut b, &d, &dr, &Angles::Divisions(n), &rq).expect("the bench drive");
             b.step_count() as f64
         }
-        other => panic!("closed, built, recorded or checked, not {other}"),
+        other => panic!("closed, lean, built, recorded or checked, not {other}"),
     };
     println!("{mode} {n}: {out}");
 }

@@ -88,6 +88,46 @@ pub(crate) fn worse(a: Option<WorstCut>, b: Option<WorstCut>) -> Option<WorstCut
     }
 }
 
+/// The worst cut a track depends on, as a board's tracks file it: the cut's place among
+/// the cuts they keep (0: none; [`Worst::OWN`]: the cut the step being followed makes,
+/// filed with its object) and its amplification, reckoned once when the cut is made, so
+/// that comparing two cuts costs one comparison, not two `hypot`s.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct Worst {
+    pub amp: f64,
+    pub place: u32,
+}
+
+impl Worst {
+    /// No cut.
+    pub const NONE: Worst = Worst { amp: 0.0, place: 0 };
+    /// The place of the cut the step being followed makes, before it is filed.
+    pub const OWN: u32 = u32::MAX;
+
+    /// The cut the step being followed makes, at `cond`.
+    pub fn own(cond: Conditioning) -> Worst {
+        Worst {
+            amp: cond.amplification(),
+            place: Worst::OWN,
+        }
+    }
+
+    /// Whether there is a cut.
+    pub fn is_some(&self) -> bool {
+        self.place != 0
+    }
+
+    /// The more glancing of two cuts (the earlier one on a tie): [`worse`] on filed cuts.
+    #[inline]
+    pub fn or_worse(self, other: Worst) -> Worst {
+        if other.is_some() && (!self.is_some() || other.amp > self.amp) {
+            other
+        } else {
+            self
+        }
+    }
+}
+
 /// The error bound an object carries. For a point: its distance from where it should be
 /// (mm); for a line: its offset at its origin (mm) and its turn (rad), so that it is off by
 /// `err + turn·d` at distance `d` along it; for a circle: its radial error (mm); for a number:
@@ -104,7 +144,7 @@ pub(crate) fn worse(a: Option<WorstCut>, b: Option<WorstCut>) -> Option<WorstCut
 pub(crate) struct Track {
     pub err: f64,
     pub turn: f64,
-    pub worst: Option<WorstCut>,
+    pub worst: Worst,
     /// For a point: the direction (unit) its error is known to lie mostly along; zero if
     /// none is known.
     pub axis: Vector,
@@ -130,7 +170,7 @@ impl Track {
         self.err.min(self.err * sin + self.off * cos)
     }
 
-    fn with(err: f64, turn: f64, worst: Option<WorstCut>) -> Track {
+    fn with(err: f64, turn: f64, worst: Worst) -> Track {
         Track {
             err,
             turn,
@@ -145,7 +185,7 @@ impl Track {
 impl ErrorModel {
     /// A given point.
     pub(crate) fn given(&self, p: &Point) -> Track {
-        Track::with(self.round(p) + self.mark_mm, 0.0, None)
+        Track::with(self.round(p) + self.mark_mm, 0.0, Worst::NONE)
     }
 
     /// A line through a point in a given direction.
@@ -160,7 +200,7 @@ impl ErrorModel {
     /// The line from `a` through `b` (`len` mm apart).
     pub(crate) fn ruled(&self, a: &Track, b: &Track, len: f64) -> Track {
         let turn = (a.err + b.err + self.mark_mm) / len + self.rel;
-        Track::with(a.err + self.mark_mm, turn, worse(a.worst, b.worst))
+        Track::with(a.err + self.mark_mm, turn, a.worst.or_worse(b.worst))
     }
 
     /// A parallel or perpendicular to a line through a point (set squares), in direction
@@ -170,7 +210,7 @@ impl ErrorModel {
         Track::with(
             p.across_dir(dir) + self.mark_mm,
             turn,
-            worse(line.worst, p.worst),
+            line.worst.or_worse(p.worst),
         )
     }
 
@@ -205,14 +245,14 @@ impl ErrorModel {
         Track::with(
             err,
             0.0,
-            worse(worse(from.worst, along.worst), carried.worst),
+            from.worst.or_worse(along.worst).or_worse(carried.worst),
         )
     }
 
     /// A point between two points at the ratio `t` (an equal division, a tangent divided).
     pub(crate) fn between(&self, a: &Track, b: &Track, t: f64, p: &Point) -> Track {
         let err = (1.0 - t).abs() * a.err + t.abs() * b.err + self.round(p) + self.mark_mm;
-        Track::with(err, 0.0, worse(a.worst, b.worst))
+        Track::with(err, 0.0, a.worst.or_worse(b.worst))
     }
 
     /// The foot `f` of the perpendicular from a point (`at`) on a line.
@@ -228,31 +268,26 @@ impl ErrorModel {
             + self.angle_rad * (at - f).norm()
             + self.round(f)
             + self.mark_mm;
-        Track::with(err, 0.0, worse(line.worst, p.worst))
+        Track::with(err, 0.0, line.worst.or_worse(p.worst))
     }
 
     /// The point `p` where two curves meet at `cond`, each off by `delta` (mm, summed) across
     /// itself there, `extent` the magnitude of the coordinates the cut computes with, `radius`
     /// the larger radius of a curved cut (`0` for two lines): `δ / sin θ`, and no more than
-    /// the `√(2rδ) + δ` by which a circle shifted by `δ` moves a near-tangent point.
+    /// the `√(2rδ) + δ` by which a circle shifted by `δ` moves a near-tangent point. `own` is
+    /// the cut itself ([`Worst::own`]: its amplification).
     pub(crate) fn cut(
         &self,
-        step: StepId,
-        cond: Conditioning,
+        own: Worst,
         (delta, extent, radius): (f64, f64, f64),
-        worst: Option<WorstCut>,
+        worst: Worst,
     ) -> Track {
         let delta = delta + self.rel * extent;
-        let amp = cond.amplification();
-        let mut err = amp * delta;
+        let mut err = own.amp * delta;
         if radius > 0.0 {
             err = err.min((2.0 * radius * delta).sqrt() + delta);
         }
-        let own = Some(WorstCut {
-            step,
-            conditioning: cond,
-        });
-        Track::with(err + self.mark_mm, 0.0, worse(worst, own))
+        Track::with(err + self.mark_mm, 0.0, worst.or_worse(own))
     }
 
     /// The point `p` where lines `a` and `b` meet at `cond`, each off by its `across` (mm)
@@ -261,17 +296,16 @@ impl ErrorModel {
     /// that line's direction as its axis).
     pub(crate) fn cut_lines(
         &self,
-        step: StepId,
-        cond: Conditioning,
+        own: Worst,
         (a, b): ((f64, Vector), (f64, Vector)),
         extent: f64,
-        worst: Option<WorstCut>,
+        worst: Worst,
     ) -> Track {
-        let mut t = self.cut(step, cond, (a.0 + b.0, extent, 0.0), worst);
+        let mut t = self.cut(own, (a.0 + b.0, extent, 0.0), worst);
         let (across, dir) = if b.0 <= a.0 { b } else { a };
         let n = dir.norm();
         if n > 0.0 && n.is_finite() {
-            let rounding = cond.amplification() * self.rel * extent + self.mark_mm;
+            let rounding = own.amp * self.rel * extent + self.mark_mm;
             t.axis = dir / n;
             t.off = (across + rounding).min(t.err);
         }
@@ -292,7 +326,7 @@ impl ErrorModel {
             + len.abs() * axis.turn
             + self.read_mm
             + self.rel * (at.0.coords.norm() + at.1.coords.norm());
-        let worst = worse(worse(ends.0.worst, ends.1.worst), axis.worst);
+        let worst = ends.0.worst.or_worse(ends.1.worst).or_worse(axis.worst);
         Track::with(
             mm * per_mm.abs() + self.rel * (len * per_mm).abs(),
             0.0,
@@ -310,7 +344,7 @@ impl ErrorModel {
         deg: f64,
     ) -> Track {
         let rad = (v.err + from.err) / lu + (v.err + to.err) / lv + self.angle_rad;
-        let worst = worse(worse(v.worst, from.worst), to.worst);
+        let worst = v.worst.or_worse(from.worst).or_worse(to.worst);
         Track::with(rad.to_degrees() + self.rel * deg.abs(), 0.0, worst)
     }
 
@@ -321,10 +355,10 @@ impl ErrorModel {
         inputs: impl Iterator<Item = &'a (Track, f64)>,
         value: f64,
     ) -> Track {
-        let mut t = Track::with(self.rel * value.abs(), 0.0, None);
+        let mut t = Track::with(self.rel * value.abs(), 0.0, Worst::NONE);
         for (i, v) in inputs {
             t.err += i.err + self.rel * v.abs();
-            t.worst = worse(t.worst, i.worst);
+            t.worst = t.worst.or_worse(i.worst);
         }
         t
     }

@@ -191,7 +191,7 @@ impl Board {
         let at = p;
         let h = self.made_point(label, p, Derived::OnCircle { circle, at, dir });
         let c = circle.g.center;
-        self.add(Label::NONE, role, || Geom::Segment {
+        self.add_drawing(Label::NONE, role, || Geom::Segment {
             segment: Segment { a: c, b: p },
         });
         self.touch(circle.id, &p);
@@ -244,13 +244,13 @@ impl Board {
         );
         self.begin(StepKind::Given, &note, &[pivot.id]);
         for (a, b, role) in [(p, l, Role::Given), (p, r, Role::Given)] {
-            self.add(Label::NONE, role, || Geom::Segment {
+            self.add_drawing(Label::NONE, role, || Geom::Segment {
                 segment: Segment { a, b },
             });
         }
         let (a, b) = (l - Vector::new(1.5, 0.0), r + Vector::new(1.5, 0.0));
         // Hatched on the right of a → b: below the line, as the ground is.
-        self.add(Label::NONE, Role::Guide, || Geom::Segment {
+        self.add_drawing(Label::NONE, Role::Guide, || Geom::Segment {
             segment: Segment { a, b },
         });
     }
@@ -266,7 +266,7 @@ impl Board {
         let Mark { label, role } = mark.into();
         let s = Segment { a: a.g, b: b.g };
         self.begin(StepKind::LayOff, &note, &[a.id, b.id]);
-        let id = self.add(label, role, || drawn_as(role, s));
+        let id = self.add_drawing(label, role, || drawn_as(role, s));
         H { id, g: s }
     }
 
@@ -333,7 +333,7 @@ impl Board {
         };
         let h = self.made_point(mark.label, p, how);
         let segment = Segment { a: from.g, b: p };
-        self.add(Label::NONE, mark.role, || drawn_as(mark.role, segment));
+        self.add_drawing(Label::NONE, mark.role, || drawn_as(mark.role, segment));
         self.touch(along.id, &p);
         Ok(h)
     }
@@ -357,7 +357,7 @@ impl Board {
         };
         let h = self.made_point(label, f, how);
         let a = p.g;
-        self.add(Label::NONE, role, || Geom::Segment {
+        self.add_drawing(Label::NONE, role, || Geom::Segment {
             segment: Segment { a, b: f },
         });
         self.touch(line.id, &f);
@@ -371,7 +371,7 @@ impl Board {
             return;
         }
         self.begin(StepKind::Measure, &note, inputs);
-        self.add(Label::NONE, Role::Result, || Geom::Table { at, rows });
+        self.add_drawing(Label::NONE, Role::Result, || Geom::Table { at, rows });
     }
 
     /// Hatches the area inside the polygon through `outline` (its last point joined to its
@@ -387,7 +387,7 @@ impl Board {
         self.begin(StepKind::Curve, &note, &ids);
         let pts: Vec<Point> = outline.iter().map(|p| p.g).collect();
         for segment in construct::hatch(&pts, Vector::new(1.0, 1.0), spacing) {
-            self.add(Label::NONE, Role::Construction, || Geom::Segment {
+            self.add_drawing(Label::NONE, Role::Construction, || Geom::Segment {
                 segment,
             });
         }
@@ -411,7 +411,7 @@ impl Board {
         let ids: Vec<ObjId> = points.iter().map(|p| p.id).collect();
         self.begin(StepKind::Curve, &note, &ids);
         let pts: Vec<Point> = points.iter().map(|p| p.g).collect();
-        let id = self.add(label, role, || Geom::Curve {
+        let id = self.add_drawing(label, role, || Geom::Curve {
             points: pts,
             smooth: trace == Trace::Smooth,
         });
@@ -436,7 +436,7 @@ impl Board {
         let pts: Vec<Point> = points.iter().map(|&p| self.mark(p)).collect();
         pts.iter().for_each(|p| self.grow(p));
         self.begin(StepKind::Given, &note, &[]);
-        self.add(label, role, || Geom::Curve {
+        self.add_drawing(label, role, || Geom::Curve {
             points: pts,
             smooth: trace == Trace::Smooth,
         });

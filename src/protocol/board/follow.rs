@@ -144,7 +144,11 @@ impl Board {
     #[inline(never)]
     fn follow_recorded(&mut self, id: ObjId, how: &Derived<'_>) {
         let t = self.bound_of(how);
-        self.tracks.set(id.0 as usize - 1, t);
+        let own = match *how {
+            Derived::Cut { cond, .. } => Some((StepId(self.next_step), cond)),
+            _ => None,
+        };
+        self.tracks.set(id.0 as usize - 1, t, own);
         if self.shadows.is_some() {
             if let Some(v) = self.reference_of(how) {
                 if let Some(s) = self.shadows.as_mut() {
@@ -237,9 +241,9 @@ impl Board {
         let (ta, tb) = (self.tr(a.id), self.tr(b.id));
         let across = ((ta.across(&a.g, p), a.g.dir), (tb.across(&b.g, p), b.g.dir));
         let extent = p.coords.norm() + a.g.origin.coords.norm() + b.g.origin.coords.norm();
-        let worst = crate::protocol::accuracy::worse(ta.worst, tb.worst);
-        let step = StepId(self.next_step);
-        self.model.cut_lines(step, cond, across, extent, worst)
+        let worst = ta.worst.or_worse(tb.worst);
+        self.model
+            .cut_lines(Worst::own(cond), across, extent, worst)
     }
 
     /// The bound of the point `p` where `line` cut `circle` at `cond`.
@@ -254,9 +258,8 @@ impl Board {
         let delta = tl.across(&line.g, p) + tc.err + self.snapped(cond);
         let (c, r) = (circle.g.center, circle.g.radius);
         let extent = p.coords.norm() + r + c.coords.norm() + line.g.origin.coords.norm();
-        let worst = crate::protocol::accuracy::worse(tl.worst, tc.worst);
-        let step = StepId(self.next_step);
-        self.model.cut(step, cond, (delta, extent, r), worst)
+        let worst = tl.worst.or_worse(tc.worst);
+        self.model.cut(Worst::own(cond), (delta, extent, r), worst)
     }
 
     /// The bound of the point `p` where circles `a` and `b` cut at `cond`.
@@ -268,10 +271,10 @@ impl Board {
             + gb.radius
             + ga.center.coords.norm()
             + gb.center.coords.norm();
-        let worst = crate::protocol::accuracy::worse(ta.worst, tb.worst);
+        let worst = ta.worst.or_worse(tb.worst);
         let delta = ta.err + tb.err + self.snapped(cond);
         let geom = (delta, extent, ga.radius.max(gb.radius));
-        self.model.cut(StepId(self.next_step), cond, geom, worst)
+        self.model.cut(Worst::own(cond), geom, worst)
     }
 
     /// How far a curve of a touching cut may have stood from touching: the kernel takes
@@ -399,9 +402,10 @@ impl Board {
     /// the worst cut it depends on; `None` on a board that does not record.
     pub fn bound(&self, id: ObjId) -> Option<(f64, Option<WorstCut>)> {
         let t = self.tracks.get((id.0 as usize).wrapping_sub(1))?;
-        Some((t.err, t.worst))
+        Some((t.err, self.tracks.worst_cut(t.worst)))
     }
 
+    #[inline]
     pub(super) fn tr(&self, id: ObjId) -> Track {
         self.tracks
             .get((id.0 as usize).wrapping_sub(1))

@@ -4,7 +4,8 @@ use super::*;
 
 /// The checks of a board that does not keep its drawing: steps and objects are counted, the
 /// checks kept with the step and the situation they belong to, and each object's error
-/// bound tracked, in some 50 bytes per object instead of a protocol of some 1 KB per step.
+/// bound tracked, in some 30 bytes per object that carries a bound (what is only drawn
+/// carries none and is only counted) instead of a protocol of some 1 KB per step.
 #[derive(Debug, Clone, Default)]
 pub(super) struct Ledger {
     /// The value of each number, by its id (in id order): what the bounds of numbers
@@ -17,6 +18,8 @@ pub(super) struct Ledger {
     pub(super) summary: crate::protocol::summary::CheckSummary,
     /// Keep every check however many ([`Mode::Checks`]'s `every`).
     pub(super) every: bool,
+    /// The objects only drawn ([`Board::add_drawing`]), counted.
+    pub(super) drawings: usize,
     /// The situation from each step on where it changed, in step order.
     pub(super) contexts: Vec<(StepId, Option<std::sync::Arc<str>>)>,
 }
@@ -98,7 +101,9 @@ impl Board {
         }
     }
 
-    #[inline]
+    /// Files an object (on a board that keeps only its checks, counts it with its track).
+    /// Inlined, so that a board that does not record pays one test for it.
+    #[inline(always)]
     pub(super) fn add(&mut self, label: Label, role: Role, geom: impl FnOnce() -> Geom) -> ObjId {
         if !self.recording {
             return ObjId::NONE;
@@ -111,8 +116,28 @@ impl Board {
         self.file_object(label, role, geom())
     }
 
+    /// [`Board::add`] for what is only drawn (a segment, a curve, a table, hatching): no
+    /// step follows from it, so a board that keeps only its checks counts it and gives it
+    /// no id and no track.
+    #[inline(always)]
+    pub(super) fn add_drawing(
+        &mut self,
+        label: Label,
+        role: Role,
+        geom: impl FnOnce() -> Geom,
+    ) -> ObjId {
+        if !self.recording {
+            return ObjId::NONE;
+        }
+        if let Some(l) = self.ledger.as_mut() {
+            l.drawings += 1;
+            return ObjId::NONE;
+        }
+        self.file_object(label, role, geom())
+    }
+
     /// [`Board::add`] for a number: a board that keeps only its checks keeps its value.
-    #[inline]
+    #[inline(always)]
     pub(super) fn add_number(&mut self, label: Label, value: f64, unit: &'static str) -> ObjId {
         if !self.recording {
             return ObjId::NONE;

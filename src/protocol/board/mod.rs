@@ -1,6 +1,6 @@
 //! The board: every kernel operation, recorded as a step.
 
-use super::accuracy::{ErrorModel, Track, WorstCut};
+use super::accuracy::{ErrorModel, Track, Worst, WorstCut};
 use super::config::{BoardConfig, Jitter, Mode};
 use super::reference::{self as refr, ReferenceRow, Shadow, DP};
 use super::step::*;
@@ -27,7 +27,8 @@ use keep::Ledger;
 /// A handle to an object on the board: its id and its geometry.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct H<T> {
-    /// The object id ([`ObjId::NONE`] on a board that does not record).
+    /// The object id ([`ObjId::NONE`] on a board that does not record, and for what a board
+    /// that keeps only its checks only draws: a segment, a curve).
     pub id: ObjId,
     /// The geometry or value.
     pub g: T,
@@ -332,7 +333,7 @@ impl Board {
     /// How many objects were made on a recording board (kept, or only counted where the board
     /// keeps only its checks); 0 on a board that does not record.
     pub fn object_count(&self) -> usize {
-        self.tracks.len()
+        self.tracks.len() + self.ledger.as_ref().map_or(0, |l| l.drawings)
     }
 
     /// Every analytic check the board kept, in step order (on a board that keeps only a

@@ -223,7 +223,8 @@ impl Board {
                 r.observed = r.observed.max(observed);
                 r.bound = r.bound.max(t.err);
                 r.scale = r.scale.max(scale);
-                r.worst_cut = crate::protocol::accuracy::worse(r.worst_cut, t.worst);
+                r.worst_cut =
+                    crate::protocol::accuracy::worse(r.worst_cut, self.tracks.worst_cut(t.worst));
             }
             rows.extend(row);
         }
