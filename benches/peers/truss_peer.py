@@ -11,13 +11,20 @@ one run, median of several:
 - graphostatik in process: the time `graphostatik check --verbose` reports for the scene
   (read, validation, determinacy, the recorded Cremona plan, the sparse solve, every check,
   the table: past 1,000 checks a row per kind with its count and worst, and every failure);
-- graphostatik end to end: the whole command, process start and exit included.
+- graphostatik end to end: the whole command, process start and exit included;
+- compas_ags (ETH's algebraic graphic statics) and anastruct (a 2D frame FEM), where they are
+  installed and up to `--peer-max` joints: the girder built in each (compas_ags: the form
+  diagram with the loads and reactions as leaf edges, the loads its independent edges;
+  anastruct: truss elements, a hinge and a roller), solved, its member forces read, in
+  process. Each one's forces are compared with numpy's (the largest difference over the
+  largest force, in the last column) before it is timed.
 
 Run from the repository root after `cargo build --release`:
 
     python3 benches/peers/truss_peer.py [--sizes 10,100,1000,10000,100000] [--reps 5] [--exe PATH]
 
-Needs numpy and scipy (`pip install numpy scipy`). Prints a Markdown table.
+Needs numpy and scipy (`pip install numpy scipy`); the peers `pip install compas_ags
+anastruct`. Prints a Markdown table.
 """
 import argparse
 import json
@@ -97,6 +104,84 @@ def numpy_solve(scene):
     return f[:s]
 
 
+def compas_ags_solve(scene):
+    """The girder as compas_ags's form diagram (loads and reactions as vertical leaf edges,
+    the loads independent), its force densities and force diagram updated; member forces
+    in member order."""
+    from compas_ags.ags import graphstatics
+    from compas_ags.diagrams import ForceDiagram, FormDiagram, FormGraph
+
+    xy = {j["name"]: j["at_m"] for j in scene["joints"]}
+    lines = [([*xy[a], 0.0], [*xy[b], 0.0]) for a, b in (m["joints"] for m in scene["members"])]
+    members = len(lines)
+    loads = {}
+    for case in scene["load_cases"]:
+        for load in case["loads"]:
+            loads[load["joint"]] = loads.get(load["joint"], 0.0) + load["kg"]
+    leaves = []
+    for name in list(loads) + [s["joint"] for s in scene["supports"]]:
+        x, y = xy[name]
+        lines.append(([x, y, 0.0], [x, y - 1.0, 0.0]))
+        leaves.append((loads.get(name) if len(leaves) < len(loads) else None, len(lines) - 1))
+    form = FormDiagram.from_graph(FormGraph.from_lines(lines))
+    at = {}
+    for u, v in form.edges():
+        a = tuple(round(c, 9) for c in form.vertex_coordinates(u)[:2])
+        b = tuple(round(c, 9) for c in form.vertex_coordinates(v)[:2])
+        at[a, b] = at[b, a] = (u, v)
+
+    def edge(i):
+        a, b = lines[i]
+        return at[tuple(round(c, 9) for c in a[:2]), tuple(round(c, 9) for c in b[:2])]
+
+    for kg, i in leaves:
+        if kg is not None:
+            form.edge_attribute(edge(i), "is_ind", True)
+            form.edge_attribute(edge(i), "q", kg)
+    ends = [v for v in form.vertices() if form.vertex_degree(v) == 1]
+    form.vertices_attribute("is_fixed", True, keys=ends)
+    force = ForceDiagram.from_formdiagram(form)
+    graphstatics.form_update_q_from_qind(form)
+    graphstatics.force_update_from_form(force, form)
+    return np.array([form.edge_attribute(edge(i), "f") for i in range(members)])
+
+
+def anastruct_solve(scene):
+    """The girder as anastruct truss elements on a hinge and a roller, solved; member forces
+    in member order."""
+    from anastruct import SystemElements
+
+    xy = {j["name"]: j["at_m"] for j in scene["joints"]}
+    ss = SystemElements(mesh=1)
+    for a, b in (m["joints"] for m in scene["members"]):
+        ss.add_truss_element(location=[xy[a], xy[b]], EA=1e9)
+    pin, roller = scene["supports"]
+    ss.add_support_hinged(node_id=ss.find_node_id(xy[pin["joint"]]))
+    ss.add_support_roll(node_id=ss.find_node_id(xy[roller["joint"]]), direction="x")
+    for case in scene["load_cases"]:
+        for load in case["loads"]:
+            ss.point_load(node_id=ss.find_node_id(xy[load["joint"]]), Fy=-load["kg"])
+    ss.solve()
+    return np.array(
+        [r["Nmax"] if abs(r["Nmax"]) > abs(r["Nmin"]) else r["Nmin"] for r in ss.get_element_results()]
+    )
+
+
+def peers():
+    """The peers installed, by name."""
+    found = {}
+    for name, solve, module in (
+        ("compas_ags", compas_ags_solve, "compas_ags"),
+        ("anastruct", anastruct_solve, "anastruct"),
+    ):
+        try:
+            __import__(module)
+            found[name] = solve
+        except ImportError:
+            print(f"({name} is not installed: its column is left out)", file=sys.stderr)
+    return found
+
+
 def median_ms(f, reps):
     times = []
     for _ in range(reps):
@@ -136,10 +221,16 @@ def main():
     ap.add_argument("--sizes", default="10,100,1000,10000,100000", help="joints, comma-separated")
     ap.add_argument("--reps", type=int, default=5)
     ap.add_argument("--exe", default=EXE, help="the graphostatik binary (another build to compare)")
+    ap.add_argument("--peer-max", type=int, default=1000, help="most joints the peers are run on")
     args = ap.parse_args()
     EXE = args.exe
-    print("| joints | members | numpy + scipy spsolve, in process | graphostatik check, in process | ratio | graphostatik check, end to end | ratio | members checked |")
-    print("|---:|---:|---:|---:|---:|---:|---:|---:|")
+    import warnings
+
+    warnings.filterwarnings("ignore")  # anastruct's polyfit of moments a truss has none of
+    others = peers()
+    head = "".join(f" {name}, in process | ratio |" for name in others)
+    print("| joints | members | numpy + scipy spsolve, in process | graphostatik check, in process | ratio | graphostatik check, end to end | ratio |" + head + " members checked | peers' forces against numpy's |")
+    print("|---:|---:|---:|---:|---:|---:|---:|" + "---:|---:|" * len(others) + "---:|---:|")
     with tempfile.TemporaryDirectory() as tmp:
         for joints in (int(x) for x in args.sizes.split(",")):
             n = max(joints // 2, 2)
@@ -160,9 +251,18 @@ def main():
             k = len(scene["joints"])
             s = len(scene["members"])
             assert np.all(np.isfinite(f_np))
+            cells, agree = "", []
+            for name, solve in others.items():
+                if k > args.peer_max:
+                    cells += " - | - |"
+                    continue
+                off = np.max(np.abs(solve(scene) - f_np)) / np.max(np.abs(f_np))
+                agree.append(f"{name} {off:.0e}")
+                t = median_ms(lambda: solve(scene), args.reps if k <= 100 else 1)
+                cells += f" {t:.2f} ms | {t / t_in:.1f}x |"
             print(
                 f"| {k:,} | {s:,} | {t_np:.2f} ms | {t_in:.2f} ms | {t_np / t_in:.1f}x "
-                f"| {t_e2e:.2f} ms | {t_np / t_e2e:.1f}x | {checked:,} |",
+                f"| {t_e2e:.2f} ms | {t_np / t_e2e:.1f}x |{cells} {checked:,} | {', '.join(agree) or '-'} |",
                 flush=True,
             )
 
