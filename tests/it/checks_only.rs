@@ -41,6 +41,8 @@ fn every_bundled_scene_checks_alike_without_its_drawing() {
         );
         assert_eq!(check_table_json(&full), check_table_json(&lean));
         assert_eq!(full.step_count(), lean.step_count(), "{}", p.display());
+        // What is only drawn is counted, though it carries no bound on the lean board.
+        assert_eq!(full.object_count(), lean.object_count(), "{}", p.display());
         assert_eq!(full.all_passed(), lean.all_passed());
         assert!(lean.steps().is_empty() && lean.objects().is_empty());
         assert!(lean.is_recording() && !lean.is_drawing() && full.is_drawing());
