@@ -65,25 +65,13 @@ fn closed_form(n: usize) -> f64 {
     acc
 }
 
-/// (a'): the same sum as [`closed_form`] as lean as it goes. With s, c the sine and cosine
-/// of θ and cos ψ = √(1 − λ²s²): the piston at R(1 − c) + L(1 − cos ψ) from the inner dead
-/// centre, its velocity v·s·(1 + λc/cos ψ) and the tangential force ±P·s·(1 + λc/cos ψ),
-/// + on the outstroke (KG 285, 303; LH Gl. 20, 48).
+#[path = "support/lean_crank.rs"]
+mod lean_crank;
+
+/// (a'): the same sum as [`closed_form`], as lean as it goes ([`lean_crank::sum`]).
 fn lean_closed_form(n: usize) -> f64 {
     let d = drive();
-    let (r, l, v, p) = (d.crank_radius, d.rod_length, d.crank_pin_speed, 8700.0);
-    let lam = r / l;
-    let step = std::f64::consts::TAU / n as f64;
-    let mut acc = 0.0;
-    for k in 0..n {
-        let (s, c) = (step * k as f64).sin_cos();
-        let sp = lam * s;
-        let cp = ((1.0 - sp) * (1.0 + sp)).sqrt();
-        let factor = s + s * lam * c / cp;
-        let force = if 2 * k < n { p } else { -p };
-        acc += r * (1.0 - c) + l * (1.0 - cp) + (v + force) * factor;
-    }
-    acc
+    lean_crank::sum(d.crank_radius, d.rod_length, d.crank_pin_speed, 8700.0, n)
 }
 
 fn constructed(n: usize, recording: bool) -> usize {

@@ -16,6 +16,9 @@ use graphostatik::crank::*;
 use graphostatik::protocol::Board;
 use graphostatik::protocol::BoardConfig;
 
+#[path = "../benches/support/lean_crank.rs"]
+mod lean_crank;
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let mode = args.get(1).map_or("recorded", String::as_str);
@@ -39,21 +42,7 @@ fn main() {
                 })
                 .sum::<f64>()
         }
-        "lean" => {
-            let (r, l, v, p) = (d.crank_radius, d.rod_length, d.crank_pin_speed, 8700.0);
-            let lam = r / l;
-            let step = std::f64::consts::TAU / n as f64;
-            (0..n)
-                .map(|k| {
-                    let (s, c) = (step * k as f64).sin_cos();
-                    let sp = lam * s;
-                    let cp = ((1.0 - sp) * (1.0 + sp)).sqrt();
-                    let factor = s + s * lam * c / cp;
-                    let force = if 2 * k < n { p } else { -p };
-                    r * (1.0 - c) + l * (1.0 - cp) + (v + force) * factor
-                })
-                .sum::<f64>()
-        }
+        "lean" => lean_crank::sum(d.crank_radius, d.rod_length, d.crank_pin_speed, 8700.0, n),
         "built" | "recorded" | "checked" => {
             let dr = Drawing {
                 length_scale: 10.0,
