@@ -118,11 +118,12 @@ def compas_ags_solve(scene):
     for case in scene["load_cases"]:
         for load in case["loads"]:
             loads[load["joint"]] = loads.get(load["joint"], 0.0) + load["kg"]
+    # A vertical leaf edge below each loaded joint (its load) and each support (its reaction).
     leaves = []
-    for name in list(loads) + [s["joint"] for s in scene["supports"]]:
+    for name, kg in [*loads.items(), *((s["joint"], None) for s in scene["supports"])]:
         x, y = xy[name]
         lines.append(([x, y, 0.0], [x, y - 1.0, 0.0]))
-        leaves.append((loads.get(name) if len(leaves) < len(loads) else None, len(lines) - 1))
+        leaves.append((kg, len(lines) - 1))
     form = FormDiagram.from_graph(FormGraph.from_lines(lines))
     at = {}
     for u, v in form.edges():
@@ -138,8 +139,8 @@ def compas_ags_solve(scene):
         if kg is not None:
             form.edge_attribute(edge(i), "is_ind", True)
             form.edge_attribute(edge(i), "q", kg)
-    ends = [v for v in form.vertices() if form.vertex_degree(v) == 1]
-    form.vertices_attribute("is_fixed", True, keys=ends)
+    tips = [v for v in form.vertices() if form.vertex_degree(v) == 1]
+    form.vertices_attribute("is_fixed", True, keys=tips)
     force = ForceDiagram.from_formdiagram(form)
     graphstatics.form_update_q_from_qind(form)
     graphstatics.force_update_from_form(force, form)
@@ -170,12 +171,9 @@ def anastruct_solve(scene):
 def peers():
     """The peers installed, by name."""
     found = {}
-    for name, solve, module in (
-        ("compas_ags", compas_ags_solve, "compas_ags"),
-        ("anastruct", anastruct_solve, "anastruct"),
-    ):
+    for name, solve in (("compas_ags", compas_ags_solve), ("anastruct", anastruct_solve)):
         try:
-            __import__(module)
+            __import__(name)
             found[name] = solve
         except ImportError:
             print(f"({name} is not installed: its column is left out)", file=sys.stderr)

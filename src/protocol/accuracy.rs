@@ -73,21 +73,6 @@ pub struct WorstCut {
     pub conditioning: Conditioning,
 }
 
-/// The more glancing of two cuts (the earlier one on a tie).
-pub(crate) fn worse(a: Option<WorstCut>, b: Option<WorstCut>) -> Option<WorstCut> {
-    match (a, b) {
-        (Some(x), Some(y)) => {
-            if y.conditioning.amplification() > x.conditioning.amplification() {
-                Some(y)
-            } else {
-                Some(x)
-            }
-        }
-        (x, None) => x,
-        (None, y) => y,
-    }
-}
-
 /// The worst cut a track depends on, as a board's tracks file it: the cut's place among
 /// the cuts they keep (0: none; [`Worst::OWN`]: the cut the step being followed makes,
 /// filed with its object) and its amplification, reckoned once when the cut is made, so
@@ -117,7 +102,7 @@ impl Worst {
         self.place != 0
     }
 
-    /// The more glancing of two cuts (the earlier one on a tie): [`worse`] on filed cuts.
+    /// The more glancing of two cuts (the larger amplification; the earlier one on a tie).
     #[inline]
     pub fn or_worse(self, other: Worst) -> Worst {
         if other.is_some() && (!self.is_some() || other.amp > self.amp) {

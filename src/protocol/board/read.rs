@@ -201,6 +201,7 @@ impl Board {
                 .map(|c| c.reference.abs())
                 .fold(0.0, f64::max);
             let mut row: Option<ReferenceRow> = None;
+            let mut worst = Worst::NONE;
             for id in &step.outputs {
                 let (Some(obj), t) = (self.object(*id), self.tr(*id)) else {
                     continue;
@@ -223,10 +224,12 @@ impl Board {
                 r.observed = r.observed.max(observed);
                 r.bound = r.bound.max(t.err);
                 r.scale = r.scale.max(scale);
-                r.worst_cut =
-                    crate::protocol::accuracy::worse(r.worst_cut, self.tracks.worst_cut(t.worst));
+                worst = worst.or_worse(t.worst);
             }
-            rows.extend(row);
+            rows.extend(row.map(|r| ReferenceRow {
+                worst_cut: self.tracks.worst_cut(worst),
+                ..r
+            }));
         }
         rows
     }
