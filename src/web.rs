@@ -11,7 +11,7 @@
 
 use crate::protocol::{Board, BoardConfig, FigureMeta, ObjId};
 use crate::render::{
-    figure_with_points, page_count, step_names, walkthrough_item, walkthrough_item_list, Grouping,
+    figure_with_points, page_count, step_names, walkthrough_item, walkthrough_list, Grouping,
 };
 use crate::scene::{handles, AnyScene, Handle, Preview};
 use serde::Serialize;
@@ -45,9 +45,14 @@ pub struct Built {
     pub source: String,
     /// The figure (SVG, one `<g data-step="N">` layer per step).
     pub svg: String,
-    /// The walk-through's step list: one `<li>` item per step; only page [`Built::page`]'s
-    /// where the answer is for a drag.
+    /// The walk-through's step list: one `<li>` item per page, its lines alone
+    /// ([`StepList::lines`](crate::render::StepList)); in an answer for a drag, only page
+    /// [`Built::page`]'s item, its details included.
     pub items: Vec<String>,
+    /// What each page shows beside the figure ([`StepList::details`](crate::render::StepList)),
+    /// in the order of `items`; none in an answer for a drag.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub details: Vec<String>,
     /// The page whose item alone `items` holds, in an answer for a drag ([`replay_page`]).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub page: Option<usize>,
@@ -269,17 +274,25 @@ fn built(
             passed: c.passed,
         })
         .collect();
+    let (items, details) = match page {
+        None => {
+            let list = walkthrough_list(board, Grouping::Step);
+            (list.lines, list.details)
+        }
+        Some(k) => (
+            walkthrough_item(board, Grouping::Step, k)
+                .into_iter()
+                .collect(),
+            Vec::new(),
+        ),
+    };
     Built {
         ok: true,
         title: meta.title.to_string(),
         source: meta.source.to_string(),
         svg,
-        items: match page {
-            None => walkthrough_item_list(board, Grouping::Step),
-            Some(k) => walkthrough_item(board, Grouping::Step, k)
-                .into_iter()
-                .collect(),
-        },
+        items,
+        details,
         page,
         step_count: steps.len(),
         page_count: page_count(board, Grouping::Step),
@@ -361,7 +374,13 @@ mod tests {
             assert!(told_apart > 0, "{scene}: no steps alike");
             for k in (0..all.items.len()).step_by(7) {
                 let one = super::build_page(&text, "x.json", Some(k)).unwrap();
-                assert_eq!(one.items, [all.items[k].clone()], "{scene}, page {k}");
+                // The list's line is the item without its details, which come apart.
+                let line = &all.items[k];
+                let open = &line[..=line.find('>').unwrap()];
+                let whole = format!("{open}{}</li>\n", all.details[k]);
+                assert_eq!(one.items.len(), 1, "{scene}, page {k}");
+                assert_eq!(one.items[0], whole, "{scene}, page {k}");
+                assert!(!line.contains("wt-detail") && whole.contains("wt-detail"));
             }
         }
     }

@@ -29,5 +29,6 @@ pub use table::{
 };
 pub use walkthrough::{
     html_text, page_count, step_names, walkthrough, walkthrough_html, walkthrough_item,
-    walkthrough_item_list, walkthrough_items, walkthrough_page, Grouping, Page, WalkOptions,
+    walkthrough_item_list, walkthrough_items, walkthrough_list, walkthrough_page, Grouping, Page,
+    StepList, WalkOptions,
 };

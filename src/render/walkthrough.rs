@@ -47,6 +47,9 @@ pub struct WalkOptions {
     pub controls: String,
     /// An error line shown above the figure (the live preview's last failed edit).
     pub error: Option<String>,
+    /// Each page's details where the list given holds its lines alone
+    /// ([`StepList`]): written into the page as JSON for its script to show.
+    pub details: Option<Vec<String>>,
 }
 
 /// Text shown literally in HTML: markup escaped (`<`, `>`, `&`, both quotes), characters XML
@@ -122,6 +125,36 @@ pub fn walkthrough_item_list(board: &Board, grouping: Grouping) -> Vec<String> {
     (page_groups(board, grouping).iter())
         .map(|group| group_item(group, &names))
         .collect()
+}
+
+/// The walk-through's step list as a live page keeps it: the list's lines apart from what
+/// each page shows beside the figure.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct StepList {
+    /// One `<li>` item per page: its steps' numbers, names and situation, a line each
+    /// (the item of [`walkthrough_item_list`] without the details it keeps hidden).
+    pub lines: Vec<String>,
+    /// What each page shows beside the figure: the inner HTML of its item of
+    /// [`walkthrough_item_list`], the German term, book, cut and checks included.
+    pub details: Vec<String>,
+}
+
+/// [`walkthrough_item_list`] with the details apart from the list ([`StepList`]): a page that
+/// puts the list in place anew after a replay lays out the lines alone (the crane bridge's
+/// 2,080 items of 1.5 MB are 0.5 MB of lines; the details, 33,000 elements the list hid,
+/// are text until their page is shown).
+pub fn walkthrough_list(board: &Board, grouping: Grouping) -> StepList {
+    let names = step_names(board);
+    let (lines, details) = (page_groups(board, grouping).iter())
+        .map(|group| {
+            let parts = group_parts(group, &names);
+            (
+                list_line(group, &parts),
+                parts.iter().map(|p| p.full()).collect::<String>(),
+            )
+        })
+        .unzip();
+    StepList { lines, details }
 }
 
 /// How many pages the walk-through of `board` has: one per step, but one for all the steps of
@@ -247,6 +280,17 @@ pub fn walkthrough_page(meta: &FigureMeta, svg: &str, items: &str, opts: &WalkOp
         .as_ref()
         .map(|e| format!("<p id=\"wt-error\" role=\"alert\">{}</p>\n", html_text(e)))
         .unwrap_or_default();
+    // In a script, `</` could end it and `<!` open a comment; in JSON they stand only inside
+    // strings, where `<\/` and `\u003c!` mean the same.
+    let details = (opts.details.as_ref())
+        .map(|d| {
+            let json = serde_json::to_string(d).expect("a list of strings is JSON");
+            format!(
+                "<script type=\"application/json\" id=\"wt-details\">{}</script>\n",
+                json.replace("</", "<\\/").replace("<!", "\\u003c!")
+            )
+        })
+        .unwrap_or_default();
     format!(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
@@ -255,7 +299,7 @@ pub fn walkthrough_page(meta: &FigureMeta, svg: &str, items: &str, opts: &WalkOp
          <main>\n<section id=\"wt-figure\" aria-label=\"construction\">\n{svg}</section>\n\
          <aside id=\"wt-side\">\n{controls}{nav}<div id=\"wt-now\" aria-live=\"polite\"></div>\n\
          <ol id=\"wt-steps\">\n{items}</ol>\n</aside>\n</main>\n\
-         <div id=\"wt-print\"></div>\n<script>\n{script}</script>\n{extra}</body>\n</html>\n",
+         <div id=\"wt-print\"></div>\n{details}<script>\n{script}</script>\n{extra}</body>\n</html>\n",
         title = html_text(&meta.title),
         source = html_text(&meta.source),
         css = PAGE_CSS,
@@ -279,21 +323,56 @@ const NAV: &str =
 <option value=\"1\">1 step/s</option><option value=\"2\" selected>2 steps/s</option>\
 <option value=\"5\">5 steps/s</option><option value=\"20\">20 steps/s</option></select></nav>\n";
 
-/// One page of the list: the steps it shows, a line each, and their details.
-fn group_item(group: &[&Step], names: &[String]) -> String {
-    let first = group[0].id;
-    let last = group[group.len() - 1].id;
+/// One step's line of the list (its number, name and situation) and its details (German
+/// term, book, cut, checks), which the list hides and the page shows for the current step.
+struct Part {
+    line: String,
+    detail: String,
+}
+
+impl Part {
+    /// The step as the page shows it: its line and, below, its details.
+    fn full(&self) -> String {
+        format!(
+            "<div class=\"wt-step\">{}<div class=\"wt-detail\">{}</div></div>",
+            self.line, self.detail
+        )
+    }
+}
+
+/// The steps of one page of the list, a [`Part`] each (one for a part not drawn).
+fn group_parts(group: &[&Step], names: &[String]) -> Vec<Part> {
     let name = |s: &Step| {
         let i = (s.id.0 as usize).checked_sub(1);
         i.and_then(|i| names.get(i))
             .map_or(s.caption.to_string(), String::clone)
     };
-    let lines = if group[0].part.hidden {
-        unseen_steps(group, &name)
+    if group[0].part.hidden {
+        vec![unseen_steps(group, &name)]
     } else {
         group.iter().map(|s| step_detail(s, &name(s))).collect()
-    };
-    format!("<li data-first=\"{first}\" data-last=\"{last}\">{lines}</li>\n")
+    }
+}
+
+/// The `<li>` around a page's steps (`inner`), with the range of steps it shows.
+fn list_item(group: &[&Step], inner: &str) -> String {
+    let first = group[0].id;
+    let last = group[group.len() - 1].id;
+    format!("<li data-first=\"{first}\" data-last=\"{last}\">{inner}</li>\n")
+}
+
+/// A page's item in the list without its details: its steps' lines alone.
+fn list_line(group: &[&Step], parts: &[Part]) -> String {
+    let inner: String = (parts.iter())
+        .map(|p| format!("<div class=\"wt-step\">{}</div>", p.line))
+        .collect();
+    list_item(group, &inner)
+}
+
+/// One page of the list: the steps it shows, a line each, and their details.
+fn group_item(group: &[&Step], names: &[String]) -> String {
+    let inner: String = group_parts(group, names).iter().map(Part::full).collect();
+    list_item(group, &inner)
 }
 
 /// The steps of a part constructed and checked but not drawn (a position of a moving load
@@ -302,7 +381,7 @@ fn group_item(group: &[&Step], names: &[String]) -> String {
 /// term, the books they follow once, and the checks. (The crane bridge's seven positions not
 /// drawn wrote 1.3 MB of the list's 2.1 MB, 483 lines each, when each step was written in
 /// full.)
-fn unseen_steps(group: &[&Step], name: &dyn Fn(&Step) -> String) -> String {
+fn unseen_steps(group: &[&Step], name: &dyn Fn(&Step) -> String) -> Part {
     let checks: usize = group.iter().map(|s| s.checks.len()).sum();
     let mut books: Vec<&str> = Vec::new();
     let mut d = String::new();
@@ -325,18 +404,22 @@ fn unseen_steps(group: &[&Step], name: &dyn Fn(&Step) -> String) -> String {
             d.push_str(&checks_table(s));
         }
     }
-    format!(
-        "<div class=\"wt-step\"><b>{}–{}</b> <span class=\"wt-unseen\">not drawn: {} steps \
-         constructed, {checks} checks made</span>{}<div class=\"wt-detail\">\
-         <p class=\"wt-book\">{}</p>{d}</div></div>",
-        group[0].id,
-        group[group.len() - 1].id,
-        group.len(),
-        shared_context(group)
-            .map(|c| format!(" <i>{}</i>", html_text(c)))
-            .unwrap_or_default(),
-        html_text(&books.join("; ")),
-    )
+    Part {
+        line: format!(
+            "<b>{}–{}</b> <span class=\"wt-unseen\">not drawn: {} steps constructed, \
+             {checks} checks made</span>{}",
+            group[0].id,
+            group[group.len() - 1].id,
+            group.len(),
+            shared_context(group)
+                .map(|c| format!(" <i>{}</i>", html_text(c)))
+                .unwrap_or_default(),
+        ),
+        detail: format!(
+            "<p class=\"wt-book\">{}</p>{d}",
+            html_text(&books.join("; "))
+        ),
+    }
 }
 
 /// The situation the steps of `group` share: what their contexts begin with alike, up to where
@@ -361,7 +444,7 @@ fn shared_context<'a>(group: &[&'a Step]) -> Option<&'a str> {
 
 /// One step: number, caption and context (the line in the list), then the German term, the
 /// book, the cut's angle, a degenerate outcome and the checks (shown for the current step).
-fn step_detail(step: &Step, name: &str) -> String {
+fn step_detail(step: &Step, name: &str) -> Part {
     let mut d = String::new();
     if let Some(de) = &step.term_de {
         d.push_str(&format!(
@@ -389,16 +472,18 @@ fn step_detail(step: &Step, name: &str) -> String {
     if !step.checks.is_empty() {
         d.push_str(&checks_table(step));
     }
-    format!(
-        "<div class=\"wt-step\"><b>{}</b> {}{}<div class=\"wt-detail\">{}</div></div>",
-        step.id,
-        html_text(name),
-        step.context
-            .as_ref()
-            .map(|c| format!(" <i>{}</i>", html_text(c)))
-            .unwrap_or_default(),
-        d
-    )
+    Part {
+        line: format!(
+            "<b>{}</b> {}{}",
+            step.id,
+            html_text(name),
+            step.context
+                .as_ref()
+                .map(|c| format!(" <i>{}</i>", html_text(c)))
+                .unwrap_or_default(),
+        ),
+        detail: d,
+    }
 }
 
 /// The step's checks: constructed value against the closed form.
@@ -480,6 +565,11 @@ main { display: flex; height: calc(100vh - 4em); }
 const SCRIPT: &str = r#"(function () {
 'use strict';
 var svg, layers, items, full, k = 0, zoom = false;
+// Each page's details where the list holds its lines alone (a live page, whose list is put
+// anew after a replay, lays out the lines without them); else null, each item holds its own.
+var given = document.getElementById('wt-details');
+var details = given ? JSON.parse(given.textContent) : null;
+function detailOf(j) { return details ? details[j] : items[j].innerHTML; }
 // The figure and the step list as the page holds them now (a live page puts new ones in
 // place after each replay and binds them again).
 function bind() {
@@ -508,8 +598,9 @@ function stepLayers(root) {
 function range(li) { return [Number(li.getAttribute('data-first')), Number(li.getAttribute('data-last'))]; }
 function setLayers(root, r) {
   stepLayers(root).forEach(function (g) {
-    var s = Number(g.getAttribute('data-step'));
-    g.style.display = s <= r[1] ? '' : 'none';
+    var s = Number(g.getAttribute('data-step')), d = s <= r[1] ? '' : 'none';
+    // (Set only where it changes: the crane bridge has 5,433 layers.)
+    if (g.style.display !== d) g.style.display = d;
     g.classList.toggle('current', s >= r[0] && s <= r[1]);
   });
 }
@@ -567,7 +658,7 @@ function show(i, how) {
   var r = range(items[k]);
   setLayers(svg, r);
   items.forEach(function (li, j) { li.classList.toggle('wt-on', j === k); });
-  document.getElementById('wt-now').innerHTML = items[k].innerHTML;
+  document.getElementById('wt-now').innerHTML = detailOf(k);
   document.getElementById('wt-count').textContent = 'step ' + (k + 1) + ' / ' + items.length;
   if (zoom) zoomTo(r); else { setView(full); follow(r); }
   items[k].scrollIntoView({ block: 'nearest' });
@@ -606,7 +697,7 @@ function toggleZoom() {
 function buildPrint() {
   var out = document.getElementById('wt-print');
   out.innerHTML = '';
-  items.forEach(function (li) {
+  items.forEach(function (li, j) {
     var panel = document.createElement('section');
     panel.className = 'wt-panel';
     var copy = svg.cloneNode(true);
@@ -617,7 +708,7 @@ function buildPrint() {
     setLayers(copy, range(li));
     panel.appendChild(copy);
     var text = document.createElement('div');
-    text.innerHTML = li.innerHTML;
+    text.innerHTML = detailOf(j);
     panel.appendChild(text);
     out.appendChild(panel);
   });
@@ -688,7 +779,78 @@ function swapFigure(now, fresh, moved, pages) {
   if (zoom) zoomTo(r);
 }
 window.graphostatikWalk = { show: show, step: function () { return k; }, pages: items.length,
-  rebind: function () { bind(); window.graphostatikWalk.pages = items.length; show(k, 'replace'); },
+  // The list put anew: `d`, where given, each page's details (its lines alone are listed).
+  rebind: function (d) {
+    if (d !== undefined) details = d;
+    bind();
+    window.graphostatikWalk.pages = items.length;
+    show(k, 'replace');
+  },
   swapFigure: swapFigure };
 })();
 "#;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::Point;
+    use crate::protocol::{Note, Role, Topic};
+
+    fn note(caption: &'static str) -> Note {
+        Note::new(caption, Topic::Custom("demo"))
+    }
+
+    /// A board of named points and a distance checked, with markup in a name and a check.
+    fn board() -> Board {
+        let mut b = Board::recording();
+        let n = Note::new("given point", Topic::Custom("demo"));
+        let a = b.point(Point::new(0.0, 0.0), Role::Given.named("A"), n.clone());
+        let c = b.point(Point::new(1.0, 0.0), Role::Given.named("</script><!--"), n);
+        let axis = b
+            .line_dir(
+                &a,
+                crate::kernel::Vector::new(1.0, 0.0),
+                Role::Axis,
+                note("axis"),
+            )
+            .unwrap();
+        let scale = crate::protocol::Scale::new(1.0, "mm");
+        let v = b.measure(&a, &c, &axis, scale, "d", note("distance read off"));
+        b.check(&v, "distance </b>", "mm", "given", 1.0, || 1.0);
+        b
+    }
+
+    #[test]
+    fn the_lines_and_details_apart_make_the_items_whole() {
+        let b = board();
+        for grouping in [Grouping::Step, Grouping::Context] {
+            let whole = walkthrough_item_list(&b, grouping);
+            let list = walkthrough_list(&b, grouping);
+            assert_eq!(list.lines.len(), whole.len());
+            for ((line, detail), item) in list.lines.iter().zip(&list.details).zip(&whole) {
+                let open = &line[..=line.find('>').unwrap()];
+                assert_eq!(&format!("{open}{detail}</li>\n"), item);
+                assert!(!line.contains("wt-detail"), "{line}");
+                assert!(item.starts_with(open), "{item}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_details_in_the_page_cannot_end_its_script() {
+        let b = board();
+        let list = walkthrough_list(&b, Grouping::Step);
+        assert!(list.details.iter().any(|d| d.contains("</")));
+        let meta = FigureMeta::default();
+        let opts = WalkOptions {
+            details: Some(list.details.clone()),
+            ..Default::default()
+        };
+        let page = walkthrough_page(&meta, "<svg></svg>", &list.lines.concat(), &opts);
+        let at = page.find("id=\"wt-details\">").unwrap() + 16;
+        let json = &page[at..at + page[at..].find("</script>").unwrap()];
+        assert!(!json.contains("<!"), "{json}");
+        let read: Vec<String> = serde_json::from_str(json).unwrap();
+        assert_eq!(read, list.details);
+    }
+}

@@ -168,6 +168,7 @@ pub fn scene_page(s: &SiteScene, b: &Built, links: &PageLinks) -> String {
             controls,
             extra: extra + &links.extra,
             error: links.error.clone(),
+            details: Some(b.details.clone()),
             ..Default::default()
         },
     );
@@ -360,11 +361,16 @@ mod tests {
             ]
         );
         let page = &pages[1].contents;
+        // The details, the data, the walk-through's script, the engine's and the page's.
         assert_eq!(
             page.matches("</script>").count(),
-            4,
+            5,
             "no scene text closes a script"
         );
+        let details = page.split("id=\"wt-details\">").nth(1).unwrap();
+        let details: Vec<String> =
+            serde_json::from_str(details.split("</script>").next().unwrap()).unwrap();
+        assert_eq!(details.len(), page.matches("<li data-first=").count());
         let data = page.split("id=\"gs-data\">").nth(1).unwrap();
         let data: serde_json::Value =
             serde_json::from_str(data.split("</script>").next().unwrap()).unwrap();

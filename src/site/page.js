@@ -7,7 +7,7 @@ var NS = 'http://www.w3.org/2000/svg';
 var data = JSON.parse(document.getElementById('gs-data').textContent);
 var name = data.name, scene = data.scene, good = clone(scene), handles = data.handles;
 var engine = null, queued = false, drag = null, lastText = JSON.stringify(scene);
-var times = [], last = null, counts = { splice: 0, parsed: 0, list: 0 };
+var times = [], last = null, counts = { splice: 0, parsed: 0, list: 0, lines: 0 };
 var figure = document.getElementById('wt-figure');
 function clone(v) { return JSON.parse(JSON.stringify(v)); }
 function svg() { return figure.querySelector('svg'); }
@@ -417,6 +417,26 @@ var inPlace = true, patched = false;
 // and only the figure and that step's details are put in place; the step list follows when
 // the pointer rests (`settle`).
 var stale = false;
+// The step list's lines as the page holds them (null: as the page came, not yet read).
+var listed = null;
+// Puts the list's `lines` in place: where as many pages are listed as before, only the items
+// whose line changed (a drag changes few: the crane bridge's list is 2,080 items, whose
+// layout alone takes a tenth of a second); else the whole list anew.
+function setList(lines) {
+  var ul = el('wt-steps'), kids = ul.children;
+  if (listed && listed.length === lines.length && kids.length === lines.length) {
+    for (var i = 0; i < lines.length; i++) {
+      if (lines[i] === listed[i]) continue;
+      kids[i].outerHTML = lines[i].trim();
+      counts.lines++;
+    }
+  } else {
+    ul.innerHTML = lines.join('');
+    counts.list++;
+  }
+  listed = lines;
+}
+
 // The number of the engine's figure on the page (the engine answers a replay with what
 // changed from it), and the step layers the last replay put anew (null: the whole figure).
 var figureId = null, fresh = null;
@@ -453,11 +473,10 @@ function apply(a, moved) {
     stale = true;
     t = mark('step', t);
   } else {
-    el('wt-steps').innerHTML = a.items.join('');
-    counts.list++;
+    setList(a.items);
     stale = false;
     t = mark('items', t);
-    walk.rebind();
+    walk.rebind(a.details);
     t = mark('rebind', t);
   }
   handles = a.handles;
@@ -615,8 +634,27 @@ window.graphostatikSite = {
   answer: function () { return last && { steps: last.step_count, pages: last.page_count,
     checks: last.checks, failed: last.failed, handles: last.handles,
     item: last.page !== undefined ? last.items[0] : null }; },
+  // Where the step list or the current page's details differ from the last full answer's
+  // ('' where they do not): the browser test holds the list kept in place to the answer.
+  listDiffers: function () {
+    var kids = el('wt-steps').children;
+    if (!listed || kids.length !== listed.length) return 'the list has ' + kids.length + ' items';
+    for (var i = 0; i < kids.length; i++) {
+      var t = document.createElement('template'), li = kids[i].cloneNode(true);
+      t.innerHTML = listed[i].trim();
+      li.classList.remove('wt-on');
+      if (!li.getAttribute('class')) li.removeAttribute('class');
+      if (!t.content.firstElementChild.isEqualNode(li)) return 'item ' + (i + 1);
+    }
+    // The current page's details beside the figure, as the answer gives them.
+    var now = document.createElement('div'), k = window.graphostatikWalk.step();
+    now.innerHTML = last && last.details ? last.details[k] : '';
+    if (now.innerHTML !== el('wt-now').innerHTML) return 'the details of page ' + (k + 1);
+    return '';
+  },
   // How often a replay put steps in or took some out of the figure shown (splice), parsed
-  // the figure anew (parsed), and put the whole step list in place (list).
+  // the figure anew (parsed), put the whole step list in place (list), and how many of the
+  // list's items it put anew where the list was kept (lines).
   counts: counts,
   // Replays the scene `n` times as a drag makes it, each replay drawing a figure other than
   // the one shown: the first handle moved by 0.5 to 2 mm (a crank turned by 2 to 8 degrees)

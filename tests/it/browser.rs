@@ -481,6 +481,8 @@ fn a_student_drags_a_joint_and_a_crank_pin_in_the_site() {
     keep_screenshot(&png, "site-drag.png", &dir);
     s.pointer(None, &[], true);
     assert_eq!(s.script(same), json!(""), "after the drag");
+    let listed = "return window.graphostatikSite.listDiffers();";
+    assert_eq!(s.script(listed), json!(""), "after the drag, the list");
     let (after, failed) = checks(&s);
     assert_eq!(failed, 0, "every check passes after the drag");
     assert_eq!(after.len(), before.len());
@@ -651,6 +653,14 @@ fn a_student_drags_a_joint_and_a_crank_pin_in_the_site() {
         s.script(same),
         json!(""),
         "after the dead-centre pin's drag"
+    );
+    // The step count kept, the list was kept and only its changed items put anew.
+    let kept = s.script("return window.graphostatikSite.counts;");
+    assert_eq!(kept["list"], mid["list"].as_u64().unwrap() + 1, "{kept}");
+    assert_eq!(
+        s.script("return window.graphostatikSite.listDiffers();"),
+        json!(""),
+        "after the dead-centre pin's drag, the list"
     );
     let patched = s.script("return window.graphostatikSite.phases.patch > 0;");
     assert_eq!(patched, json!(true), "a replay set the figure in place");
