@@ -417,22 +417,37 @@ var inPlace = true, patched = false;
 // and only the figure and that step's details are put in place; the step list follows when
 // the pointer rests (`settle`).
 var stale = false;
-// The step list's lines as the page holds them (null: as the page came, not yet read).
+// The step list's lines as the page holds them (null: as the page came, written with it).
 var listed = null;
+// Whether list item `a` says what `b` does (the current page's mark aside).
+function sameItem(a, b) {
+  return a.innerHTML === b.innerHTML && a.getAttribute('data-first') === b.getAttribute('data-first') &&
+    a.getAttribute('data-last') === b.getAttribute('data-last');
+}
 // Puts the list's `lines` in place: where as many pages are listed as before, only the items
 // whose line changed (a drag changes few: the crane bridge's list is 2,080 items, whose
-// layout alone takes a tenth of a second); else the whole list anew.
+// layout alone takes a tenth of a second); else the whole list anew. The list the page came
+// with is compared item by item, parsed apart from the page (no layout).
 function setList(lines) {
-  var ul = el('wt-steps'), kids = ul.children;
-  if (listed && listed.length === lines.length && kids.length === lines.length) {
-    for (var i = 0; i < lines.length; i++) {
+  var ul = el('wt-steps'), kids = ul.children, i;
+  if (kids.length !== lines.length || (listed && listed.length !== lines.length)) {
+    ul.innerHTML = lines.join('');
+    counts.list++;
+  } else if (listed) {
+    for (i = 0; i < lines.length; i++) {
       if (lines[i] === listed[i]) continue;
       kids[i].outerHTML = lines[i].trim();
       counts.lines++;
     }
   } else {
-    ul.innerHTML = lines.join('');
-    counts.list++;
+    var t = document.createElement('template');
+    t.innerHTML = lines.join('');
+    var fresh = Array.prototype.slice.call(t.content.children), old = Array.prototype.slice.call(kids);
+    for (i = 0; i < fresh.length; i++) {
+      if (sameItem(fresh[i], old[i])) continue;
+      old[i].replaceWith(fresh[i]);
+      counts.lines++;
+    }
   }
   listed = lines;
 }
