@@ -553,8 +553,6 @@ fn moment_error(
         err,
         secs,
     );
-    s.scale = crate::statics::closed_form::max_abs_moment(&orig.beam)
-        .0
-        .abs();
+    s.scale = cf.max_abs_moment().0.abs();
     Ok(s)
 }

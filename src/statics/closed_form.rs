@@ -2,6 +2,7 @@
 //! the method of sections for M(x) and V(x). Computed independently of the construction.
 
 use super::{Beam, UniformLoad};
+use std::cell::Cell;
 
 /// Support reactions (A, B) from moment equilibrium about B and vertical equilibrium (kg).
 ///
@@ -78,28 +79,7 @@ pub fn shear(beam: &Beam, x: f64, just_left: bool) -> f64 {
 /// The largest |M| over the beam and where it is (m): at a support, a point load, the end of
 /// a uniform load, or inside a uniform load where the shear passes through zero.
 pub fn max_abs_moment(beam: &Beam) -> (f64, f64) {
-    let sec = Sections::new(beam);
-    let mut xs: Vec<f64> = beam.supports.to_vec();
-    xs.extend(beam.point_loads.iter().map(|l| l.x));
-    for u in &beam.uniform_loads {
-        xs.push(u.from);
-        xs.push(u.to);
-        // V is linear inside: V(from+) − q (x − from) = 0.
-        if u.q != 0.0 {
-            let x0 = u.from + sec.shear(u.from, false) / u.q;
-            if x0 > u.from && x0 < u.to {
-                xs.push(x0);
-            }
-        }
-    }
-    let mut best = (0.0f64, beam.ends[0]);
-    for x in xs {
-        let m = sec.moment(x);
-        if m.abs() > best.0.abs() {
-            best = (m, x);
-        }
-    }
-    best
+    Sections::new(beam).max_abs_moment()
 }
 
 /// The method of sections prepared once for many sections: point loads sorted with prefix sums
@@ -116,6 +96,9 @@ pub struct Sections<'a> {
     prefix: Vec<(f64, f64)>,
     /// The uniform loads summed up, where there are many and they do not overlap.
     uniform: Option<UniformSums>,
+    /// Where the last section fell among `xs`: sections are mostly asked for in x order, so
+    /// the next falls there or one further, found without a search.
+    hint: Cell<usize>,
 }
 
 /// Up to this many uniform loads, a section adds them one by one (the same bits as
@@ -204,7 +187,53 @@ impl<'a> Sections<'a> {
             xs: loads.iter().map(|l| l.0).collect(),
             prefix,
             uniform: UniformSums::new(&beam.uniform_loads),
+            hint: Cell::new(0),
         }
+    }
+
+    /// [`max_abs_moment`] from the loads sorted and summed already (the same bits).
+    pub fn max_abs_moment(&self) -> (f64, f64) {
+        let mut xs: Vec<f64> = self.beam.supports.to_vec();
+        xs.extend(self.beam.point_loads.iter().map(|l| l.x));
+        for u in &self.beam.uniform_loads {
+            xs.push(u.from);
+            xs.push(u.to);
+            // V is linear inside: V(from+) − q (x − from) = 0.
+            if u.q != 0.0 {
+                let x0 = u.from + self.shear(u.from, false) / u.q;
+                if x0 > u.from && x0 < u.to {
+                    xs.push(x0);
+                }
+            }
+        }
+        let mut best = (0.0f64, self.beam.ends[0]);
+        for x in xs {
+            let m = self.moment(x);
+            if m.abs() > best.0.abs() {
+                best = (m, x);
+            }
+        }
+        best
+    }
+
+    /// How many loads lie left of `x` (`at_too`: or at it): `partition_point` over the sorted
+    /// `xs`, whose answer is the one place where the loads before lie left and the rest not.
+    /// That place is tried at the last section's and the next before a binary search, so a
+    /// sweep in x order costs O(1) a section; the answer is the same either way.
+    fn loads_left_of(&self, x: f64, at_too: bool) -> usize {
+        let xs = &self.xs;
+        let left = |v: f64| if at_too { v <= x } else { v < x };
+        let fits = |i: usize| (i == 0 || left(xs[i - 1])) && (i == xs.len() || !left(xs[i]));
+        let h = self.hint.get();
+        let i = if h <= xs.len() && fits(h) {
+            h
+        } else if h < xs.len() && fits(h + 1) {
+            h + 1
+        } else {
+            xs.partition_point(|&v| left(v))
+        };
+        self.hint.set(i);
+        i
     }
 
     /// M(x) (kg·m), as [`moment`].
@@ -216,7 +245,7 @@ impl<'a> Sections<'a> {
                 m += r * (x - s);
             }
         }
-        let (sp, spx) = self.prefix[self.xs.partition_point(|&v| v < x)];
+        let (sp, spx) = self.prefix[self.loads_left_of(x, false)];
         m -= sp * x - spx;
         if let Some(u) = &self.uniform {
             return m - u.moment(x);
@@ -240,12 +269,7 @@ impl<'a> Sections<'a> {
                 v += r;
             }
         }
-        let i = if just_left {
-            self.xs.partition_point(|&v| v < x)
-        } else {
-            self.xs.partition_point(|&v| v <= x)
-        };
-        v -= self.prefix[i].0;
+        v -= self.prefix[self.loads_left_of(x, !just_left)].0;
         if let Some(u) = &self.uniform {
             return v - u.shear(x);
         }
@@ -255,5 +279,48 @@ impl<'a> Sections<'a> {
             }
         }
         v
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::statics::PointLoad;
+
+    /// The place found from the last section's is `partition_point`'s, whatever the order
+    /// the sections come in: sorted, reversed, jumping, on a load, between two loads at one x.
+    #[test]
+    fn the_hinted_place_among_the_loads_is_the_searched_one() {
+        let at = [0.5, 1.0, 1.0, 1.0, 2.5, 3.0, 7.0, 7.0, 9.5];
+        let beam = Beam {
+            supports: [0.0, 10.0],
+            ends: [0.0, 10.0],
+            point_loads: (at.iter().rev())
+                .map(|&x| PointLoad { x, p: 100.0 })
+                .collect(),
+            uniform_loads: vec![],
+        };
+        let sec = Sections::new(&beam);
+        let mut probes: Vec<f64> = (0..=44).map(|i| -0.5 + 0.25 * i as f64).collect();
+        probes.extend(at);
+        let mut orders = vec![probes.clone()];
+        probes.sort_by(f64::total_cmp);
+        orders.push(probes.clone());
+        orders.push(probes.iter().rev().copied().collect());
+        orders.push(
+            (0..probes.len())
+                .map(|i| probes[(i * 17) % probes.len()])
+                .collect(),
+        );
+        for order in orders {
+            for &x in &order {
+                for at_too in [false, true] {
+                    let searched = sec
+                        .xs
+                        .partition_point(|&v| if at_too { v <= x } else { v < x });
+                    assert_eq!(sec.loads_left_of(x, at_too), searched, "x = {x}, {at_too}");
+                }
+            }
+        }
     }
 }

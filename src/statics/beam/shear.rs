@@ -205,14 +205,14 @@ impl BeamConstruction<'_, '_> {
                 consider(&mut best, m, x0, self.mref);
             }
         }
-        let beam = self.beam;
         let Some((m, x)) = best else {
             return Ok(None);
         };
         // The check is on |M|: where the largest moments are equal and opposite, the
         // construction and the closed form may name either.
         let what = "largest |M|, where the shear changes sign";
-        let closed = || crate::statics::closed_form::max_abs_moment(beam).0.abs();
+        let sections = &self.cf;
+        let closed = || sections.max_abs_moment().0.abs();
         let abs = H {
             id: m.id,
             g: m.g.abs(),
