@@ -148,10 +148,7 @@ pub fn walkthrough_list(board: &Board, grouping: Grouping) -> StepList {
     let (lines, details) = (page_groups(board, grouping).iter())
         .map(|group| {
             let parts = group_parts(group, &names);
-            (
-                list_line(group, &parts),
-                parts.iter().map(|p| p.full()).collect::<String>(),
-            )
+            (list_line(group, &parts), shown(&parts))
         })
         .unzip();
     StepList { lines, details }
@@ -369,10 +366,14 @@ fn list_line(group: &[&Step], parts: &[Part]) -> String {
     list_item(group, &inner)
 }
 
+/// What a page shows beside the figure: its steps' lines, each with its details.
+fn shown(parts: &[Part]) -> String {
+    parts.iter().map(Part::full).collect()
+}
+
 /// One page of the list: the steps it shows, a line each, and their details.
 fn group_item(group: &[&Step], names: &[String]) -> String {
-    let inner: String = group_parts(group, names).iter().map(Part::full).collect();
-    list_item(group, &inner)
+    list_item(group, &shown(&group_parts(group, names)))
 }
 
 /// The steps of a part constructed and checked but not drawn (a position of a moving load
@@ -803,7 +804,7 @@ mod tests {
     /// A board of named points and a distance checked, with markup in a name and a check.
     fn board() -> Board {
         let mut b = Board::recording();
-        let n = Note::new("given point", Topic::Custom("demo"));
+        let n = note("given point");
         let a = b.point(Point::new(0.0, 0.0), Role::Given.named("A"), n.clone());
         let c = b.point(Point::new(1.0, 0.0), Role::Given.named("</script><!--"), n);
         let axis = b

@@ -430,7 +430,7 @@ function sameItem(a, b) {
 // with is compared item by item, parsed apart from the page (no layout).
 function setList(lines) {
   var ul = el('wt-steps'), kids = ul.children, i;
-  if (kids.length !== lines.length || (listed && listed.length !== lines.length)) {
+  if (kids.length !== lines.length) {
     ul.innerHTML = lines.join('');
     counts.list++;
   } else if (listed) {
@@ -491,7 +491,7 @@ function apply(a, moved) {
     setList(a.items);
     stale = false;
     t = mark('items', t);
-    walk.rebind(a.details);
+    walk.rebind(a.details || []);
     t = mark('rebind', t);
   }
   handles = a.handles;
