@@ -169,18 +169,25 @@ impl Raster {
         }
         let origin = Point::new(sheet[0], sheet[1]);
         let mut set = vec![false; nx * ny];
-        let index = |v: f64, n: usize| (v / cell).floor().clamp(0.0, n as f64 - 1.0) as usize;
-        let mut fill = |r: [f64; 4]| {
+        // `floor(v / cell)` clamped to the raster: the saturating cast truncates, which for
+        // a quotient at or above zero is its floor, and takes anything below (and NaN) to 0,
+        // as the clamp did; no call to `floor` (a library call on x86-64 without SSE4.1).
+        let index = |v: f64, n: usize| ((v / cell) as usize).min(n - 1);
+        let fill = |set: &mut [bool], r: [f64; 4]| {
             let (i0, i1) = (index(r[0] - origin.x, nx), index(r[2] - origin.x, nx));
             let (j0, j1) = (index(r[1] - origin.y, ny), index(r[3] - origin.y, ny));
             for j in j0..=j1 {
                 set[j * nx + i0..=j * nx + i1].fill(true);
             }
         };
+        let dot = |set: &mut [bool], p: Point| {
+            let (i, j) = (index(p.x - origin.x, nx), index(p.y - origin.y, ny));
+            set[j * nx + i] = true;
+        };
         for m in marks {
             match *m {
                 // A patch off the sheet (a far point's) marks nothing, not the edge cells.
-                Mark::Patch(p) if m.meets(sheet) => fill(p),
+                Mark::Patch(p) if m.meets(sheet) => fill(&mut set, p),
                 Mark::Patch(_) => {}
                 Mark::Stroke(a, b) => {
                     // Only the stroke's part on the sheet, in steps of half a cell.
@@ -191,19 +198,20 @@ impl Raster {
                     let n = ((b - a).norm() / (0.5 * cell)).ceil().min(4.0 * MAX_SIDE);
                     let n = if n.is_finite() { n as usize } else { 0 };
                     for k in 0..=n {
-                        let p = a + (b - a) * (k as f64 / n.max(1) as f64);
-                        fill([p.x, p.y, p.x, p.y]);
+                        dot(&mut set, a + (b - a) * (k as f64 / n.max(1) as f64));
                     }
                 }
             }
         }
+        // Each row's running count added to the row below's sums.
         let mut sums = vec![0u32; (nx + 1) * (ny + 1)];
         for j in 0..ny {
+            let (below, row) = sums.split_at_mut((j + 1) * (nx + 1));
+            let below = &below[j * (nx + 1)..];
+            let mut run = 0;
             for i in 0..nx {
-                sums[(j + 1) * (nx + 1) + i + 1] = u32::from(set[j * nx + i])
-                    + sums[j * (nx + 1) + i + 1]
-                    + sums[(j + 1) * (nx + 1) + i]
-                    - sums[j * (nx + 1) + i];
+                run += u32::from(set[j * nx + i]);
+                row[i + 1] = below[i + 1] + run;
             }
         }
         Some(Raster {
@@ -213,12 +221,6 @@ impl Raster {
             ny,
             sums,
         })
-    }
-
-    /// How many set cells the `w` × `h` cells from column `i`, row `j` hold.
-    fn count(&self, i: usize, j: usize, w: usize, h: usize) -> u32 {
-        let s = |i: usize, j: usize| self.sums[j * (self.nx + 1) + i];
-        s(i + w, j + h) + s(i, j) - s(i + w, j) - s(i, j + h)
     }
 }
 
@@ -286,9 +288,16 @@ pub fn inner_hole(
     };
     // The nearest empty places, kept in a heap of at most MAX_TRIES (the farthest on top).
     let mut nearest: BinaryHeap<Place> = BinaryHeap::with_capacity(MAX_TRIES + 1);
+    // Per row of places, the set cells of its `hc` rows left of each column: a place's
+    // count is the difference of two.
+    let mut left = vec![0u32; r.nx + 1];
     for j in 0..=r.ny - hc {
+        let (lo, hi) = (&r.sums[j * (r.nx + 1)..], &r.sums[(j + hc) * (r.nx + 1)..]);
+        for (l, (h, o)) in left.iter_mut().zip(hi.iter().zip(lo)) {
+            *l = h - o;
+        }
         for i in 0..=r.nx - wc {
-            if r.count(i, j, wc, hc) != 0 {
+            if left[i + wc] != left[i] {
                 continue;
             }
             let c = place(i, j);

@@ -357,15 +357,33 @@ fn hole(placed: &[[f64; 4]], marks: &[Mark], free: [f64; 4], wanted: [f64; 4]) -
     Some(Vector::new(c[0] - free[0], c[1] - free[1]))
 }
 
+/// What [`room`] was asked, as far as its answer depends on it: the parts set before the
+/// free part (those of the rows and columns in their order, with how far each moved; the
+/// number of them; then the free parts already set, with theirs), the free part, and where
+/// it is wanted (bits: a key compared exactly).
+type Asked = (Vec<(Part, [u64; 2])>, usize, Part, [u64; 4]);
+
+/// The rooms found for free parts, by what was asked: the layouts tried at the wrap widths
+/// ([`laid_out`]) often set the same rows and columns, and each search rasterises the sheet
+/// (the crane bridge of LH Aufgabe 5: ten searches, some five million instructions each).
+#[derive(Default)]
+struct Rooms(Vec<(Asked, Option<Vector>)>);
+
+fn bits(d: Vector) -> [u64; 2] {
+    [d.x.to_bits(), d.y.to_bits()]
+}
+
 /// How far each part is moved: the rows and columns set out, then each free part
 /// ([`Part::free`]) in part order into room the sheet has: inside it where its box meets
 /// no mark of the parts set before it ([`inner_hole`]), else in a hole the boxes leave
 /// ([`hole`]). A free part that neither takes joins the rows and columns, and the room is
-/// sought again.
+/// sought again. A room found before for the same parts set the same way is taken from
+/// `rooms`.
 fn shifts(
     boxes: &[PartBox],
     marks: &BTreeMap<Part, Vec<Mark>>,
     wrap: f64,
+    rooms: &mut Rooms,
 ) -> BTreeMap<Part, Vector> {
     let everything = grid_shifts(boxes, wrap);
     let (mut grid, mut free): (Vec<PartBox>, Vec<PartBox>) =
@@ -378,20 +396,47 @@ fn shifts(
         let mut placed: Vec<[f64; 4]> = (grid.iter())
             .map(|b| moved(b.bounds, shift[&b.part]))
             .collect();
-        let reach = within_reach(&placed);
-        let mut drawn: Vec<Mark> = (marks.iter())
-            .filter_map(|(p, ms)| Some((*shift.get(p)?, ms)))
-            .flat_map(|(d, ms)| ms.iter().filter_map(move |m| m.moved(d).clipped(reach)))
+        let mut set: Vec<(Part, [u64; 2])> = (grid.iter())
+            .map(|b| (b.part, bits(shift[&b.part])))
             .collect();
+        // The marks of the rows and columns, moved and clipped, then those of the free parts
+        // set: made only where a room is sought.
+        let rows_and_columns = shift.clone();
+        let mut drawn: Option<Vec<Mark>> = None;
+        let reach = within_reach(&placed);
         let misfit = free.iter().position(|f| {
             let wanted = moved(f.bounds, everything[&f.part]);
-            let Some(d) = room(&placed, &drawn, f.bounds, wanted) else {
+            let asked: Asked = (set.clone(), grid.len(), f.part, wanted.map(f64::to_bits));
+            let known = rooms.0.iter().find(|(a, _)| *a == asked).map(|(_, d)| *d);
+            let found = known.unwrap_or_else(|| {
+                let drawn = drawn.get_or_insert_with(|| {
+                    let mut drawn: Vec<Mark> = (marks.iter())
+                        .filter_map(|(p, ms)| Some((*rows_and_columns.get(p)?, ms)))
+                        .flat_map(|(d, ms)| {
+                            ms.iter().filter_map(move |m| m.moved(d).clipped(reach))
+                        })
+                        .collect();
+                    for (p, d) in &set[grid.len()..] {
+                        let d = Vector::new(f64::from_bits(d[0]), f64::from_bits(d[1]));
+                        let own = marks.get(p).map_or(&[][..], |ms| &ms[..]);
+                        drawn.extend(own.iter().map(|m| m.moved(d)));
+                    }
+                    drawn
+                });
+                let d = room(&placed, drawn, f.bounds, wanted);
+                rooms.0.push((asked, d));
+                d
+            });
+            let Some(d) = found else {
                 return true;
             };
             shift.insert(f.part, d);
             placed.push(moved(f.bounds, d));
-            let own = marks.get(&f.part).map_or(&[][..], |ms| &ms[..]);
-            drawn.extend(own.iter().map(|m| m.moved(d)));
+            set.push((f.part, bits(d)));
+            if let Some(drawn) = drawn.as_mut() {
+                let own = marks.get(&f.part).map_or(&[][..], |ms| &ms[..]);
+                drawn.extend(own.iter().map(|m| m.moved(d)));
+            }
             false
         });
         match misfit {
@@ -443,11 +488,12 @@ pub fn laid_out(board: &Board) -> Option<Board> {
             .unwrap_or_default();
         (a_side(b), (b[2] - b[0]) * (b[3] - b[1]))
     };
-    let strip = shifts(&boxes, &marks, f64::INFINITY);
+    let mut rooms = Rooms::default();
+    let strip = shifts(&boxes, &marks, f64::INFINITY, &mut rooms);
     let rows_wrap = boxes.iter().any(|b| b.part.packed);
     let wraps = wrap_widths(&boxes).into_iter().filter(|_| rows_wrap);
     let (side, area) = sheet(&strip);
-    let least = (wraps.map(|w| shifts(&boxes, &marks, w)))
+    let least = (wraps.map(|w| shifts(&boxes, &marks, w, &mut rooms)))
         .map(|s| (sheet(&s), s))
         .filter(|((_, a), _)| *a <= (1.0 + WRAP_GROWTH) * area)
         .min_by(|a, b| a.0 .0.total_cmp(&b.0 .0));
