@@ -11,10 +11,13 @@
 
 use crate::protocol::{Board, BoardConfig, FigureMeta, ObjId};
 use crate::render::{
-    figure_with_points, page_count, step_names, walkthrough_item, walkthrough_list, Grouping,
+    figure_with_points, page_count, page_details, page_ranges, step_names, walkthrough_item,
+    walkthrough_lines, walkthrough_list, Grouping,
 };
 use crate::scene::{handles, AnyScene, Handle, Preview};
 use serde::Serialize;
+use std::cell::OnceCell;
+use std::ops::Range;
 
 mod patch;
 pub use patch::{figure_patch, FigurePatch};
@@ -50,7 +53,7 @@ pub struct Built {
     /// [`Built::page`]'s item, its details included.
     pub items: Vec<String>,
     /// What each page shows beside the figure ([`StepList::details`](crate::render::StepList)),
-    /// in the order of `items`; none in an answer for a drag.
+    /// in the order of `items`; none in an answer for a drag or for [`Ask::Lines`].
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub details: Vec<String>,
     /// The page whose item alone `items` holds, in an answer for a drag ([`replay_page`]).
@@ -201,14 +204,69 @@ fn answer_json(answer: &Answer, origin: &str) -> String {
 /// assert!(svg.starts_with("<svg "));
 /// ```
 pub fn replay_apart(scene: &str, origin: &str, page: Option<usize>) -> (String, String) {
-    let (answer, svg) = match build_page(scene, origin, page) {
-        Ok(mut b) => {
+    let ask = page.map_or(Ask::All, Ask::Page);
+    let (json, svg, _) = replay_kept(scene, origin, ask);
+    (json, svg)
+}
+
+/// What an answer carries of the walk-through besides the figure, checks and handles.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ask {
+    /// The step list's lines, every page's details and every step: what a page is written
+    /// with ([`build`]).
+    All,
+    /// The lines and every step, but no page's details: the page asks the construction kept
+    /// ([`Kept::details`]) for those of a page as it shows it. The crane bridge's details are
+    /// 1.4 MB of its 4.8 MB answer, and the student sees one page of 2,080 at a time.
+    Lines,
+    /// The item of page `k` alone, its details included, and no list of steps: the answer to
+    /// a drag while the pointer moves.
+    Page(usize),
+}
+
+/// The construction of an answer, kept to answer for a page's details
+/// ([`Ask::Lines`]) without constructing it again.
+pub struct Kept {
+    board: Board,
+    names: OnceCell<Vec<String>>,
+    pages: OnceCell<Vec<Range<usize>>>,
+}
+
+impl Kept {
+    /// What page `k` shows beside the figure (as [`Built::details`] holds it for [`Ask::All`]);
+    /// `None` past the last page. The steps are named and the pages found once, on the first
+    /// call: the print view asks for every page (the crane bridge's 2,080).
+    pub fn details(&self, k: usize) -> Option<String> {
+        let names = self.names.get_or_init(|| step_names(&self.board));
+        let pages = (self.pages).get_or_init(|| page_ranges(&self.board, Grouping::Step));
+        Some(page_details(&self.board, pages.get(k)?.clone(), names))
+    }
+}
+
+/// [`replay_apart`] for what `ask` says, with the construction kept for [`Kept::details`]
+/// (none where the scene is refused): the browser's engine answers so.
+///
+/// ```
+/// use graphostatik::web::{replay_kept, Ask};
+/// let scene = std::fs::read_to_string("scenes/lh_abb22_funicular.json").unwrap();
+/// let (json, _, kept) = replay_kept(&scene, "abb22.json", Ask::Lines);
+/// let a: serde_json::Value = serde_json::from_str(&json).unwrap();
+/// // LH Abb. 22: the list's lines, and each page's details from the construction kept.
+/// assert!(a.get("details").is_none());
+/// let pages = a["page_count"].as_u64().unwrap() as usize;
+/// let kept = kept.unwrap();
+/// assert!(kept.details(0).unwrap().contains("wt-detail"));
+/// assert!(kept.details(pages).is_none());
+/// ```
+pub fn replay_kept(scene: &str, origin: &str, ask: Ask) -> (String, String, Option<Kept>) {
+    let (answer, svg, kept) = match build_asked(scene, origin, ask) {
+        Ok((mut b, kept)) => {
             let svg = std::mem::take(&mut b.svg);
-            (Answer::Built(Box::new(b)), svg)
+            (Answer::Built(Box::new(b)), svg, Some(kept))
         }
-        Err(error) => (Answer::Refused { ok: false, error }, String::new()),
+        Err(error) => (Answer::Refused { ok: false, error }, String::new(), None),
     };
-    (answer_json(&answer, origin), svg)
+    (answer_json(&answer, origin), svg, kept)
 }
 
 /// The construction of `text` with everything the page shows.
@@ -218,6 +276,11 @@ pub fn build(text: &str, origin: &str) -> Result<Built, String> {
 
 /// [`build`], for a drag where `page` is given ([`replay_page`]).
 pub fn build_page(text: &str, origin: &str, page: Option<usize>) -> Result<Built, String> {
+    build_asked(text, origin, page.map_or(Ask::All, Ask::Page)).map(|(b, _)| b)
+}
+
+/// The construction of `text` with what `ask` says, and the construction kept.
+pub fn build_asked(text: &str, origin: &str, ask: Ask) -> Result<(Built, Kept), String> {
     let scene = AnyScene::from_json(text, origin).map_err(|e| e.to_string())?;
     let sliders = sliders(scene.preview(), text, origin)?;
     let p = scene.problem();
@@ -228,7 +291,17 @@ pub fn build_page(text: &str, origin: &str, page: Option<usize>) -> Result<Built
             None => format!("{origin}: {e}"),
         })?;
     let meta = p.figure_meta();
-    Ok(built(&meta, &board, handles(&scene, &board), sliders, page))
+    let (built, names) = built(&meta, &board, handles(&scene, &board), sliders, ask);
+    let names = names.map_or_else(OnceCell::new, OnceCell::from);
+    let pages = OnceCell::new();
+    Ok((
+        built,
+        Kept {
+            board,
+            names,
+            pages,
+        },
+    ))
 }
 
 /// The answer of a constructed board.
@@ -237,9 +310,12 @@ fn built(
     board: &Board,
     handles: Vec<Handle>,
     sliders: Vec<SliderLine>,
-    page: Option<usize>,
-) -> Built {
-    let page = page.map(|k| k.min(board.steps().len().saturating_sub(1)));
+    ask: Ask,
+) -> (Built, Option<Vec<String>>) {
+    let page = match ask {
+        Ask::Page(k) => Some(k.min(board.steps().len().saturating_sub(1))),
+        Ask::All | Ask::Lines => None,
+    };
     let mut ids: Vec<ObjId> = handles.iter().map(|h| h.object).collect();
     ids.extend(handles.iter().filter_map(Handle::center));
     let (svg, at) = figure_with_points(meta, board, &ids);
@@ -258,8 +334,34 @@ fn built(
             })
         })
         .collect();
-    let steps = board.steps();
-    let checks: Vec<CheckLine> = (steps.iter())
+    let checks = check_lines(board);
+    let (items, details, steps, names) = listed(board, page, ask);
+    let page_count = match page {
+        Some(_) => page_count(board, Grouping::Step),
+        None => items.len(),
+    };
+    let built = Built {
+        ok: true,
+        title: meta.title.to_string(),
+        source: meta.source.to_string(),
+        svg,
+        items,
+        details,
+        page,
+        step_count: board.steps().len(),
+        page_count,
+        steps,
+        failed: checks.iter().filter(|c| !c.passed).count(),
+        checks,
+        handles: placed,
+        sliders,
+    };
+    (built, names)
+}
+
+/// Every check of `board` with its step, as the page lists it.
+fn check_lines(board: &Board) -> Vec<CheckLine> {
+    (board.steps().iter())
         .flat_map(|s| s.checks.iter().map(move |c| (s.id.0, c)))
         .map(|(step, c)| CheckLine {
             step,
@@ -273,47 +375,44 @@ fn built(
             tolerance: c.tolerance,
             passed: c.passed,
         })
-        .collect();
-    let (items, details) = match page {
-        None => {
-            let list = walkthrough_list(board, Grouping::Step);
-            (list.lines, list.details)
-        }
-        Some(k) => (
+        .collect()
+}
+
+/// The walk-through as `ask` says (`page`: the drag's page, where it asks for one): the
+/// list's items, the pages' details, every step, and the steps' names where they were all
+/// named.
+type Listed = (Vec<String>, Vec<String>, Vec<StepLine>, Option<Vec<String>>);
+
+fn listed(board: &Board, page: Option<usize>, ask: Ask) -> Listed {
+    match (page, ask) {
+        (Some(k), _) => (
             walkthrough_item(board, Grouping::Step, k)
                 .into_iter()
                 .collect(),
             Vec::new(),
+            Vec::new(),
+            None,
         ),
-    };
-    Built {
-        ok: true,
-        title: meta.title.to_string(),
-        source: meta.source.to_string(),
-        svg,
-        items,
-        details,
-        page,
-        step_count: steps.len(),
-        page_count: page_count(board, Grouping::Step),
-        steps: match page {
-            None => step_lines(board),
-            Some(_) => Vec::new(),
-        },
-        failed: checks.iter().filter(|c| !c.passed).count(),
-        checks,
-        handles: placed,
-        sliders,
+        (None, Ask::Lines) => {
+            let list = walkthrough_lines(board, Grouping::Step);
+            let steps = step_lines(board, &list.names);
+            (list.lines, Vec::new(), steps, Some(list.names))
+        }
+        (None, _) => {
+            let list = walkthrough_list(board, Grouping::Step);
+            let steps = step_lines(board, &list.names);
+            (list.lines, list.details, steps, Some(list.names))
+        }
     }
 }
 
-/// Every step of `board` as the page lists it.
-fn step_lines(board: &Board) -> Vec<StepLine> {
-    (board.steps().iter().zip(step_names(board)))
+/// Every step of `board` as the page lists it, with its name of `names` ([`step_names`]).
+fn step_lines(board: &Board, names: &[String]) -> Vec<StepLine> {
+    (board.steps().iter().zip(names))
         .map(|(s, name)| StepLine {
             id: s.id.0,
             caption: s.caption.to_string(),
-            name,
+            name: name.clone(),
             context: s.context.as_deref().map(str::to_string),
             term_de: s.term_de.as_deref().map(str::to_string),
             book: s.book.to_string(),
@@ -357,6 +456,38 @@ fn sliders(preview: Option<&Preview>, text: &str, origin: &str) -> Result<Vec<Sl
 
 #[cfg(test)]
 mod tests {
+    use super::{build_asked, Ask};
+
+    /// The answer when the pointer rests lists the same lines and steps as the page is
+    /// written with, and the construction kept gives each page's details as that answer
+    /// holds them: drawn steps, and the crane bridge's positions that are not drawn.
+    #[test]
+    fn the_details_kept_are_the_details_listed() {
+        for scene in ["lh_aufgabe4_shed_roof", "lh_aufgabe5_crane_bridge"] {
+            let path = format!("{}/scenes/{scene}.json", env!("CARGO_MANIFEST_DIR"));
+            let text = std::fs::read_to_string(path).unwrap();
+            let (all, _) = build_asked(&text, "x.json", Ask::All).unwrap();
+            let (lines, kept) = build_asked(&text, "x.json", Ask::Lines).unwrap();
+            assert_eq!(lines.items, all.items, "{scene}");
+            assert_eq!(lines.page_count, all.page_count, "{scene}");
+            assert_eq!(lines.steps.len(), all.steps.len(), "{scene}");
+            assert!(lines.details.is_empty() && all.details.len() == all.items.len());
+            for (k, d) in all.details.iter().enumerate() {
+                assert_eq!(kept.details(k).as_ref(), Some(d), "{scene}, page {k}");
+            }
+            assert_eq!(kept.details(all.items.len()), None);
+            // A drag's construction names its steps only when a page's details are asked for.
+            let (drag, dragged) = build_asked(&text, "x.json", Ask::Page(3)).unwrap();
+            assert_eq!(drag.step_count, all.step_count, "{scene}");
+            assert_eq!(lines.step_count, all.step_count, "{scene}");
+            assert_eq!(
+                dragged.details(3).as_ref(),
+                Some(&all.details[3]),
+                "{scene}"
+            );
+        }
+    }
+
     /// A drag's answer names its page's steps as the full step list does, alike steps told
     /// apart the same way ("joint load P₀ (3 of 4)"): the page's name is found without naming
     /// every step.

@@ -1,4 +1,4 @@
-//! The graphostatik engine for the browser: `graphostatik::web::replay_apart` behind a C ABI,
+//! The graphostatik engine for the browser: `graphostatik::web::replay_kept` behind a C ABI,
 //! so that the page needs no generated glue (`site/engine.js` calls these functions).
 //!
 //! The page copies the scene's name and text into buffers it asks [`gs_alloc`] for, calls
@@ -7,11 +7,14 @@
 //! [`gs_svg_len`] bytes. The engine keeps the last figure it drew, numbered
 //! ([`gs_figure_id`]); a page that shows that figure says so, and reads what changed from it
 //! (`graphostatik::web::figure_patch`, JSON) at [`gs_patch_ptr`] for [`gs_patch_len`] bytes
-//! instead of the whole figure. A panic cannot unwind out of WebAssembly: it traps, after the hook
+//! instead of the whole figure. It keeps the last construction too: the answer when the
+//! pointer rests lists the steps without any page's details, which the page reads page by
+//! page with [`gs_details`] at [`gs_details_ptr`]. A panic cannot unwind out of WebAssembly: it traps, after the hook
 //! below has kept its message, which the page reads with [`gs_panic_ptr`] and
 //! [`gs_panic_len`] before it starts a fresh instance. Nothing here uses threads, clocks or
 //! files.
 
+use graphostatik::web::Ask;
 use std::cell::RefCell;
 
 thread_local! {
@@ -23,6 +26,10 @@ thread_local! {
     static FIGURE: std::cell::Cell<u32> = const { std::cell::Cell::new(0) };
     /// What changed from figure `base` to the last one (JSON; empty: ask for the figure).
     static PATCH: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
+    /// The construction of the last scene built, for the details of its pages.
+    static KEPT: RefCell<Option<graphostatik::web::Kept>> = const { RefCell::new(None) };
+    /// The last page's details asked for ([`gs_details`]).
+    static DETAILS: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
     /// The message of a panic, kept for the page.
     static PANIC: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
 }
@@ -47,8 +54,11 @@ pub unsafe extern "C" fn gs_free(ptr: *mut u8, len: usize) {
 }
 
 /// Replays the scene `text` (named `name` in errors): both buffers of [`gs_alloc`] filled
-/// with UTF-8, and freed here. `page` below 0 asks for the full answer, else for the answer
-/// of a drag on that page (`graphostatik::web::replay_page`). `base` is the number of the
+/// with UTF-8, and freed here. `page` below 0 asks for the answer when the pointer rests,
+/// the step list's lines without any page's details (`graphostatik::web::Ask::Lines`;
+/// [`gs_details`] gives a page's), else for the answer of a drag on that page
+/// (`graphostatik::web::Ask::Page`). The construction is kept for [`gs_details`] until the
+/// next scene that is built. `base` is the number of the
 /// figure the page shows ([`gs_figure_id`]; below 0: none of this engine's): where it is the
 /// last figure drawn, what changed from it is put at [`gs_patch_ptr`]. Returns the length of
 /// the JSON answer at [`gs_out_ptr`].
@@ -72,9 +82,13 @@ pub unsafe extern "C" fn gs_replay(
     let name = String::from_utf8_lossy(&name).into_owned();
     let answer = match std::str::from_utf8(&text) {
         Ok(t) => {
-            let (json, svg) = graphostatik::web::replay_apart(t, &name, usize::try_from(page).ok());
+            let ask = usize::try_from(page).map_or(Ask::Lines, Ask::Page);
+            let (json, svg, kept) = graphostatik::web::replay_kept(t, &name, ask);
             if !svg.is_empty() {
                 keep_figure(svg, base);
+            }
+            if kept.is_some() {
+                KEPT.with(|k| *k.borrow_mut() = kept);
             }
             json
         }
@@ -114,6 +128,29 @@ fn keep_figure(svg: String, base: i32) {
         *o = svg.into_bytes();
     });
     FIGURE.with(|f| f.set(id % ((1 << 30) - 1) + 1));
+}
+
+/// The details of page `page` of the last scene built (HTML, what the page shows beside the
+/// figure), at [`gs_details_ptr`]; returns their length, 0 where there is no such page or no
+/// scene was built.
+#[no_mangle]
+pub extern "C" fn gs_details(page: u32) -> usize {
+    install_hook();
+    let details = KEPT.with(|k| {
+        let k = k.borrow();
+        k.as_ref().and_then(|k| k.details(page as usize))
+    });
+    DETAILS.with(|d| {
+        let mut d = d.borrow_mut();
+        *d = details.unwrap_or_default().into_bytes();
+        d.len()
+    })
+}
+
+/// Where the details [`gs_details`] gave start.
+#[no_mangle]
+pub extern "C" fn gs_details_ptr() -> *const u8 {
+    DETAILS.with(|d| d.borrow().as_ptr())
 }
 
 /// The number of the last figure drawn (0: none yet; 1 follows 2³⁰ − 1).

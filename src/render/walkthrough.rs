@@ -13,6 +13,7 @@
 use super::figure::figure;
 use crate::protocol::FigureMeta;
 use crate::protocol::{Board, Step};
+use std::ops::Range;
 
 /// A file of the walk-through: its name and contents.
 #[derive(Debug, Clone, PartialEq)]
@@ -135,8 +136,13 @@ pub struct StepList {
     /// (the item of [`walkthrough_item_list`] without the details it keeps hidden).
     pub lines: Vec<String>,
     /// What each page shows beside the figure: the inner HTML of its item of
-    /// [`walkthrough_item_list`], the German term, book, cut and checks included.
+    /// [`walkthrough_item_list`], the German term, book, cut and checks included (none from
+    /// [`walkthrough_lines`]).
     pub details: Vec<String>,
+    /// Every step's name ([`step_names`]), which the lines show: a caller that lists the
+    /// steps too need not name them again (the crane bridge's 5,433 names are a tenth of
+    /// its full answer to the browser page).
+    pub names: Vec<String>,
 }
 
 /// [`walkthrough_item_list`] with the details apart from the list ([`StepList`]): a page that
@@ -148,10 +154,91 @@ pub fn walkthrough_list(board: &Board, grouping: Grouping) -> StepList {
     let (lines, details) = (page_groups(board, grouping).iter())
         .map(|group| {
             let parts = group_parts(group, &names);
-            (list_line(group, &parts), shown(&parts))
+            (
+                list_line(group, parts.iter().map(|p| &p.line[..])),
+                shown(&parts),
+            )
         })
         .unzip();
-    StepList { lines, details }
+    StepList {
+        lines,
+        details,
+        names,
+    }
+}
+
+/// [`walkthrough_list`] without the details (`details` empty): the lines and the names, for
+/// a live page that asks for a page's details when it shows it ([`walkthrough_details`]).
+pub fn walkthrough_lines(board: &Board, grouping: Grouping) -> StepList {
+    let names = step_names(board);
+    let lines = (page_groups(board, grouping).iter())
+        .map(|group| {
+            let lines = group_lines(group, &names);
+            list_line(group, lines.iter().map(|l| &l[..]))
+        })
+        .collect();
+    StepList {
+        lines,
+        details: Vec::new(),
+        names,
+    }
+}
+
+/// What page `k` of `board`'s walk-through shows beside the figure (one of
+/// [`StepList::details`]), its steps named by `names` ([`step_names`]); `None` past the
+/// last page. A live page asks for a page's details when it shows it, from the construction
+/// it keeps, instead of taking in every page's with each replay.
+///
+/// ```
+/// use graphostatik::protocol::BoardConfig;
+/// use graphostatik::render::{step_names, walkthrough_details, walkthrough_list, Grouping};
+/// use graphostatik::scene::AnyScene;
+/// let text = std::fs::read_to_string("scenes/lh_abb22_funicular.json").unwrap();
+/// let scene = AnyScene::from_json(&text, "abb22.json").unwrap();
+/// let board = scene.problem().construct(BoardConfig::DRAWING).unwrap();
+/// let list = walkthrough_list(&board, Grouping::Step);
+/// // LH Abb. 22: each page's details, asked for alone, are the list's.
+/// for k in 0..list.lines.len() {
+///     let d = walkthrough_details(&board, Grouping::Step, k, &list.names);
+///     assert_eq!(d.as_ref(), Some(&list.details[k]));
+/// }
+/// assert_eq!(walkthrough_details(&board, Grouping::Step, list.lines.len(), &list.names), None);
+/// ```
+pub fn walkthrough_details(
+    board: &Board,
+    grouping: Grouping,
+    k: usize,
+    names: &[String],
+) -> Option<String> {
+    let range = page_ranges(board, grouping).into_iter().nth(k)?;
+    Some(page_details(board, range, names))
+}
+
+/// The steps of each page of `board`'s walk-through, as ranges of indices into
+/// [`Board::steps`]: one step a page, but one page for the steps of a part not drawn.
+pub fn page_ranges(board: &Board, grouping: Grouping) -> Vec<Range<usize>> {
+    let mut at = 0;
+    (page_groups(board, grouping).iter())
+        .map(|g| {
+            at += g.len();
+            at - g.len()..at
+        })
+        .collect()
+}
+
+/// What the page of the steps `steps` ([`page_ranges`]) shows beside the figure, its steps
+/// named by `names` ([`walkthrough_details`] of a page whose range is known).
+pub fn page_details(board: &Board, steps: Range<usize>, names: &[String]) -> String {
+    let group: Vec<&Step> = board
+        .steps()
+        .get(steps)
+        .unwrap_or_default()
+        .iter()
+        .collect();
+    if group.is_empty() {
+        return String::new();
+    }
+    shown(&group_parts(&group, names))
 }
 
 /// How many pages the walk-through of `board` has: one per step, but one for all the steps of
@@ -359,11 +446,24 @@ fn list_item(group: &[&Step], inner: &str) -> String {
 }
 
 /// A page's item in the list without its details: its steps' lines alone.
-fn list_line(group: &[&Step], parts: &[Part]) -> String {
-    let inner: String = (parts.iter())
-        .map(|p| format!("<div class=\"wt-step\">{}</div>", p.line))
+fn list_line<'a>(group: &[&Step], lines: impl IntoIterator<Item = &'a str>) -> String {
+    let inner: String = (lines.into_iter())
+        .map(|l| format!("<div class=\"wt-step\">{l}</div>"))
         .collect();
     list_item(group, &inner)
+}
+
+/// The lines of a page's steps ([`group_parts`] without their details).
+fn group_lines(group: &[&Step], names: &[String]) -> Vec<String> {
+    if group[0].part.hidden {
+        vec![unseen_line(group)]
+    } else {
+        let line = |s: &Step| {
+            let i = (s.id.0 as usize).checked_sub(1);
+            step_line(s, i.and_then(|i| names.get(i)).map_or(&s.caption, |n| n))
+        };
+        group.iter().map(|s| line(s)).collect()
+    }
 }
 
 /// What a page shows beside the figure: its steps' lines, each with its details.
@@ -383,7 +483,29 @@ fn group_item(group: &[&Step], names: &[String]) -> String {
 /// drawn wrote 1.3 MB of the list's 2.1 MB, 483 lines each, when each step was written in
 /// full.)
 fn unseen_steps(group: &[&Step], name: &dyn Fn(&Step) -> String) -> Part {
+    Part {
+        line: unseen_line(group),
+        detail: unseen_details(group, name),
+    }
+}
+
+/// The line in the list of the steps of a part not drawn ([`unseen_steps`]).
+fn unseen_line(group: &[&Step]) -> String {
     let checks: usize = group.iter().map(|s| s.checks.len()).sum();
+    format!(
+        "<b>{}–{}</b> <span class=\"wt-unseen\">not drawn: {} steps constructed, \
+         {checks} checks made</span>{}",
+        group[0].id,
+        group[group.len() - 1].id,
+        group.len(),
+        shared_context(group)
+            .map(|c| format!(" <i>{}</i>", html_text(c)))
+            .unwrap_or_default(),
+    )
+}
+
+/// The details of the steps of a part not drawn ([`unseen_steps`]).
+fn unseen_details(group: &[&Step], name: &dyn Fn(&Step) -> String) -> String {
     let mut books: Vec<&str> = Vec::new();
     let mut d = String::new();
     for s in group {
@@ -405,22 +527,10 @@ fn unseen_steps(group: &[&Step], name: &dyn Fn(&Step) -> String) -> Part {
             d.push_str(&checks_table(s));
         }
     }
-    Part {
-        line: format!(
-            "<b>{}–{}</b> <span class=\"wt-unseen\">not drawn: {} steps constructed, \
-             {checks} checks made</span>{}",
-            group[0].id,
-            group[group.len() - 1].id,
-            group.len(),
-            shared_context(group)
-                .map(|c| format!(" <i>{}</i>", html_text(c)))
-                .unwrap_or_default(),
-        ),
-        detail: format!(
-            "<p class=\"wt-book\">{}</p>{d}",
-            html_text(&books.join("; "))
-        ),
-    }
+    format!(
+        "<p class=\"wt-book\">{}</p>{d}",
+        html_text(&books.join("; "))
+    )
 }
 
 /// The situation the steps of `group` share: what their contexts begin with alike, up to where
@@ -446,6 +556,27 @@ fn shared_context<'a>(group: &[&'a Step]) -> Option<&'a str> {
 /// One step: number, caption and context (the line in the list), then the German term, the
 /// book, the cut's angle, a degenerate outcome and the checks (shown for the current step).
 fn step_detail(step: &Step, name: &str) -> Part {
+    Part {
+        line: step_line(step, name),
+        detail: step_details(step),
+    }
+}
+
+/// A step's line in the list: its number, name and situation.
+fn step_line(step: &Step, name: &str) -> String {
+    format!(
+        "<b>{}</b> {}{}",
+        step.id,
+        html_text(name),
+        step.context
+            .as_ref()
+            .map(|c| format!(" <i>{}</i>", html_text(c)))
+            .unwrap_or_default(),
+    )
+}
+
+/// A step's details: German term, book, cut, outcome and checks.
+fn step_details(step: &Step) -> String {
     let mut d = String::new();
     if let Some(de) = &step.term_de {
         d.push_str(&format!(
@@ -473,18 +604,7 @@ fn step_detail(step: &Step, name: &str) -> Part {
     if !step.checks.is_empty() {
         d.push_str(&checks_table(step));
     }
-    Part {
-        line: format!(
-            "<b>{}</b> {}{}",
-            step.id,
-            html_text(name),
-            step.context
-                .as_ref()
-                .map(|c| format!(" <i>{}</i>", html_text(c)))
-                .unwrap_or_default(),
-        ),
-        detail: d,
-    }
+    d
 }
 
 /// The step's checks: constructed value against the closed form.
@@ -567,10 +687,14 @@ const SCRIPT: &str = r#"(function () {
 'use strict';
 var svg, layers, items, full, k = 0, zoom = false;
 // Each page's details where the list holds its lines alone (a live page, whose list is put
-// anew after a replay, lays out the lines without them); else null, each item holds its own.
+// anew after a replay, lays out the lines without them): an array, or a function of the
+// page that makes them (the live page's engine); else null, each item holds its own.
 var given = document.getElementById('wt-details');
 var details = given ? JSON.parse(given.textContent) : null;
-function detailOf(j) { return details ? details[j] : items[j].innerHTML; }
+function detailOf(j) {
+  if (!details) return items[j].innerHTML;
+  return typeof details === 'function' ? details(j) : details[j];
+}
 // The figure and the step list as the page holds them now (a live page puts new ones in
 // place after each replay and binds them again).
 function bind() {
@@ -780,7 +904,8 @@ function swapFigure(now, fresh, moved, pages) {
   if (zoom) zoomTo(r);
 }
 window.graphostatikWalk = { show: show, step: function () { return k; }, pages: items.length,
-  // The list put anew: `d`, where given, each page's details (its lines alone are listed).
+  // The list put anew: `d`, where given, each page's details (its lines alone are listed),
+  // as an array or a function of the page.
   rebind: function (d) {
     if (d !== undefined) details = d;
     bind();

@@ -52,6 +52,14 @@ Engine.prototype.replay = function (name, text, page, shown) {
   a.patch = x.gs_patch_len() > 0 ? JSON.parse(this.read(x.gs_patch_ptr(), x.gs_patch_len())) : null;
   return a;
 };
+// What page `k` of the last scene built shows beside the figure (HTML; the answer when the
+// pointer rests carries no page's details, the engine keeps the construction); null where
+// there is no such page, or the engine stopped.
+Engine.prototype.details = function (k) {
+  var len;
+  try { len = this.x.gs_details(k); } catch (e) { return null; }
+  return len > 0 ? this.read(this.x.gs_details_ptr(), len) : null;
+};
 // A fresh engine: the module is compiled once per page, instantiated per call.
 window.graphostatikEngine = function () {
   var m = compiled ? Promise.resolve(compiled)

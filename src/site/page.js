@@ -491,7 +491,8 @@ function apply(a, moved) {
     setList(a.items);
     stale = false;
     t = mark('items', t);
-    walk.rebind(a.details || []);
+    // Each page's details as the page shows it, from the construction the engine keeps.
+    walk.rebind(a.details || pageDetails);
     t = mark('rebind', t);
   }
   handles = a.handles;
@@ -520,6 +521,10 @@ function apply(a, moved) {
   mark('layout', t);
 }
 
+// What page `j` shows beside the figure, from the engine's last construction ('' where the
+// engine has none: it stopped, and its successor has built nothing yet).
+function pageDetails(j) { return (engine && engine.details(j)) || ''; }
+
 // The full answer once the pointer rests: the step list with every step's checks.
 function settle() {
   if (stale) replay(true, false);
@@ -537,7 +542,14 @@ function replay(force, light) {
       : engine.replay(name + '.json', text, undefined, base);
   } catch (e) {
     showError(String(e.message || e).split('\n')[0]);
-    if (e.trapped) { engine = null; window.graphostatikEngine().then(function (x) { engine = x; }); }
+    if (e.trapped) {
+      // A fresh engine, given the last good scene: it keeps the construction shown.
+      engine = null;
+      window.graphostatikEngine().then(function (x) {
+        x.replay(name + '.json', JSON.stringify(good));
+        engine = x;
+      });
+    }
     return null;
   }
   var t1 = performance.now();
@@ -663,7 +675,7 @@ window.graphostatikSite = {
     }
     // The current page's details beside the figure, as the answer gives them.
     var now = document.createElement('div'), k = window.graphostatikWalk.step();
-    now.innerHTML = last && last.details ? last.details[k] : '';
+    now.innerHTML = !last ? '' : last.details ? last.details[k] : pageDetails(k);
     if (now.innerHTML !== el('wt-now').innerHTML) return 'the details of page ' + (k + 1);
     return '';
   },
