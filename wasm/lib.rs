@@ -9,10 +9,10 @@
 //! (`graphostatik::web::figure_patch`, JSON) at [`gs_patch_ptr`] for [`gs_patch_len`] bytes
 //! instead of the whole figure. It keeps the last construction too: the answer when the
 //! pointer rests lists the steps without any page's details, which the page reads page by
-//! page with [`gs_details`] at [`gs_details_ptr`]. A panic cannot unwind out of WebAssembly: it traps, after the hook
-//! below has kept its message, which the page reads with [`gs_panic_ptr`] and
-//! [`gs_panic_len`] before it starts a fresh instance. Nothing here uses threads, clocks or
-//! files.
+//! page with [`gs_details`] at [`gs_details_ptr`]. A panic cannot unwind out of WebAssembly:
+//! it traps, after the hook below has kept its message, which the page reads with
+//! [`gs_panic_ptr`] and [`gs_panic_len`] before it starts a fresh instance. Nothing here
+//! uses threads, clocks or files.
 
 use graphostatik::web::Ask;
 use std::cell::RefCell;
@@ -58,10 +58,10 @@ pub unsafe extern "C" fn gs_free(ptr: *mut u8, len: usize) {
 /// the step list's lines without any page's details (`graphostatik::web::Ask::Lines`;
 /// [`gs_details`] gives a page's), else for the answer of a drag on that page
 /// (`graphostatik::web::Ask::Page`). The construction is kept for [`gs_details`] until the
-/// next scene that is built. `base` is the number of the
-/// figure the page shows ([`gs_figure_id`]; below 0: none of this engine's): where it is the
-/// last figure drawn, what changed from it is put at [`gs_patch_ptr`]. Returns the length of
-/// the JSON answer at [`gs_out_ptr`].
+/// next scene that is built. `base` is the number of the figure the page shows
+/// ([`gs_figure_id`]; below 0: none of this engine's): where it is the last figure drawn,
+/// what changed from it is put at [`gs_patch_ptr`]. Returns the length of the JSON answer at
+/// [`gs_out_ptr`].
 ///
 /// # Safety
 /// Each pointer and length is a buffer [`gs_alloc`] returned for that many bytes, all

@@ -373,6 +373,12 @@ fn bits(d: Vector) -> [u64; 2] {
     [d.x.to_bits(), d.y.to_bits()]
 }
 
+/// The marks of part `p`, moved by `d`, added to `drawn`.
+fn add_moved(drawn: &mut Vec<Mark>, marks: &BTreeMap<Part, Vec<Mark>>, p: &Part, d: Vector) {
+    let own = marks.get(p).map_or(&[][..], |ms| &ms[..]);
+    drawn.extend(own.iter().map(|m| m.moved(d)));
+}
+
 /// How far each part is moved: the rows and columns set out, then each free part
 /// ([`Part::free`]) in part order into room the sheet has: inside it where its box meets
 /// no mark of the parts set before it ([`inner_hole`]), else in a hole the boxes leave
@@ -418,8 +424,7 @@ fn shifts(
                         .collect();
                     for (p, d) in &set[grid.len()..] {
                         let d = Vector::new(f64::from_bits(d[0]), f64::from_bits(d[1]));
-                        let own = marks.get(p).map_or(&[][..], |ms| &ms[..]);
-                        drawn.extend(own.iter().map(|m| m.moved(d)));
+                        add_moved(&mut drawn, marks, p, d);
                     }
                     drawn
                 });
@@ -434,8 +439,7 @@ fn shifts(
             placed.push(moved(f.bounds, d));
             set.push((f.part, bits(d)));
             if let Some(drawn) = drawn.as_mut() {
-                let own = marks.get(&f.part).map_or(&[][..], |ms| &ms[..]);
-                drawn.extend(own.iter().map(|m| m.moved(d)));
+                add_moved(drawn, marks, &f.part, d);
             }
             false
         });

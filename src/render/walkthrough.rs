@@ -426,16 +426,19 @@ impl Part {
 
 /// The steps of one page of the list, a [`Part`] each (one for a part not drawn).
 fn group_parts(group: &[&Step], names: &[String]) -> Vec<Part> {
-    let name = |s: &Step| {
-        let i = (s.id.0 as usize).checked_sub(1);
-        i.and_then(|i| names.get(i))
-            .map_or(s.caption.to_string(), String::clone)
-    };
     if group[0].part.hidden {
-        vec![unseen_steps(group, &name)]
+        vec![unseen_steps(group, names)]
     } else {
-        group.iter().map(|s| step_detail(s, &name(s))).collect()
+        (group.iter())
+            .map(|s| step_detail(s, step_name(s, names)))
+            .collect()
     }
+}
+
+/// Step `s`'s name of `names` ([`step_names`]), its caption where `names` has none.
+fn step_name<'a>(s: &'a Step, names: &'a [String]) -> &'a str {
+    let i = (s.id.0 as usize).checked_sub(1);
+    i.and_then(|i| names.get(i)).map_or(&s.caption, |n| n)
 }
 
 /// The `<li>` around a page's steps (`inner`), with the range of steps it shows.
@@ -458,11 +461,9 @@ fn group_lines(group: &[&Step], names: &[String]) -> Vec<String> {
     if group[0].part.hidden {
         vec![unseen_line(group)]
     } else {
-        let line = |s: &Step| {
-            let i = (s.id.0 as usize).checked_sub(1);
-            step_line(s, i.and_then(|i| names.get(i)).map_or(&s.caption, |n| n))
-        };
-        group.iter().map(|s| line(s)).collect()
+        (group.iter())
+            .map(|s| step_line(s, step_name(s, names)))
+            .collect()
     }
 }
 
@@ -482,10 +483,10 @@ fn group_item(group: &[&Step], names: &[String]) -> String {
 /// term, the books they follow once, and the checks. (The crane bridge's seven positions not
 /// drawn wrote 1.3 MB of the list's 2.1 MB, 483 lines each, when each step was written in
 /// full.)
-fn unseen_steps(group: &[&Step], name: &dyn Fn(&Step) -> String) -> Part {
+fn unseen_steps(group: &[&Step], names: &[String]) -> Part {
     Part {
         line: unseen_line(group),
-        detail: unseen_details(group, name),
+        detail: unseen_details(group, names),
     }
 }
 
@@ -505,7 +506,7 @@ fn unseen_line(group: &[&Step]) -> String {
 }
 
 /// The details of the steps of a part not drawn ([`unseen_steps`]).
-fn unseen_details(group: &[&Step], name: &dyn Fn(&Step) -> String) -> String {
+fn unseen_details(group: &[&Step], names: &[String]) -> String {
     let mut books: Vec<&str> = Vec::new();
     let mut d = String::new();
     for s in group {
@@ -515,7 +516,7 @@ fn unseen_details(group: &[&Step], name: &dyn Fn(&Step) -> String) -> String {
         d.push_str(&format!(
             "<p class=\"wt-sub\"><b>{}</b> {}{}</p>",
             s.id,
-            html_text(&name(s)),
+            html_text(step_name(s, names)),
             (s.term_de.as_ref())
                 .map(|de| format!(
                     " <span class=\"wt-de\" lang=\"de\">{}</span>",
