@@ -11,8 +11,8 @@
 
 use crate::protocol::{Board, BoardConfig, FigureMeta, ObjId};
 use crate::render::{
-    figure_with_points, page_count, page_details, page_ranges, step_names, walkthrough_item,
-    walkthrough_lines, walkthrough_list, Grouping,
+    figure_with_points, list_lines, page_count, page_details, page_ranges, step_names,
+    walkthrough_item, walkthrough_list, Grouping,
 };
 use crate::scene::{handles, AnyScene, Handle, Preview};
 use serde::Serialize;
@@ -65,8 +65,10 @@ pub struct Built {
     /// drawn (the crane bridge's 5,433 steps on 2,080 pages). A drag's answer carries one
     /// page's item; where this number changed, the page's list of steps is out of date.
     pub page_count: usize,
-    /// Every step: number, name, caption, situation, German term, book (none in an answer
-    /// for a drag).
+    /// Every step: number, name, caption, situation, German term, book; none in an answer
+    /// for a drag or for [`Ask::Lines`], whose list's lines name every step already (the
+    /// crane bridge's 5,433 were 1.6 MB of its 2.4 MB answer when the pointer rests).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
     pub steps: Vec<StepLine>,
     /// Every check of every step, with its bound.
     pub checks: Vec<CheckLine>,
@@ -215,9 +217,10 @@ pub enum Ask {
     /// The step list's lines, every page's details and every step: what a page is written
     /// with ([`build`]).
     All,
-    /// The lines and every step, but no page's details: the page asks the construction kept
-    /// ([`Kept::details`]) for those of a page as it shows it. The crane bridge's details are
-    /// 1.4 MB of its 4.8 MB answer, and the student sees one page of 2,080 at a time.
+    /// The lines, but no page's details and no list of steps ([`Built::steps`]): the page asks
+    /// the construction kept ([`Kept::details`]) for those of a page as it shows it. The
+    /// crane bridge's details are 1.4 MB of its 4.8 MB answer, and the student sees one page
+    /// of 2,080 at a time.
     Lines,
     /// The item of page `k` alone, its details included, and no list of steps: the answer to
     /// a drag while the pointer moves.
@@ -225,14 +228,34 @@ pub enum Ask {
 }
 
 /// The construction of an answer, kept to answer for a page's details
-/// ([`Ask::Lines`]) without constructing it again.
+/// ([`Ask::Lines`]) without constructing it again, and for the same scene asked again
+/// ([`replay_into`]).
 pub struct Kept {
     board: Board,
+    /// The scene's text and name it was built from.
+    text: String,
+    origin: String,
+    /// Its answer without the walk-through (no items, details or steps) and the figure.
+    drawn: Built,
     names: OnceCell<Vec<String>>,
     pages: OnceCell<Vec<Range<usize>>>,
 }
 
 impl Kept {
+    /// The answer to `ask` for the scene this was built from, the figure left out (its
+    /// `svg` empty), without constructing or drawing it again: the same answer as
+    /// [`build_asked`] gives. The steps are named once, for the first list asked for.
+    pub fn answer(&self, ask: Ask) -> Built {
+        let mut b = self.drawn.clone();
+        list_into(&mut b, &self.board, ask, &self.names);
+        b
+    }
+
+    /// Whether this is the construction of the scene `text` named `origin`.
+    pub fn is_of(&self, text: &str, origin: &str) -> bool {
+        self.text == text && self.origin == origin
+    }
+
     /// What page `k` shows beside the figure (as [`Built::details`] holds it for [`Ask::All`]);
     /// `None` past the last page. The steps are named and the pages found once, on the first
     /// call: the print view asks for every page (the crane bridge's 2,080).
@@ -269,6 +292,42 @@ pub fn replay_kept(scene: &str, origin: &str, ask: Ask) -> (String, String, Opti
     (answer_json(&answer, origin), svg, kept)
 }
 
+/// [`replay_kept`] with the construction kept in `kept`: where it is of this scene (the
+/// same text and name) the answer is made from it, and the figure is `None` (the one drawn
+/// last); else the scene is built, its figure returned and its construction kept (a refused
+/// scene keeps the one before, whose figure the page still shows). A page replays the
+/// scene of its last drag once more when the pointer is released, for the step list: the
+/// crane bridge of LH Aufgabe 5 then constructs and draws nothing again.
+///
+/// ```
+/// use graphostatik::web::{replay_into, replay_kept, Ask};
+/// let scene = std::fs::read_to_string("scenes/lh_abb22_funicular.json").unwrap();
+/// let mut kept = None;
+/// let (drag, svg) = replay_into(&mut kept, &scene, "abb22.json", Ask::Page(2));
+/// assert!(svg.is_some_and(|s| s.starts_with("<svg ")));
+/// // LH Abb. 22, the pointer released: the answer of the construction kept.
+/// let (rest, svg) = replay_into(&mut kept, &scene, "abb22.json", Ask::Lines);
+/// assert_eq!(svg, None);
+/// assert_eq!(rest, replay_kept(&scene, "abb22.json", Ask::Lines).0);
+/// assert_ne!(rest, drag);
+/// ```
+pub fn replay_into(
+    kept: &mut Option<Kept>,
+    scene: &str,
+    origin: &str,
+    ask: Ask,
+) -> (String, Option<String>) {
+    if let Some(k) = kept.as_ref().filter(|k| k.is_of(scene, origin)) {
+        let answer = Answer::Built(Box::new(k.answer(ask)));
+        return (answer_json(&answer, origin), None);
+    }
+    let (json, svg, fresh) = replay_kept(scene, origin, ask);
+    if fresh.is_some() {
+        *kept = fresh;
+    }
+    (json, Some(svg))
+}
+
 /// The construction of `text` with everything the page shows.
 pub fn build(text: &str, origin: &str) -> Result<Built, String> {
     build_page(text, origin, None)
@@ -291,31 +350,32 @@ pub fn build_asked(text: &str, origin: &str, ask: Ask) -> Result<(Built, Kept), 
             None => format!("{origin}: {e}"),
         })?;
     let meta = p.figure_meta();
-    let (built, names) = built(&meta, &board, handles(&scene, &board), sliders, ask);
-    let names = names.map_or_else(OnceCell::new, OnceCell::from);
-    let pages = OnceCell::new();
+    let mut built = drawn(&meta, &board, handles(&scene, &board), sliders);
+    let svg = std::mem::take(&mut built.svg);
+    let kept_part = built.clone();
+    built.svg = svg;
+    let names = OnceCell::new();
+    list_into(&mut built, &board, ask, &names);
     Ok((
         built,
         Kept {
             board,
+            text: text.to_string(),
+            origin: origin.to_string(),
+            drawn: kept_part,
             names,
-            pages,
+            pages: OnceCell::new(),
         },
     ))
 }
 
-/// The answer of a constructed board.
-fn built(
+/// The answer of a constructed board but for its walk-through ([`list_into`]).
+fn drawn(
     meta: &FigureMeta,
     board: &Board,
     handles: Vec<Handle>,
     sliders: Vec<SliderLine>,
-    ask: Ask,
-) -> (Built, Option<Vec<String>>) {
-    let page = match ask {
-        Ask::Page(k) => Some(k.min(board.steps().len().saturating_sub(1))),
-        Ask::All | Ask::Lines => None,
-    };
+) -> Built {
     let mut ids: Vec<ObjId> = handles.iter().map(|h| h.object).collect();
     ids.extend(handles.iter().filter_map(Handle::center));
     let (svg, at) = figure_with_points(meta, board, &ids);
@@ -335,28 +395,22 @@ fn built(
         })
         .collect();
     let checks = check_lines(board);
-    let (items, details, steps, names) = listed(board, page, ask);
-    let page_count = match page {
-        Some(_) => page_count(board, Grouping::Step),
-        None => items.len(),
-    };
-    let built = Built {
+    Built {
         ok: true,
         title: meta.title.to_string(),
         source: meta.source.to_string(),
         svg,
-        items,
-        details,
-        page,
+        items: Vec::new(),
+        details: Vec::new(),
+        page: None,
         step_count: board.steps().len(),
-        page_count,
-        steps,
+        page_count: 0,
+        steps: Vec::new(),
         failed: checks.iter().filter(|c| !c.passed).count(),
         checks,
         handles: placed,
         sliders,
-    };
-    (built, names)
+    }
 }
 
 /// Every check of `board` with its step, as the page lists it.
@@ -378,30 +432,30 @@ fn check_lines(board: &Board) -> Vec<CheckLine> {
         .collect()
 }
 
-/// The walk-through as `ask` says (`page`: the drag's page, where it asks for one): the
-/// list's items, the pages' details, every step, and the steps' names where they were all
-/// named.
-type Listed = (Vec<String>, Vec<String>, Vec<StepLine>, Option<Vec<String>>);
-
-fn listed(board: &Board, page: Option<usize>, ask: Ask) -> Listed {
-    match (page, ask) {
-        (Some(k), _) => (
-            walkthrough_item(board, Grouping::Step, k)
+/// The walk-through of `board` as `ask` says put into `b`: the list's items, the pages'
+/// details and every step (for [`Ask::All`]), or the item of the drag's page, and the
+/// number of pages. The steps are named once, into `names`, where all are named.
+fn list_into(b: &mut Built, board: &Board, ask: Ask, names: &OnceCell<Vec<String>>) {
+    match ask {
+        Ask::Page(k) => {
+            let k = k.min(board.steps().len().saturating_sub(1));
+            b.items = walkthrough_item(board, Grouping::Step, k)
                 .into_iter()
-                .collect(),
-            Vec::new(),
-            Vec::new(),
-            None,
-        ),
-        (None, Ask::Lines) => {
-            let list = walkthrough_lines(board, Grouping::Step);
-            let steps = step_lines(board, &list.names);
-            (list.lines, Vec::new(), steps, Some(list.names))
+                .collect();
+            b.page = Some(k);
+            b.page_count = page_count(board, Grouping::Step);
         }
-        (None, _) => {
+        Ask::Lines => {
+            let names = names.get_or_init(|| step_names(board));
+            b.items = list_lines(board, Grouping::Step, names);
+            b.page_count = b.items.len();
+        }
+        Ask::All => {
             let list = walkthrough_list(board, Grouping::Step);
-            let steps = step_lines(board, &list.names);
-            (list.lines, list.details, steps, Some(list.names))
+            b.steps = step_lines(board, &list.names);
+            (b.items, b.details) = (list.lines, list.details);
+            b.page_count = b.items.len();
+            let _ = names.set(list.names);
         }
     }
 }
@@ -458,7 +512,7 @@ fn sliders(preview: Option<&Preview>, text: &str, origin: &str) -> Result<Vec<Sl
 mod tests {
     use super::{build_asked, Ask};
 
-    /// The answer when the pointer rests lists the same lines and steps as the page is
+    /// The answer when the pointer rests lists the same lines as the page is
     /// written with, and the construction kept gives each page's details as that answer
     /// holds them: drawn steps, and the crane bridge's positions that are not drawn.
     #[test]
@@ -470,7 +524,8 @@ mod tests {
             let (lines, kept) = build_asked(&text, "x.json", Ask::Lines).unwrap();
             assert_eq!(lines.items, all.items, "{scene}");
             assert_eq!(lines.page_count, all.page_count, "{scene}");
-            assert_eq!(lines.steps.len(), all.steps.len(), "{scene}");
+            assert!(lines.steps.is_empty(), "{scene}");
+            assert_eq!(all.steps.len(), all.step_count, "{scene}");
             assert!(lines.details.is_empty() && all.details.len() == all.items.len());
             for (k, d) in all.details.iter().enumerate() {
                 assert_eq!(kept.details(k).as_ref(), Some(d), "{scene}, page {k}");
@@ -485,6 +540,38 @@ mod tests {
                 Some(&all.details[3]),
                 "{scene}"
             );
+        }
+    }
+
+    /// An answer made again from the construction kept is the answer of the scene built
+    /// afresh, for every ask in turn; another text is built anew, and a refused one keeps
+    /// the construction before it.
+    #[test]
+    fn an_answer_kept_is_the_answer_afresh() {
+        use super::{replay_into, replay_kept};
+        for scene in ["lh_aufgabe4_shed_roof", "lh_abb22_funicular"] {
+            let path = format!("{}/scenes/{scene}.json", env!("CARGO_MANIFEST_DIR"));
+            let text = std::fs::read_to_string(path).unwrap();
+            let mut kept = None;
+            let asks = [Ask::Page(3), Ask::Lines, Ask::Page(0), Ask::All, Ask::Lines];
+            for (i, ask) in asks.into_iter().enumerate() {
+                let (json, svg) = replay_into(&mut kept, &text, "x.json", ask);
+                let (fresh, fresh_svg, _) = replay_kept(&text, "x.json", ask);
+                assert_eq!(json, fresh, "{scene}, {ask:?}");
+                assert_eq!(svg, (i == 0).then_some(fresh_svg), "{scene}, {ask:?}");
+            }
+            // The same text under another name is built anew; so is another text.
+            assert!(replay_into(&mut kept, &text, "y.json", Ask::Lines)
+                .1
+                .is_some());
+            let other = format!("{text} ");
+            assert!(replay_into(&mut kept, &other, "y.json", Ask::Lines)
+                .1
+                .is_some());
+            let (refused, _) = replay_into(&mut kept, "{", "y.json", Ask::Lines);
+            assert!(refused.starts_with("{\"ok\":false"), "{refused}");
+            assert!(kept.as_ref().is_some_and(|k| k.is_of(&other, "y.json")));
+            assert_eq!(replay_into(&mut kept, &other, "y.json", Ask::Lines).1, None);
         }
     }
 

@@ -58,7 +58,9 @@ pub unsafe extern "C" fn gs_free(ptr: *mut u8, len: usize) {
 /// the step list's lines without any page's details (`graphostatik::web::Ask::Lines`;
 /// [`gs_details`] gives a page's), else for the answer of a drag on that page
 /// (`graphostatik::web::Ask::Page`). The construction is kept for [`gs_details`] until the
-/// next scene that is built. `base` is the number of the figure the page shows
+/// next scene that is built, and where the same scene is asked for again (the pointer
+/// released after a drag) the answer is made from it: nothing is constructed or drawn, the
+/// figure is the last one and keeps its number (`graphostatik::web::replay_into`). `base` is the number of the figure the page shows
 /// ([`gs_figure_id`]; below 0: none of this engine's): where it is the last figure drawn,
 /// what changed from it is put at [`gs_patch_ptr`]. Returns the length of the JSON answer at
 /// [`gs_out_ptr`].
@@ -83,12 +85,12 @@ pub unsafe extern "C" fn gs_replay(
     let answer = match std::str::from_utf8(&text) {
         Ok(t) => {
             let ask = usize::try_from(page).map_or(Ask::Lines, Ask::Page);
-            let (json, svg, kept) = graphostatik::web::replay_kept(t, &name, ask);
-            if !svg.is_empty() {
-                keep_figure(svg, base);
-            }
-            if kept.is_some() {
-                KEPT.with(|k| *k.borrow_mut() = kept);
+            let (json, svg) =
+                KEPT.with(|k| graphostatik::web::replay_into(&mut k.borrow_mut(), t, &name, ask));
+            match svg {
+                Some(svg) if !svg.is_empty() => keep_figure(svg, base),
+                Some(_) => {}
+                None => same_figure(base),
             }
             json
         }
@@ -128,6 +130,16 @@ fn keep_figure(svg: String, base: i32) {
         *o = svg.into_bytes();
     });
     FIGURE.with(|f| f.set(id % ((1 << 30) - 1) + 1));
+}
+
+/// The last figure drawn is the figure again (its scene was asked for once more): where the
+/// page shows it (`base`), the patch says that nothing changed; its number stays.
+fn same_figure(base: i32) {
+    let id = FIGURE.with(|f| f.get());
+    if u32::try_from(base) == Ok(id) && SVG.with(|o| !o.borrow().is_empty()) {
+        let none = graphostatik::web::FigurePatch::default().to_json();
+        PATCH.with(|b| *b.borrow_mut() = none.into_bytes());
+    }
 }
 
 /// The details of page `page` of the last scene built (HTML, what the page shows beside the

@@ -28,7 +28,8 @@ pub use table::{
     reference_table_text, summary_json, CheckRow, KindJson, ReferenceTableRow, SummaryJson,
 };
 pub use walkthrough::{
-    html_text, page_count, page_details, page_ranges, step_names, walkthrough, walkthrough_details,
-    walkthrough_html, walkthrough_item, walkthrough_item_list, walkthrough_items,
-    walkthrough_lines, walkthrough_list, walkthrough_page, Grouping, Page, StepList, WalkOptions,
+    html_text, list_lines, page_count, page_details, page_ranges, step_names, walkthrough,
+    walkthrough_details, walkthrough_html, walkthrough_item, walkthrough_item_list,
+    walkthrough_items, walkthrough_lines, walkthrough_list, walkthrough_page, Grouping, Page,
+    StepList, WalkOptions,
 };

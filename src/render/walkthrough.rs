@@ -56,12 +56,27 @@ pub struct WalkOptions {
 /// Text shown literally in HTML: markup escaped (`<`, `>`, `&`, both quotes), characters XML
 /// forbids (NUL, most control characters) replaced by U+FFFD.
 pub fn html_text(s: &str) -> String {
-    crate::fmt::sheet_text(s)
-        .replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-        .replace('\'', "&#39;")
+    let mut out = String::with_capacity(s.len());
+    push_html_text(&mut out, s);
+    out
+}
+
+/// [`html_text`] of `s` put at the end of `out`, in one pass over the text.
+fn push_html_text(out: &mut String, s: &str) {
+    let s = crate::fmt::sheet_text(s);
+    let mut rest = &s[..];
+    while let Some(i) = rest.find(['&', '<', '>', '"', '\'']) {
+        out.push_str(&rest[..i]);
+        out.push_str(match rest.as_bytes()[i] {
+            b'&' => "&amp;",
+            b'<' => "&lt;",
+            b'>' => "&gt;",
+            b'"' => "&quot;",
+            _ => "&#39;",
+        });
+        rest = &rest[i + 1..];
+    }
+    out.push_str(rest);
 }
 
 /// The steps of each page, in order. The steps of a part constructed and checked but not
@@ -171,17 +186,19 @@ pub fn walkthrough_list(board: &Board, grouping: Grouping) -> StepList {
 /// a live page that asks for a page's details when it shows it ([`walkthrough_details`]).
 pub fn walkthrough_lines(board: &Board, grouping: Grouping) -> StepList {
     let names = step_names(board);
-    let lines = (page_groups(board, grouping).iter())
-        .map(|group| {
-            let lines = group_lines(group, &names);
-            list_line(group, lines.iter().map(|l| &l[..]))
-        })
-        .collect();
     StepList {
-        lines,
+        lines: list_lines(board, grouping, &names),
         details: Vec::new(),
         names,
     }
+}
+
+/// The lines of [`walkthrough_lines`], the steps named by `names` ([`step_names`]): for a
+/// caller that named them before (a live page whose construction is kept from a drag).
+pub fn list_lines(board: &Board, grouping: Grouping, names: &[String]) -> Vec<String> {
+    (page_groups(board, grouping).iter())
+        .map(|group| list_item(group, |out| push_group_lines(out, group, names)))
+        .collect()
 }
 
 /// What page `k` of `board`'s walk-through shows beside the figure (one of
@@ -292,14 +309,24 @@ pub fn step_names(board: &Board) -> Vec<String> {
         *count.entry(key(i)).or_default() += 1;
     }
     let mut seen: foldhash::HashMap<_, usize> = Default::default();
-    (0..named.len())
+    let which: Vec<(usize, usize)> = (0..named.len())
         .map(|i| match count[&key(i)] {
-            1 => named[i].clone(),
+            1 => (1, 1),
             n => {
                 let k = seen.entry(key(i)).or_default();
                 *k += 1;
-                format!("{} ({k} of {n})", named[i])
+                (*k, n)
             }
+        })
+        .collect();
+    drop((count, seen));
+    (named.into_iter().zip(which))
+        .map(|(mut name, (k, n))| {
+            if n > 1 {
+                use std::fmt::Write;
+                let _ = write!(name, " ({k} of {n})");
+            }
+            name
         })
         .collect()
 }
@@ -318,42 +345,64 @@ fn told_apart(board: &Board, named: &[String], i: usize) -> String {
 /// Each step's caption with the names of the objects it draws (or reads from), before steps
 /// of one name are told apart.
 fn plain_names(board: &Board) -> Vec<String> {
-    let label = |id: &crate::protocol::ObjId| {
-        let l = &board.object(*id)?.label;
-        (!l.base.is_empty()).then(|| match l.index {
-            Some(i) => (i.to_string().chars())
-                .filter_map(crate::fmt::subscript_of)
-                .fold(l.base.to_string(), |mut s, c| {
-                    s.push(c);
-                    s
-                }),
-            None => l.base.to_string(),
-        })
-    };
-    // A name the caption says already ("ordinate line through O") is not said twice.
-    let said =
-        |caption: &str, name: &str| caption.split([' ', ',', ':', '(', ')']).any(|w| w == name);
+    let labelled =
+        |id: &crate::protocol::ObjId| (board.object(*id)).is_some_and(|o| !o.label.base.is_empty());
+    let mut label = String::new();
+    let mut last = String::new();
     (board.steps().iter())
         .map(|s| {
-            let mut objs: Vec<String> = s.outputs.iter().filter_map(label).collect();
-            if objs.is_empty() {
-                objs = s.inputs.iter().filter_map(label).collect();
-            }
-            objs.dedup();
-            objs.retain(|o| !said(&s.caption, o));
-            let more = objs.len() > 3;
-            objs.truncate(3);
+            let ids = match s.outputs.iter().any(labelled) {
+                true => &s.outputs,
+                false => &s.inputs,
+            };
+            // The labels in turn, each once where it repeats the one before, less those the
+            // caption says already ("ordinate line through O"), at most three and "…".
             let mut name = s.caption.to_string();
-            if !objs.is_empty() {
-                name = format!(
-                    "{name} {}{}",
-                    objs.join(", "),
-                    if more { ", …" } else { "" }
-                );
+            let mut told = 0;
+            last.clear();
+            for id in ids {
+                if !object_label(board, *id, &mut label) || label == last {
+                    continue;
+                }
+                std::mem::swap(&mut label, &mut last);
+                if s.caption
+                    .split([' ', ',', ':', '(', ')'])
+                    .any(|w| w == last)
+                {
+                    continue;
+                }
+                told += 1;
+                match told {
+                    1 => name.push(' '),
+                    2 | 3 => name.push_str(", "),
+                    _ => continue,
+                }
+                name.push_str(&last);
+            }
+            if told > 3 {
+                name.push_str(", …");
             }
             name
         })
         .collect()
+}
+
+/// Whether object `id` of `board` has a label, and if so `out` holds it (the base and the
+/// index as subscript digits: `P₁₂`).
+fn object_label(board: &Board, id: crate::protocol::ObjId, out: &mut String) -> bool {
+    let Some(l) = board.object(id).map(|o| &o.label) else {
+        return false;
+    };
+    if l.base.is_empty() {
+        return false;
+    }
+    out.clear();
+    out.push_str(&l.base);
+    if let Some(i) = l.index {
+        let digits = i.to_string();
+        out.extend(digits.chars().filter_map(crate::fmt::subscript_of));
+    }
+    true
 }
 
 /// The walk-through page around a figure drawn already (`svg`) and its step list
@@ -441,29 +490,43 @@ fn step_name<'a>(s: &'a Step, names: &'a [String]) -> &'a str {
     i.and_then(|i| names.get(i)).map_or(&s.caption, |n| n)
 }
 
-/// The `<li>` around a page's steps (`inner`), with the range of steps it shows.
-fn list_item(group: &[&Step], inner: &str) -> String {
-    let first = group[0].id;
-    let last = group[group.len() - 1].id;
-    format!("<li data-first=\"{first}\" data-last=\"{last}\">{inner}</li>\n")
+/// The `<li>` around a page's steps, with the range of steps it shows; `inner` writes what
+/// it holds.
+fn list_item(group: &[&Step], inner: impl FnOnce(&mut String)) -> String {
+    use std::fmt::Write;
+    let mut out = String::new();
+    let (first, last) = (group[0].id, group[group.len() - 1].id);
+    let _ = write!(out, "<li data-first=\"{first}\" data-last=\"{last}\">");
+    inner(&mut out);
+    out.push_str("</li>\n");
+    out
 }
 
 /// A page's item in the list without its details: its steps' lines alone.
 fn list_line<'a>(group: &[&Step], lines: impl IntoIterator<Item = &'a str>) -> String {
-    let inner: String = (lines.into_iter())
-        .map(|l| format!("<div class=\"wt-step\">{l}</div>"))
-        .collect();
-    list_item(group, &inner)
+    list_item(group, |out| {
+        for l in lines {
+            push_in_step(out, |out| out.push_str(l));
+        }
+    })
 }
 
-/// The lines of a page's steps ([`group_parts`] without their details).
-fn group_lines(group: &[&Step], names: &[String]) -> Vec<String> {
+/// A step's `<div>` in the list, `inner` writing what it holds.
+fn push_in_step(out: &mut String, inner: impl FnOnce(&mut String)) {
+    out.push_str("<div class=\"wt-step\">");
+    inner(out);
+    out.push_str("</div>");
+}
+
+/// The lines of a page's steps ([`group_parts`] without their details), each in its `<div>`,
+/// put at the end of `out`.
+fn push_group_lines(out: &mut String, group: &[&Step], names: &[String]) {
     if group[0].part.hidden {
-        vec![unseen_line(group)]
+        push_in_step(out, |out| push_unseen_line(out, group));
     } else {
-        (group.iter())
-            .map(|s| step_line(s, step_name(s, names)))
-            .collect()
+        for s in group {
+            push_in_step(out, |out| push_step_line(out, s, step_name(s, names)));
+        }
     }
 }
 
@@ -474,7 +537,9 @@ fn shown(parts: &[Part]) -> String {
 
 /// One page of the list: the steps it shows, a line each, and their details.
 fn group_item(group: &[&Step], names: &[String]) -> String {
-    list_item(group, &shown(&group_parts(group, names)))
+    list_item(group, |out| {
+        out.push_str(&shown(&group_parts(group, names)))
+    })
 }
 
 /// The steps of a part constructed and checked but not drawn (a position of a moving load
@@ -492,17 +557,33 @@ fn unseen_steps(group: &[&Step], names: &[String]) -> Part {
 
 /// The line in the list of the steps of a part not drawn ([`unseen_steps`]).
 fn unseen_line(group: &[&Step]) -> String {
+    let mut out = String::new();
+    push_unseen_line(&mut out, group);
+    out
+}
+
+/// [`unseen_line`] put at the end of `out`.
+fn push_unseen_line(out: &mut String, group: &[&Step]) {
+    use std::fmt::Write;
     let checks: usize = group.iter().map(|s| s.checks.len()).sum();
-    format!(
+    let _ = write!(
+        out,
         "<b>{}–{}</b> <span class=\"wt-unseen\">not drawn: {} steps constructed, \
-         {checks} checks made</span>{}",
+         {checks} checks made</span>",
         group[0].id,
         group[group.len() - 1].id,
         group.len(),
-        shared_context(group)
-            .map(|c| format!(" <i>{}</i>", html_text(c)))
-            .unwrap_or_default(),
-    )
+    );
+    push_context(out, shared_context(group));
+}
+
+/// A situation's ` <i>…</i>` after a step's name, where there is one.
+fn push_context(out: &mut String, context: Option<&str>) {
+    if let Some(c) = context {
+        out.push_str(" <i>");
+        push_html_text(out, c);
+        out.push_str("</i>");
+    }
 }
 
 /// The details of the steps of a part not drawn ([`unseen_steps`]).
@@ -542,9 +623,14 @@ fn shared_context<'a>(group: &[&'a Step]) -> Option<&'a str> {
     let mut len = first.len();
     for s in &group[1..] {
         let c = s.context.as_deref()?;
-        len = (first.char_indices().zip(c.chars()))
-            .find(|((_, a), b)| a != b)
-            .map_or(len.min(c.len()), |((i, _), _)| i.min(len));
+        // The bytes alike, back to the start of the character they end in: where the first
+        // character that differs starts.
+        len = (first.as_bytes()[..len].iter().zip(c.as_bytes()))
+            .take_while(|(a, b)| a == b)
+            .count();
+        while !first.is_char_boundary(len) {
+            len -= 1;
+        }
     }
     // Each context is the shared part, or the shared part and what follows a `: `.
     let ends = |c: &str| c.len() == len || c[len..].starts_with(": ");
@@ -565,15 +651,17 @@ fn step_detail(step: &Step, name: &str) -> Part {
 
 /// A step's line in the list: its number, name and situation.
 fn step_line(step: &Step, name: &str) -> String {
-    format!(
-        "<b>{}</b> {}{}",
-        step.id,
-        html_text(name),
-        step.context
-            .as_ref()
-            .map(|c| format!(" <i>{}</i>", html_text(c)))
-            .unwrap_or_default(),
-    )
+    let mut out = String::new();
+    push_step_line(&mut out, step, name);
+    out
+}
+
+/// [`step_line`] put at the end of `out`.
+fn push_step_line(out: &mut String, step: &Step, name: &str) {
+    use std::fmt::Write;
+    let _ = write!(out, "<b>{}</b> ", step.id);
+    push_html_text(out, name);
+    push_context(out, step.context.as_deref());
 }
 
 /// A step's details: German term, book, cut, outcome and checks.

@@ -195,7 +195,7 @@ pub fn engine_js(wasm: &[u8]) -> Result<String, SiteError> {
 fn summary(b: &Built) -> String {
     format!(
         "{} steps, {} checks: {}",
-        b.steps.len(),
+        b.step_count,
         b.checks.len(),
         if b.failed == 0 {
             "all pass".to_string()
