@@ -126,15 +126,16 @@ pub struct CheckLine {
     pub passed: bool,
 }
 
-/// A handle where the figure draws its point (SVG user units, from the sheet's top left).
+/// A handle where the figure draws its point, in the figure's SVG user units (those of its
+/// root, whose view box starts at the sheet's top left).
 #[derive(Debug, Clone, Serialize)]
 pub struct PlacedHandle {
     /// The handle.
     #[serde(flatten)]
     pub handle: Handle,
-    /// Where its point stands on the sheet.
+    /// Where its point stands on the sheet (user units).
     pub at: [f64; 2],
-    /// Where an angle's centre stands on the sheet.
+    /// Where an angle's centre stands on the sheet (user units).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub center: Option<[f64; 2]>,
 }

@@ -358,7 +358,10 @@ mod tests {
                 match node {
                     usvg::Node::Group(g) => walk(g, out),
                     usvg::Node::Text(t) => {
-                        let r = t.flattened().abs_bounding_box();
+                        // The glyphs' box in the text's own space, then the layer's
+                        // translation (the flattened group does not carry it).
+                        let r = t.flattened().bounding_box();
+                        let r = r.transform(t.abs_transform()).expect("a finite box");
                         out.push([r.left(), r.top(), r.right(), r.bottom()]);
                     }
                     _ => {}

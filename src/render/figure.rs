@@ -50,25 +50,76 @@ impl Frame {
             + TITLE_LINE * self.title.len().saturating_sub(1) as f64
             + SOURCE_LINE * self.source.len().saturating_sub(1) as f64
     }
-    /// Where `p` stands on the sheet (SVG user units), as [`Frame::x`] and [`Frame::y`] write it.
+    /// Where `p` stands in the figure's user units (the root's own coordinates, in which
+    /// the page draws its handles): x as on the sheet, y turned down, the view box set
+    /// around the drawing ([`Frame::origin`]).
     fn at(&self, p: &Point) -> [f64; 2] {
+        [p.x, -p.y]
+    }
+    /// The user units of the sheet's top-left corner: the view box starts there, so that a
+    /// drawing that grows or shrinks at its edge (a support at the sheet's edge dragged)
+    /// changes the root's view box and the sheet's layer, not every mark and text.
+    fn origin(&self) -> [f64; 2] {
         [
-            p.x - self.min_x + MARGIN,
-            self.max_y - p.y + MARGIN + self.title_block(),
+            self.min_x - MARGIN,
+            -(self.max_y + MARGIN + self.title_block()),
         ]
     }
+    /// What draws the objects of a part moved `shift` by the layout, in that part's own
+    /// coordinates: its layer is moved into place by a `translate` of the shift.
+    fn pen(&self, shift: Vector) -> Pen {
+        Pen {
+            shift,
+            clip: self.clip,
+        }
+    }
+    fn contains(&self, p: &Point) -> bool {
+        inside(self.clip, p)
+    }
+    /// Clips the segment a–b to the drawn region; `None` if it lies outside.
+    fn clip_segment(&self, a: Point, b: Point) -> Option<(Point, Point)> {
+        clipped(self.clip, a, b)
+    }
+}
+
+/// `p` lies in the region `[min_x, min_y, max_x, max_y]`.
+fn inside(clip: [f64; 4], p: &Point) -> bool {
+    let [x0, y0, x1, y1] = clip;
+    p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1
+}
+
+/// The segment a–b clipped to the region `clip`; `None` if it lies outside.
+fn clipped(clip: [f64; 4], a: Point, b: Point) -> Option<(Point, Point)> {
+    let (t0, t1) = clip_to_rect(a, b, clip)?;
+    let d = b - a;
+    Some((a + d * t0, a + d * t1))
+}
+
+/// Writes the objects of one layer: sheet coordinates (mm, y up) less the shift the layout
+/// gave the layer's part, y turned down, inside the layer's `translate` of that shift. A
+/// part that moves on the sheet (a plan that grows as a joint is dragged, a table set where
+/// there is room) then changes one attribute of each of its layers, not every mark and text
+/// in them.
+#[derive(Debug, Clone, Copy)]
+struct Pen {
+    shift: Vector,
+    /// The drawn region, as [`Frame`]'s (sheet coordinates, the shift included).
+    clip: [f64; 4],
+}
+
+impl Pen {
     fn x(&self, p: &Point) -> Num {
-        Num(p.x - self.min_x + MARGIN, 3)
+        Num(p.x - self.shift.x, 3)
     }
     fn y(&self, p: &Point) -> Num {
-        Num(self.max_y - p.y + MARGIN + self.title_block(), 3)
+        Num(self.shift.y - p.y, 3)
     }
     fn xy(&self, p: &Point) -> String {
         let mut s = String::with_capacity(24);
         self.xy_into(&mut s, p);
         s
     }
-    /// `x,y` of p on the page, at the end of `out` (a path's data written without a string
+    /// `x,y` of p in the layer, at the end of `out` (a path's data written without a string
     /// for each point).
     fn xy_into(&self, out: &mut String, p: &Point) {
         crate::fmt::num_into(out, self.x(p).0, 3);
@@ -76,14 +127,10 @@ impl Frame {
         crate::fmt::num_into(out, self.y(p).0, 3);
     }
     fn contains(&self, p: &Point) -> bool {
-        let [x0, y0, x1, y1] = self.clip;
-        p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1
+        inside(self.clip, p)
     }
-    /// Clips the segment a–b to the drawn region; `None` if it lies outside.
     fn clip_segment(&self, a: Point, b: Point) -> Option<(Point, Point)> {
-        let (t0, t1) = clip_to_rect(a, b, self.clip)?;
-        let d = b - a;
-        Some((a + d * t0, a + d * t1))
+        clipped(self.clip, a, b)
     }
 }
 
@@ -111,13 +158,21 @@ struct Sheet<'a> {
     board: std::borrow::Cow<'a, Board>,
     frame: Frame,
     labels: Placement,
+    /// How far the layout moved each part ([`super::layout::part_shifts`]); empty where
+    /// the board is drawn as constructed.
+    shifts: PartShifts,
 }
 
 impl Sheet<'_> {
     fn of<'a>(meta: &FigureMeta, board: &'a Board) -> Sheet<'a> {
-        let board = match super::layout::laid_out(board) {
-            Some(moved) => std::borrow::Cow::Owned(moved),
-            None => std::borrow::Cow::Borrowed(board),
+        let shifts = anchored(board, super::layout::part_shifts(board).unwrap_or_default());
+        let board = match shifts.is_empty() {
+            true => std::borrow::Cow::Borrowed(board),
+            false => {
+                let mut moved = board.clone();
+                moved.move_parts(|p| shifts.get(&p).copied().unwrap_or_else(Vector::zeros));
+                std::borrow::Cow::Owned(moved)
+            }
         };
         let frame = frame_of(&board, meta);
         let labels = placed(&board, &frame);
@@ -125,9 +180,36 @@ impl Sheet<'_> {
             board,
             frame,
             labels,
+            shifts,
         }
     }
 }
+
+/// The layout's shifts less that of the part drawn first (the structure, as a rule): that
+/// part keeps its own coordinates and the others move about it. Moving every part alike
+/// moves only the view box, so a drag that makes the layout move all parts (a plan grown
+/// under the truss) leaves the first part's layers as they were.
+fn anchored(board: &Board, mut shifts: PartShifts) -> PartShifts {
+    let Some(first) = board.steps().iter().find(|s| !s.part.hidden) else {
+        return shifts;
+    };
+    let base = shifts
+        .get(&first.part)
+        .copied()
+        .unwrap_or_else(Vector::zeros);
+    if base == Vector::zeros() {
+        return shifts;
+    }
+    for step in board.steps() {
+        shifts.entry(step.part).or_insert_with(Vector::zeros);
+    }
+    shifts.values_mut().for_each(|v| *v -= base);
+    shifts.retain(|_, v| *v != Vector::zeros());
+    shifts
+}
+
+/// How far the layout moves each part on the sheet (a part not named is not moved).
+type PartShifts = std::collections::BTreeMap<crate::protocol::Part, Vector>;
 
 /// The labels of a figure as [`figure`] places them.
 #[cfg(test)]
@@ -327,7 +409,7 @@ fn wrapped(text: &str, width: f64, char_width: f64) -> (Vec<String>, f64) {
     (lines, widest)
 }
 
-fn label_text(f: &Frame, at: &Point, label: &Label, joined: &[Label]) -> El {
+fn label_text(f: &Pen, at: &Point, label: &Label, joined: &[Label]) -> El {
     let mut t = El::text("text", sheet_text(&subscripts(&label.base)).into_owned())
         .set("x", f.x(at))
         .set("y", f.y(at));
@@ -361,7 +443,7 @@ fn index_span(i: u32) -> El {
 
 /// A circle: whole, or only the short compass arcs at the points constructed on it.
 fn draw_circle(
-    f: &Frame,
+    f: &Pen,
     class: &str,
     circle: &crate::kernel::Circle,
     full: bool,
@@ -398,7 +480,7 @@ fn draw_circle(
 }
 
 /// The label of `obj` where the placement put it, with its leader where it stands off.
-fn draw_label(f: &Frame, obj: &Object, labels: &Placement, g: El) -> El {
+fn draw_label(f: &Pen, obj: &Object, labels: &Placement, g: El) -> El {
     let Some(pl) = labels.get(obj.id) else {
         return g;
     };
@@ -409,7 +491,7 @@ fn draw_label(f: &Frame, obj: &Object, labels: &Placement, g: El) -> El {
     g
 }
 
-fn draw_object(f: &Frame, obj: &Object, labels: &Placement, g: El) -> El {
+fn draw_object(f: &Pen, obj: &Object, labels: &Placement, g: El) -> El {
     let class = class(obj.role);
     let mut g = g;
     match &obj.geom {
@@ -477,7 +559,7 @@ fn draw_object(f: &Frame, obj: &Object, labels: &Placement, g: El) -> El {
 }
 
 /// One block of a table, its top-left corner at `at`.
-fn draw_table(f: &Frame, at: Point, rows: &[Vec<String>], g: El) -> El {
+fn draw_table(f: &Pen, at: Point, rows: &[Vec<String>], g: El) -> El {
     if is_heading(rows) {
         let p = Point::new(at.x, at.y - 0.8 * HEADING_ROW);
         return g.add(
@@ -529,7 +611,7 @@ fn draw_table(f: &Frame, at: Point, rows: &[Vec<String>], g: El) -> El {
 }
 
 /// A straight line on the sheet from `a` to `b` in the given class.
-fn sheet_line(f: &Frame, class: &str, a: Point, b: Point) -> El {
+fn sheet_line(f: &Pen, class: &str, a: Point, b: Point) -> El {
     El::new("line")
         .set("class", class)
         .set("x1", f.x(&a))
@@ -539,7 +621,7 @@ fn sheet_line(f: &Frame, class: &str, a: Point, b: Point) -> El {
 }
 
 /// Short slanted strokes under a guide, on its right-hand side.
-fn hatching(f: &Frame, a: Point, b: Point) -> El {
+fn hatching(f: &Pen, a: Point, b: Point) -> El {
     let v = b - a;
     let len = v.norm();
     let u = v / len;
@@ -566,7 +648,7 @@ fn hatching(f: &Frame, a: Point, b: Point) -> El {
 }
 
 /// The polygon through the points (closed with `Z` if the last point repeats the first).
-fn polygon_path(f: &Frame, pts: &[Point]) -> String {
+fn polygon_path(f: &Pen, pts: &[Point]) -> String {
     let mut d = String::new();
     for (i, p) in pts.iter().enumerate() {
         d.push_str(if i == 0 { "M" } else { " L" });
@@ -577,7 +659,7 @@ fn polygon_path(f: &Frame, pts: &[Point]) -> String {
 
 /// A smooth curve through the points (Catmull–Rom as cubic Béziers); closed if the last point
 /// repeats the first.
-fn smooth_path(f: &Frame, pts: &[Point]) -> String {
+fn smooth_path(f: &Pen, pts: &[Point]) -> String {
     let n = pts.len();
     if n < 3 {
         return polygon_path(f, pts);
@@ -655,7 +737,8 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> El {
     let mut g = El::new("g")
         .set("id", "sheet")
         .set("inkscape:groupmode", "layer")
-        .set("inkscape:label", "000 sheet: title and scales");
+        .set("inkscape:label", "000 sheet: title and scales")
+        .set("transform", translate(f.origin()));
     for (k, line) in f.title.iter().enumerate() {
         g = g.add(
             El::text("text", sheet_text(line).into_owned())
@@ -720,7 +803,21 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> El {
     g
 }
 
-fn layer(board: &Board, f: &Frame, labels: &Placement, step: &Step, current: bool) -> El {
+/// `translate(x,y)`, to 0.001 mm.
+fn translate([x, y]: [f64; 2]) -> Written<impl Fn(&mut String)> {
+    Written(move |out: &mut String| {
+        out.push_str("translate(");
+        crate::fmt::num_into(out, x, 3);
+        out.push(',');
+        crate::fmt::num_into(out, y, 3);
+        out.push(')');
+    })
+}
+
+/// The layer of `step`, drawn in its part's own coordinates and moved into place by the part's
+/// shift `shift` on the sheet ([`Pen`]).
+fn layer(sheet: &Sheet<'_>, shift: Vector, step: &Step, current: bool) -> El {
+    let f = &sheet.frame;
     let id = |prefix: &'static str| {
         Written(move |out: &mut String| {
             out.push_str(prefix);
@@ -732,12 +829,16 @@ fn layer(board: &Board, f: &Frame, labels: &Placement, step: &Step, current: boo
         .set("inkscape:groupmode", "layer")
         .set("inkscape:label", &*sheet_text(&step.title()))
         .set("data-step", id(""));
+    if shift != Vector::zeros() {
+        g = g.set("transform", translate([shift.x, -shift.y]));
+    }
     if current {
         g = g.set("class", "current");
     }
+    let pen = f.pen(shift);
     for oid in &step.outputs {
-        if let Some(obj) = board.object(*oid) {
-            g = draw_object(f, obj, labels, g);
+        if let Some(obj) = sheet.board.object(*oid) {
+            g = draw_object(&pen, obj, &sheet.labels, g);
         }
     }
     g
@@ -820,6 +921,7 @@ pub fn inspect(meta: &FigureMeta, board: &Board) -> FigureReport {
         board,
         frame: f,
         labels: placed,
+        ..
     } = Sheet::of(meta, board);
     let region = label_region(&f);
     let at = |o: &Object| placed.get(o.id).map(|p| p.at);
@@ -958,17 +1060,13 @@ pub fn figure_with_points(
 
 /// Draws a sheet made ready: the title block, then one layer per step up to `upto`.
 fn draw(meta: &FigureMeta, sheet: Sheet<'_>, upto: Option<StepId>) -> (String, Lettering) {
-    let Sheet {
-        board,
-        frame: f,
-        labels,
-    } = sheet;
-    let board = &*board;
+    let labels = &sheet.labels;
     let lettering = Lettering {
         labels: labels.labels,
         left_out: labels.crowded,
         withheld: labels.withheld,
     };
+    let f = &sheet.frame;
     let mut doc = El::document()
         .set(
             "xmlns:inkscape",
@@ -976,15 +1074,16 @@ fn draw(meta: &FigureMeta, sheet: Sheet<'_>, upto: Option<StepId>) -> (String, L
         )
         .set("width", format!("{}mm", num(f.width, 3)))
         .set("height", format!("{}mm", num(f.height, 3)))
-        .set(
-            "viewBox",
-            format!("0 0 {} {}", num(f.width, 3), num(f.height, 3)),
-        )
+        .set("viewBox", {
+            let [x, y] = f.origin();
+            let [w, h] = [f.width, f.height].map(|v| num(v, 3));
+            format!("{} {} {w} {h}", num(x, 3), num(y, 3))
+        })
         .add(El::text("title", sheet_text(&meta.title).into_owned()))
         .add(El::text("style", css()))
         .add(defs())
-        .add(sheet_layer(&f, meta));
-    for step in board.steps() {
+        .add(sheet_layer(f, meta));
+    for step in sheet.board.steps() {
         if let Some(u) = upto {
             if step.id > u {
                 break;
@@ -993,7 +1092,9 @@ fn draw(meta: &FigureMeta, sheet: Sheet<'_>, upto: Option<StepId>) -> (String, L
         if step.part.hidden {
             continue;
         }
-        doc = doc.add(layer(board, &f, &labels, step, Some(step.id) == upto));
+        let shift = sheet.shifts.get(&step.part).copied();
+        let shift = shift.unwrap_or_else(Vector::zeros);
+        doc = doc.add(layer(&sheet, shift, step, Some(step.id) == upto));
     }
     let mut s = doc.write();
     s.push('\n');

@@ -480,6 +480,17 @@ fn room(placed: &[[f64; 4]], marks: &[Mark], free: [f64; 4], wanted: [f64; 4]) -
 /// The board with its parts set out, or `None` where it draws in one part only (then it is
 /// drawn as constructed).
 pub fn laid_out(board: &Board) -> Option<Board> {
+    let shift = part_shifts(board)?;
+    let mut moved = board.clone();
+    moved.move_parts(|p| shift.get(&p).copied().unwrap_or_else(Vector::zeros));
+    Some(moved)
+}
+
+/// How far [`laid_out`] moves each part of `board` (mm on the sheet); `None` where the
+/// board has fewer than two parts and is drawn as constructed. The figure draws each step
+/// in its part's own coordinates and moves its layer by this (an SVG transform), so that a
+/// part the layout moves is one attribute changed, not every mark of it.
+pub fn part_shifts(board: &Board) -> Option<BTreeMap<Part, Vector>> {
     let boxes = part_boxes(board);
     if boxes.len() < 2 {
         return None;
@@ -501,13 +512,10 @@ pub fn laid_out(board: &Board) -> Option<Board> {
         .map(|s| (sheet(&s), s))
         .filter(|((_, a), _)| *a <= (1.0 + WRAP_GROWTH) * area)
         .min_by(|a, b| a.0 .0.total_cmp(&b.0 .0));
-    let shift = match least {
+    Some(match least {
         Some(((s, _), wrapped)) if s < (1.0 - WRAP_GAIN) * side => wrapped,
         _ => strip,
-    };
-    let mut moved = board.clone();
-    moved.move_parts(|p| shift.get(&p).copied().unwrap_or_else(Vector::zeros));
-    Some(moved)
+    })
 }
 
 #[cfg(test)]

@@ -823,8 +823,10 @@ function boxOf(lo, hi) {
   layers.forEach(function (g) {
     var s = Number(g.getAttribute('data-step'));
     if (s < lo || s > hi || !g.firstChild) return;
-    var b = g.getBBox();
+    // A layer's box in its own coordinates, moved as its transform moves it (a translate).
+    var b = g.getBBox(), t = g.transform.baseVal.consolidate();
     if (b.width === 0 && b.height === 0) return;
+    if (t) b = { x: b.x + t.matrix.e, y: b.y + t.matrix.f, width: b.width, height: b.height };
     box = box ? { x: Math.min(box.x, b.x), y: Math.min(box.y, b.y),
       x2: Math.max(box.x2, b.x + b.width), y2: Math.max(box.y2, b.y + b.height) }
       : { x: b.x, y: b.y, x2: b.x + b.width, y2: b.y + b.height };
