@@ -550,7 +550,21 @@ fn draw_object(f: &Pen, obj: &Object, labels: &Placement, g: El) -> El {
         }
         Geom::Table { at, rows } => {
             for (block, corner) in table_blocks(*at, rows) {
-                g = draw_table(f, corner, &block, g);
+                g = match is_heading(&block) {
+                    true => draw_table(f, corner, &block, g),
+                    // A block in its own group at its corner: a table the layout sets
+                    // elsewhere (where there is room as the plans grow) changes one
+                    // attribute, not each cell.
+                    false => g.add(draw_table(
+                        &Pen {
+                            shift: corner.coords,
+                            clip: f.clip,
+                        },
+                        corner,
+                        &block,
+                        El::new("g").set("transform", translate([f.x(&corner).0, f.y(&corner).0])),
+                    )),
+                };
             }
         }
         Geom::Scalar { .. } => {}
