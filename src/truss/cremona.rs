@@ -226,8 +226,12 @@ fn write_heading(
 
 /// The length (mm) a numbered member is drawn at least, where the figure draws several
 /// trusses and may draw the numbered one larger: a number a side of it, and room for a
-/// crossing diagonal's beside it.
-const NUMBERED_MEMBER_MM: f64 = 16.0;
+/// crossing diagonal's beside it. Well under the shortest member of a drawing at the book's
+/// scale that carries its numbers (LH Aufgabe 4's member 5, 16.1 mm at 1 : 50), so that a
+/// joint dragged a little does not double the drawing (at 16 mm, a 2 cm move of joint V
+/// did: the sheet went from 656 to 1,105 mm tall); LH Aufgabe 5's 10 mm members are
+/// drawn twice as large, as Tafel I draws its Bauplan.
+const NUMBERED_MEMBER_MM: f64 = 12.0;
 /// The most a numbered drawing is enlarged over the figure's length scale.
 const MOST_ENLARGED: f64 = 4.0;
 
@@ -614,7 +618,7 @@ mod tests {
     use super::*;
 
     /// The numbered drawing of several is enlarged by the least whole factor that draws its
-    /// shortest member 16 mm long, at most four times; a drawing whose members have room
+    /// shortest member 12 mm long, at most four times; a drawing whose members have room
     /// keeps the figure's scale.
     #[test]
     fn a_numbered_drawing_is_enlarged_only_as_far_as_its_numbers_need() {

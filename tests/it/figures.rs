@@ -167,3 +167,37 @@ fn the_book_values_take_the_sheets_empty_room() {
         assert!(with.contains(cell) && !without.contains(cell), "{cell}");
     }
 }
+
+/// A joint dragged a little keeps the drawing's scale: LH Aufgabe 4's member 5 (III–V) is
+/// 16.1 mm at the book's 1 : 50, and joint V moved 2 cm up and right (member 5 then 15.6 mm)
+/// neither enlarges the four trusses nor grows the sheet past a few millimetres.
+#[test]
+fn a_joint_dragged_a_little_keeps_the_drawings_scale() {
+    let text = std::fs::read_to_string("scenes/lh_aufgabe4_shed_roof.json").unwrap();
+    let sheet = |text: &str| {
+        let problem = AnyScene::from_json(text, "lh_aufgabe4_shed_roof.json")
+            .unwrap()
+            .into_problem();
+        let board = problem.construct(BoardConfig::DRAWING).unwrap();
+        let svg = graphostatik::render::figure(&problem.figure_meta(), &board, None);
+        assert!(
+            !svg.contains("lengths 1 :"),
+            "a truss drawn at a scale of its own"
+        );
+        let view = svg.split("viewBox=\"").nth(1).unwrap();
+        let v: Vec<f64> = (view.split('"').next().unwrap().split(' '))
+            .map(|x| x.parse().unwrap())
+            .collect();
+        (v[2], v[3])
+    };
+    let mut moved: Value = serde_json::from_str(&text).unwrap();
+    let v = moved.pointer_mut("/joints/4/at_m").unwrap();
+    assert_eq!(v, &serde_json::json!([3.34641, 0.6]), "joint V");
+    *v = serde_json::json!([3.36641, 0.62]);
+    let (w0, h0) = sheet(&text);
+    let (w1, h1) = sheet(&moved.to_string());
+    assert!(
+        (w1 - w0).abs() < 20.0 && (h1 - h0).abs() < 20.0,
+        "{w0}x{h0} -> {w1}x{h1}"
+    );
+}
