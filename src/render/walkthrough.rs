@@ -756,10 +756,10 @@ main { display: flex; height: calc(100vh - 4em); }
 .wt-outcome { color: #7a4d00; }
 .wt-unseen { color: #555; font-style: italic; }
 .wt-sub { margin: 0.1em 0 0 1em; }
-.wt-checks { border-collapse: collapse; font-size: 0.85em; margin-top: 0.4em; }
-.wt-checks td, .wt-checks th { border-top: 1px solid #ddd; padding: 0.15em 0.4em; text-align: right; vertical-align: top; }
+.wt-checks { border-collapse: collapse; font-size: 0.8em; margin-top: 0.4em; }
+.wt-checks td, .wt-checks th { border-top: 1px solid #ddd; padding: 0.15em 0.2em; text-align: right; vertical-align: top; }
 .wt-checks td { white-space: nowrap; }
-.wt-checks td:first-child, .wt-checks th:first-child { text-align: left; white-space: normal; min-width: 12em; }
+.wt-checks td:first-child, .wt-checks th:first-child { text-align: left; white-space: normal; min-width: 6.5em; }
 #wt-print { display: none; }
 @media print {
   header, main { display: none; }

@@ -119,6 +119,16 @@ fn a_student_pages_through_a_walkthrough_with_the_keyboard() {
                 "{now}"
             );
         }
+        // The check columns stay in view in a window 1,400 px wide: the details beside the
+        // figure do not scroll sideways.
+        let over =
+            "var e = document.getElementById('wt-now'); return e.scrollWidth - e.clientWidth;";
+        assert_eq!(
+            s.script(over),
+            serde_json::json!(0),
+            "step {}: the checks scroll",
+            step.id
+        );
         let (visible, current) = shown(&s);
         assert_eq!(visible as usize, i + 1, "layers shown at step {}", step.id);
         assert_eq!(current, vec![u64::from(step.id.0)]);
