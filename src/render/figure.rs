@@ -168,11 +168,7 @@ impl Sheet<'_> {
         let shifts = anchored(board, super::layout::part_shifts(board).unwrap_or_default());
         let board = match shifts.is_empty() {
             true => std::borrow::Cow::Borrowed(board),
-            false => {
-                let mut moved = board.clone();
-                moved.move_parts(|p| shifts.get(&p).copied().unwrap_or_else(Vector::zeros));
-                std::borrow::Cow::Owned(moved)
-            }
+            false => std::borrow::Cow::Owned(super::layout::moved_by(board, &shifts)),
         };
         let frame = frame_of(&board, meta);
         let labels = placed(&board, &frame);
@@ -550,21 +546,7 @@ fn draw_object(f: &Pen, obj: &Object, labels: &Placement, g: El) -> El {
         }
         Geom::Table { at, rows } => {
             for (block, corner) in table_blocks(*at, rows) {
-                g = match is_heading(&block) {
-                    true => draw_table(f, corner, &block, g),
-                    // A block in its own group at its corner: a table the layout sets
-                    // elsewhere (where there is room as the plans grow) changes one
-                    // attribute, not each cell.
-                    false => g.add(draw_table(
-                        &Pen {
-                            shift: corner.coords,
-                            clip: f.clip,
-                        },
-                        corner,
-                        &block,
-                        El::new("g").set("transform", translate([f.x(&corner).0, f.y(&corner).0])),
-                    )),
-                };
+                g = draw_table(f, corner, &block, g);
             }
         }
         Geom::Scalar { .. } => {}
@@ -572,18 +554,25 @@ fn draw_object(f: &Pen, obj: &Object, labels: &Placement, g: El) -> El {
     g
 }
 
-/// One block of a table, its top-left corner at `at`.
-fn draw_table(f: &Pen, at: Point, rows: &[Vec<String>], g: El) -> El {
+/// One block of a table, its top-left corner at `at`: a heading as a text, a block of rows
+/// in a group of its own translated to its corner, so that a table the layout sets elsewhere
+/// (where there is room as the plans grow) changes one attribute, not each cell.
+fn draw_table(pen: &Pen, at: Point, rows: &[Vec<String>], parent: El) -> El {
     if is_heading(rows) {
         let p = Point::new(at.x, at.y - 0.8 * HEADING_ROW);
-        return g.add(
+        return parent.add(
             El::text("text", sheet_text(&subscripts(&rows[0][0])).into_owned())
                 .set("class", "heading")
-                .set("x", f.x(&p))
-                .set("y", f.y(&p)),
+                .set("x", pen.x(&p))
+                .set("y", pen.y(&p)),
         );
     }
-    let mut g = g;
+    let mut g = El::new("g").set("transform", translate([pen.x(&at).0, pen.y(&at).0]));
+    // The cells in the block's own coordinates.
+    let f = &Pen {
+        shift: at.coords,
+        clip: pen.clip,
+    };
     let at = &at;
     let cols = table_columns(rows);
     for (i, row) in rows.iter().enumerate() {
@@ -621,7 +610,7 @@ fn draw_table(f: &Pen, at: Point, rows: &[Vec<String>], g: El) -> El {
             ));
         }
     }
-    g
+    parent.add(g)
 }
 
 /// A straight line on the sheet from `a` to `b` in the given class.

@@ -480,10 +480,14 @@ fn room(placed: &[[f64; 4]], marks: &[Mark], free: [f64; 4], wanted: [f64; 4]) -
 /// The board with its parts set out, or `None` where it draws in one part only (then it is
 /// drawn as constructed).
 pub fn laid_out(board: &Board) -> Option<Board> {
-    let shift = part_shifts(board)?;
+    Some(moved_by(board, &part_shifts(board)?))
+}
+
+/// The board with each part moved by its shift (a part not named stays).
+pub(crate) fn moved_by(board: &Board, shifts: &BTreeMap<Part, Vector>) -> Board {
     let mut moved = board.clone();
-    moved.move_parts(|p| shift.get(&p).copied().unwrap_or_else(Vector::zeros));
-    Some(moved)
+    moved.move_parts(|p| shifts.get(&p).copied().unwrap_or_else(Vector::zeros));
+    moved
 }
 
 /// How far [`laid_out`] moves each part of `board` (mm on the sheet); `None` where the
