@@ -11,8 +11,8 @@
 
 use crate::protocol::{Board, BoardConfig, FigureMeta, ObjId};
 use crate::render::{
-    figure_with_points, list_lines, page_count, page_details, page_ranges, step_names,
-    walkthrough_item, walkthrough_list, Grouping,
+    figure_held, list_lines, page_count, page_details, page_ranges, step_names, walkthrough_item,
+    walkthrough_list, Grouping, Layout,
 };
 use crate::scene::{handles, AnyScene, Handle, Preview};
 use serde::Serialize;
@@ -238,6 +238,10 @@ pub struct Kept {
     origin: String,
     /// Its answer without the walk-through (no items, details or steps) and the figure.
     drawn: Built,
+    /// Its figure's title block, and the layout its figure was drawn with: that of the
+    /// figure before it during a drag ([`Layout`]).
+    meta: FigureMeta,
+    layout: Layout,
     names: OnceCell<Vec<String>>,
     pages: OnceCell<Vec<Range<usize>>>,
 }
@@ -255,6 +259,29 @@ impl Kept {
     /// Whether this is the construction of the scene `text` named `origin`.
     pub fn is_of(&self, text: &str, origin: &str) -> bool {
         self.text == text && self.origin == origin
+    }
+
+    /// Whether its figure was laid out afresh, as `render` draws it (not with the layout of
+    /// a drag's figure before it: [`Layout`]).
+    pub fn is_laid_out_afresh(&self) -> bool {
+        self.layout.is_fresh()
+    }
+
+    /// Draws the figure anew, laid out afresh (the construction is not made again): the
+    /// figure of the scene as `render` draws it, for the page once the pointer rests.
+    fn redraw(&mut self) -> String {
+        let handles = self
+            .drawn
+            .handles
+            .iter()
+            .map(|h| h.handle.clone())
+            .collect();
+        let sliders = std::mem::take(&mut self.drawn.sliders);
+        let (mut b, layout) = drawn(&self.meta, &self.board, handles, sliders, None);
+        let svg = std::mem::take(&mut b.svg);
+        self.drawn = b;
+        self.layout = layout;
+        svg
     }
 
     /// What page `k` shows beside the figure (as [`Built::details`] holds it for [`Ask::All`]);
@@ -283,7 +310,17 @@ impl Kept {
 /// assert!(kept.details(pages).is_none());
 /// ```
 pub fn replay_kept(scene: &str, origin: &str, ask: Ask) -> (String, String, Option<Kept>) {
-    let (answer, svg, kept) = match build_asked(scene, origin, ask) {
+    replay_held(scene, origin, ask, None)
+}
+
+/// [`replay_kept`], the figure drawn with the layout `held` where it still holds ([`Layout`]).
+fn replay_held(
+    scene: &str,
+    origin: &str,
+    ask: Ask,
+    held: Option<&Layout>,
+) -> (String, String, Option<Kept>) {
+    let (answer, svg, kept) = match build_held(scene, origin, ask, held) {
         Ok((mut b, kept)) => {
             let svg = std::mem::take(&mut b.svg);
             (Answer::Built(Box::new(b)), svg, Some(kept))
@@ -298,7 +335,12 @@ pub fn replay_kept(scene: &str, origin: &str, ask: Ask) -> (String, String, Opti
 /// last); else the scene is built, its figure returned and its construction kept (a refused
 /// scene keeps the one before, whose figure the page still shows). A page replays the
 /// scene of its last drag once more when the pointer is released, for the step list: the
-/// crane bridge of LH Aufgabe 5 then constructs and draws nothing again.
+/// crane bridge of LH Aufgabe 5 then constructs nothing again.
+///
+/// A drag's figure ([`Ask::Page`]) is drawn with the layout of the figure kept while that
+/// layout holds ([`Layout`]): the parts stand still under the pointer. Asked for anything
+/// else, a figure drawn so is drawn again laid out afresh (the construction kept): the
+/// figure once the pointer rests is the one `render` draws of the scene.
 ///
 /// ```
 /// use graphostatik::web::{replay_into, replay_kept, Ask};
@@ -318,11 +360,16 @@ pub fn replay_into(
     origin: &str,
     ask: Ask,
 ) -> (String, Option<String>) {
-    if let Some(k) = kept.as_ref().filter(|k| k.is_of(scene, origin)) {
+    let drag = matches!(ask, Ask::Page(_));
+    if let Some(k) = kept.as_mut().filter(|k| k.is_of(scene, origin)) {
+        // The pointer rests on a figure drawn with a drag's layout: laid out afresh.
+        let svg = (!drag && !k.is_laid_out_afresh()).then(|| k.redraw());
         let answer = Answer::Built(Box::new(k.answer(ask)));
-        return (answer_json(&answer, origin), None);
+        return (answer_json(&answer, origin), svg);
     }
-    let (json, svg, fresh) = replay_kept(scene, origin, ask);
+    // A drag keeps the layout of the figure before it while that holds.
+    let held = kept.as_ref().filter(|_| drag).map(|k| &k.layout);
+    let (json, svg, fresh) = replay_held(scene, origin, ask, held);
     if fresh.is_some() {
         *kept = fresh;
     }
@@ -341,6 +388,16 @@ pub fn build_page(text: &str, origin: &str, page: Option<usize>) -> Result<Built
 
 /// The construction of `text` with what `ask` says, and the construction kept.
 pub fn build_asked(text: &str, origin: &str, ask: Ask) -> Result<(Built, Kept), String> {
+    build_held(text, origin, ask, None)
+}
+
+/// [`build_asked`], the figure drawn with the layout `held` where it still holds.
+fn build_held(
+    text: &str,
+    origin: &str,
+    ask: Ask,
+    held: Option<&Layout>,
+) -> Result<(Built, Kept), String> {
     let scene = AnyScene::from_json(text, origin).map_err(|e| e.to_string())?;
     let sliders = sliders(scene.preview(), text, origin)?;
     let p = scene.problem();
@@ -351,7 +408,7 @@ pub fn build_asked(text: &str, origin: &str, ask: Ask) -> Result<(Built, Kept), 
             None => format!("{origin}: {e}"),
         })?;
     let meta = p.figure_meta();
-    let mut built = drawn(&meta, &board, handles(&scene, &board), sliders);
+    let (mut built, layout) = drawn(&meta, &board, handles(&scene, &board), sliders, held);
     let svg = std::mem::take(&mut built.svg);
     let kept_part = built.clone();
     built.svg = svg;
@@ -364,22 +421,26 @@ pub fn build_asked(text: &str, origin: &str, ask: Ask) -> Result<(Built, Kept), 
             text: text.to_string(),
             origin: origin.to_string(),
             drawn: kept_part,
+            meta,
+            layout,
             names,
             pages: OnceCell::new(),
         },
     ))
 }
 
-/// The answer of a constructed board but for its walk-through ([`list_into`]).
+/// The answer of a constructed board but for its walk-through ([`list_into`]), its figure
+/// drawn with the layout `held` where it still holds, and the layout it was drawn with.
 fn drawn(
     meta: &FigureMeta,
     board: &Board,
     handles: Vec<Handle>,
     sliders: Vec<SliderLine>,
-) -> Built {
+    held: Option<&Layout>,
+) -> (Built, Layout) {
     let mut ids: Vec<ObjId> = handles.iter().map(|h| h.object).collect();
     ids.extend(handles.iter().filter_map(Handle::center));
-    let (svg, at) = figure_with_points(meta, board, &ids);
+    let (svg, at, layout) = figure_held(meta, board, &ids, held);
     let n = handles.len();
     let mut centers = at[n..].iter();
     let placed = (handles.into_iter().zip(&at[..n]))
@@ -396,7 +457,7 @@ fn drawn(
         })
         .collect();
     let checks = check_lines(board);
-    Built {
+    let built = Built {
         ok: true,
         title: meta.title.to_string(),
         source: meta.source.to_string(),
@@ -411,7 +472,8 @@ fn drawn(
         checks,
         handles: placed,
         sliders,
-    }
+    };
+    (built, layout)
 }
 
 /// Every check of `board` with its step, as the page lists it.
@@ -574,6 +636,62 @@ mod tests {
             assert!(kept.as_ref().is_some_and(|k| k.is_of(&other, "y.json")));
             assert_eq!(replay_into(&mut kept, &other, "y.json", Ask::Lines).1, None);
         }
+    }
+
+    /// A drag draws its figures with the layout of the figure it started from: the parts
+    /// stand where they stood (every layer's place as before), where a fresh layout moves
+    /// them; the pointer at rest draws the figure as `render` does, byte for byte.
+    #[test]
+    fn a_drag_keeps_its_layout_and_the_figure_at_rest_is_laid_out_afresh() {
+        use super::{replay_into, replay_kept};
+        let path = format!(
+            "{}/scenes/lh_aufgabe4_shed_roof.json",
+            env!("CARGO_MANIFEST_DIR")
+        );
+        let text = std::fs::read_to_string(path).unwrap();
+        let support = "{ \"name\": \"I\", \"at_m\": [0, 0] }";
+        assert!(text.contains(support));
+        let moved = |x: f64| {
+            text.replace(
+                support,
+                &format!("{{ \"name\": \"I\", \"at_m\": [{x}, 0] }}"),
+            )
+        };
+        // Where each step's layer is moved to (the part's place on the sheet).
+        let places = |svg: &str| -> Vec<String> {
+            (svg.lines())
+                .filter(|l| l.starts_with("<g ") && l.contains("data-step"))
+                .map(|l| l.split(" transform=").nth(1).unwrap_or("").to_string())
+                .collect()
+        };
+        let mut kept = None;
+        let start = replay_into(&mut kept, &text, "x.json", Ask::Lines)
+            .1
+            .unwrap();
+        assert!(kept.as_ref().unwrap().is_laid_out_afresh());
+        let mut afresh_moves = 0;
+        for k in 1..=4 {
+            let scene = moved(0.02 * f64::from(k));
+            let svg = replay_into(&mut kept, &scene, "x.json", Ask::Page(0))
+                .1
+                .unwrap();
+            assert!(!kept.as_ref().unwrap().is_laid_out_afresh(), "drag {k}");
+            assert_eq!(places(&svg), places(&start), "drag {k}");
+            let (_, fresh, _) = replay_kept(&scene, "x.json", Ask::Lines);
+            afresh_moves += usize::from(places(&fresh) != places(&start));
+        }
+        assert!(
+            afresh_moves > 0,
+            "a fresh layout moves the parts too: the test tells nothing"
+        );
+        // The pointer released: the figure laid out afresh, as `render` draws it.
+        let scene = moved(0.08);
+        let (json, svg) = replay_into(&mut kept, &scene, "x.json", Ask::Lines);
+        let (fresh_json, fresh_svg, _) = replay_kept(&scene, "x.json", Ask::Lines);
+        assert_eq!(svg, Some(fresh_svg));
+        assert_eq!(json, fresh_json);
+        assert!(kept.as_ref().unwrap().is_laid_out_afresh());
+        assert_eq!(replay_into(&mut kept, &scene, "x.json", Ask::Lines).1, None);
     }
 
     /// A drag's answer names its page's steps as the full step list does, alike steps told

@@ -9,7 +9,8 @@ use crate::fmt::{num, sheet_text, subscripts};
 use crate::kernel::construct::clip_to_rect;
 use crate::kernel::tolerance::{MIN_DRAWN_MM, NICE_SCALE_SLACK};
 use crate::kernel::{Point, Vector};
-use crate::protocol::{Board, FigureMeta, Geom, Label, Object, Role, ScaleBar, Step, StepId};
+use crate::protocol::{Board, FigureMeta, Geom, Label, Object, Part, Role, ScaleBar, Step, StepId};
+use std::borrow::Cow;
 
 /// Sheet coordinates (mm, y up) to SVG user units (mm, y down), and the drawn region.
 struct Frame {
@@ -155,7 +156,7 @@ fn placed(board: &Board, f: &Frame) -> Placement {
 /// A board made ready to draw: its parts set out ([`super::layout`]), its frame and its
 /// lettering placed. What [`figure`] draws and [`inspect`] measures.
 struct Sheet<'a> {
-    board: std::borrow::Cow<'a, Board>,
+    board: Cow<'a, Board>,
     frame: Frame,
     labels: Placement,
     /// How far the layout moved each part ([`super::layout::part_shifts`]); empty where
@@ -166,10 +167,11 @@ struct Sheet<'a> {
 impl Sheet<'_> {
     fn of<'a>(meta: &FigureMeta, board: &'a Board) -> Sheet<'a> {
         let shifts = anchored(board, super::layout::part_shifts(board).unwrap_or_default());
-        let board = match shifts.is_empty() {
-            true => std::borrow::Cow::Borrowed(board),
-            false => std::borrow::Cow::Owned(super::layout::moved_by(board, &shifts)),
-        };
+        Sheet::laid(meta, moved(board, &shifts), shifts)
+    }
+
+    /// The sheet of `board` moved by `shifts` (the layout's, or a layout held).
+    fn laid<'a>(meta: &FigureMeta, board: Cow<'a, Board>, shifts: PartShifts) -> Sheet<'a> {
         let frame = frame_of(&board, meta);
         let labels = placed(&board, &frame);
         Sheet {
@@ -178,6 +180,76 @@ impl Sheet<'_> {
             labels,
             shifts,
         }
+    }
+
+    /// The sheet of `board` with the layout `held` where it still holds ([`Layout`]), else
+    /// laid out afresh as [`Sheet::of`] does; with the layout it was drawn with.
+    fn held<'a>(meta: &FigureMeta, board: &'a Board, held: Option<&Layout>) -> (Sheet<'a>, Layout) {
+        let parts = drawn_parts(board);
+        if let Some(h) = held.filter(|h| h.parts == parts) {
+            let board = moved(board, &h.shifts);
+            let overlaps = super::layout::overlapping_parts(&board);
+            if overlaps.iter().all(|p| h.overlaps.contains(p)) {
+                let layout = Layout {
+                    fresh: false,
+                    ..h.clone()
+                };
+                return (Sheet::laid(meta, board, h.shifts.clone()), layout);
+            }
+        }
+        let sheet = Sheet::of(meta, board);
+        let layout = Layout {
+            shifts: sheet.shifts.clone(),
+            parts,
+            overlaps: super::layout::overlapping_parts(&sheet.board),
+            fresh: true,
+        };
+        (sheet, layout)
+    }
+}
+
+/// `board` with each part moved by its shift (borrowed where nothing moves).
+fn moved<'a>(board: &'a Board, shifts: &PartShifts) -> Cow<'a, Board> {
+    match shifts.is_empty() {
+        true => Cow::Borrowed(board),
+        false => Cow::Owned(super::layout::moved_by(board, shifts)),
+    }
+}
+
+/// The parts `board` draws in, in part order.
+fn drawn_parts(board: &Board) -> Vec<Part> {
+    let parts: std::collections::BTreeSet<Part> = (board.steps().iter())
+        .filter(|s| !s.part.hidden)
+        .map(|s| s.part)
+        .collect();
+    parts.into_iter().collect()
+}
+
+/// The layout a figure was drawn with ([`figure_held`]): how far each part was moved, the
+/// parts there were and which pairs of them overlapped.
+///
+/// A drag draws its figures with the layout of the figure it started from while that still
+/// holds: the same parts, and no pair of them overlapping that did not then (two boxes, or
+/// a table and a mark of another part: [`super::layout::overlapping_parts`]). The parts then
+/// stand still on the sheet while the pointer moves, as a drafter's sheet does, and a
+/// replay changes what the construction moved, not the place of every part the layout
+/// would move by a millimetre (the shed roof of LH Aufgabe 4: its four Cremona plans move
+/// with every change of the truss's size). A layout that no longer holds (a plan grown into
+/// the one beside it) is made afresh. The figure drawn once the pointer rests is laid out
+/// afresh, as `render` draws it: the same scene, the same bytes.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Layout {
+    shifts: PartShifts,
+    parts: Vec<Part>,
+    overlaps: Vec<(Part, Part)>,
+    fresh: bool,
+}
+
+impl Layout {
+    /// Whether the figure was laid out afresh (it is the figure [`figure`] draws), not with
+    /// a layout held.
+    pub fn is_fresh(&self) -> bool {
+        self.fresh
     }
 }
 
@@ -1051,14 +1123,51 @@ pub fn figure_with_points(
     board: &Board,
     ids: &[crate::protocol::ObjId],
 ) -> (String, Vec<Option<[f64; 2]>>) {
-    let sheet = Sheet::of(meta, board);
+    let (svg, at, _) = figure_held(meta, board, ids, None);
+    (svg, at)
+}
+
+/// [`figure_with_points`] with the layout `held` where it still holds ([`Layout`]; `None`:
+/// laid out afresh), and the layout the figure was drawn with: the browser's engine draws a
+/// drag's figures so.
+///
+/// ```
+/// use graphostatik::protocol::{Board, FigureMeta, Note, Part, Role, Topic};
+/// use graphostatik::kernel::Point;
+/// use graphostatik::render::{figure_held, figure_with_points};
+/// let n = Note::new("given", Topic::Custom("demo"));
+/// let two = |x: f64| {
+///     let mut b = Board::recording();
+///     b.point(Point::new(0.0, 0.0), Role::Given.named("A"), n.clone());
+///     b.point(Point::new(x, 10.0), Role::Given.named("B"), n.clone());
+///     b.set_part(Part::at(0, 1));
+///     b.point(Point::new(0.0, 0.0), Role::Given.named("C"), n.clone());
+///     b
+/// };
+/// let meta = FigureMeta::titled("Two parts");
+/// let (first, _, layout) = figure_held(&meta, &two(30.0), &[], None);
+/// assert!(layout.is_fresh() && first == figure_with_points(&meta, &two(30.0), &[]).0);
+/// // A dragged a little: the second part stays where it stood.
+/// let (_, _, kept) = figure_held(&meta, &two(31.0), &[], Some(&layout));
+/// assert!(!kept.is_fresh());
+/// // Dragged into the second part: laid out afresh.
+/// let (_, _, fresh) = figure_held(&meta, &two(60.0), &[], Some(&layout));
+/// assert!(fresh.is_fresh());
+/// ```
+pub fn figure_held(
+    meta: &FigureMeta,
+    board: &Board,
+    ids: &[crate::protocol::ObjId],
+    held: Option<&Layout>,
+) -> (String, Vec<Option<[f64; 2]>>, Layout) {
+    let (sheet, layout) = Sheet::held(meta, board, held);
     let at = (ids.iter())
         .map(|&id| match sheet.board.object(id).map(|o| &o.geom) {
             Some(Geom::Point { at }) => Some(sheet.frame.at(at)),
             _ => None,
         })
         .collect();
-    (draw(meta, sheet, None).0, at)
+    (draw(meta, sheet, None).0, at, layout)
 }
 
 /// Draws a sheet made ready: the title block, then one layer per step up to `upto`.

@@ -147,26 +147,35 @@ pub fn overlapping_pairs(boxes: &[PartBox]) -> usize {
 /// where neither part is free, else a free part (a table) whose box meets a mark of the
 /// other part (it may stand inside a large part's box where that is empty).
 pub fn part_overlaps(board: &Board) -> usize {
+    overlapping_parts(board).len()
+}
+
+/// The pairs of parts that overlap on the board as it is laid out, as [`part_overlaps`]
+/// counts them, each pair in part order. A drag keeps the layout it started with while no
+/// pair overlaps that did not then ([`crate::render::Layout`]).
+pub fn overlapping_parts(board: &Board) -> Vec<(Part, Part)> {
     let boxes = part_boxes(board);
-    let marks = part_marks(board);
+    let marks = std::cell::OnceCell::new();
     let touch = |free: &PartBox, other: Part| {
+        let marks: &BTreeMap<Part, Vec<Mark>> = marks.get_or_init(|| part_marks(board));
         (marks.get(&other)).is_some_and(|ms| ms.iter().any(|m| m.meets(free.bounds)))
     };
-    (boxes.iter().enumerate())
-        .map(|(i, a)| {
-            (boxes[i + 1..].iter())
-                .filter(|b| {
-                    overlap(&a.bounds, &b.bounds)
-                        && match (a.part.free, b.part.free) {
-                            (false, false) => true,
-                            (true, false) => touch(a, b.part),
-                            (false, true) => touch(b, a.part),
-                            (true, true) => touch(a, b.part) || touch(b, a.part),
-                        }
-                })
-                .count()
-        })
-        .sum()
+    let mut out = Vec::new();
+    for (i, a) in boxes.iter().enumerate() {
+        for b in &boxes[i + 1..] {
+            let met = overlap(&a.bounds, &b.bounds)
+                && match (a.part.free, b.part.free) {
+                    (false, false) => true,
+                    (true, false) => touch(a, b.part),
+                    (false, true) => touch(b, a.part),
+                    (true, true) => touch(a, b.part) || touch(b, a.part),
+                };
+            if met {
+                out.push((a.part, b.part));
+            }
+        }
+    }
+    out
 }
 
 /// The widths a row of packed parts is tried at before it goes on in a line under it (mm):

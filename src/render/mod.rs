@@ -21,7 +21,10 @@ mod xml;
 pub use crate::protocol::{FigureMeta, ScaleBar};
 pub use book::{book_rows, book_table_text, BookRow, Verdict};
 pub use drafting::drafting_table_text;
-pub use figure::{figure, figure_lettered, figure_with_points, inspect, FigureReport, Lettering};
+pub use figure::{
+    figure, figure_held, figure_lettered, figure_with_points, inspect, FigureReport, Layout,
+    Lettering,
+};
 pub use plot::{accuracy_plot_svg, accuracy_table_text};
 pub use table::{
     check_rows, check_table_json, check_table_text, reference_rows, reference_table_json,
