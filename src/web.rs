@@ -694,6 +694,44 @@ mod tests {
         assert_eq!(replay_into(&mut kept, &scene, "x.json", Ask::Lines).1, None);
     }
 
+    /// Every bundled scene gives the student something to move on its page (a handle, or a
+    /// slider of `preview.sliders`), and a slider's first step either way is a scene the
+    /// engine constructs: the page's latency bench moves exactly that.
+    #[test]
+    fn every_bundled_scene_has_something_to_move() {
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes");
+        let mut paths: Vec<_> = (std::fs::read_dir(dir).unwrap().flatten())
+            .map(|e| e.path())
+            .filter(|p| p.extension().is_some_and(|x| x == "json"))
+            .collect();
+        paths.sort();
+        assert!(paths.len() >= 50, "{}", paths.len());
+        for path in paths {
+            let text = std::fs::read_to_string(&path).unwrap();
+            let name = path.display().to_string();
+            let (built, _) = build_asked(&text, &name, Ask::Page(0)).unwrap();
+            assert!(
+                !built.handles.is_empty() || !built.sliders.is_empty(),
+                "{name}: nothing to drag or slide"
+            );
+            let Some(sl) = built.sliders.first().filter(|_| built.handles.is_empty()) else {
+                continue;
+            };
+            let scene: serde_json::Value = serde_json::from_str(&text).unwrap();
+            for v in [sl.value + sl.step, sl.value - sl.step] {
+                assert!(sl.min <= v && v <= sl.max, "{name}: {v} outside the slider");
+                let mut moved = scene.clone();
+                let v = match v.fract() == 0.0 {
+                    true => serde_json::json!(v as i64),
+                    false => serde_json::json!(v),
+                };
+                *moved.pointer_mut(&sl.field).unwrap() = v.clone();
+                let r = build_asked(&moved.to_string(), &name, Ask::Page(0));
+                assert!(r.is_ok(), "{name}, {} = {v}: {:?}", sl.field, r.err());
+            }
+        }
+    }
+
     /// A drag's answer names its page's steps as the full step list does, alike steps told
     /// apart the same way ("joint load P₀ (3 of 4)"): the page's name is found without naming
     /// every step.

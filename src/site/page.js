@@ -509,7 +509,7 @@ function apply(a, moved) {
     if (!patched) hold(next);
     // (The walk-through's zoom may have set the view box; the drag holds it.)
     else if (next.getAttribute('viewBox') !== drag.held.viewBox) next.setAttribute('viewBox', drag.held.viewBox);
-    var h = sameHandle(a, drag.index);
+    var h = drag.h && sameHandle(a, drag.index);
     if (h) {
       var an = anchor(h), target = drag.h.drag.kind === 'angle' ? drag.a0
         : [drag.p.x - drag.p0.x + drag.a0[0], drag.p.y - drag.p0.y + drag.a0[1]];
@@ -596,6 +596,15 @@ function grab(i, p0, inv) {
     value: h.drag.value ? h.drag.value.slice() : null };
   figure.classList.add('gs-dragging');
 }
+// Holds the sheet as it stands while a slider moves (no handle held: `drag.h` is null):
+// the figure keeps its size and scale on the screen until the slider is let go, as during
+// a drag.
+function holdSheet() {
+  if (drag) return;
+  var s = svg();
+  drag = { h: null, held: { viewBox: s.getAttribute('viewBox'), width: s.getAttribute('width'),
+    height: s.getAttribute('height') } };
+}
 // Lets go of the sheet: its own size and view box, as the last answer gave them.
 function letGo() {
   drag = null;
@@ -617,7 +626,7 @@ figure.addEventListener('pointerdown', function (e) {
   e.preventDefault();
 });
 figure.addEventListener('pointermove', function (e) {
-  if (!drag) return;
+  if (!drag || !drag.h) return;
   var p = toSheet(e, drag.inv), d = drag.h.drag;
   drag.p = p;
   if (d.kind === 'point') {
@@ -634,7 +643,7 @@ figure.addEventListener('pointermove', function (e) {
   request();
 });
 function endDrag() {
-  if (!drag) return;
+  if (!drag || !drag.h) return;
   letGo();
   if (!replay(false, false)) {
     if (stale) settle(); else { window.graphostatikWalk.rebind(); drawHandles(); }
@@ -646,10 +655,14 @@ figure.addEventListener('pointercancel', endDrag);
 var form = el('wt-sliders');
 if (form) {
   form.addEventListener('submit', function (e) { e.preventDefault(); });
-  form.addEventListener('change', function () { if (!replay(false, false)) settle(); });
+  form.addEventListener('change', function () {
+    if (drag && !drag.h) letGo();
+    if (!replay(false, false)) settle();
+  });
   form.addEventListener('input', function (e) {
     var input = e.target;
     if (!input.dataset.field) return;
+    holdSheet();
     input.nextElementSibling.textContent = input.value;
     setField(scene, input.dataset.field, Number(input.value));
     request();
@@ -702,18 +715,23 @@ window.graphostatikSite = {
   counts: counts,
   // Replays the scene `n` times as a drag makes it, each replay drawing a figure other than
   // the one shown: the first handle moved by 0.5 to 2 mm (a crank turned by 2 to 8 degrees)
-  // from where it was, in turn; the scene is put back after. Engine and page update, ms
+  // from where it was, in turn, or where the scene has no handle its first slider by 1 to 4
+  // steps (`moved` names what moved; null: nothing, each replay the same scene); the scene
+  // is put back after. Engine and page update, ms
   // each, of the replays the engine took (`steps`: the step count of each; `before`: that
   // of the figure shown before them), and as `release` the full answer put in place after
   // them, as when the pointer is released; `full` also puts the step list in place each
   // time. `held`: the handle is held as a pointer holds it (the sheet's size and view box
   // kept until the release, the sheet moved under the handle), as a drag's replays are.
   bench: function (n, full, held) {
-    var out = [], h = handles[0], was = clone(scene);
+    var out = [], h = handles[0], sl = !h && last && last.sliders[0], was = clone(scene);
     out.before = last && last.step_count;
+    out.moved = h ? h.name : sl ? sl.label : null;
     if (held && h) grab(0);
+    else if (held && sl) holdSheet();
     for (var i = 0; i < n; i++) {
       if (h) nudge(h, was, i);
+      else if (sl) slide(sl, was, i);
       var t = replay(true, !full);
       if (t && t.ok) out.push(t);
     }
@@ -727,6 +745,12 @@ window.graphostatikSite = {
     return out;
   }
 };
+// The i-th of the bench's moves of slider `sl` where the scene has no handle: 1 to 4 of its
+// steps from its value in `base` (down where up would pass its end).
+function slide(sl, base, i) {
+  var v = getField(base, sl.field), m = (i % 4 + 1) * sl.step;
+  setField(scene, sl.field, Number((v + m <= sl.max ? v + m : v - m).toPrecision(12)));
+}
 // The i-th of the bench's moves of handle h, from its value in `base` (an angle the scene
 // leaves to its default: from where the handle stands).
 function nudge(h, base, i) {

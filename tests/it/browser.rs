@@ -703,7 +703,7 @@ fn replay_latency() {
         out.stdout.len()
     };
     println!(
-        "engine: {:.2} MB, {:.2} MB gzipped\n\n| scene | steps | engine median ms | page median ms, parsed anew | page median ms, in place | page worst ms, in place | set in place | step count changed: replays, worst ms | release ms | page's phases, mean ms |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---|",
+        "engine: {:.2} MB, {:.2} MB gzipped\n\n| scene | moved | steps | engine median ms | page median ms, parsed anew | page median ms, in place | page worst ms, in place | set in place | step count changed: replays, worst ms | release ms | page's phases, mean ms |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|",
         std::fs::metadata(&wasm).unwrap().len() as f64 / 1e6,
         gz as f64 / 1e6
     );
@@ -745,10 +745,12 @@ fn replay_latency() {
              return [S.answer().steps, median(t, function (x) { return x.engine; }),\
                median(window.gsAnew, total), median(t, total), worst,\
                t.filter(function (x) { return x.inPlace; }).length, t.length, ph.join(', '),\
-               moved.length ? moved.length + ', worst ' + movedWorst.toFixed(1) : '–', t.release];",
+               moved.length ? moved.length + ', worst ' + movedWorst.toFixed(1) : '–', t.release,\
+               t.moved];",
         );
         println!(
-            "| {name} | {} | {:.1} | {:.1} | {:.1} | {:.1} | {} of {} | {} | {:.1} | {} |",
+            "| {name} | {} | {} | {:.1} | {:.1} | {:.1} | {:.1} | {} of {} | {} | {:.1} | {} |",
+            v[10].as_str().unwrap_or("nothing"),
             v[0],
             v[1].as_f64().unwrap(),
             v[2].as_f64().unwrap(),
