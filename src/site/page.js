@@ -299,8 +299,9 @@ function applyPatch(p) {
   for (var k in by) {
     var c = shown.kids[k];
     if (!c) { shown = null; return false; }
-    var now = c.lines.slice(), changed = by[k].map(function (x) { now[x[1]] = x[2]; return x[1]; });
-    if (!update(c, now, changed)) { shown = null; return false; }
+    var now = c.lines.slice(), sets = {};
+    var changed = by[k].map(function (x) { now[x[1]] = x[2]; if (x[3]) sets[x[1]] = x[3]; return x[1]; });
+    if (!update(c, now, changed, sets)) { shown = null; return false; }
   }
   for (var i = 0; i < p.children.length; i++) {
     if (!replaceChild(p.children[i][0], p.children[i][1].split('\n'))) return false;
@@ -342,8 +343,9 @@ function splice(sp) {
 }
 // Sets the changed lines of child c in place: a tag's attributes, a text's node; a text
 // whose node does not hold the old line alone (a style sheet's) has its text, style or title
-// written anew.
-function update(c, lines, changed) {
+// written anew. `sets` (from the engine's patch) gives, by line, a tag's attributes that
+// changed as name, value, … (null for one gone), so that neither tag need be read.
+function update(c, lines, changed, sets) {
   var redone = {};
   changed.forEach(function (i) {
     var r = c.root[i];
@@ -353,9 +355,15 @@ function update(c, lines, changed) {
       if (t && t.data === '\n' + decode(c.lines[i]) + '\n') t.data = '\n' + decode(lines[i]) + '\n';
       else { redone[r] = true; rewrite(c, r, lines); }
     } else {
-      setAttributes(c.els[i], c.lines[i], lines[i]);
-      var inline = /^<[^>]*>(.*)<\/[^>]*>$/.exec(lines[i]);
-      if (inline) c.els[i].textContent = decode(inline[1]);
+      var e = c.els[i], set = sets && sets[i];
+      if (set) {
+        for (var j = 0; j < set.length; j += 2) {
+          if (set[j + 1] === null) e.removeAttribute(set[j]);
+          else e.setAttribute(set[j], decode(set[j + 1]));
+        }
+      } else setAttributes(e, c.lines[i], lines[i]);
+      var inline = lines[i].indexOf('</') > 0 && /^<[^>]*>(.*)<\/[^>]*>$/.exec(lines[i]);
+      if (inline) e.textContent = decode(inline[1]);
     }
   });
   c.lines = lines;

@@ -8,10 +8,11 @@
 //! here, the difference costs the engine a comparison of bytes, where the page would split
 //! the whole figure into lines and compare them (the crane bridge's 31,000 lines, 2 MB).
 
-use serde::Serialize;
+use serde::ser::{SerializeMap, SerializeSeq};
+use serde::{Serialize, Serializer};
 
 /// The changes that turn one figure into another: see [`figure_patch`].
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct FigurePatch<'a> {
     /// The root's opening tag, where it changed.
     pub root: Option<&'a str>,
@@ -19,7 +20,6 @@ pub struct FigurePatch<'a> {
     /// its dead centre, a diagonal gone slack): from child `at` on, `removed` children of the
     /// old figure give way to `added`, whole. It is applied first: [`FigurePatch::lines`] and
     /// [`FigurePatch::children`] count the children of the new figure.
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub splice: Option<Splice>,
     /// `(child, line, text)`: line `line` of the root's child `child` (its own first line 0)
     /// is now `text`: a tag with the same name, or a text inside a `text`, `style` or
@@ -27,6 +27,8 @@ pub struct FigurePatch<'a> {
     pub lines: Vec<(usize, usize, &'a str)>,
     /// `(child, text)`: the root's child `child` whose elements changed, whole.
     pub children: Vec<(usize, String)>,
+    /// What each of [`FigurePatch::lines`] held before, in their order.
+    was: Vec<&'a str>,
 }
 
 /// Children of the root put in place of others: see [`FigurePatch::splice`].
@@ -50,10 +52,110 @@ impl FigurePatch<'_> {
     }
 
     /// The patch as the page reads it: `{"root": …, "splice": {"at": …, "removed": …,
-    /// "added": […]}, "lines": [[child, line, text], …], "children": [[child, text], …]}`.
+    /// "added": […]}, "lines": [[child, line, text, sets], …], "children": [[child, text],
+    /// …]}`. `sets`, on a tag's line, lists the attributes that changed as
+    /// `name, value, name, value, …` (the value as written, `null` for one gone), so that
+    /// the page sets them without reading the two tags; a text's line has none.
+    ///
+    /// ```
+    /// use graphostatik::web::figure_patch;
+    /// let old = "<svg>\n<g>\n<line x1=\"0\" y1=\"1\" k=\"a\"/>\n</g>\n</svg>\n";
+    /// let new = "<svg>\n<g>\n<line x1=\"0\" y1=\"2\"/>\n</g>\n</svg>\n";
+    /// let json = figure_patch(old, new).unwrap().to_json();
+    /// assert!(json.contains(r#"[0,1,"<line x1=\"0\" y1=\"2\"/>",["y1","2","k",null]]"#));
+    /// ```
     pub fn to_json(&self) -> String {
         serde_json::to_string(self).unwrap_or_else(|_| String::from("null"))
     }
+}
+
+impl Serialize for FigurePatch<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut m = s.serialize_map(None)?;
+        m.serialize_entry("root", &self.root)?;
+        if let Some(sp) = &self.splice {
+            m.serialize_entry("splice", sp)?;
+        }
+        let lines: Vec<Line> = (self.lines.iter().enumerate())
+            .map(|(i, &(child, line, now))| Line {
+                child,
+                line,
+                now,
+                was: self.was.get(i).copied(),
+            })
+            .collect();
+        m.serialize_entry("lines", &lines)?;
+        m.serialize_entry("children", &self.children)?;
+        m.end()
+    }
+}
+
+/// One of a patch's lines as the page reads it: see [`FigurePatch::to_json`].
+struct Line<'a> {
+    child: usize,
+    line: usize,
+    now: &'a str,
+    was: Option<&'a str>,
+}
+
+impl Serialize for Line<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let was = self.was.filter(|w| matches!(kind(w), Kind::Tag(_)));
+        let mut q = s.serialize_seq(Some(3 + usize::from(was.is_some())))?;
+        q.serialize_element(&self.child)?;
+        q.serialize_element(&self.line)?;
+        q.serialize_element(self.now)?;
+        if let Some(was) = was {
+            q.serialize_element(&AttributeSets(was, self.now))?;
+        }
+        q.end()
+    }
+}
+
+/// The attributes that changed from one tag to the next, flat: see
+/// [`FigurePatch::to_json`].
+struct AttributeSets<'a>(&'a str, &'a str);
+
+impl Serialize for AttributeSets<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let (was, now): (Vec<_>, Vec<_>) =
+            (attributes(self.0).collect(), attributes(self.1).collect());
+        let mut q = s.serialize_seq(None)?;
+        for &(k, v) in &now {
+            if !was.contains(&(k, v)) {
+                q.serialize_element(k)?;
+                q.serialize_element(v)?;
+            }
+        }
+        for &(k, _) in &was {
+            if !now.iter().any(|&(n, _)| n == k) {
+                q.serialize_element(k)?;
+                q.serialize_element(&None::<&str>)?;
+            }
+        }
+        q.end()
+    }
+}
+
+/// The attributes of a tag as written, `name="value"` after a space, in their order (the
+/// page reads a tag's attributes so too).
+fn attributes(tag: &str) -> impl Iterator<Item = (&str, &str)> {
+    let mut rest = tag;
+    std::iter::from_fn(move || loop {
+        let at = rest.find('=')?;
+        let (head, tail) = (&rest[..at], &rest[at + 1..]);
+        let name = head.rsplit(char::is_whitespace).next().unwrap_or("");
+        let started = head.len() > name.len() && !name.is_empty();
+        let Some(value) = tail.strip_prefix('"') else {
+            rest = tail;
+            continue;
+        };
+        let end = value.find('"')?;
+        rest = &value[end + 1..];
+        if started {
+            return Some((name, &value[..end]));
+        }
+    })
 }
 
 /// What changed from the figure `old` to the figure `new` (SVG as the figures are written: a
@@ -80,10 +182,10 @@ impl FigurePatch<'_> {
 /// assert_eq!((s.at, s.removed, s.added), (1, 0, vec!["<text>\nA\n</text>".to_string()]));
 /// assert!(figure_patch(old, "<svg>\n<g>\n</svg>\n").is_none());
 /// ```
-pub fn figure_patch<'a>(old: &str, new: &'a str) -> Option<FigurePatch<'a>> {
+pub fn figure_patch<'a>(old: &'a str, new: &'a str) -> Option<FigurePatch<'a>> {
     let (a, b) = (lines(old), lines(new));
     let (ka, kb) = (children(&a)?, children(&b)?);
-    let was: Vec<&[&str]> = ka.iter().map(|r| &a[r.0..=r.1]).collect();
+    let was: Vec<&[&'a str]> = ka.iter().map(|r| &a[r.0..=r.1]).collect();
     let now: Vec<&[&'a str]> = kb.iter().map(|r| &b[r.0..=r.1]).collect();
     let mut out = FigurePatch {
         root: (a[0] != b[0]).then_some(b[0]),
@@ -111,9 +213,11 @@ pub fn figure_patch<'a>(old: &str, new: &'a str) -> Option<FigurePatch<'a>> {
             continue;
         }
         match changed_lines(was, now) {
-            Some(changed) => out
-                .lines
-                .extend(changed.into_iter().map(|i| (k, i, now[i]))),
+            Some(changed) => {
+                out.was.extend(changed.iter().map(|&i| was[i]));
+                out.lines
+                    .extend(changed.into_iter().map(|i| (k, i, now[i])));
+            }
             None => out.children.push((k, now.join("\n"))),
         }
     }
@@ -311,6 +415,45 @@ mod tests {
         out.join("\n") + "\n"
     }
 
+    /// Each tag's line of the patch as the page reads it: its attributes set as `sets` says
+    /// give the new tag's, and a changed text has no sets.
+    fn sets_turn_each_tag_into_the_next(p: &super::FigurePatch) {
+        use std::collections::BTreeMap;
+        let json: serde_json::Value = serde_json::from_str(&p.to_json()).unwrap();
+        let lines = json["lines"].as_array().unwrap();
+        assert_eq!(lines.len(), p.lines.len());
+        let mut tags = 0;
+        for ((x, &(.., now)), was) in lines.iter().zip(&p.lines).zip(&p.was) {
+            let x = x.as_array().unwrap();
+            let Some(sets) = x.get(3) else {
+                assert!(!was.starts_with('<'), "{was}");
+                continue;
+            };
+            tags += 1;
+            let mut a: BTreeMap<&str, &str> = super::attributes(was).collect();
+            let sets = sets.as_array().unwrap();
+            for kv in sets.chunks(2) {
+                let k = kv[0].as_str().unwrap();
+                match kv[1].as_str() {
+                    Some(v) => a.insert(k, v),
+                    None => a.remove(k),
+                };
+            }
+            let b: BTreeMap<&str, &str> = super::attributes(now).collect();
+            assert_eq!(a, b, "{was} -> {now}");
+        }
+        assert!(tags > 0);
+    }
+
+    /// The attributes are read as the page's pattern reads them.
+    #[test]
+    fn attributes_are_read_as_written() {
+        let tag = r#"<text x="1" class="a b" data-k="p=q">u=v</text>"#;
+        let got: Vec<_> = super::attributes(tag).collect();
+        assert_eq!(got, [("x", "1"), ("class", "a b"), ("data-k", "p=q")]);
+        assert_eq!(super::attributes("<tspan>a=\"b\"</tspan>").count(), 0);
+    }
+
     /// Bundled scenes with their first handle moved as a drag moves it: the patch applied to
     /// the old figure gives the new one, byte for byte, and it is smaller than the figure (the
     /// shed roof's first joint is a support: the whole truss and its four plans move).
@@ -338,7 +481,8 @@ mod tests {
             let p = figure_patch(&old, &new).unwrap_or_else(|| panic!("{name}: no patch"));
             assert!(!p.lines.is_empty(), "{name}");
             assert_eq!(applied(&old, &p), new, "{name}");
-            let size = serde_json::to_string(&p).unwrap().len();
+            sets_turn_each_tag_into_the_next(&p);
+            let size = p.to_json().len();
             assert!(size < new.len(), "{name}: a patch of {size} bytes");
         }
     }
@@ -369,9 +513,11 @@ mod tests {
             let sp = p.splice.as_ref().expect("a splice");
             assert!(sp.added.len() + sp.removed > 0);
             assert_eq!(&applied(old, &p), new);
-            let size = serde_json::to_string(&p).unwrap().len();
+            sets_turn_each_tag_into_the_next(&p);
+            // (A third: each changed tag's attributes are sent beside its line.)
+            let size = p.to_json().len();
             assert!(
-                size < new.len() / 4,
+                size < new.len() / 3,
                 "a patch of {size} bytes for {}",
                 new.len()
             );
