@@ -2,7 +2,7 @@
 //! pointer move (`wasm/`): `web::replay_into` with the construction kept (read the scene,
 //! construct it on a drawing board, draw the figure with the layout of the figure before it
 //! while that holds and its labels placed, the current page's item, the checks and handles,
-//! the answer as JSON), then `web::figure_patch` against the figure before it, as JSON, for
+//! the answer as JSON), then `web::figure_patch_read` against the figure before it (read once, as kept), as JSON, for
 //! every bundled scene. The scene's first handle is moved as the page's latency bench moves
 //! it (0.5 to 2 mm of the sheet, a crank turned by 2 to 8 degrees; where it has none, its
 //! first slider by 1 to 4 steps), the page on its last step as a live page opens.
@@ -12,7 +12,7 @@
 //! figure laid out afresh, `web::replay_apart`); `cargo bench --bench replay -- otto` only
 //! the scenes whose name holds `otto`.
 
-use graphostatik::web::{figure_patch, replay_apart, replay_into, Ask};
+use graphostatik::web::{figure_patch_read, replay_apart, replay_into, Ask, FigureLines};
 use serde_json::Value;
 use std::hint::black_box;
 use std::time::Instant;
@@ -114,7 +114,8 @@ fn main() {
         let answer: Value = serde_json::from_str(&first).unwrap();
         let page = answer["page_count"].as_u64().unwrap_or(1).saturating_sub(1) as usize;
         let mut shown = svg.unwrap_or_default();
-        let mut shown_afresh = shown.clone();
+        let mut shown_read = FigureLines::of(&shown);
+        let (mut shown_afresh, mut afresh_read) = (shown.clone(), shown_read.clone());
         let Some(texts) = (0..18)
             .map(|i| nudged(&scene, &answer, i).map(|s| s.to_string()))
             .collect::<Option<Vec<String>>>()
@@ -126,8 +127,9 @@ fn main() {
         for (i, t) in texts.iter().enumerate() {
             let s = Instant::now();
             let (json, svg) = replay_into(&mut kept, t, &origin, Ask::Page(page));
-            let patch = svg.as_deref().and_then(|new| {
-                let p = figure_patch(&shown, new)?.to_json();
+            let read = svg.as_deref().map(FigureLines::of);
+            let patch = svg.as_deref().zip(read.as_ref()).and_then(|(new, r)| {
+                let p = figure_patch_read(&shown, &shown_read, new, r)?.to_json();
                 Some(p)
             });
             let ms = s.elapsed().as_secs_f64() * 1e3;
@@ -135,17 +137,18 @@ fn main() {
                 json.starts_with("{\"ok\":true"),
                 "{name}, drag {i}: {json:.200}"
             );
-            if let Some(svg) = svg {
-                shown = svg;
+            if let (Some(svg), Some(read)) = (svg, read) {
+                (shown, shown_read) = (svg, read);
             }
             let s = Instant::now();
             let (json, svg) = replay_apart(t, &origin, Some(page));
+            let read = FigureLines::of(&svg);
             black_box((
                 &json,
-                figure_patch(&shown_afresh, &svg).map(|p| p.to_json()),
+                figure_patch_read(&shown_afresh, &afresh_read, &svg, &read).map(|p| p.to_json()),
             ));
             let fresh_ms = s.elapsed().as_secs_f64() * 1e3;
-            shown_afresh = svg;
+            (shown_afresh, afresh_read) = (svg, read);
             if i >= 3 {
                 drag.push(ms);
                 afresh.push(fresh_ms);

@@ -20,7 +20,7 @@ use std::cell::OnceCell;
 use std::ops::Range;
 
 mod patch;
-pub use patch::{figure_patch, FigurePatch};
+pub use patch::{figure_patch, figure_patch_read, FigureLines, FigurePatch};
 
 /// The answer to the page: a construction, or why there is none.
 #[derive(Debug, Clone, Serialize)]

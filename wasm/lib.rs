@@ -20,8 +20,9 @@ use std::cell::RefCell;
 thread_local! {
     /// The last answer, kept until the next call.
     static OUT: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
-    /// The last figure drawn (SVG; a refused scene draws none), kept until the next.
-    static SVG: RefCell<Vec<u8>> = const { RefCell::new(Vec::new()) };
+    /// The last figure drawn (SVG; a refused scene draws none), kept until the next, with
+    /// its lines read for the next patch.
+    static SVG: RefCell<(String, graphostatik::web::FigureLines)> = RefCell::new(Default::default());
     /// The number of figures drawn: the last one's number.
     static FIGURE: std::cell::Cell<u32> = const { std::cell::Cell::new(0) };
     /// What changed from figure `base` to the last one (JSON; empty: ask for the figure).
@@ -119,15 +120,16 @@ pub unsafe extern "C" fn gs_replay(
 /// (`base`), what changed from that one is kept for the page.
 fn keep_figure(svg: String, base: i32) {
     let id = FIGURE.with(|f| f.get());
+    let read = graphostatik::web::FigureLines::of(&svg);
     SVG.with(|o| {
         let mut o = o.borrow_mut();
-        if u32::try_from(base) == Ok(id) && !o.is_empty() {
-            let old = std::str::from_utf8(&o).unwrap_or_default();
-            if let Some(p) = graphostatik::web::figure_patch(old, &svg) {
+        if u32::try_from(base) == Ok(id) && !o.0.is_empty() {
+            let (old, read_old) = &*o;
+            if let Some(p) = graphostatik::web::figure_patch_read(old, read_old, &svg, &read) {
                 PATCH.with(|b| *b.borrow_mut() = p.to_json().into_bytes());
             }
         }
-        *o = svg.into_bytes();
+        *o = (svg, read);
     });
     FIGURE.with(|f| f.set(id % ((1 << 30) - 1) + 1));
 }
@@ -136,7 +138,7 @@ fn keep_figure(svg: String, base: i32) {
 /// page shows it (`base`), the patch says that nothing changed; its number stays.
 fn same_figure(base: i32) {
     let id = FIGURE.with(|f| f.get());
-    if u32::try_from(base) == Ok(id) && SVG.with(|o| !o.borrow().is_empty()) {
+    if u32::try_from(base) == Ok(id) && SVG.with(|o| !o.borrow().0.is_empty()) {
         let none = graphostatik::web::FigurePatch::default().to_json();
         PATCH.with(|b| *b.borrow_mut() = none.into_bytes());
     }
@@ -187,13 +189,13 @@ pub extern "C" fn gs_patch_len() -> usize {
 /// Where the last figure starts (the answer's `svg` field is empty: the figure is apart).
 #[no_mangle]
 pub extern "C" fn gs_svg_ptr() -> *const u8 {
-    SVG.with(|o| o.borrow().as_ptr())
+    SVG.with(|o| o.borrow().0.as_ptr())
 }
 
 /// The length of the last figure (0: none drawn yet).
 #[no_mangle]
 pub extern "C" fn gs_svg_len() -> usize {
-    SVG.with(|o| o.borrow().len())
+    SVG.with(|o| o.borrow().0.len())
 }
 
 /// Where the last answer starts.
