@@ -52,6 +52,11 @@ pub struct BoardConfig {
     pub hand: Option<Hand>,
     /// Replay every step in double-double beside f64 (a drawing board only).
     pub reference: bool,
+    /// The most steps a drawing board keeps (`None`: no limit). Past it the board lets go
+    /// of what it kept and only counts, as a silent board does, so that a figure too large
+    /// to draw is found by its step count at the cost of the limit's memory, not the
+    /// figure's ([`Board::spilled`](super::Board::spilled)).
+    pub keep_steps: Option<u32>,
 }
 
 impl Default for BoardConfig {
@@ -67,6 +72,7 @@ impl BoardConfig {
         model: ErrorModel::ROUNDING,
         hand: None,
         reference: false,
+        keep_steps: None,
     };
     /// A board that only computes ([`Mode::Silent`]).
     pub const SILENT: BoardConfig = BoardConfig {
@@ -112,6 +118,26 @@ impl BoardConfig {
     pub const fn with_reference(self) -> BoardConfig {
         BoardConfig {
             reference: true,
+            ..self
+        }
+    }
+
+    /// This setup, keeping at most `steps` steps ([`BoardConfig::keep_steps`]).
+    ///
+    /// ```
+    /// use graphostatik::prelude::*;
+    /// use graphostatik::protocol::BoardConfig;
+    /// let mut b = Board::new(BoardConfig::DRAWING.keeping_at_most(2));
+    /// let n = Note::new("three points", Topic::Custom("demo"));
+    /// for x in [0.0, 1.0, 2.0] {
+    ///     b.point(Point::new(x, 0.0), Role::Given.named("P"), n.clone());
+    /// }
+    /// // The third step went past the limit: counted, nothing kept.
+    /// assert!(b.spilled() && b.step_count() == 3 && b.steps().is_empty());
+    /// ```
+    pub const fn keeping_at_most(self, steps: u32) -> BoardConfig {
+        BoardConfig {
+            keep_steps: Some(steps),
             ..self
         }
     }

@@ -128,14 +128,17 @@ struct ProblemOf<P: Procedure>(P::Problem);
 /// at most 5,427 (the crane bridge); 64 cylinders at 3,600 divisions ran out of memory.
 pub const MAX_FIGURE_STEPS: usize = 50_000;
 
-/// The figure's cost, counted before it is drawn: the construction run silent (it counts
-/// its steps and keeps nothing, a few percent of drawing it), refused beyond
-/// [`MAX_FIGURE_STEPS`] naming what sets its size. `check` draws nothing and takes more.
-fn figure_cost<P: Procedure>(problem: &P::Problem) -> Result<(), ConstructionError> {
-    let (pilot, _) = P::construct(problem, BoardConfig::SILENT)?;
-    let steps = pilot.step_count();
-    if steps <= MAX_FIGURE_STEPS {
-        return Ok(());
+/// The figure's construction, refused past [`MAX_FIGURE_STEPS`] naming what sets its size.
+/// The board keeps at most that many steps and counts on past them without keeping
+/// anything ([`Board::spilled`]): a figure too large costs the limit's memory and a silent
+/// construction's time, and one within it is constructed once. `check` draws nothing and
+/// takes more.
+fn figure<P: Procedure>(problem: &P::Problem) -> Result<Board, ConstructionError> {
+    let config = BoardConfig::DRAWING.keeping_at_most(MAX_FIGURE_STEPS as u32);
+    let (board, _) = P::construct(problem, config)?;
+    let steps = board.step_count();
+    if !board.spilled() && steps <= MAX_FIGURE_STEPS {
+        return Ok(board);
     }
     Err(ConstructionError::Unsupported {
         input: "figure".into(),
@@ -162,7 +165,7 @@ impl<P: Procedure> DynProblem for ProblemOf<P> {
     }
     fn construct(&self, config: BoardConfig) -> Result<Board, ConstructionError> {
         if config == BoardConfig::DRAWING {
-            figure_cost::<P>(&self.0)?;
+            return figure::<P>(&self.0);
         }
         P::construct(&self.0, config).map(|(b, _)| b)
     }

@@ -1203,7 +1203,7 @@ fn a_pump_too_strong_for_the_sheet_is_refused_before_it_is_drawn() {
 #[test]
 fn a_figure_too_large_is_refused_before_it_is_drawn_and_check_still_takes_it() {
     // A slider-crank at 3,600 angles draws 108,011 steps (its PNG took 15 s); 64 cylinders
-    // at 3,600 divisions ran out of memory. The figure is counted silently first.
+    // at 3,600 divisions ran out of memory. Past the limit the board only counts.
     let scene = GOOD
         .replace("\"divisions\": 12", "\"divisions\": 3600")
         .replace(

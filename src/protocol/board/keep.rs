@@ -76,8 +76,27 @@ impl Board {
     pub(super) fn begin(&mut self, kind: StepKind, note: &Note, inputs: &[ObjId]) {
         self.next_step += 1;
         if self.recording {
+            if self.next_step > self.keep_steps {
+                self.spill();
+                return;
+            }
             self.file_step(kind, note, inputs);
         }
+    }
+
+    /// Lets go of everything kept and counts on as a board that does not record: the
+    /// steps past [`BoardConfig::keep_steps`](crate::protocol::BoardConfig::keep_steps).
+    #[cold]
+    fn spill(&mut self) {
+        self.recording = false;
+        self.spilled = true;
+        self.steps = Vec::new();
+        self.objects = Vec::new();
+        self.tracks = Default::default();
+        self.shadows = None;
+        self.ledger = None;
+        self.context = None;
+        self.checked_object = None;
     }
 
     pub(super) fn file_step(&mut self, kind: StepKind, note: &Note, inputs: &[ObjId]) {

@@ -157,6 +157,12 @@ pub struct Board {
     unseen: bool,
     #[serde(skip)]
     next_step: u32,
+    /// The most steps kept ([`BoardConfig::keep_steps`]); past it the board only counts.
+    #[serde(skip)]
+    keep_steps: u32,
+    /// Whether the board went past `keep_steps` and let go of what it kept.
+    #[serde(skip)]
+    spilled: bool,
     /// Whether the last cut found only one double point (a tangency).
     #[serde(skip)]
     last_touched: bool,
@@ -209,6 +215,8 @@ impl Board {
             part: Part::default(),
             unseen: false,
             next_step: 0,
+            keep_steps: config.keep_steps.unwrap_or(u32::MAX),
+            spilled: false,
             last_touched: false,
             model: config.model,
             tracks: Default::default(),
@@ -328,6 +336,13 @@ impl Board {
     /// How many steps were made (recorded or only counted).
     pub fn step_count(&self) -> usize {
         self.next_step as usize
+    }
+
+    /// Whether the board went past the steps it may keep ([`BoardConfig::keep_steps`]): it
+    /// then let go of its steps, objects, bounds and checks and only counted on, as a board
+    /// that does not record; [`Board::step_count`] still counts every step.
+    pub fn spilled(&self) -> bool {
+        self.spilled
     }
 
     /// How many objects were made on a recording board (kept, or only counted where the board
