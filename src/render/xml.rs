@@ -189,7 +189,7 @@ impl El {
 /// `text` with `&`, `<` and `>` escaped, as the `svg` crate escapes values and text.
 /// The three are ASCII, so a byte search finds them (the step captions in the layers' names
 /// make the crane bridge's figure 2 MB: a search by `char` took 22 M instructions of it).
-fn escaped(out: &mut String, text: &str) {
+pub(crate) fn escaped(out: &mut String, text: &str) {
     let mut rest = text;
     while let Some(i) = memchr::memchr3(b'&', b'<', b'>', rest.as_bytes()) {
         out.push_str(&rest[..i]);
