@@ -759,4 +759,37 @@ mod tests {
             }
         }
     }
+
+    /// Every page's item asked for alone ([`crate::render::walkthrough_item`], what a drag
+    /// asks) is the list's item: drawn steps told apart within their situation (the
+    /// compound engine's rays), and the crane bridge's pages of positions not drawn.
+    #[test]
+    fn every_page_alone_is_its_item_of_the_list() {
+        use crate::protocol::BoardConfig;
+        use crate::render::{page_count, walkthrough_item, walkthrough_item_list, Grouping};
+        let scenes = [
+            ("lh_j_compound_engine", 1),
+            ("kg_abb1043_crank_rocker", 1),
+            ("lh_aufgabe5_crane_bridge", 29),
+        ];
+        for (scene, every) in scenes {
+            let path = format!("{}/scenes/{scene}.json", env!("CARGO_MANIFEST_DIR"));
+            let text = std::fs::read_to_string(path).unwrap();
+            let s = crate::scene::AnyScene::from_json(&text, "x.json").unwrap();
+            let board = s.problem().construct(BoardConfig::DRAWING).unwrap();
+            for grouping in [Grouping::Step, Grouping::Context] {
+                let list = walkthrough_item_list(&board, grouping);
+                assert_eq!(page_count(&board, grouping), list.len(), "{scene}");
+                for k in (0..list.len()).step_by(every).chain([list.len() - 1]) {
+                    let one = walkthrough_item(&board, grouping, k);
+                    assert_eq!(
+                        one.as_ref(),
+                        Some(&list[k]),
+                        "{scene}, {grouping:?}, page {k}"
+                    );
+                }
+                assert_eq!(walkthrough_item(&board, grouping, list.len()), None);
+            }
+        }
+    }
 }

@@ -84,20 +84,32 @@ fn push_html_text(out: &mut String, s: &str) {
 /// book does not draw) are one page, whatever the grouping: there is nothing to see step by
 /// step.
 fn page_groups(board: &Board, grouping: Grouping) -> Vec<Vec<&Step>> {
-    let together = |first: &Step, s: &Step| {
+    let steps = board.steps();
+    (page_runs(steps, grouping))
+        .map(|r| steps[r].iter().collect())
+        .collect()
+}
+
+/// The pages as runs of `steps` ([`page_groups`]), found without keeping them: a drag asks
+/// for one page and the count (a page per step and a `Vec` each was 1.4 M instructions of
+/// a 1,679-step engine's replay).
+fn page_runs(steps: &[Step], grouping: Grouping) -> impl Iterator<Item = Range<usize>> + '_ {
+    let together = move |first: &Step, s: &Step| {
         let unseen = first.part.hidden && s.part.hidden && first.part.row == s.part.row;
         let situation =
             grouping == Grouping::Context && first.context.is_some() && first.context == s.context;
         unseen || situation
     };
-    let mut groups: Vec<Vec<&Step>> = Vec::new();
-    for s in board.steps() {
-        match groups.last_mut() {
-            Some(g) if together(g[0], s) => g.push(s),
-            _ => groups.push(vec![s]),
-        }
-    }
-    groups
+    let mut start = 0;
+    std::iter::from_fn(move || {
+        let first = steps.get(start)?;
+        let len = 1
+            + (steps[start + 1..].iter())
+                .take_while(|s| together(first, s))
+                .count();
+        start += len;
+        Some(start - len..start)
+    })
 }
 
 /// The walk-through of `board`: `index.html`, one step per page.
@@ -234,13 +246,7 @@ pub fn walkthrough_details(
 /// The steps of each page of `board`'s walk-through, as ranges of indices into
 /// [`Board::steps`]: one step a page, but one page for the steps of a part not drawn.
 pub fn page_ranges(board: &Board, grouping: Grouping) -> Vec<Range<usize>> {
-    let mut at = 0;
-    (page_groups(board, grouping).iter())
-        .map(|g| {
-            at += g.len();
-            at - g.len()..at
-        })
-        .collect()
+    page_runs(board.steps(), grouping).collect()
 }
 
 /// What the page of the steps `steps` ([`page_ranges`]) shows beside the figure, its steps
@@ -261,27 +267,42 @@ pub fn page_details(board: &Board, steps: Range<usize>, names: &[String]) -> Str
 /// How many pages the walk-through of `board` has: one per step, but one for all the steps of
 /// a part not drawn (a position of a moving load that is computed, not drawn).
 pub fn page_count(board: &Board, grouping: Grouping) -> usize {
-    page_groups(board, grouping).len()
+    page_runs(board.steps(), grouping).count()
 }
 
 /// The item of page `k` alone ([`walkthrough_item_list`]'s `k`-th), for a live page that
 /// shows only the current page's details while the student drags; `None` past the last.
 pub fn walkthrough_item(board: &Board, grouping: Grouping, k: usize) -> Option<String> {
-    let groups = page_groups(board, grouping);
-    let group = groups.get(k)?;
-    // Only this page's steps are named: a drag asks for one page on each pointer move, and
-    // the crane bridge's 5,438 names took a fifth of its replay.
-    let named = plain_names(board);
-    let mut names = vec![String::new(); named.len()];
-    for s in group {
-        if let Some(i) = (s.id.0 as usize)
-            .checked_sub(1)
-            .filter(|&i| i < named.len())
-        {
-            names[i] = told_apart(board, &named, i);
+    let steps = board.steps();
+    let run = page_runs(steps, grouping).nth(k)?;
+    // Only this page's steps are named, each told apart from the steps of its situation
+    // (named once each, on demand): a drag asks for one page on each pointer move, and
+    // naming the crane bridge's 5,438 steps took a fifth of its replay.
+    let mut plain: Vec<Option<String>> = vec![None; steps.len()];
+    let mut scratch = (String::new(), String::new());
+    let mut names = vec![String::new(); steps.len()];
+    for i in run.clone() {
+        let context = steps[i].context.as_deref();
+        let alike = (0..steps.len()).filter(|&j| steps[j].context.as_deref() == context);
+        let mut n_alike = 0;
+        let mut before = 0;
+        let name = plain[i]
+            .get_or_insert_with(|| plain_name(board, &steps[i], &mut scratch))
+            .clone();
+        for j in alike {
+            let other = plain[j].get_or_insert_with(|| plain_name(board, &steps[j], &mut scratch));
+            if *other == name {
+                n_alike += 1;
+                before += usize::from(j <= i);
+            }
         }
+        names[i] = match n_alike {
+            1 => name,
+            n => format!("{name} ({before} of {n})"),
+        };
     }
-    Some(group_item(group, &names))
+    let group: Vec<&Step> = steps[run].iter().collect();
+    Some(group_item(&group, &names))
 }
 
 /// Each step's name in the walk-through, so that no two steps of one situation read alike,
@@ -331,60 +352,51 @@ pub fn step_names(board: &Board) -> Vec<String> {
         .collect()
 }
 
-/// Step `i`'s name of [`step_names`] from the names before telling alike steps apart: its
-/// plain name, or which of the steps of that name and situation it is.
-fn told_apart(board: &Board, named: &[String], i: usize) -> String {
-    let context = |j: usize| board.steps()[j].context.as_deref();
-    let alike = |j: &usize| named[*j] == named[i] && context(*j) == context(i);
-    match (0..named.len()).filter(alike).count() {
-        1 => named[i].clone(),
-        n => format!("{} ({} of {n})", named[i], (0..=i).filter(alike).count()),
-    }
-}
-
 /// Each step's caption with the names of the objects it draws (or reads from), before steps
 /// of one name are told apart.
 fn plain_names(board: &Board) -> Vec<String> {
+    let mut scratch = (String::new(), String::new());
+    (board.steps().iter())
+        .map(|s| plain_name(board, s, &mut scratch))
+        .collect()
+}
+
+/// Step `s`'s name of [`plain_names`]; `scratch` holds two labels while it is made.
+fn plain_name(board: &Board, s: &Step, (label, last): &mut (String, String)) -> String {
     let labelled =
         |id: &crate::protocol::ObjId| (board.object(*id)).is_some_and(|o| !o.label.base.is_empty());
-    let mut label = String::new();
-    let mut last = String::new();
-    (board.steps().iter())
-        .map(|s| {
-            let ids = match s.outputs.iter().any(labelled) {
-                true => &s.outputs,
-                false => &s.inputs,
-            };
-            // The labels in turn, each once where it repeats the one before, less those the
-            // caption says already ("ordinate line through O"), at most three and "…".
-            let mut name = s.caption.to_string();
-            let mut told = 0;
-            last.clear();
-            for id in ids {
-                if !object_label(board, *id, &mut label) || label == last {
-                    continue;
-                }
-                std::mem::swap(&mut label, &mut last);
-                if s.caption
-                    .split([' ', ',', ':', '(', ')'])
-                    .any(|w| w == last)
-                {
-                    continue;
-                }
-                told += 1;
-                match told {
-                    1 => name.push(' '),
-                    2 | 3 => name.push_str(", "),
-                    _ => continue,
-                }
-                name.push_str(&last);
-            }
-            if told > 3 {
-                name.push_str(", …");
-            }
-            name
-        })
-        .collect()
+    let ids = match s.outputs.iter().any(labelled) {
+        true => &s.outputs,
+        false => &s.inputs,
+    };
+    // The labels in turn, each once where it repeats the one before, less those the
+    // caption says already ("ordinate line through O"), at most three and "…".
+    let mut name = s.caption.to_string();
+    let mut told = 0;
+    last.clear();
+    for id in ids {
+        if !object_label(board, *id, label) || label == last {
+            continue;
+        }
+        std::mem::swap(label, last);
+        if s.caption
+            .split([' ', ',', ':', '(', ')'])
+            .any(|w| w == last)
+        {
+            continue;
+        }
+        told += 1;
+        match told {
+            1 => name.push(' '),
+            2 | 3 => name.push_str(", "),
+            _ => continue,
+        }
+        name.push_str(last);
+    }
+    if told > 3 {
+        name.push_str(", …");
+    }
+    name
 }
 
 /// Whether object `id` of `board` has a label, and if so `out` holds it (the base and the
