@@ -369,14 +369,21 @@ fn engine_or_skip(test: &str) -> Option<PathBuf> {
 
 /// `graphostatik site` of `scenes` (paths from the crate's root) into `out`.
 fn write_site(scenes: &[&str], out: &Path) {
+    write_site_with(scenes, out, None);
+}
+
+/// [`write_site`] with the engine `engine` where one is named (else the one built).
+fn write_site_with(scenes: &[&str], out: &Path, engine: Option<&Path>) {
     let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let o = Command::new(bin())
-        .arg("site")
+    let mut site = Command::new(bin());
+    site.arg("site")
         .args(scenes.iter().map(|p| manifest.join(p)))
         .arg("--out")
-        .arg(out)
-        .output()
-        .unwrap();
+        .arg(out);
+    if let Some(e) = engine {
+        site.arg("--engine").arg(e);
+    }
+    let o = site.output().unwrap();
     assert_eq!(
         o.status.code(),
         Some(0),
@@ -684,7 +691,9 @@ fn a_student_drags_a_joint_and_a_crank_pin_in_the_site() {
 /// update (figure, step list, handles) timed with performance.now, median and worst of 15
 /// replays after 3 to warm up, the first handle held as a pointer holds it (the sheet's size
 /// and view box kept until the release). README's table comes from
-/// `cargo test --release --test it browser::replay_latency -- --ignored --nocapture`.
+/// `cargo test --release --test it browser::replay_latency -- --ignored --nocapture`
+/// (`GRAPHOSTATIK_LATENCY_ONLY=crane,roof` for the scenes whose name holds either,
+/// `GRAPHOSTATIK_LATENCY_ENGINE=old.wasm` for another build of the engine).
 #[test]
 #[ignore = "a measurement: prints README's latency table"]
 fn replay_latency() {
@@ -692,11 +701,15 @@ fn replay_latency() {
     let Some(browser) = browser_or_skip("latency") else {
         return;
     };
-    let Some(wasm) = engine_or_skip("latency") else {
+    let Some(built) = engine_or_skip("latency") else {
         return;
     };
+    // GRAPHOSTATIK_LATENCY_ENGINE=other.wasm measures another build of the engine (an
+    // earlier commit's, say) with this page, so that two engines compare in one run.
+    let other = std::env::var_os("GRAPHOSTATIK_LATENCY_ENGINE").map(PathBuf::from);
+    let wasm = other.clone().unwrap_or(built);
     let dir = tmp("latency");
-    write_site(&["scenes"], &dir.join("site"));
+    write_site_with(&["scenes"], &dir.join("site"), other.as_deref());
     let s = Session::start(&browser, &dir.join("profile"));
     let gz = {
         let out = Command::new("gzip").arg("-9c").arg(&wasm).output().unwrap();
@@ -715,9 +728,11 @@ fn replay_latency() {
             .filter(|p| p.extension().is_some_and(|x| x == "json"))
             .collect();
     scenes.sort();
-    // GRAPHOSTATIK_LATENCY_ONLY=crane measures only the scenes whose name holds `crane`.
+    // GRAPHOSTATIK_LATENCY_ONLY=crane,roof measures only the scenes whose name holds
+    // `crane` or `roof`.
     if let Ok(only) = std::env::var("GRAPHOSTATIK_LATENCY_ONLY") {
-        scenes.retain(|p| p.to_string_lossy().contains(&only));
+        let name = |p: &PathBuf| p.file_stem().unwrap().to_string_lossy().into_owned();
+        scenes.retain(|p| only.split(',').any(|o| name(p).contains(o)));
     }
     for scene in scenes {
         let name = scene.file_stem().unwrap().to_string_lossy().into_owned();
