@@ -575,8 +575,27 @@ impl Board {
     /// Reserves room for `steps` more steps and `objects` more objects, so that a long
     /// construction does not spend its time moving a growing protocol around in memory.
     /// (A board that keeps only its checks files no steps and objects, only their bounds,
-    /// which grow in chunks: room is made in the first.)
+    /// which grow in chunks: room is made in the first.) Room is made for no more steps than
+    /// the board may keep ([`BoardConfig::keep_steps`]), and for their share of the objects:
+    /// a figure too large to draw asks for room it will never use (64 cylinders at 3,600
+    /// divisions, 6.2 million steps).
+    ///
+    /// ```
+    /// use graphostatik::protocol::{Board, BoardConfig};
+    /// let mut b = Board::new(BoardConfig::DRAWING.keeping_at_most(100));
+    /// b.reserve(1 << 40, 1 << 41); // room for 100 steps and 200 objects, not a trillion
+    /// assert_eq!(b.step_count(), 0);
+    /// ```
     pub fn reserve(&mut self, steps: usize, objects: usize) {
+        let room = (self.keep_steps as usize).saturating_sub(self.next_step as usize);
+        let (steps, objects) = match steps > room {
+            // Objects in the proportion asked for: objects / steps of the steps kept.
+            true => (
+                room,
+                (objects as u128 * room as u128 / steps as u128) as usize,
+            ),
+            false => (steps, objects),
+        };
         if self.recording {
             self.tracks.reserve(objects);
         }
