@@ -339,11 +339,11 @@ pub(crate) fn envelope(b: &mut Board, c: &TolleCurve, parts: usize) -> Vec<H<Poi
         "LH Abb. 55",
     );
     let p = b.naming(
-        || "tangent TD".into(),
+        |s| s.push_str("tangent TD"),
         |b| b.divide_segment(&c.t, &c.d, parts, "", div.clone()),
     );
     let q = b.naming(
-        || "tangent DT₁".into(),
+        |s| s.push_str("tangent DT₁"),
         |b| b.divide_segment(&c.d, &c.t1, parts, "", div.clone()),
     );
     let join = n(
@@ -360,7 +360,10 @@ pub(crate) fn envelope(b: &mut Board, c: &TolleCurve, parts: usize) -> Vec<H<Poi
     for k in 1..parts {
         let s = k as f64 / parts as f64;
         let contact = b.naming(
-            || format!("{k} with {k}"),
+            |s| {
+                use std::fmt::Write;
+                let _ = write!(s, "{k} with {k}");
+            },
             |b| {
                 b.segment(&p[k], &q[k], Role::Construction, join.clone());
                 b.divide_at(&p[k], &q[k], s, Label::NONE, touch.clone())
@@ -388,11 +391,11 @@ pub(crate) fn point_at(
         "LH Abb. 55",
     );
     let p = b.naming(
-        || "tangent TD".into(),
+        |s| s.push_str("tangent TD"),
         |b| b.divide_at(&c.t, &c.d, s, Label::NONE, div.clone()),
     )?;
     let q = b.naming(
-        || "tangent DT₁".into(),
+        |s| s.push_str("tangent DT₁"),
         |b| b.divide_at(&c.d, &c.t1, s, Label::NONE, div.clone()),
     )?;
     b.segment(

@@ -323,7 +323,7 @@ impl Builder<'_> {
                     let stroke = if sign > 0.0 { OUTSTROKE } else { RETURN_STROKE };
                     let curve =
                         |b: &mut Board| tolle::curve(b, &axis, &cp, a_mm, k.lambda, sign, name);
-                    b.naming(|| stroke.into(), curve)
+                    b.naming(|s| s.push_str(stroke), curve)
                 };
                 let (out, _) = curve(self.b, 1.0, "B₀")?;
                 let (ret, _) = curve(self.b, -1.0, "B'₀")?;
@@ -331,7 +331,7 @@ impl Builder<'_> {
                 situation(self.b);
                 for (cv, stroke) in [(out, OUTSTROKE), (ret, RETURN_STROKE)] {
                     self.b.naming(
-                        || stroke.into(),
+                        |s| s.push_str(stroke),
                         |b| {
                             tolle::balance(b, &axis, &cv);
                             let pts = tolle::envelope(b, &cv, 10);

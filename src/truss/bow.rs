@@ -306,7 +306,10 @@ impl<'a> Found<'a> {
             let (l, r) = (self.space_of_half[2 * m], self.space_of_half[2 * m + 1]);
             if let (Some(pl), Some(pr)) = (pt[l], pt[r]) {
                 let v = b.naming(
-                    || ["member ", t.members[m].name.as_str()].concat(),
+                    |s| {
+                        s.push_str("member ");
+                        s.push_str(&t.members[m].name);
+                    },
                     |b| {
                         let name = Role::Result.labelled(member_label(b, t, m));
                         b.segment(&pl, &pr, name, N_SIDE);

@@ -327,7 +327,10 @@ impl<'a> Polygons<'a> {
         let on_v = t.members[m].ends[0] == v;
         let (p, q) = if on_v { (from, to) } else { (to, from) };
         b.naming(
-            || format!("member {}", t.members[m].name),
+            |s| {
+                s.push_str("member ");
+                s.push_str(&t.members[m].name);
+            },
             |b| {
                 let name = Role::Result.labelled(member_label(b, t, m));
                 b.segment(from, to, name, N_SIDE);

@@ -148,6 +148,9 @@ pub struct Board {
     /// The object the checks made inside [`Board::checking`] name.
     #[serde(skip)]
     checked_object: Option<Text>,
+    /// Where [`Board::naming`] writes a context before it is shared (kept for its room).
+    #[serde(skip)]
+    scratch: String,
     /// The part of the figure the next steps draw in.
     #[serde(skip)]
     part: Part,
@@ -212,6 +215,7 @@ impl Board {
             recording,
             context: None,
             checked_object: None,
+            scratch: String::new(),
             part: Part::default(),
             unseen: false,
             next_step: 0,
@@ -447,32 +451,32 @@ impl Board {
     /// let n = Note::new("member force", Topic::Custom("doc"));
     /// let mut b = Board::recording();
     /// b.set_context(|| "dead load: joint I".into());
-    /// b.naming(|| "member 1".into(), |b| b.point(Point::new(0.0, 0.0), Role::Result, n.clone()));
+    /// b.naming(|s| s.push_str("member 1"), |b| b.point(Point::new(0.0, 0.0), Role::Result, n.clone()));
     /// b.point(Point::new(1.0, 0.0), Role::Result, n);
     /// let contexts: Vec<_> = b.steps().iter().map(|s| s.context.as_deref()).collect();
     /// assert_eq!(contexts, [Some("dead load: joint I, member 1"), Some("dead load: joint I")]);
     /// ```
     pub fn naming<R>(
         &mut self,
-        what: impl FnOnce() -> String,
+        what: impl FnOnce(&mut String),
         steps: impl FnOnce(&mut Board) -> R,
     ) -> R {
         if !self.recording {
             return steps(self);
         }
         let base = self.context();
-        self.set_context(|| match &base {
-            // Joined by hand: `format!` took half the time of a truss check's contexts.
-            Some(c) => {
-                let what = what();
-                let mut s = String::with_capacity(c.len() + 2 + what.len());
-                s.push_str(c);
-                s.push_str(", ");
-                s.push_str(&what);
-                s
-            }
-            None => what(),
-        });
+        // Written into the board's own buffer and shared from it: one allocation a naming
+        // where the name, the joined text and the shared one were three (a truss check
+        // names every member force it reads).
+        let mut s = std::mem::take(&mut self.scratch);
+        s.clear();
+        if let Some(c) = &base {
+            s.push_str(c);
+            s.push_str(", ");
+        }
+        what(&mut s);
+        self.set_context_recorded(s.as_str().into());
+        self.scratch = s;
         let out = steps(self);
         self.set_context_to(base);
         out
