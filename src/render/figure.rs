@@ -452,59 +452,28 @@ fn wrapped(text: &str, width: f64, char_width: f64) -> (Vec<String>, f64) {
     // full width only (each trial wrap costs its length).
     let len = text.chars().count();
     let columns = ((width / char_width).floor() as usize).min(len).max(1);
-    let words: Vec<(&str, usize)> = (text.split_whitespace())
-        .map(|w| (w, w.chars().count()))
-        .collect();
+    let words = crate::fmt::words_of(text);
     // Each trial wrap is found as the words its lines start at ([`crate::fmt::wrap`]'s
-    // lines, without writing them: trying every width of a title wrote each anew, 0.9 M
-    // instructions of a drag's figure), and only the one taken is written.
+    // lines, without writing them), and only the one taken is written.
     let parted = |starts: &[usize]| {
         let ends = starts.iter().skip(1).map(|&s| words[s - 1].0);
         ends.filter(|w| !crate::fmt::ends_phrase(w)).count()
     };
     // The full width takes the fewest lines; of the narrower wraps that take as few, the one
     // that parts the fewest phrases, and of those the narrowest (the first found).
-    let full = line_starts(&words, columns);
+    let full = crate::fmt::line_starts(&words, columns);
     let fewest = full.len();
     let narrowest = if len > BALANCED_CHARS { columns } else { 1 };
-    let narrower = (narrowest..columns).map(|c| line_starts(&words, c));
+    let narrower = (narrowest..columns).map(|c| crate::fmt::line_starts(&words, c));
     let starts = (narrower.filter(|l| l.len() == fewest))
         .chain(std::iter::once(full))
         .min_by_key(|l| parted(l))
         .expect("the full width is a candidate");
-    let ends = starts.iter().skip(1).copied().chain([words.len()]);
-    let lines: Vec<String> = if words.is_empty() {
-        vec![String::new()]
-    } else {
-        (starts.iter().zip(ends))
-            .map(|(&a, b)| {
-                (words[a..b].iter().map(|w| w.0))
-                    .collect::<Vec<_>>()
-                    .join(" ")
-            })
-            .collect()
-    };
+    let lines = crate::fmt::lines_at(&words, &starts);
     let widest = (lines.iter())
         .map(|l| l.chars().count() as f64 * char_width)
         .fold(0.0, f64::max);
     (lines, widest)
-}
-
-/// The words (with their lengths in characters) each line starts at where `words` are
-/// wrapped at `columns` as [`crate::fmt::wrap`] wraps them: a word goes on the line before
-/// where it fits there with a space, else it starts a line.
-fn line_starts(words: &[(&str, usize)], columns: usize) -> Vec<usize> {
-    let mut starts = Vec::new();
-    let mut line = 0;
-    for (i, &(_, n)) in words.iter().enumerate() {
-        if i > 0 && line + 1 + n <= columns {
-            line += 1 + n;
-        } else {
-            starts.push(i);
-            line = n;
-        }
-    }
-    starts
 }
 
 fn label_text(f: &Pen, at: &Point, label: &Label, joined: &[Label]) -> El {
