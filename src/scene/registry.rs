@@ -136,10 +136,10 @@ pub const MAX_FIGURE_STEPS: usize = 50_000;
 fn figure<P: Procedure>(problem: &P::Problem) -> Result<Board, ConstructionError> {
     let config = BoardConfig::DRAWING.keeping_at_most(MAX_FIGURE_STEPS as u32);
     let (board, _) = P::construct(problem, config)?;
-    let steps = board.step_count();
-    if !board.spilled() && steps <= MAX_FIGURE_STEPS {
+    if !board.spilled() {
         return Ok(board);
     }
+    let steps = board.step_count();
     Err(ConstructionError::Unsupported {
         input: "figure".into(),
         reason: format!(
