@@ -187,7 +187,12 @@ pub fn json(results: &[CaseResult], combos: &[Combination], rule: Option<&Envelo
                 name: &c.name,
                 cases: c.cases.iter().map(|&i| results[i].case.as_str()).collect(),
                 members: (0..n)
-                    .map(|m| (results[0].members[m].member.clone(), c.force(results, m)))
+                    .map(|m| {
+                        (
+                            results[0].members[m].member.as_str().to_owned(),
+                            c.force(results, m),
+                        )
+                    })
                     .collect(),
             })
             .collect(),

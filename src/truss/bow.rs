@@ -360,15 +360,11 @@ pub(super) fn joint_polygon(
     if d < 2 {
         return None;
     }
-    let unknown: Vec<usize> = (0..d)
-        .filter(|&i| pt[sp.of_half[around[i]]].is_none())
-        .collect();
-    let mut spaces: Vec<usize> = unknown.iter().map(|&i| sp.of_half[around[i]]).collect();
-    spaces.dedup();
-    if spaces.len() != 1 || unknown.len() != 1 {
+    // Exactly one half-edge round the joint with its space unknown.
+    let mut unknown = (0..d).filter(|&i| pt[sp.of_half[around[i]]].is_none());
+    let (Some(i), None) = (unknown.next(), unknown.next()) else {
         return None;
-    }
-    let i = unknown[0];
+    };
     let (ha, hb) = (around[i], around[(i + 1) % d]);
     let u = sp.of_half[ha];
     let (px, py) = (pt[sp.of_half[ha ^ 1]]?, pt[sp.of_half[hb]]?);

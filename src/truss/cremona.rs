@@ -457,7 +457,7 @@ fn draw_truss(
             let p = Point::from(j.at.coords * k);
             grow(truss_box, p, Point::origin());
             b.set_context_within(Some(&case.name), || format!("joint {}", j.name));
-            b.point(p, Role::Given.labelled(joint_label(t, i)), N_JOINT)
+            b.point(p, Role::Given.labelled(joint_label(b, t, i)), N_JOINT)
         })
         .collect();
     let mut mline = Vec::with_capacity(t.members.len());
@@ -562,7 +562,7 @@ fn table_rows(result: &CaseResult, zero_kg: f64) -> Vec<Vec<String>> {
             "Druck"
         };
         rows.push(vec![
-            mf.member.clone(),
+            mf.member.as_str().to_owned(),
             crate::fmt::num(mf.plan_mm, 1),
             signed_kg(mf.force, zero_kg),
             kind.to_string(),

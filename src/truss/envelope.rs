@@ -135,7 +135,7 @@ pub fn envelope(results: &[CaseResult], rule: Option<&EnvelopeRule>) -> Vec<Extr
                 }
             };
             Extremes {
-                member: results[0].members[m].member.clone(),
+                member: results[0].members[m].member.as_str().to_owned(),
                 max: extreme(&|a, b| a > b),
                 min: extreme(&|a, b| a < b),
             }

@@ -44,7 +44,11 @@ pub(crate) fn member_number(b: &Board, t: &Truss, m: usize) -> Label {
 
 /// A joint's label: the scene's name for it (the books' Roman numerals, or any other; see
 /// [`Label::from_name`]).
-pub(super) fn joint_label(t: &Truss, j: usize) -> Label {
+pub(super) fn joint_label(b: &Board, t: &Truss, j: usize) -> Label {
+    // Only a drawing shows it (as `member_label`): a check names its joint by its context.
+    if !b.is_drawing() {
+        return Label::NONE;
+    }
     Label::from_name(&t.joints[j].name)
 }
 

@@ -291,7 +291,7 @@ impl Truss {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct MemberForce {
     /// Member name.
-    pub member: String,
+    pub member: smol_str::SmolStr,
     /// Length of its segment in the plan (mm).
     pub plan_mm: f64,
     /// Force (kg): tension +, compression −.

@@ -34,7 +34,7 @@ pub struct Generic {
 
 struct Game {
     pebbles: Vec<u8>,
-    out: Vec<Vec<usize>>,
+    out: Vec<Out>,
     stamp: Vec<u32>,
     epoch: u32,
     stack: Vec<usize>,
@@ -44,11 +44,40 @@ struct Game {
     budget: u64,
 }
 
+/// The bars directed out of a vertex, kept in place: a vertex's pebbles and its bars out
+/// are two (a bar takes its pebble from its tail, and turning a path round hands the bars
+/// along), so no vertex has more than two, and no list of its own is needed.
+#[derive(Clone, Copy, Default)]
+struct Out {
+    to: [usize; 2],
+    len: u8,
+}
+
+impl Out {
+    fn len(&self) -> usize {
+        usize::from(self.len)
+    }
+
+    fn push(&mut self, w: usize) {
+        assert!(self.len < 2, "a vertex holds two pebbles or bars out");
+        self.to[usize::from(self.len)] = w;
+        self.len += 1;
+    }
+
+    /// Takes out the bar to `w`, if there is one.
+    fn remove(&mut self, w: usize) {
+        if let Some(pos) = self.to[..self.len()].iter().position(|&x| x == w) {
+            self.to[pos] = self.to[self.len() - 1];
+            self.len -= 1;
+        }
+    }
+}
+
 impl Game {
     fn new(n: usize) -> Game {
         Game {
             pebbles: vec![2; n],
-            out: vec![Vec::new(); n],
+            out: vec![Out::default(); n],
             stamp: vec![0; n],
             epoch: 0,
             stack: Vec::new(),
@@ -71,7 +100,7 @@ impl Game {
         self.stack.push(u);
         while let Some(a) = self.stack.pop() {
             for i in 0..self.out[a].len() {
-                let w = self.out[a][i];
+                let w = self.out[a].to[i];
                 if self.stamp[w] == e {
                     continue;
                 }
@@ -94,9 +123,7 @@ impl Game {
     fn reverse_path(&mut self, u: usize, mut w: usize) {
         while w != u {
             let a = self.parent[w];
-            if let Some(pos) = self.out[a].iter().position(|&x| x == w) {
-                self.out[a].swap_remove(pos);
-            }
+            self.out[a].remove(w);
             self.out[w].push(a);
             w = a;
         }

@@ -86,9 +86,22 @@ pub(crate) fn plan_result(
     let matrix: Vec<Option<f64>> = (0..members.len())
         .map(|m| sol.map(|s| s.members[m]))
         .collect();
-    let mut result = case_result(t, case, &members, plan_mm, &matrix, &ext.reactions, dr);
+    // The plan's balance, reckoned once: its largest residual is the result's, its joint
+    // the check's.
+    let rc = reaction_components(t, &ext.reactions);
+    let worst = matrix::worst_joint(t, case, &members, &rc);
+    let plan_residual = worst.map_or(0.0, |(_, r)| r);
+    let forces = CaseForces {
+        members: &members,
+        plan_mm,
+        matrix: &matrix,
+        reactions: &ext.reactions,
+    };
+    let mut result = case_result_with(t, case, forces, dr, plan_residual);
     result.matrix_residual = sol.map(|s| matrix::max_residual(t, case, &s.members, &s.reactions));
-    check_balance(b, ctx, &members, ids);
+    if let Some(worst) = worst {
+        check_balance(b, ctx, &members, ids, worst);
+    }
     result
 }
 
@@ -101,15 +114,12 @@ fn check_balance(
     ctx: &PlanContext,
     members: &[f64],
     ids: &[crate::protocol::ObjId],
+    (joint, residual): (usize, f64),
 ) {
     if !b.is_recording() {
         return;
     }
     let t = ctx.t;
-    let rc = reaction_components(t, &ctx.ext.reactions);
-    let Some((joint, residual)) = matrix::worst_joint(t, ctx.case, members, &rc) else {
-        return;
-    };
     let largest = members.iter().fold(0.0, |a: f64, f| a.max(f.abs()));
     let reference = check_reference(ctx.maxload, ctx.ext).max(largest);
     // Reckoned from the forces of the joint's members, whose bounds it carries.
@@ -197,15 +207,42 @@ pub(crate) fn case_result(
     dr: &TrussDrawing,
 ) -> CaseResult {
     let rc = reaction_components(t, reactions);
+    let plan_residual = matrix::max_residual(t, case, forces, &rc);
+    let forces = CaseForces {
+        members: forces,
+        plan_mm,
+        matrix,
+        reactions,
+    };
+    case_result_with(t, case, forces, dr, plan_residual)
+}
+
+/// What a case's result is made of: member forces (kg) and their lengths in the plan (mm),
+/// the sparse solve's forces where it was made, and the reaction of every support.
+struct CaseForces<'a> {
+    members: &'a [f64],
+    plan_mm: &'a [f64],
+    matrix: &'a [Option<f64>],
+    reactions: &'a [Vector],
+}
+
+/// [`case_result`] with the largest out-of-balance force already reckoned.
+fn case_result_with(
+    t: &Truss,
+    case: &LoadCase,
+    f: CaseForces,
+    dr: &TrussDrawing,
+    plan_residual: f64,
+) -> CaseResult {
     CaseResult {
         case: case.name.clone(),
         reactions: t
             .supports
             .iter()
-            .zip(reactions)
+            .zip(f.reactions)
             .map(|(sup, r)| ReactionForce {
                 support: sup.name.clone(),
-                joint: t.joints[sup.joint].name.to_string(),
+                joint: t.joints[sup.joint].name.as_str().to_owned(),
                 force: *r,
                 plan_mm: r.norm() / dr.force_scale,
             })
@@ -215,13 +252,13 @@ pub(crate) fn case_result(
             .iter()
             .enumerate()
             .map(|(m, mem)| MemberForce {
-                member: mem.name.to_string(),
-                plan_mm: plan_mm[m],
-                force: forces[m],
-                matrix: matrix[m],
+                member: mem.name.clone(),
+                plan_mm: f.plan_mm[m],
+                force: f.members[m],
+                matrix: f.matrix[m],
             })
             .collect(),
-        plan_residual: matrix::max_residual(t, case, forces, &rc),
+        plan_residual,
         matrix_residual: None,
     }
 }
