@@ -16,7 +16,13 @@ use crate::protocol::{Board, ConstructionError, Cut, Label, Role, Scale, H};
 /// angular width `span` clockwise from `back`, in clockwise order. The line of action is
 /// drawn on the outside: the arrow coming in towards the joint (−f) if that side is outside,
 /// else going out (+f).
-fn in_sector(ext: &External, at_v: &[usize], placed: &[bool], back: f64, span: f64) -> Vec<usize> {
+fn in_sector(
+    ext: &External,
+    at_v: &[usize],
+    placed: &[bool],
+    back: f64,
+    span: f64,
+) -> impl Iterator<Item = usize> {
     let inside = |a: f64| {
         let c = faces::cw(back, a);
         c > 0.0 && c < span
@@ -35,7 +41,7 @@ fn in_sector(ext: &External, at_v: &[usize], placed: &[bool], back: f64, span: f
         here.push((faces::cw(back, a), fi));
     }
     here.sort_by(|a, c| a.0.total_cmp(&c.0).then(a.1.cmp(&c.1)));
-    here.into_iter().map(|(_, fi)| fi).collect()
+    here.into_iter().map(|(_, fi)| fi)
 }
 
 /// The external forces in clockwise order round the outline, and the space left of every
@@ -60,10 +66,11 @@ pub(super) fn outline(
             "a truss needs members",
         ));
     }
-    let mut at_joint: std::collections::BTreeMap<usize, Vec<usize>> = Default::default();
-    for (fi, &(j, _)) in ext.forces.iter().enumerate() {
-        at_joint.entry(j).or_default().push(fi);
-    }
+    // The forces at each joint, in their order (one list for all joints, not one each).
+    let at_joint = faces::Lists::grouped(
+        t.joints.len(),
+        (ext.forces.iter().enumerate()).map(|(fi, &(j, _))| (j, fi)),
+    );
     // The outline's half-edges in order: h_in = u → v, then h_out = v → w.
     let mut space = 0;
     for (idx, &h_in) in outer.iter().enumerate() {
@@ -76,8 +83,7 @@ pub(super) fn outline(
         } else {
             faces::cw(back, g.angle[h_out])
         };
-        let at_v = at_joint.get(&v).map_or(&[][..], |v| v.as_slice());
-        for fi in in_sector(ext, at_v, &placed, back, span) {
+        for fi in in_sector(ext, &at_joint[v], &placed, back, span) {
             placed[fi] = true;
             order.push(fi);
             space += 1;
