@@ -277,14 +277,14 @@ impl JointLoadSpec {
     }
 
     /// The force, given where the joints are; `Err` says what is wrong with the spec.
-    fn vector(&self, at: &HashMap<&str, [f64; 2]>) -> Result<Vector, String> {
+    fn vector(&self, at: impl Fn(&str) -> Option<[f64; 2]>) -> Result<Vector, String> {
         match (self.kg, self.kg_xy, self.angle_deg, &self.toward) {
             (Some(k), None, a, None) => {
                 let (s, c) = crate::kernel::angle::sin_cos_deg(a.unwrap_or(270.0));
                 Ok(Vector::new(k * c, k * s))
             }
             (Some(k), None, None, Some(to)) => {
-                let (Some(p), Some(q)) = (at.get(self.joint.as_str()), at.get(to.as_str())) else {
+                let (Some(p), Some(q)) = (at(self.joint.as_str()), at(to.as_str())) else {
                     return Err(format!("`toward` names joint `{to}`, which does not exist"));
                 };
                 let d = Vector::new(q[0] - p[0], q[1] - p[1]);
@@ -631,7 +631,7 @@ impl TrussScene {
             ));
         }
         self.check_roof(origin, index)?;
-        let at = self.joint_positions();
+        let at = |name: &str| self.joint_at(index, name);
         for (c, case) in self.load_cases.iter().enumerate() {
             for (l, load) in case.loads.iter().enumerate() {
                 if !index.contains_key(load.joint.as_str()) {
@@ -640,7 +640,7 @@ impl TrussScene {
                         format!("load at joint `{}`, which does not exist", load.joint),
                     ));
                 }
-                match load.vector(&at) {
+                match load.vector(at) {
                     Ok(v) if v.x.is_finite() && v.y.is_finite() => {}
                     Ok(_) => {
                         return Err(bad(
@@ -995,11 +995,9 @@ impl TrussScene {
         }
     }
 
-    fn joint_positions(&self) -> HashMap<&str, [f64; 2]> {
-        self.joints
-            .iter()
-            .map(|j| (j.name.as_str(), j.at_m))
-            .collect()
+    /// Where the joint `name` is, found by the joints' `index`.
+    fn joint_at(&self, index: &HashMap<&str, usize>, name: &str) -> Option<[f64; 2]> {
+        index.get(name).map(|&i| self.joints[i].at_m)
     }
 
     /// The problem the scene describes.
@@ -1016,7 +1014,11 @@ impl TrussScene {
             truss,
             cases,
             combinations,
-            pairs: self.pair_indices(&self.member_index()),
+            // The members' map only where pairs name members.
+            pairs: match self.diagonal_pairs.is_empty() {
+                true => Vec::new(),
+                false => self.pair_indices(&self.member_index()),
+            },
             pair_mode: self.diagonal_mode,
             position_tables,
             drawing,
@@ -1025,13 +1027,8 @@ impl TrussScene {
 
     /// Every load case: the roof's, the scene's, and each position of each moving load.
     fn all_cases(&self, truss: &Truss) -> Vec<LoadCase> {
-        let index: HashMap<&str, usize> = self
-            .joints
-            .iter()
-            .enumerate()
-            .map(|(i, j)| (j.name.as_str(), i))
-            .collect();
-        let at = self.joint_positions();
+        let index = self.joint_index();
+        let at = |name: &str| self.joint_at(&index, name);
         let mut cases: Vec<LoadCase> = self.roof_cases(truss);
         cases.extend(self.load_cases.iter().map(|c| {
             LoadCase {
@@ -1041,7 +1038,7 @@ impl TrussScene {
                     .iter()
                     .map(|l| JointLoad {
                         joint: index[l.joint.as_str()],
-                        force: l.vector(&at).unwrap_or_else(|_| Vector::zeros()),
+                        force: l.vector(at).unwrap_or_else(|_| Vector::zeros()),
                     })
                     .collect(),
                 force_scale: c.force_scale_kg_per_mm,
