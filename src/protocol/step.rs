@@ -524,7 +524,7 @@ pub struct Check {
     /// The object checked, where the quantity and the step's context do not name it
     /// ("member 5" of a truss: every member's force is one quantity, read at its joint).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub object: Option<Text>,
+    pub object: Option<std::sync::Arc<str>>,
     /// Its unit.
     pub unit: Text,
     /// The value read off the construction at its scale.

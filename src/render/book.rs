@@ -130,7 +130,9 @@ mod tests {
         for (k, force) in [(1, -869.4), (2, 441.6)] {
             let s = b.tally(force, "kg", "S", &[], n.clone());
             b.checking(
-                || format!("member {k}"),
+                |s| {
+                    let _ = write!(s, "member {k}");
+                },
                 |b| b.check(&s, "AB", "kg", "ΣY = 0", 1000.0, || force),
             );
         }

@@ -181,7 +181,10 @@ pub(crate) fn check_member(
     reference: f64,
 ) {
     if let Some(sol) = sol {
-        let name = || ["member ", t.members[m].name.as_str()].concat();
+        let name = |s: &mut String| {
+            s.push_str("member ");
+            s.push_str(&t.members[m].name);
+        };
         b.checking(name, |b| {
             b.check(
                 value,

@@ -147,7 +147,7 @@ pub struct Board {
     context: Option<std::sync::Arc<str>>,
     /// The object the checks made inside [`Board::checking`] name.
     #[serde(skip)]
-    checked_object: Option<Text>,
+    checked_object: Option<std::sync::Arc<str>>,
     /// Where [`Board::naming`] writes a context before it is shared (kept for its room).
     #[serde(skip)]
     scratch: String,
@@ -689,12 +689,18 @@ impl Board {
     /// let mut b = Board::recording();
     /// let s = b.tally(2400.0, "kg", Label::NONE, &[], n);
     /// let closed = || 2400.0;
-    /// b.checking(|| "member 5".into(), |b| b.check(&s, "member force", "kg", "ΣY = 0", 1.0, closed));
+    /// b.checking(|name| name.push_str("member 5"), |b| b.check(&s, "member force", "kg", "ΣY = 0", 1.0, closed));
     /// assert_eq!(b.steps().last().unwrap().checks[0].object.as_deref(), Some("member 5"));
     /// ```
-    pub fn checking(&mut self, object: impl FnOnce() -> String, checks: impl FnOnce(&mut Board)) {
+    pub fn checking(&mut self, object: impl FnOnce(&mut String), checks: impl FnOnce(&mut Board)) {
         if self.recording {
-            self.checked_object = Some(object().into());
+            // Written into the board's buffer and shared by every check made within: one
+            // allocation for the name (a truss check names every member it checks).
+            let mut s = std::mem::take(&mut self.scratch);
+            s.clear();
+            object(&mut s);
+            self.checked_object = Some(s.as_str().into());
+            self.scratch = s;
         }
         checks(self);
         self.checked_object = None;
