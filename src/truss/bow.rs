@@ -311,17 +311,11 @@ impl<'a> Found<'a> {
             }
             let (l, r) = (self.space_of_half[2 * m], self.space_of_half[2 * m + 1]);
             if let (Some(pl), Some(pr)) = (pt[l], pt[r]) {
-                let v = b.naming(
-                    |s| {
-                        s.push_str("member ");
-                        s.push_str(&t.members[m].name);
-                    },
-                    |b| {
-                        let name = Role::Result.labelled(member_label(b, t, m));
-                        b.segment(&pl, &pr, name, N_SIDE);
-                        b.measure(&pl, &pr, &mline[m], kg, member_label(b, t, m), N_FORCE)
-                    },
-                );
+                let v = b.naming(write_member(t, m), |b| {
+                    let name = Role::Result.labelled(member_label(b, t, m));
+                    b.segment(&pl, &pr, name, N_SIDE);
+                    b.measure(&pl, &pr, &mline[m], kg, member_label(b, t, m), N_FORCE)
+                });
                 check_member(b, t, &v, m, sol, self.reference);
                 self.forces[m] = Some(v.g);
                 self.ids[m] = v.id;

@@ -9,7 +9,7 @@
 //! its side of the polygon: pointing away from the joint it pulls (tension, Regel 1).
 //! Every member is found once, so it is drawn in one joint polygon and read there.
 
-use super::labels::member_label;
+use super::labels::{member_label, write_member};
 use super::layout::{grow, EMPTY};
 use super::plan::{check_member, member_check_reference, plan_result, CaseResult, PlanContext};
 use crate::kernel::tolerance::JOINT_CUT_SIN_EPS;
@@ -326,16 +326,10 @@ impl<'a> Polygons<'a> {
         let kg = Scale::kg(self.ctx.dr.force_scale);
         let on_v = t.members[m].ends[0] == v;
         let (p, q) = if on_v { (from, to) } else { (to, from) };
-        b.naming(
-            |s| {
-                s.push_str("member ");
-                s.push_str(&t.members[m].name);
-            },
-            |b| {
-                let name = Role::Result.labelled(member_label(b, t, m));
-                b.segment(from, to, name, N_SIDE);
-                b.measure(p, q, &self.ctx.mline[m], kg, member_label(b, t, m), N_FORCE)
-            },
-        )
+        b.naming(write_member(t, m), |b| {
+            let name = Role::Result.labelled(member_label(b, t, m));
+            b.segment(from, to, name, N_SIDE);
+            b.measure(p, q, &self.ctx.mline[m], kg, member_label(b, t, m), N_FORCE)
+        })
     }
 }

@@ -42,8 +42,17 @@ pub(crate) fn member_number(b: &Board, t: &Truss, m: usize) -> Label {
     Label::from_name(&t.members[m].name)
 }
 
+/// A member as a step's situation or a check's object names it ("member 5"), written into
+/// the board's buffer ([`Board::naming`], [`Board::checking`]).
+pub(crate) fn write_member(t: &Truss, m: usize) -> impl FnOnce(&mut String) + '_ {
+    move |s| {
+        s.push_str("member ");
+        s.push_str(&t.members[m].name);
+    }
+}
+
 /// A joint's label: the scene's name for it (the books' Roman numerals, or any other; see
-/// [`Label::from_name`]).
+/// [`Label::from_name`]); none on a board that does not keep its drawing.
 pub(super) fn joint_label(b: &Board, t: &Truss, j: usize) -> Label {
     // Only a drawing shows it (as `member_label`): a check names its joint by its context.
     if !b.is_drawing() {

@@ -1,6 +1,7 @@
 //! The plan context shared by Bow's notation, the joint polygons and Ritter's sections: the
 //! drawing's scales, the external forces, the result of a case and the check of a member.
 
+use super::labels::write_member;
 use super::matrix::{self, Solution};
 use super::{JointLoad, LoadCase, MemberForce, SupportKind, Truss};
 use crate::kernel::{Line, Point, Vector};
@@ -181,11 +182,7 @@ pub(crate) fn check_member(
     reference: f64,
 ) {
     if let Some(sol) = sol {
-        let name = |s: &mut String| {
-            s.push_str("member ");
-            s.push_str(&t.members[m].name);
-        };
-        b.checking(name, |b| {
+        b.checking(write_member(t, m), |b| {
             b.check(
                 value,
                 "member force (tension +)",

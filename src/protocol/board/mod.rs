@@ -148,7 +148,8 @@ pub struct Board {
     /// The object the checks made inside [`Board::checking`] name.
     #[serde(skip)]
     checked_object: Option<std::sync::Arc<str>>,
-    /// Where [`Board::naming`] writes a context before it is shared (kept for its room).
+    /// Where [`Board::naming`] and [`Board::checking`] write a name before it is shared
+    /// (kept for its room).
     #[serde(skip)]
     scratch: String,
     /// The part of the figure the next steps draw in.
@@ -465,21 +466,30 @@ impl Board {
             return steps(self);
         }
         let base = self.context();
-        // Written into the board's own buffer and shared from it: one allocation a naming
-        // where the name, the joined text and the shared one were three (a truss check
-        // names every member force it reads).
-        let mut s = std::mem::take(&mut self.scratch);
-        s.clear();
-        if let Some(c) = &base {
-            s.push_str(c);
-            s.push_str(", ");
-        }
-        what(&mut s);
-        self.set_context_recorded(s.as_str().into());
-        self.scratch = s;
+        // One allocation a naming where the name, the joined text and the shared one were
+        // three (a truss check names every member force it reads).
+        let named = self.written(|s| {
+            if let Some(c) = &base {
+                s.push_str(c);
+                s.push_str(", ");
+            }
+            what(s);
+        });
+        self.set_context_recorded(named);
         let out = steps(self);
         self.set_context_to(base);
         out
+    }
+
+    /// A text written by `write` into the board's buffer (kept for its room) and shared:
+    /// one allocation, the shared text's own.
+    fn written(&mut self, write: impl FnOnce(&mut String)) -> std::sync::Arc<str> {
+        let mut s = std::mem::take(&mut self.scratch);
+        s.clear();
+        write(&mut s);
+        let shared = s.as_str().into();
+        self.scratch = s;
+        shared
     }
 
     /// Puts back a context taken with [`Board::context`] after
@@ -694,13 +704,9 @@ impl Board {
     /// ```
     pub fn checking(&mut self, object: impl FnOnce(&mut String), checks: impl FnOnce(&mut Board)) {
         if self.recording {
-            // Written into the board's buffer and shared by every check made within: one
-            // allocation for the name (a truss check names every member it checks).
-            let mut s = std::mem::take(&mut self.scratch);
-            s.clear();
-            object(&mut s);
-            self.checked_object = Some(s.as_str().into());
-            self.scratch = s;
+            // Shared by every check made within: one allocation for the name (a truss
+            // check names every member it checks).
+            self.checked_object = Some(self.written(object));
         }
         checks(self);
         self.checked_object = None;
