@@ -966,6 +966,9 @@ fn cores() -> usize {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    if !matches!(cli.command, Command::Serve { .. }) {
+        heap::prepare();
+    }
     let level = if cli.quiet {
         0
     } else if cli.verbose {
@@ -981,4 +984,55 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// The heap of a command that runs once and ends (every command but `serve`).
+///
+/// A `check` of a 10,000-joint girder touches some 26 MB of fresh heap. With glibc's defaults
+/// that is 7,900 page faults of 4 KiB, and on a virtual machine a fault costs microseconds:
+/// a fifth of the command's wall time went to the kernel. So, once at the start: the heap
+/// grows by one stretch of [`REGION`] (address space only; a page is backed when first
+/// touched), the kernel is asked to back it with huge pages where it can
+/// (`MADV_HUGEPAGE`, transparent huge pages in their `madvise` mode), and nothing is handed
+/// back to the system before the command ends. Past the stretch the heap grows as before.
+/// Where the heap cannot grow so (a tight `RLIMIT_DATA`), nothing changes. The bytes a
+/// command writes do not depend on any of this; `docs/performance.md` has the numbers.
+mod heap {
+    /// The stretch the heap grows by at the start: the peak of a 100,000-joint check fits.
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    const REGION: usize = 256 << 20;
+
+    /// Prepares the heap (Linux with glibc; elsewhere a no-op).
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    pub fn prepare() {
+        const HUGE_PAGE: usize = 2 << 20;
+        const DEFAULT_TOP_PAD: i32 = 128 << 10;
+        // SAFETY: mallopt, sbrk(0), malloc, free and madvise are called as glibc documents
+        // them: sbrk(0) only reads the break, the block is freed once, and madvise is given
+        // a range inside the heap just grown, aligned to the huge page.
+        unsafe {
+            // Blocks up to 32 MiB (glibc's largest threshold) from the heap, not mmap: the
+            // heap is what is prepared. Never trimmed: the command ends soon.
+            libc::mallopt(libc::M_MMAP_THRESHOLD, 32 << 20);
+            libc::mallopt(libc::M_TRIM_THRESHOLD, i32::MAX);
+            libc::mallopt(libc::M_TOP_PAD, REGION as i32);
+            let before = libc::sbrk(0) as usize;
+            let block = libc::malloc(1 << 20);
+            libc::free(std::hint::black_box(block));
+            let after = libc::sbrk(0) as usize;
+            libc::mallopt(libc::M_TOP_PAD, DEFAULT_TOP_PAD);
+            let start = before.next_multiple_of(HUGE_PAGE);
+            if before != usize::MAX && after > start {
+                libc::madvise(
+                    start as *mut libc::c_void,
+                    after - start,
+                    libc::MADV_HUGEPAGE,
+                );
+            }
+        }
+    }
+
+    /// Prepares the heap (Linux with glibc; elsewhere a no-op).
+    #[cfg(not(all(target_os = "linux", target_env = "gnu")))]
+    pub fn prepare() {}
 }
