@@ -45,8 +45,12 @@ pub(super) fn scan(text: &str) -> Result<Scanned, serde_json::Error> {
 ///
 /// The bytes say nothing of the text's syntax: the answer holds only if the text is JSON,
 /// which the typed parse that follows finds out. Where that parse fails, the caller scans in
-/// full and reports what the scan reports first. A 10,000-joint truss is read in a tenth of
-/// the walk's instructions.
+/// full and reports what the scan reports first.
+///
+/// The quotes are found 32 bytes at a time ([`Quotes`]) and every text measured between them; only a text that
+/// could matter (longer than a field allows, `procedure`, or the value after a `procedure`
+/// key) is placed, by walking the bytes before it for its depth and key ([`Cursor`]). A
+/// 10,000-joint truss, whose `procedure` comes first, is read in a few hundred of its bytes.
 pub(super) fn quick(text: &str) -> Option<Scanned> {
     let bytes = text.as_bytes();
     if bytes.iter().find(|b| !b.is_ascii_whitespace()) != Some(&b'{')
@@ -59,55 +63,147 @@ pub(super) fn quick(text: &str) -> Option<Scanned> {
         object: true,
         ..Scanned::default()
     };
-    // Strings run from one quote to the next; the bytes between them hold the brackets.
-    let (mut depth, mut i, mut key) = (0i32, 0, None::<(usize, usize)>);
-    while i < bytes.len() {
-        match bytes[i] {
-            b'{' | b'[' => (depth, key) = (depth + 1, None),
-            b'}' | b']' => (depth, key) = (depth - 1, None),
-            b'"' => {
-                let open = i + 1;
-                let close = open + bytes[open..].iter().position(|&b| b == b'"')?;
-                // The text a key of the top level names, if it is one.
-                let value_of = key.take().filter(|_| depth == 1);
-                let value_of = value_of.map(|(a, b)| &bytes[a..b]);
-                let max = match value_of {
-                    Some(b"notes") => MAX_NOTES_CHARS,
-                    _ => MAX_TEXT_CHARS,
-                };
-                if close - open > max {
+    let mut walk = Cursor::default();
+    let mut look_next = false;
+    // Without a backslash every quote opens or closes a text, in turn.
+    let mut quotes = Quotes::new(bytes);
+    while let Some(quote) = quotes.next() {
+        let (open, close) = (quote + 1, quotes.next()?);
+        let name = &bytes[open..close];
+        if close - open <= MAX_TEXT_CHARS && name != b"procedure" && !look_next {
+            continue;
+        }
+        walk.up_to(bytes, quote)?;
+        // The text a key of the top level names, if it is one.
+        let value_of = walk.key.take().filter(|_| walk.depth == 1);
+        let value_of = value_of.map(|(a, b)| &bytes[a..b]);
+        let max = match value_of {
+            Some(b"notes") => MAX_NOTES_CHARS,
+            _ => MAX_TEXT_CHARS,
+        };
+        if close - open > max {
+            return None;
+        }
+        if value_of == Some(b"procedure") {
+            if found.procedure.is_some() {
+                return None;
+            }
+            found.procedure = Some(serde_json::Value::String(text[open..close].to_string()));
+        }
+        look_next = false;
+        let mut next = bytes[close + 1..]
+            .iter()
+            .filter(|b| !b.is_ascii_whitespace());
+        if next.next() == Some(&b':') {
+            // A key; `procedure`'s value must be a text, and is looked at next.
+            walk.key = Some((open, close));
+            if walk.depth == 1 && name == b"procedure" {
+                if next.next() != Some(&b'"') {
                     return None;
                 }
-                if value_of == Some(b"procedure") {
-                    if found.procedure.is_some() {
-                        return None;
-                    }
-                    let name = text[open..close].to_string();
-                    found.procedure = Some(serde_json::Value::String(name));
-                }
-                let mut next = bytes[close + 1..]
-                    .iter()
-                    .filter(|b| !b.is_ascii_whitespace());
-                if next.next() == Some(&b':') {
-                    // A key; `procedure`'s value must be a text.
-                    key = Some((open, close));
-                    if depth == 1
-                        && &bytes[open..close] == b"procedure"
-                        && next.next() != Some(&b'"')
-                    {
-                        return None;
-                    }
-                }
-                i = close;
+                look_next = true;
             }
-            // A key's value is the next thing after its colon.
-            b':' => {}
-            b if !b.is_ascii_whitespace() => key = None,
-            _ => {}
         }
-        i += 1;
+        walk.at = close + 1;
     }
     Some(found)
+}
+
+/// The places of the quotes in a text, in order: found 32 bytes at a time as a mask of
+/// the bytes that are one (a loop the compiler turns into vector compares), the mask's bits
+/// then read off one by one. On a scene, where a quote comes every few bytes, some five
+/// times fewer instructions than a `memchr` call per quote.
+struct Quotes<'a> {
+    bytes: &'a [u8],
+    /// Where the current block of 32 bytes starts, and its quotes not yet given.
+    block: usize,
+    mask: u32,
+}
+
+impl<'a> Quotes<'a> {
+    fn new(bytes: &'a [u8]) -> Self {
+        let mut q = Quotes {
+            bytes,
+            block: 0,
+            mask: 0,
+        };
+        q.mask = q.mask_at(0);
+        q
+    }
+
+    /// The quotes among the 32 bytes from `at` (fewer at the end), as bits.
+    fn mask_at(&self, at: usize) -> u32 {
+        let end = (at + 32).min(self.bytes.len());
+        let chunk = self.bytes.get(at..end).unwrap_or_default();
+        if let Ok(full) = <&[u8; 32]>::try_from(chunk) {
+            full.iter()
+                .enumerate()
+                .fold(0, |m, (i, &b)| m | (u32::from(b == b'"') << i))
+        } else {
+            chunk
+                .iter()
+                .enumerate()
+                .fold(0, |m, (i, &b)| m | (u32::from(b == b'"') << i))
+        }
+    }
+}
+
+impl Iterator for Quotes<'_> {
+    type Item = usize;
+
+    fn next(&mut self) -> Option<usize> {
+        while self.mask == 0 {
+            self.block += 32;
+            if self.block >= self.bytes.len() {
+                return None;
+            }
+            self.mask = self.mask_at(self.block);
+        }
+        let bit = self.mask.trailing_zeros() as usize;
+        self.mask &= self.mask - 1;
+        Some(self.block + bit)
+    }
+}
+
+/// The depth of brackets and the last key before a place in a scene's bytes, found by
+/// walking them from where the last walk ended: a key is the text before a colon, and any
+/// other byte but white space and the colon ends it.
+#[derive(Default)]
+struct Cursor {
+    /// The bytes before this one have been walked.
+    at: usize,
+    depth: i32,
+    key: Option<(usize, usize)>,
+}
+
+impl Cursor {
+    /// Walks up to `end` (a quote that opens a text); `None` if a text runs off the end.
+    fn up_to(&mut self, bytes: &[u8], end: usize) -> Option<()> {
+        let mut i = self.at;
+        while i < end {
+            match bytes[i] {
+                b'{' | b'[' => (self.depth, self.key) = (self.depth + 1, None),
+                b'}' | b']' => (self.depth, self.key) = (self.depth - 1, None),
+                b'"' => {
+                    let open = i + 1;
+                    let close = open + memchr::memchr(b'"', &bytes[open..])?;
+                    self.key = None;
+                    let next = bytes[close + 1..].iter().find(|b| !b.is_ascii_whitespace());
+                    if next == Some(&b':') {
+                        self.key = Some((open, close));
+                    }
+                    i = close;
+                }
+                // A key's value is the next thing after its colon.
+                b':' => {}
+                b if !b.is_ascii_whitespace() => self.key = None,
+                _ => {}
+            }
+            i += 1;
+        }
+        self.at = end;
+        Some(())
+    }
 }
 
 /// Whether the bytes hold one of U+0080 to U+009F (C2 80 to C2 9F in UTF-8), control
@@ -352,6 +448,108 @@ mod tests {
         ))
         .unwrap();
         assert_eq!(s.too_long, None);
+    }
+
+    /// The quick answer as it was first written, walking every byte: the answer `quick`
+    /// must give, found in fewer steps.
+    fn quick_walking_every_byte(text: &str) -> Option<Scanned> {
+        let bytes = text.as_bytes();
+        if bytes.iter().find(|b| !b.is_ascii_whitespace()) != Some(&b'{')
+            || memchr::memchr2(b'\\', 0x7f, bytes).is_some()
+            || holds_c1(bytes)
+        {
+            return None;
+        }
+        let mut found = Scanned {
+            object: true,
+            ..Scanned::default()
+        };
+        // Strings run from one quote to the next; the bytes between them hold the brackets.
+        let (mut depth, mut i, mut key) = (0i32, 0, None::<(usize, usize)>);
+        while i < bytes.len() {
+            match bytes[i] {
+                b'{' | b'[' => (depth, key) = (depth + 1, None),
+                b'}' | b']' => (depth, key) = (depth - 1, None),
+                b'"' => {
+                    let open = i + 1;
+                    let close = open + bytes[open..].iter().position(|&b| b == b'"')?;
+                    // The text a key of the top level names, if it is one.
+                    let value_of = key.take().filter(|_| depth == 1);
+                    let value_of = value_of.map(|(a, b)| &bytes[a..b]);
+                    let max = match value_of {
+                        Some(b"notes") => MAX_NOTES_CHARS,
+                        _ => MAX_TEXT_CHARS,
+                    };
+                    if close - open > max {
+                        return None;
+                    }
+                    if value_of == Some(b"procedure") {
+                        if found.procedure.is_some() {
+                            return None;
+                        }
+                        let name = text[open..close].to_string();
+                        found.procedure = Some(serde_json::Value::String(name));
+                    }
+                    let mut next = bytes[close + 1..]
+                        .iter()
+                        .filter(|b| !b.is_ascii_whitespace());
+                    if next.next() == Some(&b':') {
+                        // A key; `procedure`'s value must be a text.
+                        key = Some((open, close));
+                        if depth == 1
+                            && &bytes[open..close] == b"procedure"
+                            && next.next() != Some(&b'"')
+                        {
+                            return None;
+                        }
+                    }
+                    i = close;
+                }
+                // A key's value is the next thing after its colon.
+                b':' => {}
+                b if !b.is_ascii_whitespace() => key = None,
+                _ => {}
+            }
+            i += 1;
+        }
+        Some(found)
+    }
+
+    #[test]
+    fn the_quick_answer_is_the_one_every_byte_walked_gives() {
+        let long = "x".repeat(401);
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes");
+        let mut texts: Vec<String> = vec![
+            r#"{"title": "procedure", "procedure": "beam"}"#.into(),
+            r#"{"a": {"procedure": 1}, "b": ["procedure", {"procedure": "x"}], "procedure": "truss"}"#.into(),
+            r#"{"a": [{"procedure": "x"}], "procedure" :
+                "truss", "procedure": "beam"}"#.into(),
+            r#"{"procedure": ["truss"]}"#.into(),
+            r#"{"procedure" "truss"}"#.into(),
+            r#"{"procedure": "trus"#.into(),
+            r#"{"a": "b", "c"#.into(),
+            r#"{"a": [1, {"b": "c"}], "notes": "n"}"#.into(),
+            format!(r#"{{"procedure": "{long}"}}"#),
+            format!(r#"{{"a": [{{"b": 1}}], "notes": "{long}", "procedure": "beam"}}"#),
+            format!(r#"{{"a": {{"b": [1, 2]}}, "c": {{"notes": "{long}"}}}}"#),
+            format!(r#"{{"notes": 1, "x": "{long}"}}"#),
+            format!(r#"{{"notes": "{}"}}"#, "y".repeat(20_001)),
+            format!(r#"{{"notes": "{long}", "notes": "{long}", "t": "{long}"}}"#),
+        ];
+        for e in std::fs::read_dir(dir).unwrap() {
+            let text = std::fs::read_to_string(e.unwrap().path()).unwrap();
+            // The scene, its notes made long, and its procedure moved last.
+            let notes = text.replacen('{', &format!(r#"{{"notes": "{long}", "#), 1);
+            let moved = text.replacen(r#""procedure""#, r#""procedure_was""#, 1);
+            let moved = match moved.rfind('}') {
+                Some(at) => format!(r#"{}, "procedure": "beam"}}"#, &moved[..at]),
+                None => moved,
+            };
+            texts.extend([text, notes, moved]);
+        }
+        for t in &texts {
+            assert_eq!(quick(t), quick_walking_every_byte(t), "{t:.120}");
+        }
     }
 
     #[test]
