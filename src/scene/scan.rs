@@ -47,10 +47,11 @@ pub(super) fn scan(text: &str) -> Result<Scanned, serde_json::Error> {
 /// which the typed parse that follows finds out. Where that parse fails, the caller scans in
 /// full and reports what the scan reports first.
 ///
-/// The quotes are found 32 bytes at a time ([`Quotes`]) and every text measured between them; only a text that
-/// could matter (longer than a field allows, `procedure`, or the value after a `procedure`
-/// key) is placed, by walking the bytes before it for its depth and key ([`Cursor`]). A
-/// 10,000-joint truss, whose `procedure` comes first, is read in a few hundred of its bytes.
+/// The quotes are found 32 bytes at a time ([`Quotes`]) and every text measured between
+/// them; only a text that could matter (longer than a field allows, `procedure`, or the
+/// value after a `procedure` key) is placed, by walking the bytes before it for its depth
+/// and key ([`Cursor`]). A 10,000-joint truss, whose `procedure` comes first, is walked
+/// for a few dozen of its bytes.
 pub(super) fn quick(text: &str) -> Option<Scanned> {
     let bytes = text.as_bytes();
     if bytes.iter().find(|b| !b.is_ascii_whitespace()) != Some(&b'{')
