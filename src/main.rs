@@ -958,6 +958,8 @@ fn forces_cmd(scene: &Path, format: TableFormat) -> Result<ExitCode, Fail> {
         TableFormat::Json => forces::json(&results, &t.combinations, t.envelope.as_ref()) + "\n",
     };
     say(&text)?;
+    // As `check`: what was built is left for the system to take back when the process ends.
+    std::mem::forget((board, results, p));
     Ok(ExitCode::SUCCESS)
 }
 
