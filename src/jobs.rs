@@ -30,6 +30,35 @@ where
     T: Sync,
     R: Send,
 {
+    dearest_first_on(items, cost, workers, || {}, f)
+}
+
+/// [`dearest_first`], with `start` run once on every thread it starts, before its first
+/// item (not on the calling thread, which works alone where one worker is asked for): what
+/// a thread needs of its own, such as a prepared heap.
+///
+/// ```
+/// use graphostatik::jobs::dearest_first_on;
+/// use std::sync::atomic::{AtomicUsize, Ordering};
+/// let started = AtomicUsize::new(0);
+/// let start = || {
+///     started.fetch_add(1, Ordering::Relaxed);
+/// };
+/// let out = dearest_first_on(&[1u64, 2, 3, 4], |c| *c, 2, start, |c| c + 1);
+/// assert_eq!(out, vec![2, 3, 4, 5]);
+/// assert_eq!(started.load(Ordering::Relaxed), 2);
+/// ```
+pub fn dearest_first_on<T, R>(
+    items: &[T],
+    cost: impl Fn(&T) -> u64,
+    workers: usize,
+    start: impl Fn() + Sync,
+    f: impl Fn(&T) -> R + Sync,
+) -> Vec<R>
+where
+    T: Sync,
+    R: Send,
+{
     let workers = workers.min(items.len());
     if workers <= 1 {
         return items.iter().map(f).collect();
@@ -39,11 +68,14 @@ where
     let slots: Vec<Mutex<Option<R>>> = items.iter().map(|_| Mutex::new(None)).collect();
     std::thread::scope(|s| {
         for _ in 0..workers {
-            s.spawn(|| loop {
-                let k = next.fetch_add(1, Ordering::Relaxed);
-                let Some(&i) = order.get(k) else { break };
-                let r = f(&items[i]);
-                *slots[i].lock().unwrap_or_else(|e| e.into_inner()) = Some(r);
+            s.spawn(|| {
+                start();
+                loop {
+                    let k = next.fetch_add(1, Ordering::Relaxed);
+                    let Some(&i) = order.get(k) else { break };
+                    let r = f(&items[i]);
+                    *slots[i].lock().unwrap_or_else(|e| e.into_inner()) = Some(r);
+                }
             });
         }
     });

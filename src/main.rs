@@ -554,11 +554,9 @@ fn render_all(
     let workers = jobs.map(usize::from).unwrap_or_else(cores);
     let done = std::sync::atomic::AtomicUsize::new(0);
     let size = |f: &PathBuf| std::fs::metadata(f).map_or(0, |m| m.len());
-    let main_thread = std::thread::current().id();
-    let drawn = graphostatik::jobs::dearest_first(files, size, workers, |f| {
-        if std::thread::current().id() != main_thread {
-            heap::prepare_thread();
-        }
+    // Each worker thread prepares its own heap once, as `main` prepared the first one's.
+    let prepare = heap::prepare_thread;
+    let drawn = graphostatik::jobs::dearest_first_on(files, size, workers, prepare, |f| {
         let start = std::time::Instant::now();
         let p = load(f)?;
         let board = construct(f, &p)?;
@@ -585,13 +583,11 @@ fn render_all(
         .flat_map(|&fmt| (0..upto).map(move |i| (i, fmt)))
         .collect();
     let objects = |&(i, _): &(usize, Format)| drawn[i].as_ref().map_or(0, |d| d.objects as u64);
-    let made = graphostatik::jobs::dearest_first(&raster, objects, workers, |&(i, fmt)| {
-        if std::thread::current().id() != main_thread {
-            heap::prepare_thread();
-        }
-        let d = drawn[i].as_ref().expect("exports only of drawn scenes");
-        exports.export(&files[i], fmt, &d.svg)
-    });
+    let made =
+        graphostatik::jobs::dearest_first_on(&raster, objects, workers, prepare, |&(i, fmt)| {
+            let d = drawn[i].as_ref().expect("exports only of drawn scenes");
+            exports.export(&files[i], fmt, &d.svg)
+        });
     let mut made: std::collections::BTreeMap<(usize, Format), Result<Vec<u8>, Fail>> =
         raster.into_iter().zip(made).collect();
     let written = drawn.into_iter().enumerate().map(|(i, d)| {
@@ -1050,7 +1046,7 @@ mod heap {
     }
 
     /// Prepares the heap the calling thread allocates from, where that is a heap of its own
-    /// (Linux with glibc; elsewhere a no-op). glibc gives a thread that is not the first an
+    /// (Linux with glibc; elsewhere a no-op); once per thread, at its start. glibc gives a thread that is not the first an
     /// arena of its own, on heaps of 64 MiB that each start at a multiple of 64 MiB, made
     /// writable a page at a time as they grow (a `mprotect` each: a thousand for the
     /// bundled figures); and a huge page needs its whole 2 MiB writable. So the heap is
