@@ -54,10 +54,7 @@ pub(super) fn scan(text: &str) -> Result<Scanned, serde_json::Error> {
 /// for a few dozen of its bytes.
 pub(super) fn quick(text: &str) -> Option<Scanned> {
     let bytes = text.as_bytes();
-    if bytes.iter().find(|b| !b.is_ascii_whitespace()) != Some(&b'{')
-        || memchr::memchr2(b'\\', 0x7f, bytes).is_some()
-        || holds_c1(bytes)
-    {
+    if !plain_object(bytes) {
         return None;
     }
     let mut found = Scanned {
@@ -132,21 +129,24 @@ impl<'a> Quotes<'a> {
         q
     }
 
-    /// The quotes among the 32 bytes from `at` (fewer at the end), as bits.
+    /// The quotes among the 32 bytes from `at` (fewer at the end), as bits: a whole block
+    /// as an array, whose fixed length lets the compiler compare it as vectors.
     fn mask_at(&self, at: usize) -> u32 {
         let end = (at + 32).min(self.bytes.len());
         let chunk = self.bytes.get(at..end).unwrap_or_default();
-        if let Ok(full) = <&[u8; 32]>::try_from(chunk) {
-            full.iter()
-                .enumerate()
-                .fold(0, |m, (i, &b)| m | (u32::from(b == b'"') << i))
-        } else {
-            chunk
-                .iter()
-                .enumerate()
-                .fold(0, |m, (i, &b)| m | (u32::from(b == b'"') << i))
+        match <&[u8; 32]>::try_from(chunk) {
+            Ok(block) => quote_bits(block.iter()),
+            Err(_) => quote_bits(chunk.iter()),
         }
     }
+}
+
+/// Bit `i` set where the `i`th byte is a quote.
+#[inline(always)]
+fn quote_bits<'b>(bytes: impl Iterator<Item = &'b u8>) -> u32 {
+    bytes
+        .enumerate()
+        .fold(0, |m, (i, &b)| m | (u32::from(b == b'"') << i))
 }
 
 impl Iterator for Quotes<'_> {
@@ -205,6 +205,15 @@ impl Cursor {
         self.at = end;
         Some(())
     }
+}
+
+/// Whether the bytes may be read quickly at all: an object (the first byte `{`), no
+/// backslash (so every string runs from one quote to the next), and none of the control
+/// characters a string may hold unescaped.
+fn plain_object(bytes: &[u8]) -> bool {
+    bytes.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'{')
+        && memchr::memchr2(b'\\', 0x7f, bytes).is_none()
+        && !holds_c1(bytes)
 }
 
 /// Whether the bytes hold one of U+0080 to U+009F (C2 80 to C2 9F in UTF-8), control
@@ -455,10 +464,7 @@ mod tests {
     /// must give, found in fewer steps.
     fn quick_walking_every_byte(text: &str) -> Option<Scanned> {
         let bytes = text.as_bytes();
-        if bytes.iter().find(|b| !b.is_ascii_whitespace()) != Some(&b'{')
-            || memchr::memchr2(b'\\', 0x7f, bytes).is_some()
-            || holds_c1(bytes)
-        {
+        if !plain_object(bytes) {
             return None;
         }
         let mut found = Scanned {
