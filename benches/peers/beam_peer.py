@@ -29,14 +29,13 @@ Needs numpy (`pip install numpy`). Prints a Markdown table.
 import argparse
 import json
 import os
-import re
 import statistics
 import subprocess
 import sys
 import tempfile
-import time
 
 import numpy as np
+from timing import median_ms, timed_check
 
 EXE = os.path.join("target", "release", "graphostatik")
 SPAN = 8.0
@@ -67,28 +66,6 @@ def numpy_beam(scene):
     left = np.concatenate([[a], shear[:-1]])  # from the last load (or support A) to this one
     moment = np.cumsum(left * np.diff(x, prepend=0.0))
     return a, b, np.max(np.abs(moment))
-
-
-def median_ms(f, reps):
-    times = []
-    for _ in range(reps):
-        t = time.perf_counter()
-        f()
-        times.append((time.perf_counter() - t) * 1e3)
-    return statistics.median(times)
-
-
-def check(path):
-    """One `check --verbose`: (wall ms, in-process ms)."""
-    t = time.perf_counter()
-    out = subprocess.run([EXE, "check", path, "--verbose"], capture_output=True, text=True)
-    wall = (time.perf_counter() - t) * 1e3
-    if out.returncode != 0:
-        sys.exit(f"graphostatik check {path} failed ({out.returncode}): {out.stderr.strip()[:300]}")
-    m = re.search(r"([0-9.]+) ms", out.stderr)
-    if not m:
-        sys.exit(f"no time in the verbose line: {out.stderr.strip()[:300]}")
-    return wall, float(m.group(1))
 
 
 def peak_mb(path):
@@ -137,7 +114,7 @@ def main():
             ours, theirs = checked_values(path), numpy_beam(scene)
             off = max(abs(o - t) / abs(t) for o, t in zip(ours, theirs))
             t_np = median_ms(lambda: numpy_beam(scene), args.reps)
-            runs = [check(path) for _ in range(args.reps)]
+            runs = [timed_check(EXE, path) for _ in range(args.reps)]
             t_e2e = statistics.median(r[0] for r in runs)
             t_in = statistics.median(r[1] for r in runs)
             peak = peak_mb(path)

@@ -29,16 +29,15 @@ anastruct`. Prints a Markdown table.
 import argparse
 import json
 import os
-import re
 import statistics
 import subprocess
 import sys
 import tempfile
-import time
 
 import numpy as np
 import scipy.sparse
 import scipy.sparse.linalg
+from timing import median_ms, timed_check
 
 EXE = os.path.join("target", "release", "graphostatik")
 
@@ -180,22 +179,6 @@ def peers():
     return found
 
 
-def median_ms(f, reps):
-    times = []
-    for _ in range(reps):
-        t = time.perf_counter()
-        f()
-        times.append((time.perf_counter() - t) * 1e3)
-    return statistics.median(times)
-
-
-def check(path):
-    out = subprocess.run([EXE, "check", path, "--verbose"], capture_output=True, text=True)
-    if out.returncode != 0:
-        sys.exit(f"graphostatik check {path} failed ({out.returncode}): {out.stderr.strip()[:300]}")
-    return out
-
-
 def members_checked(path):
     """Member-force checks `check --json` reports (a row each, or past 1,000 checks the count
     of their kind in the summary); an untimed run of its own."""
@@ -204,13 +187,6 @@ def members_checked(path):
     if isinstance(report, list):
         return sum(1 for r in report if r["quantity"].startswith("member force"))
     return sum(k["checks"] for k in report["kinds"] if k["quantity"].startswith("member force"))
-
-
-def in_process_ms(stderr):
-    m = re.search(r"([0-9.]+) ms", stderr)
-    if not m:
-        sys.exit(f"no time in the verbose line: {stderr.strip()[:300]}")
-    return float(m.group(1))
 
 
 def main():
@@ -238,11 +214,7 @@ def main():
                 json.dump(scene, f)
             f_np = numpy_solve(scene)
             t_np = median_ms(lambda: numpy_solve(scene), args.reps)
-            runs = []
-            for _ in range(args.reps):
-                t = time.perf_counter()
-                out = check(path)
-                runs.append(((time.perf_counter() - t) * 1e3, in_process_ms(out.stderr)))
+            runs = [timed_check(EXE, path) for _ in range(args.reps)]
             t_e2e = statistics.median(r[0] for r in runs)
             t_in = statistics.median(r[1] for r in runs)
             checked = members_checked(path)
