@@ -21,7 +21,7 @@ pub(super) struct Ledger {
     /// The objects only drawn ([`Board::add_drawing`]), counted.
     pub(super) drawings: usize,
     /// The situation from each step on where it changed, in step order.
-    pub(super) contexts: Vec<(StepId, Option<std::sync::Arc<str>>)>,
+    pub(super) contexts: Vec<(StepId, Option<std::rc::Rc<str>>)>,
 }
 
 impl Ledger {

@@ -144,10 +144,10 @@ pub struct Board {
     #[serde(skip)]
     extent: Option<[f64; 4]>,
     #[serde(skip)]
-    context: Option<std::sync::Arc<str>>,
+    context: Option<std::rc::Rc<str>>,
     /// The object the checks made inside [`Board::checking`] name.
     #[serde(skip)]
-    checked_object: Option<std::sync::Arc<str>>,
+    checked_object: Option<std::rc::Rc<str>>,
     /// Where [`Board::naming`] and [`Board::checking`] write a name before it is shared
     /// (kept for its room).
     #[serde(skip)]
@@ -421,7 +421,7 @@ impl Board {
 
     /// The situation the next steps are made in ("dead load: joint III"), where one is set
     /// and the board records: a shared construction names its objects within it.
-    pub fn context(&self) -> Option<std::sync::Arc<str>> {
+    pub fn context(&self) -> Option<std::rc::Rc<str>> {
         self.context.clone()
     }
 
@@ -483,7 +483,7 @@ impl Board {
 
     /// A text written by `write` into the board's buffer (kept for its room) and shared:
     /// one allocation, the shared text's own.
-    fn written(&mut self, write: impl FnOnce(&mut String)) -> std::sync::Arc<str> {
+    fn written(&mut self, write: impl FnOnce(&mut String)) -> std::rc::Rc<str> {
         let mut s = std::mem::take(&mut self.scratch);
         s.clear();
         write(&mut s);
@@ -494,7 +494,7 @@ impl Board {
 
     /// Puts back a context taken with [`Board::context`] after
     /// [`Board::set_context_within`].
-    pub fn restore_context(&mut self, base: Option<std::sync::Arc<str>>) {
+    pub fn restore_context(&mut self, base: Option<std::rc::Rc<str>>) {
         if self.is_drawing() {
             self.set_context_to(base);
         }
@@ -503,7 +503,7 @@ impl Board {
     /// Sets the context to one taken with [`Board::context`] (`None` clears it), on a board
     /// that records: for a construction whose steps and checks are named within its caller's
     /// situation on every board that records them (the crank's "HP, θ = 30°").
-    pub fn set_context_to(&mut self, context: Option<std::sync::Arc<str>>) {
+    pub fn set_context_to(&mut self, context: Option<std::rc::Rc<str>>) {
         match context {
             Some(c) if self.recording => self.set_context_recorded(c),
             Some(_) => {}
@@ -578,7 +578,7 @@ impl Board {
         }
     }
 
-    fn set_context_recorded(&mut self, c: std::sync::Arc<str>) {
+    fn set_context_recorded(&mut self, c: std::rc::Rc<str>) {
         if let Some(l) = self.ledger.as_mut() {
             l.contexts
                 .push((StepId(self.next_step + 1), Some(c.clone())));
