@@ -404,13 +404,14 @@ impl TrussScene {
     /// the scene's own to refuse; the builder reports them in their turn.
     fn build_truss(&self, origin: &str) -> Result<Truss, SceneError> {
         let mut b = Truss::builder()
+            .reserve(self.joints.len(), self.members.len())
             .size_within(MIN_TRUSS_SIZE_M, MAX_TRUSS_SIZE_M)
             .in_frame_of(self.local_origin());
         for j in &self.joints {
-            b = b.joint(j.name.as_str(), (j.at_m[0], j.at_m[1]));
+            b = b.joint(j.name.clone(), (j.at_m[0], j.at_m[1]));
         }
         for m in &self.members {
-            b = b.member(m.name.as_str(), m.joints[0].as_str(), m.joints[1].as_str());
+            b = b.member(m.name.clone(), m.joints[0].clone(), m.joints[1].clone());
         }
         for (i, s) in self.supports.iter().enumerate() {
             b = match (s.kind, s.direction_deg) {

@@ -218,6 +218,15 @@ impl TrussBuilder {
 
     /// Refuses a truss whose larger span (m) lies outside `[min, max]`, as
     /// [`TrussError::Size`], once its joints are known to be finite.
+    /// Makes room for `joints` more joints and `members` more members, where the caller
+    /// knows how many it adds (a scene's truss): its lists are then made once, not doubled
+    /// as they grow.
+    pub fn reserve(mut self, joints: usize, members: usize) -> Self {
+        self.joints.reserve(joints);
+        self.members.reserve(members);
+        self
+    }
+
     pub(crate) fn size_within(mut self, min: f64, max: f64) -> Self {
         self.size_range = Some((min, max));
         self
