@@ -556,7 +556,7 @@ struct Builder<'a> {
     origin: Point,
     /// The caller's context when the construction began (an engine's cylinder, "HP"): every
     /// angle's context is set within it ("HP, θ = 30°").
-    base: Option<std::rc::Rc<str>>,
+    base: Option<std::sync::Arc<str>>,
 }
 
 /// Constructs the requested slider-crank quantities at every crank angle on `board`.

@@ -524,7 +524,7 @@ pub struct Check {
     /// The object checked, where the quantity and the step's context do not name it
     /// ("member 5" of a truss: every member's force is one quantity, read at its joint).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub object: Option<std::rc::Rc<str>>,
+    pub object: Option<std::sync::Arc<str>>,
     /// Its unit.
     pub unit: Text,
     /// The value read off the construction at its scale.
@@ -576,7 +576,7 @@ pub struct Step {
     pub book: Text,
     /// The situation the step is made in ("θ = 30°"), shared by the steps made in it.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub context: Option<std::rc::Rc<str>>,
+    pub context: Option<std::sync::Arc<str>>,
     /// Ids of the objects it uses (inline up to three: no allocation for a ruler step).
     pub inputs: Ids,
     /// Ids of the objects it makes (inline up to three).

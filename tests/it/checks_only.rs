@@ -193,3 +193,54 @@ fn a_long_check_is_summed_up_and_its_failures_listed() {
         text_all.ends_with("4500 checks, 4498 passed, 2 failed, 0 depending on a glancing cut\n")
     );
 }
+
+/// A board, its steps and its checks may be built on one thread and read on another (a
+/// library user's pool of constructions): their shared texts are counted atomically.
+#[test]
+fn boards_and_their_checks_cross_threads() {
+    fn send_and_sync<T: Send + Sync>() {}
+    send_and_sync::<Board>();
+    send_and_sync::<graphostatik::protocol::Step>();
+    send_and_sync::<graphostatik::protocol::Check>();
+    let board = std::thread::spawn(|| {
+        construct(
+            std::path::Path::new("scenes/lh_aufgabe5_crane_bridge.json"),
+            true,
+        )
+    })
+    .join()
+    .unwrap();
+    assert!(board.check_count() > 0);
+}
+
+/// On a board that keeps only its checks the situation lives in its ledger: a naming puts
+/// the caller's back, a cleared one stays cleared, and each step keeps the one it was made in.
+#[test]
+fn a_checks_only_board_keeps_its_situations_in_order() {
+    use graphostatik::kernel::Point;
+    use graphostatik::protocol::{Note, Role, StepId, Topic};
+    let n = Note::new("point", Topic::Custom("test"));
+    let mut b = Board::new(BoardConfig::CHECKS);
+    // Steps are numbered from 1: the step just made is the count of steps.
+    let made = |b: &Board| StepId(b.step_count() as u32);
+    assert_eq!(b.context(), None);
+    b.set_context(|| "case P".into());
+    b.point(Point::new(0.0, 0.0), Role::Result, n.clone());
+    let first = made(&b);
+    b.naming(
+        |s| s.push_str("member 1"),
+        |b| b.point(Point::new(1.0, 0.0), Role::Result, n.clone()),
+    );
+    let named = made(&b);
+    assert_eq!(b.context().as_deref(), Some("case P"));
+    b.naming(|s| s.push_str("nothing made"), |_| ());
+    assert_eq!(b.context().as_deref(), Some("case P"));
+    b.clear_context();
+    b.point(Point::new(2.0, 0.0), Role::Result, n);
+    let last = made(&b);
+    assert_eq!(b.context(), None);
+    assert_eq!((first.0, named.0, last.0), (1, 2, 3));
+    assert_eq!(b.context_of(first), Some("case P"));
+    assert_eq!(b.context_of(named), Some("case P, member 1"));
+    assert_eq!(b.context_of(last), None);
+}

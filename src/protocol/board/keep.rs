@@ -21,7 +21,7 @@ pub(super) struct Ledger {
     /// The objects only drawn ([`Board::add_drawing`]), counted.
     pub(super) drawings: usize,
     /// The situation from each step on where it changed, in step order.
-    pub(super) contexts: Vec<(StepId, Option<std::rc::Rc<str>>)>,
+    pub(super) contexts: Vec<(StepId, Option<std::sync::Arc<str>>)>,
 }
 
 impl Ledger {
@@ -56,6 +56,20 @@ impl Ledger {
             &[]
         };
         self.checks.iter().chain(failures)
+    }
+
+    /// Sets the situation from `step` on; a change for the step the last one was filed for
+    /// takes its place (a naming put back before a step was made in it).
+    pub(super) fn set_context(&mut self, step: StepId, c: Option<std::sync::Arc<str>>) {
+        match self.contexts.last_mut() {
+            Some((s, last)) if *s == step => *last = c,
+            _ => self.contexts.push((step, c)),
+        }
+    }
+
+    /// The situation the next step is made in: the last one filed.
+    pub(super) fn current(&self) -> Option<&std::sync::Arc<str>> {
+        self.contexts.last().and_then(|(_, c)| c.as_ref())
     }
 
     /// The situation the step was made in.

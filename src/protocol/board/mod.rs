@@ -143,11 +143,13 @@ pub struct Board {
     /// Bounding box of what has been placed, where the tolerance follows it.
     #[serde(skip)]
     extent: Option<[f64; 4]>,
+    /// The situation the next step is made in, on a board without a ledger (one that keeps
+    /// only its checks keeps it as the ledger's last context).
     #[serde(skip)]
-    context: Option<std::rc::Rc<str>>,
+    context: Option<std::sync::Arc<str>>,
     /// The object the checks made inside [`Board::checking`] name.
     #[serde(skip)]
-    checked_object: Option<std::rc::Rc<str>>,
+    checked_object: Option<std::sync::Arc<str>>,
     /// Where [`Board::naming`] and [`Board::checking`] write a name before it is shared
     /// (kept for its room).
     #[serde(skip)]
@@ -421,8 +423,11 @@ impl Board {
 
     /// The situation the next steps are made in ("dead load: joint III"), where one is set
     /// and the board records: a shared construction names its objects within it.
-    pub fn context(&self) -> Option<std::rc::Rc<str>> {
-        self.context.clone()
+    pub fn context(&self) -> Option<std::sync::Arc<str>> {
+        match self.ledger.as_deref() {
+            Some(l) => l.current().cloned(),
+            None => self.context.clone(),
+        }
     }
 
     /// Sets the context to `base` (the caller's, from [`Board::context`]) followed by
@@ -483,7 +488,7 @@ impl Board {
 
     /// A text written by `write` into the board's buffer (kept for its room) and shared:
     /// one allocation, the shared text's own.
-    fn written(&mut self, write: impl FnOnce(&mut String)) -> std::rc::Rc<str> {
+    fn written(&mut self, write: impl FnOnce(&mut String)) -> std::sync::Arc<str> {
         let mut s = std::mem::take(&mut self.scratch);
         s.clear();
         write(&mut s);
@@ -494,7 +499,7 @@ impl Board {
 
     /// Puts back a context taken with [`Board::context`] after
     /// [`Board::set_context_within`].
-    pub fn restore_context(&mut self, base: Option<std::rc::Rc<str>>) {
+    pub fn restore_context(&mut self, base: Option<std::sync::Arc<str>>) {
         if self.is_drawing() {
             self.set_context_to(base);
         }
@@ -503,7 +508,7 @@ impl Board {
     /// Sets the context to one taken with [`Board::context`] (`None` clears it), on a board
     /// that records: for a construction whose steps and checks are named within its caller's
     /// situation on every board that records them (the crank's "HP, θ = 30°").
-    pub fn set_context_to(&mut self, context: Option<std::rc::Rc<str>>) {
+    pub fn set_context_to(&mut self, context: Option<std::sync::Arc<str>>) {
         match context {
             Some(c) if self.recording => self.set_context_recorded(c),
             Some(_) => {}
@@ -578,12 +583,14 @@ impl Board {
         }
     }
 
-    fn set_context_recorded(&mut self, c: std::rc::Rc<str>) {
-        if let Some(l) = self.ledger.as_mut() {
-            l.contexts
-                .push((StepId(self.next_step + 1), Some(c.clone())));
+    /// A board that keeps only its checks keeps its contexts in its ledger alone (the last
+    /// one filed is the one now): a context moves there, shared by nothing else, and a
+    /// naming costs no count of its text's owners but the one that keeps the caller's.
+    fn set_context_recorded(&mut self, c: std::sync::Arc<str>) {
+        match self.ledger.as_mut() {
+            Some(l) => l.set_context(StepId(self.next_step + 1), Some(c)),
+            None => self.context = Some(c),
         }
-        self.context = Some(c);
     }
 
     /// Reserves room for `steps` more steps and `objects` more objects, so that a long
@@ -683,10 +690,10 @@ impl Board {
 
     /// Clears the context.
     pub fn clear_context(&mut self) {
-        if let Some(l) = self.ledger.as_mut() {
-            l.contexts.push((StepId(self.next_step + 1), None));
+        match self.ledger.as_mut() {
+            Some(l) => l.set_context(StepId(self.next_step + 1), None),
+            None => self.context = None,
         }
-        self.context = None;
     }
 
     /// Runs `checks` with their object named by `object` (made on a recording board only):
