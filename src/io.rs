@@ -261,9 +261,15 @@ fn make_durable(temps: &[(PathBuf, &Path)]) -> Result<(), BatchError> {
     #[cfg(target_os = "linux")]
     if temps.len() > 1 {
         use std::os::unix::fs::MetadataExt;
+        // A temporary lives on the file system of the folder it was made in: each folder
+        // opened once (not each of its files), each file system synced once.
+        let folders: std::collections::BTreeMap<&Path, &Path> = temps
+            .iter()
+            .map(|(_, path)| (folder(path), *path))
+            .collect();
         let mut devices = std::collections::BTreeSet::new();
-        for (tmp, path) in temps {
-            let f = std::fs::File::open(tmp).map_err(failed(path))?;
+        for (dir, path) in folders {
+            let f = std::fs::File::open(dir).map_err(failed(path))?;
             let device = f.metadata().map_err(failed(path))?.dev();
             if devices.insert(device) {
                 rustix::fs::syncfs(&f).map_err(|e| failed(path)(e.into()))?;
