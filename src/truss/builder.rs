@@ -216,17 +216,39 @@ impl TrussBuilder {
         self
     }
 
-    /// Refuses a truss whose larger span (m) lies outside `[min, max]`, as
-    /// [`TrussError::Size`], once its joints are known to be finite.
     /// Makes room for `joints` more joints and `members` more members, where the caller
-    /// knows how many it adds (a scene's truss): its lists are then made once, not doubled
-    /// as they grow.
+    /// knows how many it adds (a girder generated panel by panel, a scene's truss): its
+    /// lists are then made once, not doubled as they grow. The truss built is the same.
+    ///
+    /// ```
+    /// use graphostatik::prelude::*;
+    /// // A Warren girder of 100 panels (LH I B): 201 joints, 399 members.
+    /// let n = 100;
+    /// let mut b = Truss::builder().reserve(2 * n + 1, 4 * n - 1);
+    /// for i in 0..=n {
+    ///     b = b.joint(format!("U{i}"), (2.0 * i as f64, 0.0));
+    /// }
+    /// for i in 0..n {
+    ///     b = b.joint(format!("O{i}"), (2.0 * i as f64 + 1.0, 1.0));
+    ///     b = b.member(format!("D{i}a"), format!("U{i}"), format!("O{i}"));
+    ///     b = b.member(format!("D{i}b"), format!("O{i}"), format!("U{}", i + 1));
+    ///     b = b.member(format!("U{i}-{}", i + 1), format!("U{i}"), format!("U{}", i + 1));
+    ///     if i > 0 {
+    ///         b = b.member(format!("O{}-{i}", i - 1), format!("O{}", i - 1), format!("O{i}"));
+    ///     }
+    /// }
+    /// let truss = b.pin("U0").roller(format!("U{n}"), (0.0, 1.0)).build()?;
+    /// assert_eq!((truss.joints.len(), truss.members.len()), (201, 399));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn reserve(mut self, joints: usize, members: usize) -> Self {
         self.joints.reserve(joints);
         self.members.reserve(members);
         self
     }
 
+    /// Refuses a truss whose larger span (m) lies outside `[min, max]`, as
+    /// [`TrussError::Size`], once its joints are known to be finite.
     pub(crate) fn size_within(mut self, min: f64, max: f64) -> Self {
         self.size_range = Some((min, max));
         self
