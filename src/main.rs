@@ -1046,12 +1046,13 @@ mod heap {
     }
 
     /// Prepares the heap the calling thread allocates from, where that is a heap of its own
-    /// (Linux with glibc; elsewhere a no-op); once per thread, at its start. glibc gives a thread that is not the first an
-    /// arena of its own, on heaps of 64 MiB that each start at a multiple of 64 MiB, made
-    /// writable a page at a time as they grow (a `mprotect` each: a thousand for the
-    /// bundled figures); and a huge page needs its whole 2 MiB writable. So the heap is
-    /// grown at once by a block of 30 MiB (below the 32 MiB [`prepare`] sends to `mmap`),
-    /// the kernel asked for huge pages over it, and the block freed, never trimmed.
+    /// (Linux with glibc; elsewhere a no-op); once per thread, at its start. glibc gives a
+    /// thread that is not the first an arena of its own, on heaps of 64 MiB that each start
+    /// at a multiple of 64 MiB, made writable a page at a time as they grow (a `mprotect`
+    /// each: a thousand for the bundled figures); and a huge page needs its whole 2 MiB
+    /// writable. So the heap is grown at once by a block of 30 MiB (below the 32 MiB
+    /// [`prepare`] sends to `mmap`), the kernel asked for huge pages over it, and the block
+    /// freed, never trimmed.
     #[cfg(all(target_os = "linux", target_env = "gnu"))]
     pub fn prepare_thread() {
         const ARENA_HEAP: usize = 64 << 20;

@@ -480,7 +480,7 @@ impl Board {
             }
             what(s);
         });
-        self.set_context_recorded(named);
+        self.put_context(Some(named));
         let out = steps(self);
         self.set_context_to(base);
         out
@@ -510,7 +510,7 @@ impl Board {
     /// situation on every board that records them (the crank's "HP, θ = 30°").
     pub fn set_context_to(&mut self, context: Option<std::sync::Arc<str>>) {
         match context {
-            Some(c) if self.recording => self.set_context_recorded(c),
+            Some(c) if self.recording => self.put_context(Some(c)),
             Some(_) => {}
             None => self.clear_context(),
         }
@@ -579,17 +579,18 @@ impl Board {
     #[inline]
     pub fn set_context(&mut self, f: impl FnOnce() -> String) {
         if self.recording {
-            self.set_context_recorded(f().into());
+            self.put_context(Some(f().into()));
         }
     }
 
-    /// A board that keeps only its checks keeps its contexts in its ledger alone (the last
-    /// one filed is the one now): a context moves there, shared by nothing else, and a
-    /// naming costs no count of its text's owners but the one that keeps the caller's.
-    fn set_context_recorded(&mut self, c: std::sync::Arc<str>) {
+    /// Makes `c` the context of the next steps (`None` clears it). A board that keeps only
+    /// its checks keeps its contexts in its ledger alone (the last one filed is the one
+    /// now): a context moves there, shared by nothing else, and a naming costs no count of
+    /// its text's owners but the one that keeps the caller's.
+    fn put_context(&mut self, c: Option<std::sync::Arc<str>>) {
         match self.ledger.as_mut() {
-            Some(l) => l.set_context(StepId(self.next_step + 1), Some(c)),
-            None => self.context = Some(c),
+            Some(l) => l.set_context(StepId(self.next_step + 1), c),
+            None => self.context = c,
         }
     }
 
@@ -690,10 +691,7 @@ impl Board {
 
     /// Clears the context.
     pub fn clear_context(&mut self) {
-        match self.ledger.as_mut() {
-            Some(l) => l.set_context(StepId(self.next_step + 1), None),
-            None => self.context = None,
-        }
+        self.put_context(None);
     }
 
     /// Runs `checks` with their object named by `object` (made on a recording board only):
