@@ -9,6 +9,7 @@
 //! 127.0.0.1 unless told otherwise; a request whose `Host` is not this machine's loopback name
 //! is refused while bound there (DNS rebinding).
 
+use crate::render::{with_policy, Allow};
 use crate::site::{scene_page, PageLinks, SiteScene};
 use crate::web::Built;
 use std::collections::HashMap;
@@ -223,14 +224,19 @@ impl Site {
             let href = percent_encode(name);
             items.push_str(&format!("<li><a href=\"/scene/{href}\">{n}</a></li>\n"));
         }
-        Answer::html(format!(
+        Answer::html(with_policy(
+            format!(
             "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>graphostatik \
-             preview</title></head>\n<body style=\"font-family: Georgia, serif\"><h1>Scenes in {}</h1>\n\
-             <ul>\n{items}</ul>\n</body></html>\n",
+             preview</title><style>{INDEX_CSS}</style></head>\n<body>\
+             <h1>Scenes in {}</h1>\n<ul>\n{items}</ul>\n</body></html>\n",
             // The folder's own name, not its path on this machine.
             crate::render::html_text(
                 &self.root.file_name().map_or_else(|| ".".into(), |n| n.to_string_lossy())
             )
+        ),
+            &[],
+            &[INDEX_CSS],
+            Allow::default(),
         ))
     }
 
@@ -248,7 +254,7 @@ impl Site {
             Err(e) => (good.get(name).cloned(), Some(e)),
         };
         drop(good);
-        let extra = reload_script(name, &token);
+        let reload = reload_script(name, &token);
         match shown {
             Some(g) => Answer::html(scene_page(
                 &SiteScene {
@@ -262,15 +268,24 @@ impl Site {
                     scripts: "/".into(),
                     engine: self.engine.is_some(),
                     error,
-                    extra,
+                    inline_scripts: vec![reload],
+                    connect: true,
                 },
             )),
-            None => Answer::html(format!(
-                "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{t}</title>\
-                 </head>\n<body><p id=\"wt-error\" role=\"alert\" style=\"font-family: monospace; \
-                 color: #8a1d12\">{e}</p>\n{extra}</body></html>\n",
-                t = crate::render::html_text(name),
-                e = crate::render::html_text(error.as_deref().unwrap_or_default()),
+            None => Answer::html(with_policy(
+                format!(
+                    "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{t}\
+                     </title><style>{ERROR_CSS}</style></head>\n<body><p id=\"wt-error\" \
+                     role=\"alert\">{e}</p>\n<script>{reload}</script></body></html>\n",
+                    t = crate::render::html_text(name),
+                    e = crate::render::html_text(error.as_deref().unwrap_or_default()),
+                ),
+                &[&reload],
+                &[ERROR_CSS],
+                Allow {
+                    connect: true,
+                    ..Allow::default()
+                },
             )),
         }
     }
@@ -289,17 +304,23 @@ fn build(file: &Path) -> Result<Good, String> {
     })
 }
 
+/// The index's style sheet.
+const INDEX_CSS: &str = "body { font-family: Georgia, serif; }";
+/// The style sheet of a scene's page that failed before it ever succeeded.
+const ERROR_CSS: &str = "#wt-error { font-family: monospace; color: #8a1d12; }";
+
 /// The file watching: the page asks for the scene's version and reloads when it changes (the
-/// step shown is kept in the address).
+/// step shown is kept in the address). The script's text, to be put inline.
 fn reload_script(name: &str, token: &str) -> String {
+    // The name is percent-encoded: no `<` can end the script.
     let name = serde_json::to_string(&percent_encode(name)).unwrap_or_default();
     let token = serde_json::to_string(token).unwrap_or_default();
     format!(
-        "<script>\n(function () {{\n'use strict';\nvar name = {name}, token = {token};\n\
+        "\n(function () {{\n'use strict';\nvar name = {name}, token = {token};\n\
          setInterval(function () {{\n  fetch('/version/' + name, {{ cache: 'no-store' }})\n\
          .then(function (r) {{ return r.ok ? r.text() : token; }})\n\
          .then(function (t) {{ if (t !== token) window.location.reload(); }})\n\
-         .catch(function () {{}});\n}}, {POLL_MS});\n}})();\n</script>\n"
+         .catch(function () {{}});\n}}, {POLL_MS});\n}})();\n"
     )
 }
 
@@ -478,7 +499,7 @@ fn handle(mut stream: TcpStream, site: &Site) -> std::io::Result<()> {
     write!(
         stream,
         "HTTP/1.1 {} {}\r\nContent-Type: {}\r\nContent-Length: {}\r\nCache-Control: no-store\r\n\
-         X-Content-Type-Options: nosniff\r\nConnection: close\r\n\r\n{body}",
+         X-Content-Type-Options: nosniff\r\n{FRAME_POLICY}Connection: close\r\n\r\n{body}",
         answer.status,
         reason(answer.status),
         answer.content_type,
@@ -486,6 +507,11 @@ fn handle(mut stream: TcpStream, site: &Site) -> std::io::Result<()> {
     )?;
     stream.flush()
 }
+
+/// What every answer's header adds to the policy each page carries in its head
+/// ([`crate::render::with_policy`]): no page of the preview is framed by another site.
+const FRAME_POLICY: &str =
+    "Content-Security-Policy: frame-ancestors 'none'; base-uri 'none'; form-action 'none'\r\n";
 
 #[cfg(test)]
 mod tests {

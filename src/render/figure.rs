@@ -765,7 +765,7 @@ fn smooth_path(f: &Pen, pts: &[Point]) -> String {
 }
 
 /// An arrowhead marker 3.2 × 1.3 mm, tip at the end of the line.
-fn arrow_marker(id: &str, d: &str, style: &str) -> El {
+fn arrow_marker(id: &str, d: &str, class: &str) -> El {
     El::new("marker")
         .set("id", id)
         .set("viewBox", "0 0 10 4")
@@ -775,22 +775,14 @@ fn arrow_marker(id: &str, d: &str, style: &str) -> El {
         .set("markerHeight", "1.3")
         .set("markerUnits", "userSpaceOnUse")
         .set("orient", "auto")
-        .add(El::new("path").set("d", d).set("style", style))
+        .add(El::new("path").set("d", d).set("class", class))
 }
 
 /// Filled arrowheads for forces, open ones for velocities.
 fn defs() -> El {
     El::new("defs")
-        .add(arrow_marker(
-            "arrow",
-            "M0,0 L10,2 L0,4 z",
-            "fill:#000;stroke:none",
-        ))
-        .add(arrow_marker(
-            "arrow-open",
-            "M0,0 L10,2 L0,4",
-            "fill:none;stroke:#000;stroke-width:0.8",
-        ))
+        .add(arrow_marker("arrow", "M0,0 L10,2 L0,4 z", "head"))
+        .add(arrow_marker("arrow-open", "M0,0 L10,2 L0,4", "head-open"))
 }
 
 /// The next "nice" length (1, 2, 2.5, 5 × 10ᵏ) at or below `x`.

@@ -3,6 +3,7 @@
 //! and computes no mechanics: the scales and title it writes come in a [`FigureMeta`].
 
 mod book;
+mod csp;
 mod drafting;
 #[cfg(feature = "export")]
 pub mod export;
@@ -20,6 +21,7 @@ mod xml;
 
 pub use crate::protocol::{FigureMeta, ScaleBar};
 pub use book::{book_rows, book_table_text, BookRow, Verdict};
+pub use csp::{content_security_policy, with_policy, Allow};
 pub use drafting::drafting_table_text;
 pub use figure::{
     figure, figure_held, figure_lettered, figure_with_points, inspect, FigureReport, Layout,

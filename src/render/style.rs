@@ -80,7 +80,9 @@ pub fn css() -> String {
 .hatch{{stroke-width:0.18}}\
 .leader{{stroke-width:0.12}}\
 circle.pt{{fill:#000;stroke:none}}\
-text{{font-family:'Times New Roman',Times,'Liberation Serif',serif;font-style:italic;font-size:3.5px;fill:#000;stroke:none}}\
+.head{{fill:#000;stroke:none}}\
+.head-open{{fill:none;stroke:#000;stroke-width:0.8}}\
+text{{font-family:Times New Roman,Times,Liberation Serif,serif;font-style:italic;font-size:3.5px;fill:#000;stroke:none}}\
 text.title{{font-style:normal;font-size:6px}}\
 text.small{{font-style:normal;font-size:2.8px}}\
 text.heading{{font-style:normal;font-size:4px}}\
@@ -88,6 +90,12 @@ text.heading{{font-style:normal;font-size:4px}}\
 .current circle.pt,.current text{{fill:{c}}}",
         c = CURRENT
     )
+}
+
+/// The text of a figure's `<style>` as a browser reads it (the writer puts the sheet on a
+/// line of its own): what a page's Content-Security-Policy names by its hash.
+pub fn sheet_text() -> String {
+    format!("\n{}\n", css())
 }
 
 /// Most strokes of the hatching along one guide or support (beyond, the spacing grows).

@@ -51,6 +51,14 @@ pub struct WalkOptions {
     /// Each page's details where the list given holds its lines alone
     /// ([`StepList`]): written into the page as JSON for its script to show.
     pub details: Option<Vec<String>>,
+    /// Scripts put after the page's own and `extra`, each inline (the live preview's reload
+    /// script): the page's policy names each by its hash.
+    pub scripts: Vec<String>,
+    /// Style rules put after the page's own (the site's live part).
+    pub css: String,
+    /// What the page may load beyond its inline scripts and style sheets, which its
+    /// Content-Security-Policy names by their hashes ([`super::content_security_policy`]).
+    pub allow: super::Allow,
 }
 
 /// Text shown literally in HTML: markup escaped (`<`, `>`, `&`, both quotes), characters XML
@@ -61,22 +69,9 @@ pub fn html_text(s: &str) -> String {
     out
 }
 
-/// [`html_text`] of `s` put at the end of `out`, in one pass over the text.
+/// [`html_text`] of `s` put at the end of `out`.
 fn push_html_text(out: &mut String, s: &str) {
-    let s = crate::fmt::sheet_text(s);
-    let mut rest = &s[..];
-    while let Some(i) = rest.find(['&', '<', '>', '"', '\'']) {
-        out.push_str(&rest[..i]);
-        out.push_str(match rest.as_bytes()[i] {
-            b'&' => "&amp;",
-            b'<' => "&lt;",
-            b'>' => "&gt;",
-            b'"' => "&quot;",
-            _ => "&#39;",
-        });
-        rest = &rest[i + 1..];
-    }
-    out.push_str(rest);
+    crate::fmt::markup_text(out, s);
 }
 
 /// The steps of each page, in order. The steps of a part constructed and checked but not
@@ -436,23 +431,34 @@ pub fn walkthrough_page(meta: &FigureMeta, svg: &str, items: &str, opts: &WalkOp
             )
         })
         .unwrap_or_default();
-    format!(
+    let page = format!(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
-         <title>{title}: step by step</title>\n<style>\n{css}</style>\n</head>\n<body>\n\
+         <title>{title}: step by step</title>\n<style>\n{css}{more_css}</style>\n</head>\n<body>\n\
          <header><h1>{title}</h1><p class=\"wt-source\">{source}</p></header>\n{error}\
          <main>\n<section id=\"wt-figure\" aria-label=\"construction\">\n{svg}</section>\n\
          <aside id=\"wt-side\">\n{controls}{nav}<div id=\"wt-now\" aria-live=\"polite\"></div>\n\
          <ol id=\"wt-steps\">\n{items}</ol>\n</aside>\n</main>\n\
-         <div id=\"wt-print\"></div>\n{details}<script>\n{script}</script>\n{extra}</body>\n</html>\n",
+         <div id=\"wt-print\"></div>\n{details}<script>{script}</script>\n{extra}{more}</body>\n</html>\n",
         title = html_text(&meta.title),
         source = html_text(&meta.source),
         css = PAGE_CSS,
+        more_css = opts.css,
         nav = NAV,
         controls = opts.controls,
         script = SCRIPT,
         extra = opts.extra,
-    )
+        more = (opts.scripts.iter())
+            .map(|s| format!("<script>{s}</script>\n"))
+            .collect::<String>(),
+    );
+    // What the page's own tags hold, as the browser hashes it: its sheet, the figure's, its
+    // scripts.
+    let page_css = format!("\n{PAGE_CSS}{}", opts.css);
+    let figure_css = super::style::sheet_text();
+    let mut scripts = vec![SCRIPT];
+    scripts.extend(opts.scripts.iter().map(String::as_str));
+    super::with_policy(page, &scripts, &[&page_css, &figure_css], opts.allow)
 }
 
 /// The buttons (the keys do the same).

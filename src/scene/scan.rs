@@ -217,9 +217,24 @@ fn plain_object(bytes: &[u8]) -> bool {
 }
 
 /// Whether the bytes hold one of U+0080 to U+009F (C2 80 to C2 9F in UTF-8), control
-/// characters JSON lets stand unescaped in a string.
+/// characters JSON lets stand unescaped in a string, or a character [`is_unseen_format`]
+/// (E2 80 8E-8F, E2 80 A8-AE, E2 81 A6-A9).
 fn holds_c1(bytes: &[u8]) -> bool {
     memchr::memchr_iter(0xc2, bytes).any(|k| matches!(bytes.get(k + 1), Some(0x80..=0x9f)))
+        || memchr::memchr_iter(0xe2, bytes).any(|k| {
+            matches!(
+                (bytes.get(k + 1), bytes.get(k + 2)),
+                (Some(0x80), Some(0x8e..=0x8f | 0xa8..=0xae)) | (Some(0x81), Some(0xa6..=0xa9))
+            )
+        })
+}
+
+/// Whether `c` reorders or breaks the text around it without being seen: the bidirectional
+/// marks, embeddings, overrides and isolates (U+200E, U+200F, U+202A to U+202E, U+2066 to
+/// U+2069) and the line and paragraph separators (U+2028, U+2029). A name holding U+202E
+/// shows its letters backwards in the figure, the table and the terminal.
+pub(crate) fn is_unseen_format(c: char) -> bool {
+    matches!(c, '\u{200e}' | '\u{200f}' | '\u{2028}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
 }
 
 /// A visitor's methods for numbers, booleans and null, which the scan takes as they come.
@@ -351,6 +366,17 @@ fn check_len(s: &str, path: &[Seg], found: &mut Option<(String, String)>) {
     // row, a Markdown table or TeX as it is: texts are one line of printable characters,
     // the notes may break lines.
     let allowed = |c: char| notes && matches!(c, '\n' | '\r' | '\t');
+    if let Some(c) = s.chars().find(|&c| is_unseen_format(c)) {
+        *found = Some((
+            path_text(path),
+            format!(
+                "a direction or line-separator character (U+{:04X}) in a text: it would reorder \
+                 or break what a reader sees of a name",
+                c as u32
+            ),
+        ));
+        return;
+    }
     if let Some(c) = s.chars().find(|&c| c.is_control() && !allowed(c)) {
         *found = Some((
             path_text(path),

@@ -9,7 +9,7 @@
 //! the engine replays the construction with the pointer ([`crate::web::replay`]).
 
 use crate::protocol::FigureMeta;
-use crate::render::{html_text, walkthrough_page, Page, WalkOptions};
+use crate::render::{html_text, walkthrough_page, with_policy, Allow, Page, WalkOptions};
 use crate::web::{build, Built, SliderLine};
 
 /// The engine's loader (after the module's base64).
@@ -105,8 +105,11 @@ pub struct PageLinks {
     pub engine: bool,
     /// An error line shown above the figure (`serve`: the last failed edit).
     pub error: Option<String>,
-    /// HTML put after the page's scripts (`serve`: its reload script).
-    pub extra: String,
+    /// Scripts put inline after the page's own (`serve`: its reload script), named by their
+    /// hashes in the page's Content-Security-Policy.
+    pub inline_scripts: Vec<String>,
+    /// Whether the page's scripts ask its own origin (`serve`'s reload poll).
+    pub connect: bool,
 }
 
 /// The command that builds the engine, as the pages and errors quote it.
@@ -166,15 +169,21 @@ pub fn scene_page(s: &SiteScene, b: &Built, links: &PageLinks) -> String {
         &b.items.concat(),
         &WalkOptions {
             controls,
-            extra: extra + &links.extra,
+            extra,
+            scripts: links.inline_scripts.clone(),
             error: links.error.clone(),
             details: Some(b.details.clone()),
+            css: SITE_CSS.into(),
+            allow: Allow {
+                own_scripts: links.engine,
+                wasm: links.engine,
+                connect: links.connect,
+            },
             ..Default::default()
         },
     );
     // The page opens on the whole construction: what the student drags.
-    page.replacen("</style>", SITE_CSS, 1)
-        .replacen("<body>", "<body data-wt-start=\"end\">", 1)
+    page.replacen("<body>", "<body data-wt-start=\"end\">", 1)
 }
 
 /// `engine.js`: the engine `wasm` (the bytes of `graphostatik_wasm.wasm`) as base64, and its
@@ -247,7 +256,7 @@ fn card(name: &str, b: &Built) -> String {
 
 /// The index of all scenes.
 fn index(cards: &str, n: usize) -> String {
-    format!(
+    let page = format!(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
          <title>graphostatik: {n} constructions</title>\n<style>\n{INDEX_CSS}</style>\n</head>\n\
@@ -255,7 +264,8 @@ fn index(cards: &str, n: usize) -> String {
          <p>Open one to follow it step by step; drag its given points and the construction \
          follows, every check beside it.</p></header>\n<ul id=\"gs-index\">\n{cards}</ul>\n\
          </body>\n</html>\n"
-    )
+    );
+    with_policy(page, &[], &[&format!("\n{INDEX_CSS}")], Allow::default())
 }
 
 /// What the site adds to the walk-through's style (before its `</style>`).
@@ -269,7 +279,7 @@ const SITE_CSS: &str =
 .gs-handle:hover { fill: rgba(176, 54, 42, 0.35); }
 .gs-dragging .gs-handle { cursor: grabbing; }
 @media print { .gs-handles { display: none; } }
-</style>";
+";
 
 /// The index's style: a grid of cards.
 const INDEX_CSS: &str =

@@ -190,6 +190,9 @@ function keep(el, lines) {
       if (opens(l)) {
         open.push(i);
         if (outer < 0 && (k === 'text' || k === 'style' || k === 'title')) outer = i;
+      } else {
+        // A text on one line holds its spans: they are set with it.
+        j += e.getElementsByTagName('*').length;
       }
     } else if (outer < 0) {
       return null;
@@ -213,9 +216,14 @@ function remember(svgEl, text) {
   shown = { svg: svgEl, kids: out };
 }
 function decode(v) {
-  return v.indexOf('&') < 0 ? v : v.replace(/&lt;/g, '<').replace(/&gt;/g, '>').replace(/&amp;/g, '&');
+  return v.indexOf('&') < 0 ? v : v.replace(/&lt;/g, '<').replace(/&gt;/g, '>').replace(/&quot;/g, '"')
+    .replace(/&#39;/g, "'").replace(/&amp;/g, '&');
 }
+// The start tag's attributes (a text on one line holds its spans' tags after it; a '>' in a
+// value is escaped, so the first one ends the tag).
 function attributes(line) {
+  var gt = line.indexOf('>');
+  if (gt >= 0) line = line.slice(0, gt + 1);
   var out = {}, re = /\s([^\s=]+)="([^"]*)"/g, m;
   while ((m = re.exec(line))) out[m[1]] = m[2];
   return out;
@@ -363,7 +371,11 @@ function update(c, lines, changed, sets) {
         }
       } else setAttributes(e, c.lines[i], lines[i]);
       var inline = lines[i].indexOf('</') > 0 && /^<[^>]*>(.*)<\/[^>]*>$/.exec(lines[i]);
-      if (inline) e.textContent = decode(inline[1]);
+      // A text with its spans on one line: its content as markup (in the text's namespace).
+      if (inline) {
+        if (inline[1].indexOf('<') >= 0) e.innerHTML = inline[1];
+        else e.textContent = decode(inline[1]);
+      }
     }
   });
   c.lines = lines;

@@ -140,7 +140,9 @@ impl Serialize for AttributeSets<'_> {
 /// The attributes of a tag as written, `name="value"` after a space, in their order (the
 /// page reads a tag's attributes so too).
 fn attributes(tag: &str) -> impl Iterator<Item = (&str, &str)> {
-    let mut rest = tag;
+    // Only the start tag's: a text on one line holds its spans' tags after it (a `>` in a
+    // value is escaped, so the first one ends the tag).
+    let mut rest = &tag[..memchr::memchr(b'>', tag.as_bytes()).map_or(tag.len(), |i| i + 1)];
     std::iter::from_fn(move || loop {
         // The figure's tags are ASCII between their values: a byte search finds what a
         // search by characters finds, some three times faster on a drag's 1,200 tags.
@@ -526,17 +528,23 @@ mod tests {
         let got: Vec<_> = super::attributes(tag).collect();
         assert_eq!(got, [("x", "1"), ("class", "a b"), ("data-k", "p=q")]);
         assert_eq!(super::attributes("<tspan>a=\"b\"</tspan>").count(), 0);
+        // A text on one line: its spans' attributes are not the text's.
+        let line = r#"<text x="1">P<tspan dy="0.9">1</tspan></text>"#;
+        assert_eq!(super::attributes(line).collect::<Vec<_>>(), [("x", "1")]);
     }
 
     /// Bundled scenes with their first handle moved as a drag moves it: the patch applied to
-    /// the old figure gives the new one, byte for byte, and it is smaller than the figure (the
-    /// shed roof's first joint is a support: the whole truss and its four plans move).
+    /// the old figure gives the new one, byte for byte, and it is smaller than the figure where
+    /// part of the figure stays (the shed roof's first joint is a support: the whole truss and
+    /// its four plans move). Where every mark moves (the slewing crane's first joint carries
+    /// the truss and its plan) the patch is every line that holds one, no more than the figure
+    /// and a tenth.
     #[test]
     fn a_dragged_scene_is_patched_to_its_new_figure() {
-        for (name, h) in [
-            ("lh_aufgabe4_shed_roof", 0),
-            ("lh_abb22_funicular", 0),
-            ("lh_aufgabe3_slewing_crane", 0),
+        for (name, h, most) in [
+            ("lh_aufgabe4_shed_roof", 0, 1.0),
+            ("lh_abb22_funicular", 0, 1.0),
+            ("lh_aufgabe3_slewing_crane", 0, 1.1),
         ] {
             let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
             let text = std::fs::read_to_string(&path).unwrap();
@@ -557,7 +565,11 @@ mod tests {
             assert_eq!(applied(&old, &p), new, "{name}");
             sets_turn_each_tag_into_the_next(&p);
             let size = p.to_json().len();
-            assert!(size < new.len(), "{name}: a patch of {size} bytes");
+            assert!(
+                (size as f64) < most * new.len() as f64,
+                "{name}: a patch of {size} bytes for {} bytes",
+                new.len()
+            );
         }
     }
     /// A drag that adds or drops a step (the crank pin turned off its dead centre, and back):

@@ -100,6 +100,7 @@ fn a_student_pages_through_a_walkthrough_with_the_keyboard() {
     let steps = board.steps();
     let s = Session::start(&browser, &dir.join("profile"));
     s.goto(&format!("file://{}", dir.join("index.html").display()));
+    policy_holds(&s, "the walk-through");
     let n = steps.len();
     for (i, step) in steps.iter().enumerate() {
         assert_eq!(s.text("#wt-count"), format!("step {} / {n}", i + 1));
@@ -197,6 +198,33 @@ fn a_student_pages_through_a_walkthrough_with_the_keyboard() {
 }
 
 /// Polls `js` in the page until it returns `want` (the page may be reloading meanwhile).
+/// The page's Content-Security-Policy is in force and names what the page needs: an inline
+/// handler does not run, while the page's own sheet, the figure's and (on a site page) the
+/// site's apply.
+fn policy_holds(s: &Session, what: &str) {
+    // Nothing the page does itself is refused (the browser logs each refusal as an error).
+    let before = s.console_errors();
+    assert!(before.is_empty(), "{what}: {before:?}");
+    let got = s.script(
+        "var b = document.createElement('button'); b.setAttribute('onclick', 'window.__ran = 1');\
+         document.body.appendChild(b); b.click(); b.remove();\
+         var t = document.querySelector('#wt-figure svg text:not([class])');\
+         return [window.__ran === 1, getComputedStyle(document.body).marginTop,\
+           t ? getComputedStyle(t).fontStyle : null,\
+           document.querySelectorAll('meta[http-equiv=\"Content-Security-Policy\"]').length];",
+    );
+    assert_eq!(
+        got,
+        serde_json::json!([false, "0px", "italic", 1]),
+        "{what}"
+    );
+    let refused = s.console_errors();
+    assert!(
+        refused.len() == 1 && refused[0].contains("inline event handler"),
+        "{what}: {refused:?}"
+    );
+}
+
 fn wait_for(s: &Session, js: &str, want: &serde_json::Value, what: &str) {
     let t = std::time::Instant::now();
     loop {
@@ -265,6 +293,7 @@ fn an_author_edits_a_scene_and_moves_a_slider_in_the_live_preview() {
     s.goto(&format!("{base}/scene/funicular"));
     let ready = "return !!window.graphostatikSite && window.graphostatikSite.ready;";
     wait_for(&s, ready, &json!(true), "the engine loaded from the server");
+    policy_holds(&s, "the live preview");
     assert!(s.text("#wt-count").starts_with("step "));
     assert!(s.text("#wt-sliders").contains("direction of F2"));
     // A slider replays the construction in the page as it moves, on the step shown.
@@ -472,6 +501,12 @@ fn a_student_drags_a_joint_and_a_crank_pin_in_the_site() {
         ready,
         &json!(true),
         "the engine loaded in the truss page",
+    );
+    policy_holds(&s, "the site's page");
+    assert_eq!(
+        s.script("return getComputedStyle(document.getElementById('wt-figure')).touchAction;"),
+        json!("none"),
+        "the site's own rules apply"
     );
 
     // Drag joint V of LH Aufgabe 4's shed roof: the figure, the members' forces (Cremona

@@ -17,6 +17,7 @@ mod export;
 mod figures;
 mod force_system;
 mod fuzz_scenes;
+mod injection;
 mod inkscape;
 mod kernel_fuzz;
 mod lazy_evaluation;

@@ -112,7 +112,9 @@ fn every_layer_is_a_named_inkscape_layer() {
             let id = s.id.to_string();
             assert!(ids.contains(&format!("step-{id}")));
             assert!(data.contains(&id));
-            let want = format!("{id} {}", s.caption);
+            // As the figure writes it: escaped for an attribute.
+            let mut want = format!("{id} ");
+            graphostatik::fmt::markup_text(&mut want, &s.caption);
             assert!(labels.iter().any(|l| l.starts_with(&want)), "{want}");
         }
         assert_eq!(
