@@ -483,19 +483,34 @@ pub fn markdown_cell(s: &str) -> String {
     out
 }
 
-/// Most characters of an error line; a longer one is cut with an ellipsis.
+/// Most characters of an error line; a longer one is cut in its middle with an ellipsis.
 pub const MAX_ERROR_CHARS: usize = 1000;
 
 /// An error as the command line prints it: one line (control characters escaped, so a
-/// newline in a scene's name cannot split it) of at most [`MAX_ERROR_CHARS`] characters.
+/// newline in a scene's name cannot split it) of at most [`MAX_ERROR_CHARS`] characters. A
+/// longer one keeps its beginning (the file and the field) and its end (the reason, after
+/// whatever long value it quotes) and loses its middle.
 ///
 /// ```
 /// use graphostatik::fmt::error_line;
 /// assert_eq!(error_line("s.json: joints[2]: joint `a\nb` lies on joint `c`"),
 ///            "s.json: joints[2]: joint `a\\nb` lies on joint `c`");
+/// let long = format!("s.json: order: {:?}: name each once", [4; 400]);
+/// let line = error_line(&long);
+/// assert!(line.starts_with("s.json: order: [4, 4") && line.ends_with(": name each once"));
+/// assert!(line.chars().count() <= 1000 && line.contains(" … "));
 /// ```
 pub fn error_line(msg: &str) -> String {
-    clip(msg, MAX_ERROR_CHARS)
+    let line = clip(msg, usize::MAX);
+    let n = line.chars().count();
+    if n <= MAX_ERROR_CHARS {
+        return line;
+    }
+    let (head, tail) = (MAX_ERROR_CHARS * 3 / 5, MAX_ERROR_CHARS * 2 / 5 - 3);
+    let mut out: String = line.chars().take(head).collect();
+    out.push_str(" … ");
+    out.extend(line.chars().skip(n - tail));
+    out
 }
 
 /// `text` broken at spaces into lines of at most `columns` characters (a longer word stands

@@ -5,11 +5,73 @@
 //! predict; then renamed over the target. A rename replaces a link at the target's name
 //! instead of writing through it. A [`Batch`] writes every temporary before it renames any,
 //! so an error while writing (a full disk, a folder without permission) leaves every target
-//! as it was.
+//! as it was; it keeps each target it replaces until the last rename has succeeded, so a
+//! rename refused half-way (a sticky shared folder, an immutable file) puts back the targets
+//! renamed before it. The temporaries and kept targets are the tool's own hidden names
+//! (`.NAME.PID-N-KEY.tmp`, `.bak`): [`abandon`] removes those of this process (the command
+//! line calls it on Ctrl-C or SIGTERM), and a batch sweeps those a process that is gone left in
+//! the folders it writes.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Mutex;
+
+/// The temporaries and kept targets this process has made and not yet removed, and whether
+/// [`abandon`] has removed them (then no more are made). A file of the tool's own is made
+/// with the lock held, so that none is made unlisted.
+static LIVE: Mutex<Live> = Mutex::new(Live {
+    files: Vec::new(),
+    abandoned: false,
+});
+
+struct Live {
+    files: Vec<PathBuf>,
+    abandoned: bool,
+}
+/// Held while a batch renames: [`abandon`] waits for the renames (and a roll-back) to end.
+static RENAMING: Mutex<()> = Mutex::new(());
+
+fn live() -> std::sync::MutexGuard<'static, Live> {
+    LIVE.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+fn forget(path: &Path) {
+    live().files.retain(|p| p != path);
+}
+
+/// Makes a file of the tool's own at `path` by `make`, listed so that [`abandon`] finds it;
+/// refused once the command is being stopped.
+fn make_own<T>(path: &Path, make: impl FnOnce() -> std::io::Result<T>) -> std::io::Result<T> {
+    let mut l = live();
+    if l.abandoned {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::Interrupted,
+            "the command is being stopped",
+        ));
+    }
+    let made = make()?;
+    l.files.push(path.to_path_buf());
+    Ok(made)
+}
+
+/// Removes a file this process made (a temporary, a kept target) and forgets it.
+fn remove_own(path: &Path) {
+    let _ = std::fs::remove_file(path);
+    forget(path);
+}
+
+/// Removes every temporary and kept target this process has made, after any batch renaming
+/// now has finished (or rolled back): what the command line does on Ctrl-C or SIGTERM before
+/// it exits, so that no hidden file is left in an output folder.
+pub fn abandon() {
+    let _renames = RENAMING.lock().unwrap_or_else(|e| e.into_inner());
+    let mut l = live();
+    l.abandoned = true;
+    for p in std::mem::take(&mut l.files) {
+        let _ = std::fs::remove_file(p);
+    }
+}
 
 /// The largest scene file read (bytes): a file beyond it is refused before it is read.
 pub const MAX_SCENE_BYTES: u64 = 256 * 1024 * 1024;
@@ -184,23 +246,23 @@ impl Batch {
                 path: p.to_path_buf(),
                 source,
             })?;
-            let _ = std::fs::remove_file(tmp);
+            remove_own(&tmp);
         }
         Ok(())
     }
 
     /// Writes every file: all temporaries first, made durable together (one sync of their
     /// file system), then the renames, then the folders synced so the renames last too.
+    /// Each target replaced is kept (a hard link, or a copy where the file system has none)
+    /// until every rename has succeeded; a rename refused half-way puts the targets renamed
+    /// before it back and removes the new ones. A replaced file keeps its permissions.
+    /// Temporaries a process that is gone left in the batch's folders are removed first.
     ///
     /// # Errors
     /// The first file that could not be written; then no target has changed.
     pub fn commit(self) -> Result<(), BatchError> {
         self.check_kinds()?;
-        let remove_all = |temps: &[(PathBuf, &Path)]| {
-            for (tmp, _) in temps {
-                let _ = std::fs::remove_file(tmp);
-            }
-        };
+        sweep_stale(self.files.iter().map(|(p, _)| p.as_path()));
         let mut temps: Vec<(PathBuf, &Path)> = Vec::with_capacity(self.files.len());
         let mut failed = None;
         for (path, contents) in &self.files {
@@ -215,6 +277,11 @@ impl Batch {
                 }
             }
         }
+        let remove_all = |temps: &[(PathBuf, &Path)]| {
+            for (tmp, _) in temps {
+                remove_own(tmp);
+            }
+        };
         if let Some(e) = failed {
             remove_all(&temps);
             return Err(e);
@@ -223,23 +290,138 @@ impl Batch {
             remove_all(&temps);
             return Err(e);
         }
-        let mut result = Ok(());
-        for (tmp, path) in &temps {
-            if result.is_ok() {
-                if let Err(source) = std::fs::rename(tmp, path) {
-                    result = Err(BatchError {
-                        path: path.to_path_buf(),
-                        source,
-                    });
-                }
-            }
-            if result.is_err() {
-                let _ = std::fs::remove_file(tmp);
-            }
-        }
-        result?;
+        let renamed = {
+            let _renames = RENAMING.lock().unwrap_or_else(|e| e.into_inner());
+            rename_all_or_none(&temps)
+        };
+        renamed?;
         sync_folders(temps.iter().map(|(_, p)| *p))
     }
+}
+
+/// Renames each temporary over its target, keeping each target it replaces; on the first
+/// refusal, the targets renamed before are put back (or removed, where there was none) and
+/// every temporary is removed. The kept targets are removed at the end either way.
+fn rename_all_or_none(temps: &[(PathBuf, &Path)]) -> Result<(), BatchError> {
+    // What each target was: its kept copy, or none where there was no target.
+    let mut done: Vec<(&Path, Option<PathBuf>)> = Vec::with_capacity(temps.len());
+    let mut result = Ok(());
+    for (tmp, path) in temps {
+        let kept = match keep_target(path) {
+            Ok(k) => k,
+            Err(source) => {
+                result = Err(BatchError {
+                    path: path.to_path_buf(),
+                    source,
+                });
+                break;
+            }
+        };
+        if let Err(source) = std::fs::rename(tmp, path) {
+            if let Some(k) = &kept {
+                remove_own(k);
+            }
+            result = Err(BatchError {
+                path: path.to_path_buf(),
+                source,
+            });
+            break;
+        }
+        forget(tmp);
+        done.push((path, kept));
+    }
+    if result.is_err() {
+        for (path, kept) in done.iter().rev() {
+            match kept {
+                Some(k) => {
+                    if std::fs::rename(k, path).is_ok() {
+                        forget(k);
+                    }
+                }
+                None => {
+                    let _ = std::fs::remove_file(path);
+                }
+            }
+        }
+        for (tmp, _) in temps {
+            remove_own(tmp);
+        }
+    }
+    for (_, kept) in &done {
+        if let Some(k) = kept {
+            remove_own(k);
+        }
+    }
+    result
+}
+
+/// A copy of the target at `path` kept beside it under a hidden name of the tool's own (a
+/// hard link; a copy where the file system makes none), or `None` where there is no target
+/// (a link at the target's name is not kept: the rename replaces the link, and a roll-back
+/// removes the new file).
+fn keep_target(path: &Path) -> std::io::Result<Option<PathBuf>> {
+    match std::fs::symlink_metadata(path) {
+        Ok(m) if m.is_file() => {}
+        _ => return Ok(None),
+    }
+    let name = own_name(path, "bak");
+    if make_own(&name, || std::fs::hard_link(path, &name)).is_err() {
+        let mut options = std::fs::OpenOptions::new();
+        options.write(true).create_new(true);
+        let mut to = make_own(&name, || options.open(&name))?;
+        let copied =
+            std::fs::File::open(path).and_then(|mut from| std::io::copy(&mut from, &mut to));
+        if let Err(e) = copied {
+            remove_own(&name);
+            return Err(e);
+        }
+        let _ = std::fs::set_permissions(&name, std::fs::metadata(path)?.permissions());
+    }
+    Ok(Some(name))
+}
+
+/// Removes, from each folder the targets are in, the temporaries and kept targets that a
+/// process now gone left behind (killed while it wrote): only names of the tool's own form
+/// (`.NAME.PID-N-KEY.tmp` or `.bak`) of a regular file, and only on Linux, where a process's
+/// presence can be asked (`/proc/PID`).
+fn sweep_stale<'a>(targets: impl Iterator<Item = &'a Path>) {
+    if !cfg!(target_os = "linux") {
+        return;
+    }
+    let folders: std::collections::BTreeSet<&Path> = targets.map(folder).collect();
+    for dir in folders {
+        let Ok(entries) = std::fs::read_dir(dir) else {
+            continue;
+        };
+        for e in entries.flatten() {
+            let name = e.file_name();
+            let Some(pid) = name.to_str().and_then(own_name_pid) else {
+                continue;
+            };
+            let gone = !Path::new(&format!("/proc/{pid}")).exists();
+            if gone && e.file_type().is_ok_and(|t| t.is_file()) {
+                let _ = std::fs::remove_file(e.path());
+            }
+        }
+    }
+}
+
+/// The process of a name of the tool's own form (`.NAME.PID-N-KEY.tmp` or `.bak`, KEY 16 hex
+/// digits), if `name` is one.
+fn own_name_pid(name: &str) -> Option<u32> {
+    let rest = name.strip_prefix('.')?;
+    let rest = rest
+        .strip_suffix(".tmp")
+        .or_else(|| rest.strip_suffix(".bak"))?;
+    let (_, tag) = rest.rsplit_once('.')?;
+    let mut parts = tag.split('-');
+    let (pid, n, key) = (parts.next()?, parts.next()?, parts.next()?);
+    let digits = |t: &str| !t.is_empty() && t.bytes().all(|b| b.is_ascii_digit());
+    let ok = parts.next().is_none()
+        && digits(n)
+        && key.len() == 16
+        && key.bytes().all(|b| b.is_ascii_hexdigit());
+    ok.then(|| pid.parse().ok()).flatten()
 }
 
 /// The folder a target is written in.
@@ -300,9 +482,14 @@ fn sync_folders<'a>(targets: impl Iterator<Item = &'a Path>) -> Result<(), Batch
     Ok(())
 }
 
-/// A name no other writer can guess in advance: the process, a counter, and a random key
-/// (std's randomly seeded hasher over the counter and the clock).
-fn temporary_name(target: &str) -> String {
+/// Most bytes of the target's name a temporary's name carries: with the rest
+/// (`.`, `.PID-N-KEY.tmp`, up to 50 bytes) it stays within a file system's 255.
+const NAME_BYTES_KEPT: usize = 120;
+
+/// A name no other writer can guess in advance: the target's name (its first
+/// [`NAME_BYTES_KEPT`] bytes), the process, a counter, and a random key (std's randomly seeded
+/// hasher over the counter and the clock), ending in `.kind`.
+fn temporary_name(target: &str, kind: &str) -> String {
     use std::hash::BuildHasher;
     static COUNTER: AtomicU64 = AtomicU64::new(0);
     let n = COUNTER.fetch_add(1, Ordering::Relaxed);
@@ -310,19 +497,36 @@ fn temporary_name(target: &str) -> String {
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_nanos());
     let key = std::collections::hash_map::RandomState::new().hash_one((n, t));
-    format!(".{target}.{}-{n}-{key:016x}.tmp", std::process::id())
+    let mut cut = target.len().min(NAME_BYTES_KEPT);
+    while !target.is_char_boundary(cut) {
+        cut -= 1;
+    }
+    format!(
+        ".{}.{}-{n}-{key:016x}.{kind}",
+        &target[..cut],
+        std::process::id()
+    )
+}
+
+/// A fresh name of the tool's own beside `path`, ending in `.kind`.
+fn own_name(path: &Path, kind: &str) -> PathBuf {
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "out".into());
+    folder(path).join(temporary_name(&name, kind))
 }
 
 /// Writes `contents` to a fresh temporary beside `path`, created exclusively and without
 /// following a link; returns its path.
 fn write_temporary(path: &Path, contents: &[u8]) -> std::io::Result<PathBuf> {
-    let dir = folder(path);
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "out".into());
+    // A replaced file keeps its permissions; a new one is 644 less the umask.
+    let replaced = match std::fs::symlink_metadata(path) {
+        Ok(m) if m.is_file() => Some(m.permissions()),
+        _ => None,
+    };
     for _ in 0..16 {
-        let tmp = dir.join(temporary_name(&name));
+        let tmp = own_name(path, "tmp");
         let mut options = std::fs::OpenOptions::new();
         options.write(true).create_new(true);
         // create_new is O_CREAT | O_EXCL: it fails on an existing name, a link included,
@@ -332,14 +536,18 @@ fn write_temporary(path: &Path, contents: &[u8]) -> std::io::Result<PathBuf> {
             use std::os::unix::fs::OpenOptionsExt;
             options.mode(0o644);
         }
-        let mut f = match options.open(&tmp) {
+        let mut f = match make_own(&tmp, || options.open(&tmp)) {
             Ok(f) => f,
             Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
             Err(e) => return Err(e),
         };
-        let written = f.write_all(contents);
+        let written = match &replaced {
+            Some(p) => f.set_permissions(p.clone()),
+            None => Ok(()),
+        }
+        .and_then(|()| f.write_all(contents));
         if let Err(e) = written {
-            let _ = std::fs::remove_file(&tmp);
+            remove_own(&tmp);
             return Err(e);
         }
         return Ok(tmp);
@@ -363,8 +571,8 @@ mod tests {
 
     #[test]
     fn temporary_names_differ_every_time() {
-        let a = temporary_name("a.svg");
-        let b = temporary_name("a.svg");
+        let a = temporary_name("a.svg", "tmp");
+        let b = temporary_name("a.svg", "tmp");
         assert_ne!(a, b);
         assert!(a.starts_with(".a.svg.") && a.ends_with(".tmp"));
     }
@@ -391,6 +599,68 @@ mod tests {
             .unwrap()
             .file_type()
             .is_symlink());
+        std::fs::remove_dir_all(&d).unwrap();
+    }
+
+    /// A rename refused half-way (here the second temporary is gone) puts the first target
+    /// back as it was and removes what it made.
+    #[test]
+    fn a_rename_refused_half_way_puts_back_the_targets_renamed_before() {
+        let d = dir("halfway");
+        std::fs::write(d.join("a.svg"), "old a").unwrap();
+        let a = write_temporary(&d.join("a.svg"), b"new a").unwrap();
+        let b = write_temporary(&d.join("b.svg"), b"new b").unwrap();
+        let c = write_temporary(&d.join("c.svg"), b"new c").unwrap();
+        std::fs::remove_file(&b).unwrap();
+        let (pa, pb, pc) = (d.join("a.svg"), d.join("b.svg"), d.join("c.svg"));
+        let temps = vec![(a, pa.as_path()), (b, pb.as_path()), (c, pc.as_path())];
+        let e = rename_all_or_none(&temps).unwrap_err();
+        assert!(e.path.ends_with("b.svg"), "{e}");
+        assert_eq!(std::fs::read_to_string(&pa).unwrap(), "old a");
+        let left: Vec<_> = std::fs::read_dir(&d)
+            .unwrap()
+            .flatten()
+            .map(|e| e.file_name())
+            .collect();
+        assert_eq!(left, ["a.svg"], "nothing else is left");
+        std::fs::remove_dir_all(&d).unwrap();
+    }
+
+    /// A replaced file keeps its mode; a target's name of 250 bytes is written (its
+    /// temporary's name is cut); what a process now gone left is swept, and nothing else.
+    #[test]
+    fn modes_long_names_and_stale_temporaries() {
+        let d = dir("modes");
+        let target = d.join("kept.svg");
+        std::fs::write(&target, "old").unwrap();
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::PermissionsExt;
+            std::fs::set_permissions(&target, std::fs::Permissions::from_mode(0o600)).unwrap();
+        }
+        let long = d.join(format!("{}.svg", "a".repeat(246)));
+        // pid 999999999 is past every kernel's pid_max: no such process.
+        let stale = d.join(".kept.svg.999999999-1-0123456789abcdef.tmp");
+        let decoy = d.join(".kept.svg.999999999-1-notours.tmp");
+        std::fs::write(&stale, "").unwrap();
+        std::fs::write(&decoy, "").unwrap();
+        let mut b = Batch::default();
+        b.add(&target, "new".into());
+        b.add(&long, "long".into());
+        b.commit().unwrap();
+        assert_eq!(std::fs::read_to_string(&target).unwrap(), "new");
+        assert_eq!(std::fs::read_to_string(&long).unwrap(), "long");
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::PermissionsExt;
+            let mode = std::fs::metadata(&target).unwrap().permissions().mode();
+            assert_eq!(mode & 0o777, 0o600);
+        }
+        assert_eq!(stale.exists(), !cfg!(target_os = "linux"));
+        assert!(decoy.exists());
+        assert_eq!(own_name_pid(".a.svg.12-3-0123456789abcdef.bak"), Some(12));
+        assert_eq!(own_name_pid(".a.svg.12-3-0123456789abcdef.txt"), None);
+        assert_eq!(own_name_pid("a.svg.12-3-0123456789abcdef.tmp"), None);
         std::fs::remove_dir_all(&d).unwrap();
     }
 

@@ -284,6 +284,17 @@ fn construct(path: &Path, p: &AnyProblem) -> Result<Board, Fail> {
     construct_with(path, p, BoardConfig::DRAWING)
 }
 
+/// The figure's construction, refused where a part of it would not fit a sheet
+/// ([`AnyProblem::drawable`]).
+fn construct_drawable(path: &Path, p: &AnyProblem) -> Result<Board, Fail> {
+    let board = construct(path, p)?;
+    p.drawable(&board).map_err(|e| match p.error_field(&e) {
+        Some(field) => Fail(format!("{}: {field}: {e}", path.display())),
+        None => Fail(format!("{}: {e}", path.display())),
+    })?;
+    Ok(board)
+}
+
 fn construct_with(path: &Path, p: &AnyProblem, config: BoardConfig) -> Result<Board, Fail> {
     p.construct(config).map_err(|e| match p.error_field(&e) {
         Some(field) => Fail(format!("{}: {field}: {e}", path.display())),
@@ -291,8 +302,17 @@ fn construct_with(path: &Path, p: &AnyProblem, config: BoardConfig) -> Result<Bo
     })
 }
 
-fn ensure_dir(dir: &Path) -> Result<(), Fail> {
-    std::fs::create_dir_all(dir).map_err(|e| {
+fn ensure_dir(dir: &Path, made: &mut MadeDirs) -> Result<(), Fail> {
+    // The folders that are not there yet, outermost first: made now, and removed again
+    // (while empty) if the write fails.
+    let new: Vec<PathBuf> = (dir.ancestors())
+        .take_while(|d| !d.as_os_str().is_empty() && std::fs::symlink_metadata(d).is_err())
+        .map(Path::to_path_buf)
+        .collect();
+    let made_all = std::fs::create_dir_all(dir);
+    made.0.extend(new.into_iter().rev().filter(|d| d.is_dir()));
+    made_all.map_err(|e| {
+        made.undo();
         Fail(format!(
             "{}: cannot create the output folder: {e}",
             dir.display()
@@ -300,9 +320,25 @@ fn ensure_dir(dir: &Path) -> Result<(), Fail> {
     })
 }
 
-/// Writes a batch all or nothing.
-fn commit(batch: Batch) -> Result<(), Fail> {
-    batch.commit().map_err(|e| Fail(e.to_string()))
+/// The folders a command made for its output, innermost last.
+#[derive(Default)]
+struct MadeDirs(Vec<PathBuf>);
+
+impl MadeDirs {
+    /// Removes the folders made, innermost first, where they are still empty.
+    fn undo(&mut self) {
+        for d in self.0.drain(..).rev() {
+            let _ = std::fs::remove_dir(d);
+        }
+    }
+}
+
+/// Writes a batch all or nothing: where it fails, the folders made for it go too.
+fn commit(batch: Batch, mut made: MadeDirs) -> Result<(), Fail> {
+    batch.commit().map_err(|e| {
+        made.undo();
+        Fail(e.to_string())
+    })
 }
 
 fn run(cli: Cli) -> Result<ExitCode, Fail> {
@@ -434,21 +470,22 @@ impl Exports {
     fn draw(&self, f: &Path, p: &AnyProblem, board: &Board) -> Result<Drawn, Fail> {
         let meta = p.figure_meta();
         let (svg, lettering) = render::figure_lettered(&meta, board, None);
-        let labels = (lettering.left_out > 0 || lettering.withheld > 0).then(|| {
-            let mut m = format!(
-                "{}: {} of {} labels left out, no room for them on the sheet",
-                f.display(),
-                lettering.left_out,
-                lettering.labels
-            );
-            if lettering.withheld > 0 {
-                m += &format!(
-                    "; {} names of lines and forces withheld from plans without room for all",
-                    lettering.withheld
-                );
-            }
-            m
-        });
+        // What the crowd rule did, said unless `--quiet` (a failed check is said always).
+        let mut said = Vec::new();
+        if lettering.left_out > 0 {
+            said.push(format!(
+                "{} of {} labels left out, no room for them on the sheet",
+                lettering.left_out, lettering.labels
+            ));
+        }
+        if lettering.withheld > 0 {
+            said.push(format!(
+                "{} names of lines and forces withheld from plans without room for all",
+                lettering.withheld
+            ));
+        }
+        let labels = (verbosity() >= 1 && !said.is_empty())
+            .then(|| format!("{}: {}", f.display(), said.join("; ")));
         let note = match (labels, failed_checks(f, board)) {
             (Some(a), Some(b)) => Some(format!("{a}\n{b}")),
             (a, b) => a.or(b),
@@ -512,9 +549,10 @@ fn render_cmd(
             );
         }
     }
-    ensure_dir(out)?;
+    let mut made = MadeDirs::default();
+    ensure_dir(out, &mut made)?;
     let paths: Vec<PathBuf> = batch.paths().map(Path::to_path_buf).collect();
-    commit(batch)?;
+    commit(batch, made)?;
     for path in paths {
         chatter(&format!("{}\n", path.display()))?;
     }
@@ -559,7 +597,7 @@ fn render_all(
     let drawn = graphostatik::jobs::dearest_first_on(files, size, workers, prepare, |f| {
         let start = std::time::Instant::now();
         let p = load(f)?;
-        let board = construct(f, &p)?;
+        let board = construct_drawable(f, &p)?;
         let drawn = exports.draw(f, &p, &board)?;
         if verbosity() >= 2 {
             eprintln!(
@@ -700,12 +738,11 @@ fn accuracy_cmd(scene: &Path, svg: Option<&Path>, json: bool) -> Result<ExitCode
         Batch::check_targets(&[path]).map_err(|e| Fail(format!("--svg {e}")))?;
     }
     let mut progress = |done: usize, total: usize| progress(done, total, "settings");
-    let sweeps = graphostatik::scene::sweeps(&p, &mut progress).map_err(|e| {
-        Fail(format!(
-            "{}: a setting of the sweep did not construct: {e}",
-            scene.display()
-        ))
-    })?;
+    let sweeps =
+        graphostatik::scene::sweeps(&p, &mut progress).map_err(|e| match p.error_field(&e) {
+            Some(field) => Fail(format!("{}: {field}: {e}", scene.display())),
+            None => Fail(format!("{}: {e}", scene.display())),
+        })?;
     if let Some(path) = svg {
         let title = format!("What accuracy costs: {}", p.figure_meta().title);
         let mut batch = Batch::default();
@@ -713,7 +750,7 @@ fn accuracy_cmd(scene: &Path, svg: Option<&Path>, json: bool) -> Result<ExitCode
             path.to_path_buf(),
             render::accuracy_plot_svg(&title, &sweeps),
         );
-        commit(batch)?;
+        commit(batch, MadeDirs::default())?;
     }
     say_report(json, sweeps.as_slice(), render::accuracy_table_text)?;
     Ok(ExitCode::SUCCESS)
@@ -840,7 +877,7 @@ enum GroupArg {
 /// `steps`: the self-contained page that walks through the construction one step at a time.
 fn steps_cmd(scene: &Path, out: &Path, group: GroupArg) -> Result<ExitCode, Fail> {
     let p = load(scene)?;
-    let board = construct(scene, &p)?;
+    let board = construct_drawable(scene, &p)?;
     let opts = render::WalkOptions {
         grouping: match group {
             GroupArg::Step => render::Grouping::Step,
@@ -849,10 +886,11 @@ fn steps_cmd(scene: &Path, out: &Path, group: GroupArg) -> Result<ExitCode, Fail
         ..Default::default()
     };
     let html = render::walkthrough_html(&p.figure_meta(), &board, &opts);
-    ensure_dir(out)?;
+    let mut made = MadeDirs::default();
+    ensure_dir(out, &mut made)?;
     let mut batch = Batch::default();
     batch.add(out.join("index.html"), html);
-    commit(batch)?;
+    commit(batch, made)?;
     chatter(&format!(
         "{} steps in {}\n",
         board.steps().len(),
@@ -884,14 +922,15 @@ fn site_cmd(scenes: &[PathBuf], out: &Path, engine: Option<PathBuf>) -> Result<E
         }
         graphostatik::site::SiteError::Scene(line) => Fail(line),
     })?;
-    ensure_dir(out)?;
-    ensure_dir(&out.join("thumbs"))?;
+    let mut made = MadeDirs::default();
+    ensure_dir(out, &mut made)?;
+    ensure_dir(&out.join("thumbs"), &mut made)?;
     let mut batch = Batch::default();
     for p in pages {
         batch.add(out.join(&p.name), p.contents);
     }
     let bytes = batch.bytes();
-    commit(batch)?;
+    commit(batch, made)?;
     chatter(&format!(
         "{} scenes in {} ({:.1} MB, open index.html)\n",
         list.len(),
@@ -977,10 +1016,77 @@ fn cores() -> usize {
     std::thread::available_parallelism().map_or(1, usize::from)
 }
 
+/// The command line read, or its error as one line (exit 2): clap's help and version as
+/// clap prints them.
+fn parse_cli() -> Result<Cli, ExitCode> {
+    use clap::error::ErrorKind;
+    match Cli::try_parse() {
+        Ok(cli) => Ok(cli),
+        Err(e) if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) => {
+            let _ = e.print();
+            Err(ExitCode::SUCCESS)
+        }
+        Err(e) if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            let _ = e.print();
+            Err(ExitCode::from(2))
+        }
+        Err(e) => {
+            eprintln!(
+                "error: {}",
+                graphostatik::fmt::error_line(&one_line(&e.to_string()))
+            );
+            Err(ExitCode::from(2))
+        }
+    }
+}
+
+/// clap's error text on one line: its message and tips, without the usage block (which
+/// `--help` gives), with what to ask for more.
+fn one_line(text: &str) -> String {
+    let mut parts: Vec<&str> = Vec::new();
+    let mut usage = "";
+    for line in text.lines().map(str::trim) {
+        if let Some(u) = line.strip_prefix("Usage: ") {
+            usage = u;
+            continue;
+        }
+        if line.is_empty() || line.starts_with("For more information") {
+            continue;
+        }
+        parts.push(line.strip_prefix("error: ").unwrap_or(line));
+    }
+    let mut out = parts.join("; ");
+    // The command asked about: the usage's first words before an argument, or the
+    // subcommand typed.
+    let mut command: Vec<String> = (usage.split_whitespace())
+        .take_while(|w| !w.starts_with(['<', '[', '-']))
+        .map(str::to_string)
+        .collect();
+    if command.is_empty() {
+        command.push("graphostatik".into());
+        let typed = std::env::args().nth(1).filter(|a| !a.starts_with('-'));
+        let known = |t: &String| {
+            <Cli as clap::CommandFactory>::command()
+                .find_subcommand(t)
+                .is_some()
+        };
+        if let Some(sub) = typed.filter(known) {
+            command.push(sub);
+        }
+    }
+    let command = command.join(" ");
+    out.push_str(&format!(" (`{command} --help` lists them)"));
+    out
+}
+
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match parse_cli() {
+        Ok(cli) => cli,
+        Err(code) => return code,
+    };
     if !matches!(cli.command, Command::Serve { .. }) {
         heap::prepare();
+        clean_up_when_stopped();
     }
     let level = if cli.quiet {
         0
@@ -997,6 +1103,25 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// On Ctrl-C (SIGINT) or SIGTERM, the temporaries the command has written are removed
+/// (after a batch's renames, if one is renaming, have ended or rolled back) before it exits
+/// with 128 + the signal's number, as a shell reports a stopped command.
+fn clean_up_when_stopped() {
+    use signal_hook::consts::{SIGINT, SIGTERM};
+    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM]) else {
+        return;
+    };
+    let _ = std::thread::Builder::new()
+        .name("signals".into())
+        .stack_size(64 * 1024)
+        .spawn(move || {
+            if let Some(sig) = signals.forever().next() {
+                graphostatik::io::abandon();
+                std::process::exit(128 + sig);
+            }
+        });
 }
 
 /// The heap of a command that runs once and ends (every command but `serve`).

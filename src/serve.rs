@@ -16,8 +16,8 @@ use std::collections::HashMap;
 use std::io::Write;
 use std::net::{TcpListener, TcpStream};
 use std::path::{Path, PathBuf};
-use std::sync::{Arc, Mutex};
-use std::time::Duration;
+use std::sync::{Arc, Condvar, Mutex};
+use std::time::{Duration, Instant};
 
 /// How often the page asks whether its scene changed (ms).
 pub const POLL_MS: u32 = 500;
@@ -25,8 +25,28 @@ pub const POLL_MS: u32 = 500;
 pub const MAX_HEAD: usize = 16 * 1024;
 /// Time a client has to send its request head (a slow or idle client is closed after it).
 pub const HEAD_DEADLINE: Duration = Duration::from_secs(5);
-/// Connections served at once; beyond them a client is answered 503 at once and closed.
+/// Connections served at once. Beyond them a new connection takes the place of the one that
+/// has waited longest without sending its request (an idle client cannot hold the slots a
+/// working one needs); where every connection is being answered, it is answered 503 and
+/// closed.
 pub const MAX_CONNECTIONS: usize = 128;
+/// The memory page builds in flight may take at once, by their estimate
+/// ([`PAGE_BYTES_PER_STEP`] a step): a build past it waits up to [`BUILD_WAIT`] for others to
+/// finish, then is answered 503 with `Retry-After`.
+pub const BUILD_BUDGET_BYTES: usize = 768 << 20;
+/// What a page build takes per step of its construction, measured: 16 cylinders at 100
+/// divisions, 49,885 steps, a 30 MB page, 213 MB at its peak.
+pub const PAGE_BYTES_PER_STEP: usize = 5 * 1024;
+/// How long a page build waits for the budget.
+pub const BUILD_WAIT: Duration = Duration::from_secs(10);
+/// The slowest an answer is read: each piece of [`ANSWER_PIECE`] bytes must be taken within
+/// [`ANSWER_GRACE`] and its share at this rate, or the client is dropped (a slow reader
+/// cannot hold a slot for longer than its socket's buffers and a piece take).
+pub const MIN_READ_BYTES_PER_SEC: usize = 256 * 1024;
+/// The time each piece of an answer has besides its share at [`MIN_READ_BYTES_PER_SEC`].
+pub const ANSWER_GRACE: Duration = Duration::from_secs(2);
+/// The pieces an answer is written in (bytes).
+pub const ANSWER_PIECE: usize = 64 * 1024;
 
 /// What the server serves: one scene file, or the `*.json` of one folder.
 #[derive(Debug, Clone)]
@@ -36,9 +56,69 @@ pub struct Site {
     /// Whether the listener is on loopback (then only loopback host names are answered).
     loopback: bool,
     port: u16,
-    last_good: Arc<Mutex<HashMap<String, Good>>>,
+    /// Per scene, its last good construction and its last page built (see [`Kept`]).
+    kept: Arc<Mutex<Kept>>,
+    /// The memory page builds in flight take.
+    budget: Arc<Budget>,
+    /// A lock per scene that is being built: a page asked for by many at once is built once,
+    /// the others wait for it and take it built.
+    building: Arc<Mutex<HashMap<String, Arc<Mutex<()>>>>>,
     /// `engine.js` (the engine inlined), when the engine was found.
-    engine: Option<Arc<String>>,
+    engine: Option<Arc<str>>,
+}
+
+/// The memory that page builds in flight may take, by their estimates, and a wait for it.
+#[derive(Debug)]
+struct Budget {
+    used: Mutex<usize>,
+    freed: Condvar,
+    total: usize,
+}
+
+/// A share of the [`Budget`], given back when dropped.
+struct Taken<'a> {
+    budget: &'a Budget,
+    bytes: usize,
+}
+
+impl Budget {
+    fn new(total: usize) -> Budget {
+        Budget {
+            used: Mutex::new(0),
+            freed: Condvar::new(),
+            total,
+        }
+    }
+
+    /// `bytes` of the budget (at most all of it), waiting up to `wait` for others to give
+    /// theirs back; `None` where they did not.
+    fn take(&self, bytes: usize, wait: Duration) -> Option<Taken<'_>> {
+        let bytes = bytes.min(self.total);
+        let until = Instant::now() + wait;
+        let mut used = self.used.lock().unwrap_or_else(|e| e.into_inner());
+        while *used + bytes > self.total {
+            let left = until.saturating_duration_since(Instant::now());
+            if left.is_zero() {
+                return None;
+            }
+            used = (self.freed.wait_timeout(used, left))
+                .unwrap_or_else(|e| e.into_inner())
+                .0;
+        }
+        *used += bytes;
+        Some(Taken {
+            budget: self,
+            bytes,
+        })
+    }
+}
+
+impl Drop for Taken<'_> {
+    fn drop(&mut self) {
+        let mut used = self.budget.used.lock().unwrap_or_else(|e| e.into_inner());
+        *used -= self.bytes;
+        self.budget.freed.notify_all();
+    }
 }
 
 /// The last construction of a scene that succeeded: shown under the error of a bad edit.
@@ -48,6 +128,85 @@ struct Good {
     built: Arc<Built>,
 }
 
+impl Good {
+    /// About the bytes it holds.
+    fn bytes(&self) -> usize {
+        let b = &self.built;
+        self.text.len()
+            + b.svg.len()
+            + b.items
+                .iter()
+                .chain(&b.details)
+                .map(String::len)
+                .sum::<usize>()
+            + 256 * (b.steps.len() + b.checks.len())
+    }
+}
+
+/// What the server keeps of each scene: its last good construction and its last page, by
+/// its file's version (asked again unchanged, a page is answered without a build and every
+/// client reads the same bytes). At most [`KEPT_BYTES`] in all: past them the scenes asked
+/// for longest ago are let go (the scene asked for now is always kept).
+#[derive(Debug, Default)]
+struct Kept {
+    by_name: HashMap<String, KeptScene>,
+    asked: u64,
+}
+
+#[derive(Debug, Default)]
+struct KeptScene {
+    good: Option<Good>,
+    page: Option<(String, Answer)>,
+    asked: u64,
+}
+
+impl KeptScene {
+    fn bytes(&self) -> usize {
+        self.good.as_ref().map_or(0, Good::bytes)
+            + self.page.as_ref().map_or(0, |(_, a)| a.body.len())
+    }
+}
+
+/// Most bytes the server keeps of built scenes and pages ([`Kept`]).
+pub const KEPT_BYTES: usize = 256 << 20;
+
+impl Kept {
+    /// The page of `name` built from the file's version `token`, if it is kept.
+    fn page(&mut self, name: &str, token: &str) -> Option<Answer> {
+        self.asked += 1;
+        let k = self.by_name.get_mut(name)?;
+        k.asked = self.asked;
+        (k.page.as_ref()).and_then(|(v, a)| (v == token).then(|| a.clone()))
+    }
+
+    /// Keeps what a build of `name` gave, and lets go of the scenes asked for longest ago
+    /// while more than [`KEPT_BYTES`] are kept.
+    fn keep(&mut self, name: &str, good: Option<Good>, page: Option<(String, Answer)>) {
+        self.asked += 1;
+        let k = self.by_name.entry(name.to_string()).or_default();
+        k.asked = self.asked;
+        if good.is_some() {
+            k.good = good;
+        }
+        if page.is_some() {
+            k.page = page;
+        }
+        let mut total: usize = self.by_name.values().map(KeptScene::bytes).sum();
+        while total > KEPT_BYTES {
+            let Some(oldest) = (self.by_name.iter())
+                .filter(|(n, _)| n.as_str() != name)
+                .min_by_key(|(_, k)| k.asked)
+                .map(|(n, _)| n.clone())
+            else {
+                break;
+            };
+            if let Some(k) = self.by_name.remove(&oldest) {
+                total -= k.bytes();
+            }
+        }
+    }
+}
+
 /// An HTTP answer.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Answer {
@@ -55,8 +214,10 @@ pub struct Answer {
     pub status: u16,
     /// Content type.
     pub content_type: &'static str,
-    /// Body.
-    pub body: String,
+    /// Body, shared by every client it is written to.
+    pub body: Arc<str>,
+    /// Seconds after which to ask again (503 of a busy server).
+    pub retry_after: Option<u32>,
 }
 
 impl Answer {
@@ -64,21 +225,34 @@ impl Answer {
         Answer {
             status: 200,
             content_type: "text/html; charset=utf-8",
-            body,
+            body: body.into(),
+            retry_after: None,
         }
     }
-    fn script(body: String) -> Answer {
+    fn script(body: Arc<str>) -> Answer {
         Answer {
             status: 200,
             content_type: "text/javascript; charset=utf-8",
             body,
+            retry_after: None,
         }
     }
     fn text(status: u16, body: impl Into<String>) -> Answer {
         Answer {
             status,
             content_type: "text/plain; charset=utf-8",
-            body: body.into(),
+            body: body.into().into(),
+            retry_after: None,
+        }
+    }
+    /// A build that found no room in the budget: ask again in a second.
+    fn busy() -> Answer {
+        Answer {
+            retry_after: Some(1),
+            ..Answer::text(
+                503,
+                "busy: other pages are being built; ask again in a second",
+            )
         }
     }
 }
@@ -98,8 +272,10 @@ impl Site {
             single: meta.is_file(),
             loopback,
             port,
-            last_good: Default::default(),
-            engine: engine.map(Arc::new),
+            kept: Default::default(),
+            budget: Arc::new(Budget::new(BUILD_BUDGET_BYTES)),
+            building: Default::default(),
+            engine: engine.map(Arc::from),
         })
     }
 
@@ -144,11 +320,11 @@ impl Site {
             return self.index();
         }
         if path == "/page.js" {
-            return Answer::script(crate::site::PAGE_JS.into());
+            return Answer::script(Arc::from(crate::site::PAGE_JS));
         }
         if path == "/engine.js" {
             return match &self.engine {
-                Some(js) => Answer::script(js.to_string()),
+                Some(js) => Answer::script(Arc::clone(js)),
                 None => Answer::text(404, "no engine"),
             };
         }
@@ -242,25 +418,49 @@ impl Site {
 
     /// A scene's page with the reload script; on a bad edit, the error line over the last
     /// good construction.
+    ///
+    /// A page asked again while its file is unchanged is the page built before. A build
+    /// first estimates what it will take (a construction that keeps nothing counts its
+    /// steps) and waits for that share of [`BUILD_BUDGET_BYTES`].
     fn page(&self, name: &str, file: &Path) -> Answer {
         let token = version(file);
-        let built = build(file);
-        let mut good = self.last_good.lock().unwrap_or_else(|e| e.into_inner());
-        let (shown, error) = match built {
-            Ok(g) => {
-                good.insert(name.to_string(), g.clone());
-                (Some(g), None)
-            }
-            Err(e) => (good.get(name).cloned(), Some(e)),
+        let cached = || {
+            let mut kept = self.kept.lock().unwrap_or_else(|e| e.into_inner());
+            kept.page(name, &token)
         };
-        drop(good);
+        if let Some(a) = cached() {
+            return a;
+        }
+        // One build of a scene at a time; the others asking for it wait and take it built.
+        let lock = {
+            let mut b = self.building.lock().unwrap_or_else(|e| e.into_inner());
+            Arc::clone(b.entry(name.to_string()).or_default())
+        };
+        let _one = lock.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(a) = cached() {
+            return a;
+        }
+        let Some(_taken) = self.budget.take(page_cost(file), BUILD_WAIT) else {
+            return Answer::busy();
+        };
+        let built = build(file);
+        let ok = built.is_ok();
+        let (shown, error) = match built {
+            Ok(g) => (Some(g), None),
+            Err(e) => {
+                let kept = self.kept.lock().unwrap_or_else(|e| e.into_inner());
+                let good = kept.by_name.get(name).and_then(|k| k.good.clone());
+                (good, Some(e))
+            }
+        };
+        let new_good = shown.clone().filter(|_| ok);
         let reload = reload_script(name, &token);
-        match shown {
+        let answer = match shown {
             Some(g) => Answer::html(scene_page(
                 &SiteScene {
                     name: name.to_string(),
                     origin: file.display().to_string(),
-                    text: g.text,
+                    text: g.text.clone(),
                 },
                 &g.built,
                 &PageLinks {
@@ -287,8 +487,31 @@ impl Site {
                     ..Allow::default()
                 },
             )),
+        };
+        if ok {
+            let mut kept = self.kept.lock().unwrap_or_else(|e| e.into_inner());
+            kept.keep(name, new_good, Some((token, answer.clone())));
         }
+        answer
     }
+}
+
+/// What building the page of `file` takes, estimated from its steps, counted by a
+/// construction that keeps nothing (a figure's limit at most: the build refuses more); a
+/// scene that cannot be read costs little (its error page).
+fn page_cost(file: &Path) -> usize {
+    let Ok(text) = crate::io::read_text(file, crate::io::MAX_SCENE_BYTES) else {
+        return 0;
+    };
+    let steps = crate::scene::AnyScene::from_json(&text, "")
+        .ok()
+        .and_then(|s| {
+            s.problem()
+                .construct(crate::protocol::BoardConfig::SILENT)
+                .ok()
+        })
+        .map_or(0, |b| b.step_count());
+    steps.min(crate::scene::MAX_FIGURE_STEPS) * PAGE_BYTES_PER_STEP + 8 * text.len()
 }
 
 /// Reads and constructs a scene for its page; the error as one line naming the file and the
@@ -374,27 +597,97 @@ fn percent_encode(s: &str) -> String {
 }
 
 /// Serves `site` on `listener` until the process ends: a thread per connection, at most
-/// [`MAX_CONNECTIONS`] at once (beyond them 503 and closed), each with [`HEAD_DEADLINE`] to
-/// send a head of at most [`MAX_HEAD`] bytes, one request each.
+/// [`MAX_CONNECTIONS`] at once, each with [`HEAD_DEADLINE`] to send a head of at most
+/// [`MAX_HEAD`] bytes, one request each, its answer read at [`MIN_READ_BYTES_PER_SEC`] at
+/// least. When all are taken, a new connection takes the place of the one that has waited
+/// longest without sending its request; where none waits, it is answered 503 and closed.
 pub fn run(listener: TcpListener, site: Site) {
-    let open = Arc::new(std::sync::atomic::AtomicUsize::new(0));
+    let conns = Arc::new(Mutex::new(Conns::default()));
     for mut stream in listener.incoming().flatten() {
-        use std::sync::atomic::Ordering;
-        if open.fetch_add(1, Ordering::SeqCst) >= MAX_CONNECTIONS {
-            open.fetch_sub(1, Ordering::SeqCst);
+        let Some(id) = admit(&conns, &stream) else {
             refuse(&mut stream, 503, "busy: too many connections");
             continue;
-        }
-        let (site, count) = (site.clone(), Arc::clone(&open));
+        };
+        let (site, held) = (site.clone(), Arc::clone(&conns));
         let spawned = std::thread::Builder::new()
             .stack_size(256 * 1024)
             .spawn(move || {
-                let _ = handle(stream, &site);
-                count.fetch_sub(1, Ordering::SeqCst);
+                let _ = handle(stream, &site, &|| asked(&held, id));
+                left(&held, id);
             });
         if spawned.is_err() {
-            open.fetch_sub(1, Ordering::SeqCst);
+            left(&conns, id);
         }
+    }
+}
+
+/// The connections open: each its id, a handle to close it by, when it came and whether its
+/// request has come yet.
+#[derive(Default)]
+struct Conns {
+    next: u64,
+    open: Vec<Conn>,
+    /// Connections closed for newer ones whose threads have not ended yet.
+    closing: usize,
+}
+
+struct Conn {
+    id: u64,
+    stream: Option<TcpStream>,
+    since: Instant,
+    waiting: bool,
+}
+
+/// A place for `stream` among the connections, its id; where all are taken, the connection
+/// that has waited longest without its request is closed for it (its thread ends at its next
+/// read). `None` where every connection is being answered.
+fn admit(conns: &Mutex<Conns>, stream: &TcpStream) -> Option<u64> {
+    let mut c = conns.lock().unwrap_or_else(|e| e.into_inner());
+    if c.open.len() >= MAX_CONNECTIONS {
+        // The threads of closed connections end at once; more than a round of them
+        // pending means they do not, and nothing more is taken.
+        if c.closing >= MAX_CONNECTIONS {
+            return None;
+        }
+        let oldest = (c.open.iter().enumerate())
+            .filter(|(_, k)| k.waiting)
+            .min_by_key(|(_, k)| k.since)
+            .map(|(i, _)| i)?;
+        let gone = c.open.swap_remove(oldest);
+        if let Some(s) = gone.stream {
+            let _ = s.shutdown(std::net::Shutdown::Both);
+        }
+        // Its id is not found when its thread leaves: it counts as closing until then.
+        c.closing += 1;
+    }
+    c.next += 1;
+    let id = c.next;
+    c.open.push(Conn {
+        id,
+        stream: stream.try_clone().ok(),
+        since: Instant::now(),
+        waiting: true,
+    });
+    Some(id)
+}
+
+/// Connection `id` has sent its request: it is no longer closed for a newer one.
+fn asked(conns: &Mutex<Conns>, id: u64) {
+    let mut c = conns.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(k) = c.open.iter_mut().find(|k| k.id == id) {
+        k.waiting = false;
+        k.stream = None;
+    }
+}
+
+/// Connection `id` has ended.
+fn left(conns: &Mutex<Conns>, id: u64) {
+    let mut c = conns.lock().unwrap_or_else(|e| e.into_inner());
+    match c.open.iter().position(|k| k.id == id) {
+        Some(i) => {
+            c.open.swap_remove(i);
+        }
+        None => c.closing = c.closing.saturating_sub(1),
     }
 }
 
@@ -440,6 +733,9 @@ fn read_head(stream: &mut TcpStream) -> Result<Vec<String>, u16> {
             .map(|i| i + 4)
             .or_else(|| head.windows(2).position(|w| w == b"\n\n").map(|i| i + 2));
         if let Some(end) = end {
+            if end > MAX_HEAD {
+                return Err(431);
+            }
             head.truncate(end);
             break;
         }
@@ -450,7 +746,9 @@ fn read_head(stream: &mut TcpStream) -> Result<Vec<String>, u16> {
         if left.is_zero() || stream.set_read_timeout(Some(left)).is_err() {
             return Err(408);
         }
-        match stream.read(&mut buf) {
+        // No more than one byte past the limit is read: a head is refused at its limit.
+        let room = (MAX_HEAD + 1 - head.len()).min(buf.len());
+        match stream.read(&mut buf[..room]) {
             Ok(0) => break,
             Ok(n) => head.extend_from_slice(&buf[..n]),
             Err(_) => return Err(408),
@@ -471,9 +769,12 @@ fn header<'a>(head: &'a [String], name: &str) -> Option<&'a str> {
     })
 }
 
-fn handle(mut stream: TcpStream, site: &Site) -> std::io::Result<()> {
+fn handle(mut stream: TcpStream, site: &Site, asked: &dyn Fn()) -> std::io::Result<()> {
     let head = match read_head(&mut stream) {
-        Ok(h) => h,
+        Ok(h) => {
+            asked();
+            h
+        }
         Err(status) => {
             refuse(
                 &mut stream,
@@ -494,18 +795,44 @@ fn handle(mut stream: TcpStream, site: &Site) -> std::io::Result<()> {
             _ => Answer::text(405, "only GET"),
         }
     };
-    let body = if method == "HEAD" { "" } else { &answer.body };
-    stream.set_write_timeout(Some(Duration::from_secs(30)))?;
-    write!(
-        stream,
+    let body: &str = if method == "HEAD" { "" } else { &answer.body };
+    let retry = (answer.retry_after)
+        .map(|s| format!("Retry-After: {s}\r\n"))
+        .unwrap_or_default();
+    let head = format!(
         "HTTP/1.1 {} {}\r\nContent-Type: {}\r\nContent-Length: {}\r\nCache-Control: no-store\r\n\
-         X-Content-Type-Options: nosniff\r\n{FRAME_POLICY}Connection: close\r\n\r\n{body}",
+         X-Content-Type-Options: nosniff\r\n{FRAME_POLICY}{retry}Connection: close\r\n\r\n",
         answer.status,
         reason(answer.status),
         answer.content_type,
         answer.body.len()
-    )?;
-    stream.flush()
+    );
+    write_read_soon(&mut stream, head.as_bytes())?;
+    write_read_soon(&mut stream, body.as_bytes())
+}
+
+/// Writes `bytes` to `stream` in pieces of [`ANSWER_PIECE`], each of which the client must
+/// take within [`ANSWER_GRACE`] and its share at [`MIN_READ_BYTES_PER_SEC`]; a client that
+/// reads slower is dropped.
+fn write_read_soon(stream: &mut TcpStream, bytes: &[u8]) -> std::io::Result<()> {
+    let per_piece =
+        ANSWER_GRACE + Duration::from_secs_f64(ANSWER_PIECE as f64 / MIN_READ_BYTES_PER_SEC as f64);
+    for mut piece in bytes.chunks(ANSWER_PIECE) {
+        let until = Instant::now() + per_piece;
+        while !piece.is_empty() {
+            let left = until.saturating_duration_since(Instant::now());
+            if left.is_zero() {
+                return Err(std::io::ErrorKind::TimedOut.into());
+            }
+            stream.set_write_timeout(Some(left))?;
+            let n = stream.write(piece)?;
+            if n == 0 {
+                return Err(std::io::ErrorKind::WriteZero.into());
+            }
+            piece = &piece[n..];
+        }
+    }
+    Ok(())
 }
 
 /// What every answer's header adds to the policy each page carries in its head

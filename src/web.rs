@@ -401,8 +401,8 @@ fn build_held(
     let scene = AnyScene::from_json(text, origin).map_err(|e| e.to_string())?;
     let sliders = sliders(scene.preview(), text, origin)?;
     let p = scene.problem();
-    let board = p
-        .construct(BoardConfig::DRAWING)
+    let board = (p.construct(BoardConfig::DRAWING))
+        .and_then(|b| p.drawable(&b).map(|()| b))
         .map_err(|e| match p.error_field(&e) {
             Some(f) => format!("{origin}: {f}: {e}"),
             None => format!("{origin}: {e}"),

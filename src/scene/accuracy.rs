@@ -28,6 +28,9 @@ pub fn sweeps(
     p: &AnyProblem,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Vec<Sweep>, ConstructionError> {
+    // The scene's own figure first: one too large to draw is refused before any setting
+    // is timed (the precision sweep draws it, with its double-double replay).
+    p.construct(BoardConfig::DRAWING)?;
     let mut plan: Vec<Setting<'_>> = p.sweeps();
     plan.push(Box::new(move || precision(p).map(|s| vec![s])));
     let total = plan.len();

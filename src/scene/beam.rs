@@ -4,7 +4,7 @@ use super::defaults::nice_at_least;
 use super::error::SceneError;
 use super::fields::{optional_positive, Fields};
 use super::procedure::{Procedure, ReadContext};
-use super::sweep::{one, timed, Setting, Sweep};
+use super::sweep::{one, timed_drawing, Setting, Sweep};
 use crate::protocol::{Board, BoardConfig, ConstructionError, FigureMeta, ScaleBar};
 use crate::statics::{self, Beam, BeamDrawing, BeamRequest, PointLoad, UniformLoad};
 use serde::{Deserialize, Serialize};
@@ -535,7 +535,9 @@ fn moment_error(
     knob: &str,
     setting: usize,
 ) -> Result<Sweep, ConstructionError> {
-    let (r, secs) = timed(|| BeamScene::construct(q, BoardConfig::DRAWING));
+    let (r, secs) = timed_drawing(&format_args!("{knob} {setting}"), |c| {
+        BeamScene::construct(q, c)
+    });
     let res = r?.1;
     let cf = crate::statics::closed_form::Sections::new(&orig.beam);
     let err = res

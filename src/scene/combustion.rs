@@ -4,7 +4,7 @@
 use super::error::SceneError;
 use super::fields::Fields;
 use super::procedure::{Procedure, ReadContext};
-use super::sweep::{one, timed, Setting};
+use super::sweep::{one, timed_drawing, Setting};
 use super::types::{Mechanism, Speed};
 use crate::dynamics::combustion::{
     self, Combustion, GasCycle, GasCylinder, GasDrawing, GasEngine, GasResults, Strokes,
@@ -410,7 +410,9 @@ fn gas_divisions(g: &CombustionProblem) -> Vec<Setting<'_>> {
             Box::new(move || {
                 let mut q = g.clone();
                 q.divisions = n;
-                let (r, secs) = timed(|| CombustionScene::construct(&q, BoardConfig::DRAWING));
+                let (r, secs) = timed_drawing(&format_args!("{n} shaft divisions"), |c| {
+                    CombustionScene::construct(&q, c)
+                });
                 let res = r?.1;
                 Ok(vec![one(
                     "shaft divisions over the cycle",

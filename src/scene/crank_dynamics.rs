@@ -6,7 +6,7 @@ use super::defaults::nice_at_least;
 use super::error::SceneError;
 use super::fields::{optional_positive, Fields};
 use super::procedure::{Procedure, ReadContext};
-use super::sweep::{one, timed, Setting};
+use super::sweep::{one, timed_drawing, Setting};
 use super::{Mechanism, Speed};
 use crate::crank::Angles;
 use crate::dynamics::model::{self, area_cm2, Cylinder, Indicator, Kinematics, Side, SteamModel};
@@ -571,7 +571,9 @@ fn dynamics_divisions(d: &DynamicsProblem) -> Vec<Setting<'_>> {
             Box::new(move || {
                 let mut q = d.clone();
                 q.rays = Angles::Divisions(n);
-                let (r, secs) = timed(|| DynamicsScene::construct(&q, BoardConfig::DRAWING));
+                let (r, secs) = timed_drawing(&format_args!("{n} divisions"), |c| {
+                    DynamicsScene::construct(&q, c)
+                });
                 let res = r?.1;
                 let exact = res.t_m_exact;
                 Ok(res

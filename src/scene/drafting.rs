@@ -287,8 +287,15 @@ const DRAWINGS_A_BATCH: usize = 64;
 
 /// Draws the problem `options.runs` times with the hand's errors, on `options.jobs` threads.
 ///
+/// The most steps a drafting run draws in all (its drawings times their steps, four times
+/// over): 200 runs, the default, of the largest figure ([`super::MAX_FIGURE_STEPS`]), some
+/// 30-60 s on two cores at 0.8-1.5 µs a step.
+pub const MAX_DRAFTING_STEPS: usize = 40_000_000;
+
 /// # Errors
-/// The construction's error if it fails without a hand (a validated scene does not).
+/// The construction's error if it fails without a hand (a validated scene does not); a
+/// figure too large to draw, or more drawings than [`MAX_DRAFTING_STEPS`] allows (`runs`),
+/// refused before the first run.
 pub fn drafting(
     p: &AnyProblem,
     options: DraftingOptions,
@@ -312,6 +319,22 @@ pub fn drafting_with_progress(
         progress(k, 4 * options.runs);
     };
     let exact = p.construct(BoardConfig::DRAWING.with_model(options.hand))?;
+    // The cost, known from the exact drawing before the first run: four drawings a run
+    // (the report's and the budget's three).
+    let steps = exact.step_count();
+    let work = 4 * options.runs.saturating_mul(steps);
+    if work > MAX_DRAFTING_STEPS {
+        let most = MAX_DRAFTING_STEPS / (4 * steps.max(1));
+        return Err(ConstructionError::unsupported(
+            "--runs",
+            format!(
+                "{} drawings of {steps} steps each, four times over, are {work} steps, more \
+                 than the {MAX_DRAFTING_STEPS} drafting draws (about a minute on two cores): \
+                 ask for at most {most} runs",
+                options.runs
+            ),
+        ));
+    }
     let checks = keyed(&exact);
     let index: HashMap<Key, usize> = (checks.iter().enumerate())
         .map(|(i, (k, _, _))| (k.clone(), i))

@@ -62,6 +62,7 @@ pub use crank_dynamics::{
 };
 pub use drafting::{
     drafting, drafting_with_progress, DraftedValue, DraftingOptions, DraftingReport,
+    MAX_DRAFTING_STEPS,
 };
 pub use error::SceneError;
 pub use force_system::{
@@ -78,11 +79,11 @@ pub use procedure::{
 pub use reference::reference_markdown;
 #[cfg(feature = "schema")]
 pub use registry::schema_json;
-pub use registry::{AnyProblem, AnyScene, Entry, REGISTRY};
+pub use registry::{AnyProblem, AnyScene, Entry, MAX_FIGURE_STEPS, REGISTRY};
 pub use scotch_yoke::{YokeCrank, YokeDrawingSpec, YokeProblem, YokeScene};
 pub use shaft::{ShaftProblem, ShaftScene, TorqueSpec};
 pub use slider_crank::SliderCrankProblem;
 pub use slotted_link::{LinkDrawingSpec, LinkProblem, LinkScene, LinkSpec};
-pub use sweep::{Setting, Sweep, SweepPoint};
+pub use sweep::{Setting, Sweep, SweepPoint, MAX_SWEEP_STEPS};
 pub use truss::{PositionTable, TrussProblem, TrussScene};
 pub use types::*;

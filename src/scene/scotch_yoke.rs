@@ -4,7 +4,7 @@ use super::error::SceneError;
 use super::fields::Fields;
 use super::procedure::{Procedure, ReadContext};
 use super::slider_crank::{check_crank, crank_radius};
-use super::sweep::{mean_over_divisions, timed, MeanOf, Setting};
+use super::sweep::{mean_over_divisions, timed_drawing, MeanOf, Setting};
 use super::types::{AngleSpec, Rod, Speed};
 use crate::crank::{Angles, Drawing};
 use crate::mechanisms::scotch_yoke::{self, Yoke, YokeRequest, YokeResults};
@@ -260,7 +260,9 @@ fn yoke_divisions(y: &YokeProblem) -> Vec<Setting<'_>> {
     mean_over_divisions(what, move |n| {
         let mut q = y.clone();
         q.angles = Angles::Divisions(n);
-        let (r, secs) = timed(|| YokeScene::construct(&q, BoardConfig::DRAWING));
+        let (r, secs) = timed_drawing(&format_args!("{n} crank divisions"), |c| {
+            YokeScene::construct(&q, c)
+        });
         Ok((r?.1.rows.iter().filter_map(|r| r.c).collect(), secs))
     })
 }

@@ -6,7 +6,7 @@ use super::error::SceneError;
 use super::fields::Fields;
 use super::procedure::Procedure;
 use super::procedure::ReadContext;
-use super::sweep::{mean_over_divisions, timed, MeanOf, Setting};
+use super::sweep::{mean_over_divisions, timed_drawing, MeanOf, Setting};
 use super::types::*;
 use crate::crank::{self, Angles, CrankDrive, CrankResults, Drawing, PistonForce, Request};
 use crate::kernel::tolerance::MAX_DIVISIONS;
@@ -596,7 +596,9 @@ fn crank_divisions(c: &SliderCrankProblem) -> Vec<Setting<'_>> {
     mean_over_divisions(what, move |n| {
         let mut q = c.clone();
         q.angles = Angles::Divisions(n);
-        let (r, secs) = timed(|| SliderCrankScene::construct(&q, BoardConfig::DRAWING));
+        let (r, secs) = timed_drawing(&format_args!("{n} crank divisions"), |c| {
+            SliderCrankScene::construct(&q, c)
+        });
         let rows = r?.1.rows;
         let sample = rows.iter().filter_map(|r| {
             if by_t {

@@ -3,7 +3,7 @@
 //! the problem so set, times it, and gives its error against the exact value. The helpers
 //! here time a run and make a sweep's points; [`sweeps`](super::sweeps) runs them.
 
-use crate::protocol::ConstructionError;
+use crate::protocol::{Board, BoardConfig, ConstructionError};
 use serde::Serialize;
 use std::time::Instant;
 
@@ -64,6 +64,40 @@ pub(super) fn timed<R>(mut f: impl FnMut() -> R) -> (R, f64) {
             times.sort_by(f64::total_cmp);
             return (r, times[times.len() / 2]);
         }
+    }
+}
+
+/// The most steps a setting of the accuracy sweep draws: eight figures' worth
+/// ([`super::MAX_FIGURE_STEPS`]), since a sweep goes past the scene's own divisions on
+/// purpose (the bundled sweeps draw at most 345,680 steps, KG Abb. 1056's four cylinders at
+/// 3,600 shaft divisions: 475 MB at the peak of its `accuracy`).
+pub const MAX_SWEEP_STEPS: usize = 8 * super::MAX_FIGURE_STEPS;
+
+/// A setting's construction timed as [`timed`] times it, on a drawing board held to
+/// [`MAX_SWEEP_STEPS`]: the first construction counts the setting's steps, and a setting
+/// past the limit is refused, naming it, before it is timed (it costs the limit's memory and
+/// one construction's time, not a drawing's memory many times over).
+pub(super) fn timed_drawing<R>(
+    setting: &dyn std::fmt::Display,
+    construct: impl Fn(BoardConfig) -> Result<(Board, R), ConstructionError>,
+) -> (Result<(Board, R), ConstructionError>, f64) {
+    let most = MAX_SWEEP_STEPS;
+    let config = BoardConfig::DRAWING.keeping_at_most(most as u32);
+    match construct(config) {
+        Ok((b, _)) if b.spilled() => {
+            let steps = b.step_count();
+            let e = ConstructionError::unsupported(
+                "sweep",
+                format!(
+                    "the accuracy sweep's setting {setting} draws {steps} steps, more than the \
+                     {most} a setting may draw: accuracy takes a scene whose every setting fits \
+                     (fewer cylinders, loads or members)"
+                ),
+            );
+            (Err(e), 0.0)
+        }
+        Err(e) => (Err(e), 0.0),
+        Ok(_) => timed(|| construct(config)),
     }
 }
 

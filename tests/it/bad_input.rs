@@ -508,10 +508,17 @@ fn names_cannot_break_the_svg_the_csv_or_the_markdown() {
         "load_cases": [ { "name": "P", "loads": [ { "joint": "III", "kg": 1000 } ] } ] }"#;
     // A control character in any name (ESC would reach the terminal through `check`'s
     // table, NUL would break TeX, a line end a CSV row) is refused, naming the field.
-    for (from, to, field) in [
-        ("\"III\"", "\"III\\u0000\"", "joints[2].name"),
-        ("\"a|b\"", "\"a|b\\nc\"", "members[1].name"),
-        ("\"P\"", "\"P\\u001b[2J\"", "load_cases[0].name"),
+    // A character that turns text around or breaks it unseen (U+202E shows a name backwards),
+    // raw or escaped, likewise.
+    let control = "a control character";
+    let unseen = "a direction or line-separator character";
+    for (from, to, field, why) in [
+        ("\"III\"", "\"III\\u0000\"", "joints[2].name", control),
+        ("\"a|b\"", "\"a|b\\nc\"", "members[1].name", control),
+        ("\"P\"", "\"P\\u001b[2J\"", "load_cases[0].name", control),
+        ("\"a|b\"", "\"a\u{202e}b\"", "members[1].name", unseen),
+        ("\"P\"", "\"P\\u2028Q\"", "load_cases[0].name", unseen),
+        ("\"III\"", "\"III\u{2067}\"", "joints[2].name", unseen),
     ] {
         std::fs::write(&scene, text.replacen(from, to, 1)).unwrap();
         for cmd in ["check", "render", "forces"] {
@@ -523,10 +530,7 @@ fn names_cannot_break_the_svg_the_csv_or_the_markdown() {
             let o = c.output().unwrap();
             let e = String::from_utf8_lossy(&o.stderr);
             assert_eq!(o.status.code(), Some(2), "{cmd}: {e}");
-            assert!(
-                e.contains(&format!("{field}: a control character")),
-                "{cmd}: {e}"
-            );
+            assert!(e.contains(&format!("{field}: {why}")), "{cmd}: {e}");
             assert!(o.stdout.is_empty() && !dir.join("refused").exists());
         }
     }
@@ -921,23 +925,28 @@ fn quiet_and_verbose() {
 
 #[test]
 fn render_names_a_scene_whose_labels_were_left_out_in_one_line_after_writing() {
-    // The crane bridge's nineteen crane positions over one girder leave no room for some
-    // labels: the figure is written, and stderr says how many were left out.
+    // The crane bridge's plans leave no room for the names of some lines and forces: the
+    // figure is written, and stderr says how many were withheld (and nothing of labels left
+    // out, where none were); `--quiet` says nothing of it.
     let dir = tmp("crowd");
     let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lh_aufgabe5_crane_bridge.json");
-    let o = Command::new(bin())
-        .arg("render")
-        .arg(&scene)
-        .arg("--out")
-        .arg(&dir)
-        .arg("-q")
-        .output()
-        .unwrap();
-    assert!(o.status.success());
-    let err = String::from_utf8_lossy(&o.stderr);
+    let run = |quiet: bool| {
+        let mut c = Command::new(bin());
+        c.arg("render").arg(&scene).arg("--out").arg(&dir);
+        if quiet {
+            c.arg("-q");
+        }
+        let o = c.output().unwrap();
+        assert!(o.status.success());
+        String::from_utf8_lossy(&o.stderr).into_owned()
+    };
+    let err = run(false);
     assert_eq!(err.lines().count(), 1, "{err}");
-    assert!(err.contains("lh_aufgabe5_crane_bridge.json: ") && err.contains("labels left out"));
+    assert!(err.contains("lh_aufgabe5_crane_bridge.json: "), "{err}");
+    assert!(err.contains("names of lines and forces withheld"), "{err}");
+    assert!(!err.contains("0 of"), "{err}");
     assert!(dir.join("lh_aufgabe5_crane_bridge.svg").exists());
+    assert_eq!(run(true), "");
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -1227,4 +1236,160 @@ fn a_figure_too_large_is_refused_before_it_is_drawn_and_check_still_takes_it() {
     assert!(text.contains("fewer angles"), "{text}");
     let checks = p.construct(BoardConfig::CHECKS).unwrap();
     assert!(checks.all_passed() && checks.check_count() > 3600);
+}
+
+#[test]
+fn drafting_reference_and_accuracy_are_costed_before_they_run() {
+    // Twelve cylinders at 3,600 shaft divisions: about a million steps, a figure `render`
+    // refuses. Each command that draws the figure refuses it as fast, at the memory of the
+    // figure's limit, naming what sets its size; none runs first (drafting once took 89 s
+    // and 2.1 GB for 20 runs, `check --reference` 66 s).
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/it/hostile");
+    let big = dir.join("combustion_12cyl_3600div.json");
+    let refused = |args: &[&str], want: &str| {
+        let t = std::time::Instant::now();
+        let o = Command::new(bin()).args(args).output().unwrap();
+        let secs = t.elapsed().as_secs_f64();
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {e}");
+        assert_eq!(e.lines().count(), 1, "{e}");
+        assert!(e.contains(want), "{args:?}: {e}");
+        assert!(o.stdout.is_empty());
+        assert!(secs < 30.0, "{args:?} took {secs:.1} s to refuse");
+    };
+    let big = big.to_str().unwrap();
+    let figure = "more than the 50000 a figure may hold";
+    refused(&["drafting", big, "--runs", "20"], figure);
+    refused(
+        &["check", "--reference", big],
+        "(a reference replay keeps the drawing)",
+    );
+    refused(&["accuracy", big], figure);
+    // A figure that fits, drawn more often than drafting's budget allows: the runs named,
+    // with the most that fit.
+    let crane = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/lh_aufgabe5_crane_bridge.json");
+    refused(
+        &["drafting", crane.to_str().unwrap(), "--runs", "100000"],
+        "--runs: 100000 drawings of",
+    );
+    // `check` without the replay takes the scene: it draws nothing.
+    let o = Command::new(bin()).args(["check", big]).output().unwrap();
+    assert!(
+        o.status.code() != Some(2),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
+#[test]
+fn a_stopped_render_leaves_no_temporaries() {
+    // Ctrl-C while `render` writes its batch: the temporaries it made are removed before it
+    // exits (130); a run that completes leaves none either.
+    let out = tmp("stopped");
+    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut child = Command::new(bin())
+        .args(["render", "-q", "--format", "svg,pdf", "--out"])
+        .arg(&out)
+        .arg(&scenes)
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let temporaries = || {
+        (std::fs::read_dir(&out).unwrap().flatten())
+            .filter(|e| e.file_name().to_string_lossy().ends_with(".tmp"))
+            .count()
+    };
+    let t = std::time::Instant::now();
+    while child.try_wait().unwrap().is_none() && temporaries() == 0 {
+        assert!(t.elapsed().as_secs() < 300, "render never began writing");
+        std::thread::sleep(std::time::Duration::from_millis(1));
+    }
+    let pid = child.id().to_string();
+    let _ = Command::new("kill").args(["-INT", &pid]).status();
+    let status = child.wait().unwrap();
+    assert!(matches!(status.code(), Some(0 | 130)), "{status:?}");
+    assert_eq!(temporaries(), 0, "temporaries left after {status:?}");
+    std::fs::remove_dir_all(&out).ok();
+}
+
+#[test]
+fn command_line_errors_are_one_line_with_their_reason() {
+    // clap's errors, each one line naming what to ask for more.
+    for (args, want) in [
+        (
+            &["render", "x", "--frob"][..],
+            "unexpected argument '--frob'",
+        ),
+        (
+            &["drafting", "x", "--runs", "abc"][..],
+            "invalid value 'abc' for '--runs",
+        ),
+        (&["frob"][..], "unrecognized subcommand 'frob'"),
+    ] {
+        let o = Command::new(bin()).args(args).output().unwrap();
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {e}");
+        assert_eq!(e.lines().count(), 1, "{args:?}: {e}");
+        assert!(
+            e.starts_with("error: ") && e.contains(want),
+            "{args:?}: {e}"
+        );
+        assert!(e.contains("--help` lists them"), "{e}");
+    }
+    // An error quoting a long value (a firing order of 400 entries) keeps its reason.
+    let scene =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/it/hostile/firing_order_of_400.json");
+    let o = Command::new(bin())
+        .arg("check")
+        .arg(&scene)
+        .output()
+        .unwrap();
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{e}");
+    assert_eq!(e.lines().count(), 1, "{e}");
+    assert!(
+        e.contains("cylinders.firing_order: [") && e.contains(" … "),
+        "{e}"
+    );
+    assert!(e.trim_end().ends_with("(e.g. [1, 3, 4, 2])"), "{e}");
+}
+
+#[test]
+fn a_figure_whose_drawn_parts_pass_the_sheet_is_refused_and_its_checks_are_not_judged() {
+    // Inputs within every limit whose derived parts are not: a truss joint 1e-10 m off the
+    // line of its members (forces of 5e12 kg: a force plan 250,000 km long), a couple off
+    // balance by 1e-6 kg (a resultant 4e7 km away). `render` refuses each naming the part
+    // and nothing is written; `check` takes it and says which checks cannot be judged.
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/it/hostile");
+    let out = tmp("far");
+    for scene in ["truss_joint_1e-10_off_its_line", "couple_off_by_1e-6_kg"] {
+        let f = dir.join(format!("{scene}.json"));
+        let o = Command::new(bin())
+            .arg("render")
+            .arg(&f)
+            .arg("--out")
+            .arg(out.join("x"))
+            .output()
+            .unwrap();
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{scene}: {e}");
+        assert_eq!(e.lines().count(), 1, "{e}");
+        assert!(
+            e.contains("m across on the sheet, more than the 10 m"),
+            "{e}"
+        );
+        assert!(!out.join("x").exists(), "{scene}: something was written");
+    }
+    let o = Command::new(bin())
+        .arg("check")
+        .arg(dir.join("truss_joint_1e-10_off_its_line.json"))
+        .output()
+        .unwrap();
+    let table = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        table.contains("4 not judged (their bound exceeds their tolerance"),
+        "{table}"
+    );
+    assert_eq!(table.matches("not judged\n").count(), 4, "{table}");
+    std::fs::remove_dir_all(&out).ok();
 }
