@@ -539,7 +539,8 @@ pub struct Check {
     pub tolerance: f64,
     /// The natural magnitude the tolerance is relative to.
     pub reference: f64,
-    /// Whether the error is within the tolerance.
+    /// Whether the check is not failed: the error is within the tolerance, or, where the
+    /// bound exceeds the tolerance, within the bound ([`Check::judged`]).
     pub passed: bool,
     /// What the constructed value's error can be, propagated through every step it depends
     /// on from f64's rounding (the board's error model): each cut amplifies the errors of the
@@ -555,6 +556,17 @@ impl Check {
     /// [`GLANCING_ANGLE`](crate::kernel::tolerance::GLANCING_ANGLE)).
     pub fn glancing(&self) -> bool {
         self.worst_cut.is_some_and(|w| w.conditioning.glancing())
+    }
+
+    /// Whether the check can judge its value: its propagated bound lies within its
+    /// tolerance. Where it does not, an error within the tolerance may be the rounding's luck
+    /// (a joint 1e-10 m off the line of its members: forces of 5e12 kg, a bound of 1.55e8 kg
+    /// against a tolerance of 5,000), and an error past the tolerance but within the bound
+    /// what the rounding at this conditioning gives (a scene drawn at 1e-9 of its lengths):
+    /// the value cannot be judged, the check is not failed ([`Check::passed`] holds, an error
+    /// past the bound fails), and the check table says "not judged" instead of "ok".
+    pub fn judged(&self) -> bool {
+        self.bound.partial_cmp(&self.tolerance) != Some(std::cmp::Ordering::Greater)
     }
 }
 

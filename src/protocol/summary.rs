@@ -69,6 +69,8 @@ pub struct CheckSummary {
     pub failed: u64,
     /// Checks depending on a glancing cut.
     pub glancing: u64,
+    /// Checks not failed whose bound exceeds their tolerance ([`Check::judged`]).
+    pub unjudged: u64,
     /// One per kind, in the order of their first steps.
     pub kinds: Vec<CheckKind>,
     /// The first [`LISTED_FAILURES`] failed checks with their steps, in the order filed.
@@ -100,6 +102,7 @@ impl CheckSummary {
     pub(crate) fn add(&mut self, step: StepId, c: &Check) {
         self.total += 1;
         self.failed += u64::from(!c.passed);
+        self.unjudged += u64::from(c.passed && !c.judged());
         let glancing = u64::from(c.glancing());
         self.glancing += glancing;
         if !c.passed && self.failures.len() < LISTED_FAILURES {

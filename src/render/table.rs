@@ -30,6 +30,9 @@ pub struct CheckRow {
     pub tolerance: f64,
     /// Passed?
     pub passed: bool,
+    /// Whether the bound lies within the tolerance ([`Check::judged`]): where it does not, a
+    /// passed check's value cannot be judged at this conditioning.
+    pub judged: bool,
     /// The propagated bound of the constructed value's error (f64's rounding amplified by
     /// every cut the value depends on).
     pub bound: f64,
@@ -66,6 +69,7 @@ fn check_row(step: StepId, context: Option<&str>, c: &Check) -> CheckRow {
         error: c.error,
         tolerance: c.tolerance,
         passed: c.passed,
+        judged: c.judged(),
         bound: c.bound,
         meeting_angle_deg: c.worst_cut.map(|w| w.conditioning.angle_deg()),
         cut_step: c.worst_cut.map(|w| w.step.to_string()),
@@ -79,10 +83,13 @@ fn check_row(step: StepId, context: Option<&str>, c: &Check) -> CheckRow {
 pub struct SummaryJson {
     /// Checks made.
     pub checks: u64,
-    /// Checks passed.
+    /// Checks passed (and judged: their bound within their tolerance).
     pub passed: u64,
     /// Checks failed.
     pub failed: u64,
+    /// Checks not failed whose bound exceeds their tolerance: not judged.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub not_judged: u64,
     /// Checks depending on a glancing cut.
     pub glancing: u64,
     /// A kind per quantity and unit, in the order of their first steps.
@@ -91,6 +98,10 @@ pub struct SummaryJson {
     pub failures: Vec<CheckRow>,
     /// Failed checks counted but not kept.
     pub failures_not_listed: u64,
+}
+
+fn is_zero(n: &u64) -> bool {
+    *n == 0
 }
 
 /// The checks of one kind, in [`SummaryJson`].
@@ -114,8 +125,9 @@ pub struct KindJson {
 pub fn summary_json(board: &Board, s: &CheckSummary) -> SummaryJson {
     SummaryJson {
         checks: s.total,
-        passed: s.total - s.failed,
+        passed: s.total - s.failed - s.unjudged,
         failed: s.failed,
+        not_judged: s.unjudged,
         glancing: s.glancing,
         kinds: s
             .kinds
@@ -155,28 +167,40 @@ const HEAD: [&str; 10] = [
 /// worst, and every failed check.
 pub fn check_table_text(board: &Board) -> String {
     use std::fmt::Write;
+    let mut unjudged = 0;
     let (mut out, rows, failed, glancing) = match board.check_summary() {
-        Some(s) => (summary_text(board, s), s.total, s.failed, s.glancing),
+        Some(s) => {
+            unjudged = s.unjudged;
+            (summary_text(board, s), s.total, s.failed, s.glancing)
+        }
         None => {
             let mut cells = Cells::new(&HEAD);
             let (mut rows, mut failed, mut glancing) = (0, 0, 0);
             for e in board.check_entries() {
                 rows += 1;
                 failed += u64::from(!e.check.passed);
+                unjudged += u64::from(e.check.passed && !e.check.judged());
                 glancing += u64::from(e.check.glancing());
                 check_cells(&mut cells, e.step, e.context, e.check, None);
             }
             (cells.aligned(3..=7), rows, failed, glancing)
         }
     };
-    let _ = writeln!(
+    let _ = write!(
         out,
-        "{} checks, {} passed, {} failed, {} depending on a glancing cut",
+        "{} checks, {} passed, {} failed, ",
         rows,
-        rows - failed,
-        failed,
-        glancing
+        rows - failed - unjudged,
+        failed
     );
+    if unjudged > 0 {
+        let _ = write!(
+            out,
+            "{unjudged} not judged (their bound exceeds their tolerance: the value cannot be \
+             judged at this conditioning), "
+        );
+    }
+    let _ = writeln!(out, "{glancing} depending on a glancing cut");
     out
 }
 
@@ -233,7 +257,13 @@ fn check_cells(
         None => s.push('-'),
     });
     let ok = count.map_or(c.passed, |(_, failed)| failed == 0);
-    cells.cell(|s| s.push_str(if ok { "ok" } else { "FAIL" }));
+    cells.cell(|s| {
+        s.push_str(match (ok, c.judged()) {
+            (false, _) => "FAIL",
+            (true, true) => "ok",
+            (true, false) => "not judged",
+        })
+    });
 }
 
 /// The summed-up table: what was summed up and why, a row per kind of check (its count,

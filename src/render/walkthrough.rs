@@ -736,7 +736,11 @@ fn checks_table(step: &Step) -> String {
             crate::fmt::sci(c.error),
             crate::fmt::sci(c.bound),
             crate::fmt::sci(c.tolerance),
-            if c.passed { "ok" } else { "FAIL" }
+            match (c.passed, c.judged()) {
+                (false, _) => "FAIL",
+                (true, true) => "ok",
+                (true, false) => "not judged",
+            }
         ));
     }
     t.push_str("</table>");
