@@ -429,9 +429,9 @@ fn man_cmd() -> Result<ExitCode, Fail> {
 enum Format {
     /// SVG, one Inkscape layer per construction step.
     Svg,
-    /// PNG at `--dpi`, text in the shipped DejaVu Serif.
+    /// PNG at `--dpi` (recorded in the file), text in the shipped DejaVu Serif.
     Png,
-    /// PDF, one page the size of the sheet, text embedded.
+    /// PDF, one page the size of the sheet (true scale), text as the font's outlines.
     Pdf,
     /// A TikZ picture for LaTeX, one scope per step.
     Tikz,

@@ -103,14 +103,39 @@ pub fn png(svg: &str, dpi: f32) -> Result<Vec<u8>, ExportError> {
         resvg::tiny_skia::Transform::from_scale(k, k),
         &mut pixmap.as_mut(),
     );
-    pixmap
+    let png = pixmap
         .encode_png()
-        .map_err(|e| ExportError::Svg(e.to_string()))
+        .map_err(|e| ExportError::Svg(e.to_string()))?;
+    Ok(with_resolution(png, dpi))
 }
 
-/// A figure as PDF, one page the size of the sheet, vector throughout; its text is drawn as
-/// the outlines of the shipped font (so the bytes are the same on every run; the text is not
-/// selectable).
+/// `png` with its resolution recorded (a `pHYs` chunk after the header, in pixels per metre),
+/// so that a program that places it sets it at the sheet's true size.
+fn with_resolution(png: Vec<u8>, dpi: f32) -> Vec<u8> {
+    // The signature (8 bytes) and the IHDR chunk (4 + 4 + 13 + 4) come first.
+    const AFTER_IHDR: usize = 8 + 25;
+    if png.len() < AFTER_IHDR || &png[12..16] != b"IHDR" {
+        return png;
+    }
+    let per_metre = (f64::from(dpi) / 0.0254).round() as u32;
+    let mut chunk = Vec::with_capacity(21);
+    chunk.extend_from_slice(&9u32.to_be_bytes());
+    chunk.extend_from_slice(b"pHYs");
+    chunk.extend_from_slice(&per_metre.to_be_bytes());
+    chunk.extend_from_slice(&per_metre.to_be_bytes());
+    chunk.push(1); // the unit: the metre
+    let crc = crc32fast::hash(&chunk[4..]);
+    chunk.extend_from_slice(&crc.to_be_bytes());
+    let mut out = Vec::with_capacity(png.len() + chunk.len());
+    out.extend_from_slice(&png[..AFTER_IHDR]);
+    out.extend_from_slice(&chunk);
+    out.extend_from_slice(&png[AFTER_IHDR..]);
+    out
+}
+
+/// A figure as PDF, one page the size of the sheet (a 259.5 mm sheet is a 259.5 mm page, so
+/// its scale bars print true), vector throughout; its text is drawn as the outlines of the
+/// shipped font (so the bytes are the same on every run; the text is not selectable).
 pub fn pdf(svg: &str) -> Result<Vec<u8>, ExportError> {
     let t = tree(svg)?;
     // Text as outlines of the shipped font: svg2pdf writes embedded fonts as objects in the
@@ -119,8 +144,10 @@ pub fn pdf(svg: &str) -> Result<Vec<u8>, ExportError> {
         embed_text: false,
         ..Default::default()
     };
-    svg2pdf::to_pdf(&t, options, svg2pdf::PageOptions::default())
-        .map_err(|e| ExportError::Pdf(e.to_string()))
+    // usvg sizes the sheet in CSS pixels, 96 to the inch: so must the page be, or the page
+    // comes out 96/72 of the sheet.
+    let page = svg2pdf::PageOptions { dpi: 96.0 };
+    svg2pdf::to_pdf(&t, options, page).map_err(|e| ExportError::Pdf(e.to_string()))
 }
 
 /// Millimetres of the sheet per usvg pixel (usvg works at 96 pixels per inch).

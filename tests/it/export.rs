@@ -72,6 +72,57 @@ fn a_pdf_is_the_same_bytes_on_every_run() {
     }
 }
 
+/// The PDF's page is the sheet, to the hundredth of a millimetre (it was 96/72 of it, so a
+/// printed scale bar lied by a third), and a PNG records its resolution.
+#[test]
+fn exports_keep_the_sheets_true_size() {
+    for name in [
+        "lh_abb22_funicular.json",
+        "lh_abb24_beam.json",
+        "kg_abb1043_crank_rocker.json",
+    ] {
+        let (meta, b) = board(name);
+        let svg = render::figure(&meta, &b, None);
+        let mm = |key: &str| -> f64 {
+            let at = svg.find(&format!(" {key}=\"")).unwrap() + key.len() + 3;
+            svg[at..].split("mm\"").next().unwrap().parse().unwrap()
+        };
+        let (w, h) = (mm("width"), mm("height"));
+        let pdf = export::pdf(&svg).unwrap();
+        let text = String::from_utf8_lossy(&pdf);
+        let media = text.split("/MediaBox [").nth(1).unwrap();
+        let box_pt: Vec<f64> = media
+            .split(']')
+            .next()
+            .unwrap()
+            .split_whitespace()
+            .map(|x| x.parse().unwrap())
+            .collect();
+        let to_mm = 25.4 / 72.0;
+        assert!(
+            (box_pt[2] * to_mm - w).abs() < 0.01,
+            "{name}: page {} mm, sheet {w} mm",
+            box_pt[2] * to_mm
+        );
+        assert!(
+            (box_pt[3] * to_mm - h).abs() < 0.01,
+            "{name}: page {} mm, sheet {h} mm",
+            box_pt[3] * to_mm
+        );
+        let png = export::png(&svg, 300.0).unwrap();
+        let at = png
+            .windows(4)
+            .position(|c| c == b"pHYs")
+            .expect("a pHYs chunk");
+        let per_metre = u32::from_be_bytes(png[at + 4..at + 8].try_into().unwrap());
+        assert_eq!(
+            (per_metre, png[at + 12]),
+            (11811, 1),
+            "{name}: 300 dpi in pixels per metre"
+        );
+    }
+}
+
 /// The TikZ picture's structure: balanced braces outside comments, one scope per step in
 /// step order after the sheet's, every caption a one-line comment.
 fn check_tikz(tex: &str, b: &graphostatik::protocol::Board) {
