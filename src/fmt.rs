@@ -446,6 +446,52 @@ pub fn markup_text(out: &mut String, text: &str) {
     out.push_str(&s[from..]);
 }
 
+/// The vulgar fractions a ratio is written with where its decimals would not end (thirds,
+/// sixths, sevenths, ninths) or a half: (numerator, denominator, character); the sheet's
+/// DejaVu Serif has them all. A ratio of tenths (16.8) stays decimal.
+const FRACTIONS: [(u32, u32, char); 7] = [
+    (1, 2, '½'),
+    (1, 3, '⅓'),
+    (2, 3, '⅔'),
+    (1, 6, '⅙'),
+    (5, 6, '⅚'),
+    (1, 7, '⅐'),
+    (1, 9, '⅑'),
+];
+
+/// A ratio as the books write it: a whole number where it is one (to 1e-9 of itself), a
+/// whole number and a vulgar fraction where it is one of [`FRACTIONS`] (7⅑ for 64/9, the
+/// compound engine's 1 : 7⅑), else to `decimals` decimals.
+///
+/// ```
+/// use graphostatik::fmt::book_number;
+/// assert_eq!(book_number(64.0 / 9.0, 3), "7⅑");
+/// assert_eq!(book_number(6.0000000001, 3), "6");
+/// assert_eq!(book_number(2.5, 3), "2½");
+/// assert_eq!(book_number(16.8, 3), "16.8");
+/// assert_eq!(book_number(3.14159, 3), "3.142");
+/// ```
+pub fn book_number(x: f64, decimals: usize) -> String {
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * x.abs().max(1.0);
+    if !x.is_finite() || x < 0.0 {
+        return num(x, decimals);
+    }
+    let whole = x.floor();
+    if close(x, x.round()) {
+        return num(x.round(), 0);
+    }
+    for (n, d, c) in FRACTIONS {
+        if close(x, whole + f64::from(n) / f64::from(d)) {
+            return if whole == 0.0 {
+                c.to_string()
+            } else {
+                format!("{}{c}", num(whole, 0))
+            };
+        }
+    }
+    num(x, decimals)
+}
+
 /// A text cell of a CSV file, quoted, that a spreadsheet will not run as a formula: a cell
 /// starting with `=`, `+`, `-`, `@`, a tab or a carriage return gets a leading apostrophe
 /// (numbers are written as numbers, not through here).

@@ -29,7 +29,7 @@ impl ScaleBar {
     pub fn length(n: f64, unit: &str) -> ScaleBar {
         let per_mm = if unit == "m" { n / 1000.0 } else { n };
         ScaleBar {
-            name: format!("Längenmaßstab 1 : {}", num(n, 6)),
+            name: format!("Längenmaßstab 1 : {}", crate::fmt::book_number(n, 3)),
             per_mm,
             unit: unit.into(),
         }

@@ -543,11 +543,14 @@ impl super::Procedure for DynamicsScene {
             source: super::fields::source_line(
                 &problem.source,
                 &format!(
-                    "R = {} mm, R/L = {}, v = {} m/s, {} cylinder(s)",
+                    "R = {} mm, R/L = 1 : {}, v = {} m/s, {}",
                     num(k.r, 3),
-                    num(k.lambda, 4),
+                    crate::fmt::book_number(1.0 / k.lambda, 2),
                     num(k.v, 4),
-                    problem.engine.cylinders.len()
+                    match problem.engine.cylinders.len() {
+                        1 => "1 cylinder".to_string(),
+                        n => format!("{n} cylinders"),
+                    }
                 ),
             ),
             scales: vec![

@@ -545,10 +545,10 @@ impl Procedure for SliderCrankScene {
         }
         let rod = if problem.drive.finite_rod {
             format!(
-                "R = {} mm, L = {} mm (R/L = 1/{})",
+                "R = {} mm, L = {} mm (R/L = 1 : {})",
                 crate::fmt::num(problem.drive.crank_radius, 3),
                 crate::fmt::num(problem.drive.rod_length, 3),
-                crate::fmt::num(problem.drive.rod_length / problem.drive.crank_radius, 3)
+                crate::fmt::book_number(problem.drive.rod_length / problem.drive.crank_radius, 2)
             )
         } else {
             format!(
