@@ -158,7 +158,8 @@ const PT_PER_MM: f32 = 72.27 / 25.4;
 /// A construction as a TikZ picture for LaTeX: one `scope` per step (and one for the sheet),
 /// each headed by the step's caption as a comment, in step order. Lengths are millimetres of
 /// the sheet (`x=1mm, y=-1mm`: SVG's y runs down). Labels keep their text (Unicode: compile
-/// with LuaLaTeX or XeLaTeX, or pdfLaTeX with `inputenc` where the text is Latin).
+/// with LuaLaTeX or XeLaTeX and `fontspec`, in a font with Greek letters and subscripts, such
+/// as the shipped DejaVu Serif; CI compiles the bundled figures so).
 pub fn tikz(meta: &FigureMeta, board: &Board) -> Result<String, ExportError> {
     let svg = super::figure(meta, board, None);
     let t = tree(&svg)?;
@@ -168,7 +169,9 @@ pub fn tikz(meta: &FigureMeta, board: &Board) -> Result<String, ExportError> {
         let _ = writeln!(out, "% {}", comment(&meta.source));
     }
     out.push_str(
-        "% Made by graphostatik: one scope per construction step. Needs \\usepackage{tikz}.\n\
+        "% Made by graphostatik: one scope per construction step. Compile with LuaLaTeX (or\n\
+         % XeLaTeX): \\usepackage{tikz}, and \\usepackage{fontspec} with a font that has the\n\
+         % figure's Greek letters and subscripts, e.g. \\setmainfont{DejaVu Serif}.\n\
          \\begin{tikzpicture}[x=1mm, y=-1mm, line cap=round, line join=round]\n",
     );
     layers(t.root(), board, &mut out);

@@ -300,3 +300,70 @@ fn render_writes_every_format_asked_for_and_refuses_a_bad_resolution() {
     assert!(!dir.join("none").exists(), "nothing written");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The TikZ pictures compile with LuaLaTeX, `fontspec` and the shipped DejaVu Serif, with no
+/// character missing from the font (a Greek letter, a subscript) and no error: a truss with
+/// its plans, a mechanism and an engine. `GRAPHOSTATIK_TEX=required` (CI) makes a missing
+/// `lualatex` a failure, not a skip.
+#[test]
+fn tikz_compiles_with_lualatex() {
+    let Ok(lualatex) = which("lualatex") else {
+        assert!(
+            std::env::var("GRAPHOSTATIK_TEX").as_deref() != Ok("required"),
+            "lualatex is required but not installed"
+        );
+        eprintln!("tikz_compiles_with_lualatex: skipped (no lualatex)");
+        return;
+    };
+    let dir = std::env::temp_dir().join(format!("gs-tikz-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let fonts = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/fonts/");
+    for name in [
+        "lh_aufgabe4_shed_roof",
+        "kg_abb1043_crank_rocker",
+        "lh_j_compound_engine",
+    ] {
+        let (meta, b) = board(&format!("{name}.json"));
+        let tex = export::tikz(&meta, &b).unwrap();
+        std::fs::write(dir.join(format!("{name}.tikz")), tex).unwrap();
+        let doc = format!(
+            "\\documentclass{{article}}\n\\usepackage{{tikz}}\n\\usepackage{{fontspec}}\n\
+             \\setmainfont{{DejaVuSerif.ttf}}[Path={fonts}, ItalicFont=DejaVuSerif-Italic.ttf]\n\
+             \\begin{{document}}\n\\input{{{name}.tikz}}\n\\end{{document}}\n"
+        );
+        std::fs::write(dir.join(format!("{name}.tex")), doc).unwrap();
+        let o = std::process::Command::new(&lualatex)
+            .args(["-interaction=nonstopmode", "-halt-on-error"])
+            .arg(format!("{name}.tex"))
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        let log = std::fs::read_to_string(dir.join(format!("{name}.log"))).unwrap_or_default();
+        assert!(
+            o.status.success(),
+            "{name}: lualatex failed:\n{}",
+            tail(&log)
+        );
+        let missing: Vec<&str> = log
+            .lines()
+            .filter(|l| l.contains("Missing character"))
+            .collect();
+        assert!(missing.is_empty(), "{name}: {missing:?}");
+        assert!(dir.join(format!("{name}.pdf")).exists());
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+fn which(program: &str) -> Result<std::path::PathBuf, ()> {
+    let path = std::env::var_os("PATH").ok_or(())?;
+    std::env::split_paths(&path)
+        .map(|d| d.join(program))
+        .find(|p| p.is_file())
+        .ok_or(())
+}
+
+fn tail(log: &str) -> String {
+    let lines: Vec<&str> = log.lines().collect();
+    lines[lines.len().saturating_sub(30)..].join("\n")
+}
