@@ -388,32 +388,49 @@ fn sweep_stale<'a>(targets: impl Iterator<Item = &'a Path>) {
     if !cfg!(target_os = "linux") {
         return;
     }
-    let folders: std::collections::BTreeSet<&Path> = targets.map(folder).collect();
-    for dir in folders {
+    // By folder, the names this batch writes there (as a temporary's name carries them).
+    let mut folders: std::collections::BTreeMap<&Path, Vec<String>> = Default::default();
+    for t in targets {
+        let name = t.file_name().map(|n| n.to_string_lossy().into_owned());
+        let name = name.unwrap_or_else(|| "out".into());
+        (folders.entry(folder(t)).or_default()).push(kept_bytes(&name).to_string());
+    }
+    for (dir, names) in folders {
         let Ok(entries) = std::fs::read_dir(dir) else {
             continue;
         };
         for e in entries.flatten() {
             let name = e.file_name();
-            let Some(pid) = name.to_str().and_then(own_name_pid) else {
+            let Some((target, pid)) = name.to_str().and_then(own_name_parts) else {
                 continue;
             };
+            // Only a temporary of a file this batch writes, left an hour ago or more by a
+            // process this system does not know (one in another PID namespace, writing into
+            // a shared folder, has fresh files).
+            let ours = names.iter().any(|n| n == target);
+            let old = (e.metadata().and_then(|m| m.modified()))
+                .ok()
+                .and_then(|t| t.elapsed().ok())
+                .is_some_and(|age| age >= STALE_AFTER);
             let gone = !Path::new(&format!("/proc/{pid}")).exists();
-            if gone && e.file_type().is_ok_and(|t| t.is_file()) {
+            if ours && old && gone && e.file_type().is_ok_and(|t| t.is_file()) {
                 let _ = std::fs::remove_file(e.path());
             }
         }
     }
 }
 
-/// The process of a name of the tool's own form (`.NAME.PID-N-KEY.tmp` or `.bak`, KEY 16 hex
-/// digits), if `name` is one.
-fn own_name_pid(name: &str) -> Option<u32> {
+/// How old a temporary of a process that is gone must be before a batch removes it.
+pub const STALE_AFTER: std::time::Duration = std::time::Duration::from_secs(3600);
+
+/// The target's name and the process of a name of the tool's own form (`.NAME.PID-N-KEY.tmp`
+/// or `.bak`, KEY 16 hex digits), if `name` is one.
+fn own_name_parts(name: &str) -> Option<(&str, u32)> {
     let rest = name.strip_prefix('.')?;
     let rest = rest
         .strip_suffix(".tmp")
         .or_else(|| rest.strip_suffix(".bak"))?;
-    let (_, tag) = rest.rsplit_once('.')?;
+    let (target, tag) = rest.rsplit_once('.')?;
     let mut parts = tag.split('-');
     let (pid, n, key) = (parts.next()?, parts.next()?, parts.next()?);
     let digits = |t: &str| !t.is_empty() && t.bytes().all(|b| b.is_ascii_digit());
@@ -421,7 +438,16 @@ fn own_name_pid(name: &str) -> Option<u32> {
         && digits(n)
         && key.len() == 16
         && key.bytes().all(|b| b.is_ascii_hexdigit());
-    ok.then(|| pid.parse().ok()).flatten()
+    ok.then(|| pid.parse().ok()).flatten().map(|p| (target, p))
+}
+
+/// The part of a target's name a temporary's name carries ([`NAME_BYTES_KEPT`]).
+fn kept_bytes(target: &str) -> &str {
+    let mut cut = target.len().min(NAME_BYTES_KEPT);
+    while !target.is_char_boundary(cut) {
+        cut -= 1;
+    }
+    &target[..cut]
 }
 
 /// The folder a target is written in.
@@ -497,13 +523,9 @@ fn temporary_name(target: &str, kind: &str) -> String {
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_nanos());
     let key = std::collections::hash_map::RandomState::new().hash_one((n, t));
-    let mut cut = target.len().min(NAME_BYTES_KEPT);
-    while !target.is_char_boundary(cut) {
-        cut -= 1;
-    }
     format!(
         ".{}.{}-{n}-{key:016x}.{kind}",
-        &target[..cut],
+        kept_bytes(target),
         std::process::id()
     )
 }
@@ -520,9 +542,10 @@ fn own_name(path: &Path, kind: &str) -> PathBuf {
 /// Writes `contents` to a fresh temporary beside `path`, created exclusively and without
 /// following a link; returns its path.
 fn write_temporary(path: &Path, contents: &[u8]) -> std::io::Result<PathBuf> {
-    // A replaced file keeps its permissions; a new one is 644 less the umask.
+    // A replaced file keeps its permissions (but a set-user or set-group bit) and, where this
+    // process may give it, its owner; a new one is 644 less the umask.
     let replaced = match std::fs::symlink_metadata(path) {
-        Ok(m) if m.is_file() => Some(m.permissions()),
+        Ok(m) if m.is_file() => Some(m),
         _ => None,
     };
     for _ in 0..16 {
@@ -542,7 +565,7 @@ fn write_temporary(path: &Path, contents: &[u8]) -> std::io::Result<PathBuf> {
             Err(e) => return Err(e),
         };
         let written = match &replaced {
-            Some(p) => f.set_permissions(p.clone()),
+            Some(m) => keep_owner_and_mode(&f, m),
             None => Ok(()),
         }
         .and_then(|()| f.write_all(contents));
@@ -556,6 +579,19 @@ fn write_temporary(path: &Path, contents: &[u8]) -> std::io::Result<PathBuf> {
         std::io::ErrorKind::AlreadyExists,
         "no free temporary name in the output folder",
     ))
+}
+
+/// Gives the open temporary `f` the owner (where this process may: as root) and the mode of
+/// the file it replaces, less a set-user, set-group or sticky bit.
+fn keep_owner_and_mode(f: &std::fs::File, target: &std::fs::Metadata) -> std::io::Result<()> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::{MetadataExt, PermissionsExt};
+        let _ = std::os::unix::fs::fchown(f, Some(target.uid()), Some(target.gid()));
+        f.set_permissions(std::fs::Permissions::from_mode(target.mode() & 0o777))
+    }
+    #[cfg(not(unix))]
+    f.set_permissions(target.permissions())
 }
 
 #[cfg(test)]
@@ -642,8 +678,18 @@ mod tests {
         // pid 999999999 is past every kernel's pid_max: no such process.
         let stale = d.join(".kept.svg.999999999-1-0123456789abcdef.tmp");
         let decoy = d.join(".kept.svg.999999999-1-notours.tmp");
-        std::fs::write(&stale, "").unwrap();
-        std::fs::write(&decoy, "").unwrap();
+        // A fresh one (a process in another PID namespace may be writing it) and one of a
+        // file this batch does not write stay, however old.
+        let fresh = d.join(".kept.svg.999999998-1-0123456789abcdef.tmp");
+        let other = d.join(".holiday.jpg.999999999-0-0123456789abcdef.tmp");
+        for f in [&stale, &decoy, &fresh, &other] {
+            std::fs::write(f, "").unwrap();
+        }
+        let hours_ago = std::time::SystemTime::now() - 2 * STALE_AFTER;
+        for f in [&stale, &other] {
+            let file = std::fs::File::options().write(true).open(f).unwrap();
+            file.set_modified(hours_ago).unwrap();
+        }
         let mut b = Batch::default();
         b.add(&target, "new".into());
         b.add(&long, "long".into());
@@ -657,10 +703,13 @@ mod tests {
             assert_eq!(mode & 0o777, 0o600);
         }
         assert_eq!(stale.exists(), !cfg!(target_os = "linux"));
-        assert!(decoy.exists());
-        assert_eq!(own_name_pid(".a.svg.12-3-0123456789abcdef.bak"), Some(12));
-        assert_eq!(own_name_pid(".a.svg.12-3-0123456789abcdef.txt"), None);
-        assert_eq!(own_name_pid("a.svg.12-3-0123456789abcdef.tmp"), None);
+        assert!(decoy.exists() && fresh.exists() && other.exists());
+        assert_eq!(
+            own_name_parts(".a.svg.12-3-0123456789abcdef.bak"),
+            Some(("a.svg", 12))
+        );
+        assert_eq!(own_name_parts(".a.svg.12-3-0123456789abcdef.txt"), None);
+        assert_eq!(own_name_parts("a.svg.12-3-0123456789abcdef.tmp"), None);
         std::fs::remove_dir_all(&d).unwrap();
     }
 

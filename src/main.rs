@@ -554,7 +554,11 @@ fn render_cmd(
     let paths: Vec<PathBuf> = batch.paths().map(Path::to_path_buf).collect();
     commit(batch, made)?;
     for path in paths {
-        chatter(&format!("{}\n", path.display()))?;
+        // A name's control characters escaped: it cannot move the terminal's cursor.
+        chatter(&format!(
+            "{}\n",
+            graphostatik::fmt::clip(&path.display().to_string(), usize::MAX)
+        ))?;
     }
     for note in notes {
         eprintln!("{note}");

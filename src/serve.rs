@@ -30,10 +30,11 @@ pub const HEAD_DEADLINE: Duration = Duration::from_secs(5);
 /// working one needs); where every connection is being answered, it is answered 503 and
 /// closed.
 pub const MAX_CONNECTIONS: usize = 128;
-/// The memory page builds in flight may take at once, by their estimate
-/// ([`PAGE_BYTES_PER_STEP`] a step): a build past it waits up to [`BUILD_WAIT`] for others to
-/// finish, then is answered 503 with `Retry-After`.
-pub const BUILD_BUDGET_BYTES: usize = 768 << 20;
+/// The memory the pages take at once: those being built, by their estimate
+/// ([`PAGE_BYTES_PER_STEP`] a step), and those kept or being sent ([`KEPT_BYTES`] of them
+/// while idle; one being sent is not let go). A build past it waits up to [`BUILD_WAIT`] for
+/// others to finish, then is answered 503 with `Retry-After`.
+pub const BUILD_BUDGET_BYTES: usize = 1 << 30;
 /// What a page build takes per step of its construction, measured: 16 cylinders at 100
 /// divisions, 49,885 steps, a 30 MB page, 213 MB at its peak.
 pub const PAGE_BYTES_PER_STEP: usize = 5 * 1024;
@@ -90,18 +91,21 @@ impl Budget {
         }
     }
 
-    /// `bytes` of the budget (at most all of it), waiting up to `wait` for others to give
-    /// theirs back; `None` where they did not.
-    fn take(&self, bytes: usize, wait: Duration) -> Option<Taken<'_>> {
+    /// `bytes` of the budget (at most all of it, less what `held` says is held elsewhere: the
+    /// pages kept and being sent), waiting up to `wait` for others to give theirs back;
+    /// `None` where they did not.
+    fn take(&self, bytes: usize, wait: Duration, held: &dyn Fn() -> usize) -> Option<Taken<'_>> {
         let bytes = bytes.min(self.total);
         let until = Instant::now() + wait;
         let mut used = self.used.lock().unwrap_or_else(|e| e.into_inner());
-        while *used + bytes > self.total {
+        while *used + bytes + held() > self.total {
             let left = until.saturating_duration_since(Instant::now());
             if left.is_zero() {
                 return None;
             }
-            used = (self.freed.wait_timeout(used, left))
+            // A page sent to its end frees its bytes without a word: looked at again soon.
+            let nap = left.min(Duration::from_millis(100));
+            used = (self.freed.wait_timeout(used, nap))
                 .unwrap_or_else(|e| e.into_inner())
                 .0;
         }
@@ -165,6 +169,11 @@ impl KeptScene {
         self.good.as_ref().map_or(0, Good::bytes)
             + self.page.as_ref().map_or(0, |(_, a)| a.body.len())
     }
+
+    /// Whether its page is being sent to a client now (then letting it go frees nothing).
+    fn sending(&self) -> bool {
+        (self.page.as_ref()).is_some_and(|(_, a)| Arc::strong_count(&a.body) > 1)
+    }
 }
 
 /// Most bytes the server keeps of built scenes and pages ([`Kept`]).
@@ -179,8 +188,29 @@ impl Kept {
         (k.page.as_ref()).and_then(|(v, a)| (v == token).then(|| a.clone()))
     }
 
+    /// Lets go of the scenes asked for longest ago (but `name`, and one whose page is being
+    /// sent) while more than [`KEPT_BYTES`] are kept; gives the bytes kept then, those of
+    /// pages being sent included.
+    fn trim(&mut self, name: Option<&str>) -> usize {
+        let mut total: usize = self.by_name.values().map(KeptScene::bytes).sum();
+        while total > KEPT_BYTES {
+            let Some(oldest) = (self.by_name.iter())
+                .filter(|(n, k)| Some(n.as_str()) != name && !k.sending())
+                .min_by_key(|(_, k)| k.asked)
+                .map(|(n, _)| n.clone())
+            else {
+                break;
+            };
+            if let Some(k) = self.by_name.remove(&oldest) {
+                total -= k.bytes();
+            }
+        }
+        total
+    }
+
     /// Keeps what a build of `name` gave, and lets go of the scenes asked for longest ago
-    /// while more than [`KEPT_BYTES`] are kept.
+    /// while more than [`KEPT_BYTES`] are kept (but not one whose page is being sent: its
+    /// bytes stay counted until it is).
     fn keep(&mut self, name: &str, good: Option<Good>, page: Option<(String, Answer)>) {
         self.asked += 1;
         let k = self.by_name.entry(name.to_string()).or_default();
@@ -191,19 +221,7 @@ impl Kept {
         if page.is_some() {
             k.page = page;
         }
-        let mut total: usize = self.by_name.values().map(KeptScene::bytes).sum();
-        while total > KEPT_BYTES {
-            let Some(oldest) = (self.by_name.iter())
-                .filter(|(n, _)| n.as_str() != name)
-                .min_by_key(|(_, k)| k.asked)
-                .map(|(n, _)| n.clone())
-            else {
-                break;
-            };
-            if let Some(k) = self.by_name.remove(&oldest) {
-                total -= k.bytes();
-            }
-        }
+        self.trim(Some(name));
     }
 }
 
@@ -440,7 +458,13 @@ impl Site {
         if let Some(a) = cached() {
             return a;
         }
-        let Some(_taken) = self.budget.take(page_cost(file), BUILD_WAIT) else {
+        let held = || {
+            self.kept
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .trim(None)
+        };
+        let Some(_taken) = self.budget.take(page_cost(file), BUILD_WAIT, &held) else {
             return Answer::busy();
         };
         let built = build(file);

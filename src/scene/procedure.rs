@@ -364,9 +364,32 @@ pub(super) fn json_error(
         origin: origin.to_string(),
         line: inner.line(),
         column: inner.column(),
-        field: if field == "." { String::new() } else { field },
-        message: crate::fmt::clip(&strip_position(&inner.to_string()), 300),
+        field: if field == "." {
+            String::new()
+        } else {
+            crate::fmt::clip(&field, 120)
+        },
+        message: quoted_clipped(&strip_position(&inner.to_string())),
     }
+}
+
+/// serde's message with each text it quotes (`…`, a scene's key or value) clipped to 60
+/// characters, so that a long key leaves room for the reason after it ("expected one of …"),
+/// then the whole to 600.
+fn quoted_clipped(msg: &str) -> String {
+    let mut out = String::with_capacity(msg.len().min(700));
+    for (k, part) in msg.split('`').enumerate() {
+        if k > 0 {
+            out.push('`');
+        }
+        // The odd parts stand between backticks.
+        out.push_str(&if k % 2 == 1 {
+            crate::fmt::clip(part, 60)
+        } else {
+            part.to_string()
+        });
+    }
+    crate::fmt::clip(&out, 600)
 }
 
 pub(super) fn syntax_error(e: serde_json::Error, origin: &str) -> SceneError {
@@ -375,7 +398,7 @@ pub(super) fn syntax_error(e: serde_json::Error, origin: &str) -> SceneError {
         line: e.line(),
         column: e.column(),
         field: String::new(),
-        message: crate::fmt::clip(&strip_position(&e.to_string()), 300),
+        message: quoted_clipped(&strip_position(&e.to_string())),
     }
 }
 

@@ -218,9 +218,10 @@ fn plain_object(bytes: &[u8]) -> bool {
 
 /// Whether the bytes hold one of U+0080 to U+009F (C2 80 to C2 9F in UTF-8), control
 /// characters JSON lets stand unescaped in a string, or a character [`is_unseen_format`]
-/// (E2 80 8E-8F, E2 80 A8-AE, E2 81 A6-A9).
+/// (D8 9C, E2 80 8E-8F, E2 80 A8-AE, E2 81 A6-A9).
 fn holds_c1(bytes: &[u8]) -> bool {
     memchr::memchr_iter(0xc2, bytes).any(|k| matches!(bytes.get(k + 1), Some(0x80..=0x9f)))
+        || memchr::memchr_iter(0xd8, bytes).any(|k| bytes.get(k + 1) == Some(&0x9c))
         || memchr::memchr_iter(0xe2, bytes).any(|k| {
             matches!(
                 (bytes.get(k + 1), bytes.get(k + 2)),
@@ -230,11 +231,14 @@ fn holds_c1(bytes: &[u8]) -> bool {
 }
 
 /// Whether `c` reorders or breaks the text around it without being seen: the bidirectional
-/// marks, embeddings, overrides and isolates (U+200E, U+200F, U+202A to U+202E, U+2066 to
-/// U+2069) and the line and paragraph separators (U+2028, U+2029). A name holding U+202E
+/// marks, embeddings, overrides and isolates (U+061C, U+200E, U+200F, U+202A to U+202E,
+/// U+2066 to U+2069) and the line and paragraph separators (U+2028, U+2029). A name holding U+202E
 /// shows its letters backwards in the figure, the table and the terminal.
 pub(crate) fn is_unseen_format(c: char) -> bool {
-    matches!(c, '\u{200e}' | '\u{200f}' | '\u{2028}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
+    matches!(
+        c,
+        '\u{061c}' | '\u{200e}' | '\u{200f}' | '\u{2028}'..='\u{202e}' | '\u{2066}'..='\u{2069}'
+    )
 }
 
 /// A visitor's methods for numbers, booleans and null, which the scan takes as they come.

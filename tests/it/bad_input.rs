@@ -519,6 +519,7 @@ fn names_cannot_break_the_svg_the_csv_or_the_markdown() {
         ("\"a|b\"", "\"a\u{202e}b\"", "members[1].name", unseen),
         ("\"P\"", "\"P\\u2028Q\"", "load_cases[0].name", unseen),
         ("\"III\"", "\"III\u{2067}\"", "joints[2].name", unseen),
+        ("\"P\"", "\"P\u{061c}\"", "load_cases[0].name", unseen),
     ] {
         std::fs::write(&scene, text.replacen(from, to, 1)).unwrap();
         for cmd in ["check", "render", "forces"] {

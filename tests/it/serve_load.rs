@@ -222,7 +222,8 @@ fn serve_bounds_the_memory_of_heavy_pages_asked_at_once() {
     // Twelve scenes whose pages take some 220 MB each to build (16 cylinders at 100
     // divisions, 49,885 steps, a 30 MB page), each asked twice at once: built at once, they
     // took 2.6 GB (128 asks of one such page took over 4 GB before). They wait for the
-    // budget (768 MiB) or are answered 503 with Retry-After; a page asked by many is built
+    // budget (1 GiB, the pages kept and being sent counted in it) or are answered 503 with
+    // Retry-After; a page asked by many is built
     // once, and asked again unchanged not again.
     let heavy = "tests/it/hostile/pump_16_cylinders_100_divisions.json";
     let files: Vec<(String, &str)> = (0..12).map(|k| (format!("h{k}"), heavy)).collect();
