@@ -931,11 +931,17 @@ impl Builder<'_> {
         } else if let Some(n) = self.divisions {
             if self.divided.is_none() {
                 // Clockwise from the inner dead centre (180° on the sheet): the pin runs over
-                // the upper half on the outstroke.
+                // the upper half on the outstroke. The dead centre is named A already: its
+                // division point is not named A₀ beside it.
                 self.base_context();
-                let pts =
-                    self.b
-                        .divide_circle(&circle, 180.0, n, Turning::Clockwise, "A", N_DIVIDE);
+                let pts = self.b.divide_circle(
+                    &circle,
+                    180.0,
+                    n,
+                    Turning::Clockwise,
+                    ("A", true),
+                    N_DIVIDE,
+                );
                 self.divided = Some(pts);
                 let theta = self.thetas[i];
                 self.angle_context(theta);

@@ -198,14 +198,18 @@ impl Board {
         h
     }
 
-    /// Divides a circle into `n` equal parts from `start_deg` (one step, `n` points).
+    /// Divides a circle into `n` equal parts from `start_deg` (one step, `n` points), the
+    /// points lettered `label` with their index from 0; where `start_named`, the first point
+    /// (at `start_deg`: a point named already, such as a crank's dead centre A) is left
+    /// unlettered, so that it is named once.
+    #[allow(clippy::too_many_arguments)]
     pub fn divide_circle(
         &mut self,
         circle: &H<Circle>,
         start_deg: f64,
         n: usize,
         turning: Turning,
-        label: &'static str,
+        (label, start_named): (&'static str, bool),
         note: Note,
     ) -> Vec<H<Point>> {
         let clockwise = turning == Turning::Clockwise;
@@ -215,9 +219,12 @@ impl Board {
         let mut out = Vec::with_capacity(pts.len());
         let sign = if clockwise { -1.0 } else { 1.0 };
         for (k, p) in pts.into_iter().enumerate() {
-            let id = self.add(Label::indexed(label, k as u32), Role::Given, || {
-                Geom::Point { at: p }
-            });
+            let name = if k == 0 && start_named {
+                Label::NONE
+            } else {
+                Label::indexed(label, k as u32)
+            };
+            let id = self.add(name, Role::Given, || Geom::Point { at: p });
             if self.recording {
                 let deg = start_deg + sign * 360.0 * k as f64 / n.max(1) as f64;
                 let dir = SinCos::of_deg(deg);
