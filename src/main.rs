@@ -285,10 +285,11 @@ fn construct(path: &Path, p: &AnyProblem) -> Result<Board, Fail> {
 }
 
 /// The figure's construction, refused where a part of it would not fit a sheet
-/// ([`AnyProblem::drawable`]).
+/// ([`render::layout::parts_within`]).
 fn construct_drawable(path: &Path, p: &AnyProblem) -> Result<Board, Fail> {
     let board = construct(path, p)?;
-    p.drawable(&board).map_err(|e| match p.error_field(&e) {
+    let within = render::layout::parts_within(&board, graphostatik::scene::MAX_SHEET_MM);
+    within.map_err(|e| match p.error_field(&e) {
         Some(field) => Fail(format!("{}: {field}: {e}", path.display())),
         None => Fail(format!("{}: {e}", path.display())),
     })?;

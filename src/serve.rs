@@ -464,10 +464,15 @@ impl Site {
                 .unwrap_or_else(|e| e.into_inner())
                 .trim(None)
         };
-        let Some(_taken) = self.budget.take(page_cost(file), BUILD_WAIT, &held) else {
+        // The file read once, for the estimate and the build.
+        let origin = file.display().to_string();
+        let text = crate::io::read_text(file, crate::io::MAX_SCENE_BYTES)
+            .map_err(|e| format!("{origin}: {e}"));
+        let cost = text.as_deref().map_or(0, page_cost);
+        let Some(_taken) = self.budget.take(cost, BUILD_WAIT, &held) else {
             return Answer::busy();
         };
-        let built = build(file);
+        let built = text.and_then(|text| build(text, &origin));
         let ok = built.is_ok();
         let (shown, error) = match built {
             Ok(g) => (Some(g), None),
@@ -477,13 +482,31 @@ impl Site {
                 (good, Some(e))
             }
         };
-        let new_good = shown.clone().filter(|_| ok);
-        let reload = reload_script(name, &token);
-        let answer = match shown {
+        let answer = self.page_answer(name, &origin, &token, shown.as_ref(), error);
+        if ok {
+            let mut kept = self.kept.lock().unwrap_or_else(|e| e.into_inner());
+            kept.keep(name, shown, Some((token, answer.clone())));
+        }
+        answer
+    }
+
+    /// The page of scene `name` (read from `origin`, its file's version `token`): the
+    /// construction `shown` with the error line of a bad edit over it, or the error alone
+    /// where the scene never succeeded.
+    fn page_answer(
+        &self,
+        name: &str,
+        origin: &str,
+        token: &str,
+        shown: Option<&Good>,
+        error: Option<String>,
+    ) -> Answer {
+        let reload = reload_script(name, token);
+        match shown {
             Some(g) => Answer::html(scene_page(
                 &SiteScene {
                     name: name.to_string(),
-                    origin: file.display().to_string(),
+                    origin: origin.to_string(),
                     text: g.text.clone(),
                 },
                 &g.built,
@@ -511,23 +534,15 @@ impl Site {
                     ..Allow::default()
                 },
             )),
-        };
-        if ok {
-            let mut kept = self.kept.lock().unwrap_or_else(|e| e.into_inner());
-            kept.keep(name, new_good, Some((token, answer.clone())));
         }
-        answer
     }
 }
 
-/// What building the page of `file` takes, estimated from its steps, counted by a
+/// What building the page of the scene `text` takes, estimated from its steps, counted by a
 /// construction that keeps nothing (a figure's limit at most: the build refuses more); a
 /// scene that cannot be read costs little (its error page).
-fn page_cost(file: &Path) -> usize {
-    let Ok(text) = crate::io::read_text(file, crate::io::MAX_SCENE_BYTES) else {
-        return 0;
-    };
-    let steps = crate::scene::AnyScene::from_json(&text, "")
+fn page_cost(text: &str) -> usize {
+    let steps = crate::scene::AnyScene::from_json(text, "")
         .ok()
         .and_then(|s| {
             s.problem()
@@ -538,13 +553,10 @@ fn page_cost(file: &Path) -> usize {
     steps.min(crate::scene::MAX_FIGURE_STEPS) * PAGE_BYTES_PER_STEP + 8 * text.len()
 }
 
-/// Reads and constructs a scene for its page; the error as one line naming the file and the
-/// field.
-fn build(file: &Path) -> Result<Good, String> {
-    let origin = file.display().to_string();
-    let text = crate::io::read_text(file, crate::io::MAX_SCENE_BYTES)
-        .map_err(|e| format!("{origin}: {e}"))?;
-    let built = crate::web::build(&text, &origin)?;
+/// Constructs a scene read from `origin` for its page; the error as one line naming the file
+/// and the field.
+fn build(text: String, origin: &str) -> Result<Good, String> {
+    let built = crate::web::build(&text, origin)?;
     Ok(Good {
         text,
         built: Arc::new(built),

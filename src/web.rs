@@ -10,11 +10,12 @@
 //! costly is refused here with the same line.
 
 use crate::protocol::{Board, BoardConfig, FigureMeta, ObjId};
+use crate::render::layout::parts_within;
 use crate::render::{
     figure_held, list_lines, page_count, page_details, page_ranges, step_names, walkthrough_item,
     walkthrough_list, Grouping, Layout,
 };
-use crate::scene::{handles, AnyScene, Handle, Preview};
+use crate::scene::{handles, AnyScene, Handle, Preview, MAX_SHEET_MM};
 use serde::Serialize;
 use std::cell::OnceCell;
 use std::ops::Range;
@@ -402,7 +403,7 @@ fn build_held(
     let sliders = sliders(scene.preview(), text, origin)?;
     let p = scene.problem();
     let board = (p.construct(BoardConfig::DRAWING))
-        .and_then(|b| p.drawable(&b).map(|()| b))
+        .and_then(|b| parts_within(&b, MAX_SHEET_MM).map(|()| b))
         .map_err(|e| match p.error_field(&e) {
             Some(f) => format!("{origin}: {f}: {e}"),
             None => format!("{origin}: {e}"),

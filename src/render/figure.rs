@@ -5,7 +5,7 @@ use super::labels::{self, Placement};
 use super::style::class as class_of;
 use super::style::*;
 use super::xml::{escaped, El, Num, Written};
-use crate::fmt::{num, sheet_text, subscripts};
+use crate::fmt::{num, subscripts};
 use crate::kernel::construct::clip_to_rect;
 use crate::kernel::tolerance::{MIN_DRAWN_MM, NICE_SCALE_SLACK};
 use crate::kernel::{Point, Vector};
@@ -477,7 +477,7 @@ fn wrapped(text: &str, width: f64, char_width: f64) -> (Vec<String>, f64) {
 }
 
 fn label_text(f: &Pen, at: &Point, label: &Label, joined: &[Label]) -> El {
-    let mut t = El::text("text", sheet_text(&subscripts(&label.base)).into_owned())
+    let mut t = El::text("text", subscripts(&label.base))
         .set("x", f.x(at))
         .set("y", f.y(at));
     let mut low = false;
@@ -487,7 +487,7 @@ fn label_text(f: &Pen, at: &Point, label: &Label, joined: &[Label]) -> El {
     }
     // The names of segments drawn on the same line follow on it: "S₁, S₂".
     for l in joined {
-        let mut next = El::text("tspan", format!(", {}", sheet_text(&subscripts(&l.base))));
+        let mut next = El::text("tspan", format!(", {}", subscripts(&l.base)));
         if low {
             next = next.set("dy", "-0.9");
         }
@@ -632,7 +632,7 @@ fn draw_table(pen: &Pen, at: Point, rows: &[Vec<String>], parent: El) -> El {
     if is_heading(rows) {
         let p = Point::new(at.x, at.y - 0.8 * HEADING_ROW);
         return parent.add(
-            El::text("text", sheet_text(&subscripts(&rows[0][0])).into_owned())
+            El::text("text", subscripts(&rows[0][0]))
                 .set("class", "heading")
                 .set("x", pen.x(&p))
                 .set("y", pen.y(&p)),
@@ -662,7 +662,7 @@ fn draw_table(pen: &Pen, at: Point, rows: &[Vec<String>], parent: El) -> El {
                 (x, "start")
             };
             g = g.add(
-                El::text("text", sheet_text(&subscripts(cell)).into_owned())
+                El::text("text", subscripts(cell))
                     .set("class", "small")
                     .set("x", f.x(&Point::new(px, y)))
                     .set("y", f.y(&Point::new(px, y)))
@@ -807,7 +807,7 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> El {
         .set("transform", translate(f.origin()));
     for (k, line) in f.title.iter().enumerate() {
         g = g.add(
-            El::text("text", sheet_text(line).into_owned())
+            El::text("text", line.to_string())
                 .set("class", "title")
                 .set("x", Num(MARGIN, 3))
                 .set("y", Num(MARGIN + 6.0 + TITLE_LINE * k as f64, 3)),
@@ -816,7 +816,7 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> El {
     let below = TITLE_LINE * f.title.len().saturating_sub(1) as f64;
     for (k, line) in f.source.iter().enumerate() {
         g = g.add(
-            El::text("text", sheet_text(line).into_owned())
+            El::text("text", line.to_string())
                 .set("x", Num(MARGIN, 3))
                 .set("y", Num(MARGIN + 12.0 + below + SOURCE_LINE * k as f64, 3)),
         );
@@ -860,7 +860,7 @@ fn sheet_layer(f: &Frame, meta: &FigureMeta) -> El {
                 .set("y", Num(y + 3.2, 3)),
         );
         g = g.add(
-            El::text("text", sheet_text(&s.name).into_owned())
+            El::text("text", s.name.to_string())
                 .set("class", "small")
                 .set("x", Num(MARGIN + names_at, 3))
                 .set("y", Num(y + 1.0, 3)),
@@ -886,10 +886,10 @@ fn title(step: &Step) -> Written<impl FnOnce(&mut String) + '_> {
     Written(move |out: &mut String| {
         crate::fmt::push_uint_padded(out, u64::from(step.id.0), 3);
         out.push(' ');
-        escaped(out, &sheet_text(&step.caption));
+        escaped(out, &step.caption);
         if let Some(c) = &step.context {
             out.push_str(" (");
-            escaped(out, &sheet_text(c));
+            escaped(out, c);
             out.push(')');
         }
     })
@@ -1197,7 +1197,7 @@ fn draw(meta: &FigureMeta, sheet: Sheet<'_>, upto: Option<StepId>) -> (String, L
             let [w, h] = [f.width, f.height].map(|v| num(v, 3));
             format!("{} {} {w} {h}", num(x, 3), num(y, 3))
         })
-        .add(El::text("title", sheet_text(&meta.title).into_owned()))
+        .add(El::text("title", meta.title.to_string()))
         .add(El::text("style", css()))
         .add(defs())
         .add(sheet_layer(f, meta));

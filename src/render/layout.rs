@@ -36,7 +36,7 @@ use super::extent::extent_points;
 use super::ink::{inner_hole, part_marks, Mark};
 use super::style::{CLIP_REACH, LINE_OVERSHOOT};
 use crate::kernel::{Point, Vector};
-use crate::protocol::{Board, Geom, Part, StepKind};
+use crate::protocol::{Board, ConstructionError, Geom, Part, StepKind};
 use std::collections::BTreeMap;
 
 /// The gap between two rows or two columns of parts (mm of the sheet).
@@ -125,6 +125,47 @@ pub fn part_boxes(board: &Board) -> Vec<PartBox> {
             ],
         })
         .collect()
+}
+
+/// Whether every part `board` draws fits within `max_mm` across on the sheet, by the extent
+/// [`part_boxes`] gives it. The limits of a scene are checked on its inputs and scales, but a
+/// part derived from them can reach far past them near a degenerate case (a truss joint
+/// 1e-10 m off the line of its members: a force plan 250,000 km long). Every command that
+/// draws asks this before it draws; a construction studied for its numbers (`check`,
+/// `protocol`, a hard case in a test) does not.
+///
+/// # Errors
+/// The widest part past `max_mm`, by the step that begins it, as
+/// [`ConstructionError::Unsupported`] for the input `figure`.
+pub fn parts_within(board: &Board, max_mm: f64) -> Result<(), ConstructionError> {
+    let widest = (part_boxes(board).into_iter())
+        .map(|b| {
+            let [x0, y0, x1, y1] = b.bounds;
+            ((x1 - x0).max(y1 - y0), b.part)
+        })
+        .max_by(|a, b| a.0.total_cmp(&b.0));
+    let Some((mm, part)) = widest.filter(|(mm, _)| *mm > max_mm) else {
+        return Ok(());
+    };
+    let first = board.steps().iter().find(|s| s.part == part);
+    Err(ConstructionError::Unsupported {
+        input: "figure".into(),
+        reason: format!(
+            "its part begun by step {} ({}) would be {} m across on the sheet, more than the {} \
+             m a figure may take: an input is near a degenerate case (a joint nearly on the \
+             line of its members, a support's direction nearly along the load, forces nearly \
+             in balance, a speed far beyond the scene's own) and drives it that far; move it \
+             off (graphostatik check takes the scene: it draws nothing)",
+            first.map_or(0, |s| s.id.0),
+            crate::fmt::clip(first.map_or("", |s| &s.caption), 80),
+            if mm < 1e9 {
+                crate::fmt::num(mm / 1000.0, 3)
+            } else {
+                crate::fmt::sci(mm / 1000.0)
+            },
+            crate::fmt::num(max_mm / 1000.0, 3)
+        ),
+    })
 }
 
 /// Whether two boxes `[min_x, min_y, max_x, max_y]` overlap (touching edges do not).

@@ -94,7 +94,7 @@ text.heading{{font-style:normal;font-size:4px}}\
 
 /// The text of a figure's `<style>` as a browser reads it (the writer puts the sheet on a
 /// line of its own): what a page's Content-Security-Policy names by its hash.
-pub fn sheet_text() -> String {
+pub fn style_text() -> String {
     format!("\n{}\n", css())
 }
 

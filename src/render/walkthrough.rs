@@ -65,13 +65,8 @@ pub struct WalkOptions {
 /// forbids (NUL, most control characters) replaced by U+FFFD.
 pub fn html_text(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
-    push_html_text(&mut out, s);
+    crate::fmt::markup_text(&mut out, s);
     out
-}
-
-/// [`html_text`] of `s` put at the end of `out`.
-fn push_html_text(out: &mut String, s: &str) {
-    crate::fmt::markup_text(out, s);
 }
 
 /// The steps of each page, in order. The steps of a part constructed and checked but not
@@ -455,7 +450,7 @@ pub fn walkthrough_page(meta: &FigureMeta, svg: &str, items: &str, opts: &WalkOp
     // What the page's own tags hold, as the browser hashes it: its sheet, the figure's, its
     // scripts.
     let page_css = format!("\n{PAGE_CSS}{}", opts.css);
-    let figure_css = super::style::sheet_text();
+    let figure_css = super::style::style_text();
     let mut scripts = vec![SCRIPT];
     scripts.extend(opts.scripts.iter().map(String::as_str));
     super::with_policy(page, &scripts, &[&page_css, &figure_css], opts.allow)
@@ -599,7 +594,7 @@ fn push_unseen_line(out: &mut String, group: &[&Step]) {
 fn push_context(out: &mut String, context: Option<&str>) {
     if let Some(c) = context {
         out.push_str(" <i>");
-        push_html_text(out, c);
+        crate::fmt::markup_text(out, c);
         out.push_str("</i>");
     }
 }
@@ -678,7 +673,7 @@ fn step_line(step: &Step, name: &str) -> String {
 fn push_step_line(out: &mut String, step: &Step, name: &str) {
     use std::fmt::Write;
     let _ = write!(out, "<b>{}</b> ", step.id);
-    push_html_text(out, name);
+    crate::fmt::markup_text(out, name);
     push_context(out, step.context.as_deref());
 }
 

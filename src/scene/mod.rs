@@ -73,7 +73,7 @@ pub use handles::{handles, Drag, Handle};
 pub use header::{Preview, Slider};
 pub use offset_crank::{OffsetDrawingSpec, OffsetProblem, OffsetScene};
 pub use procedure::{
-    parse_scene, scene_field, Procedure, ReadContext, SceneHeader, SchemaType, Spread,
+    parse_scene, scene_field, Procedure, ReadContext, SceneHeader, SchemaType, Spread, MAX_SHEET_MM,
 };
 #[cfg(feature = "schema")]
 pub use reference::reference_markdown;

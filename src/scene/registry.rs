@@ -166,87 +166,6 @@ fn figure<P: Procedure>(
     })
 }
 
-/// The largest width or height of a drawn part of `board` on the sheet (mm), and the first
-/// step of that part: what each object takes, its lines to their drawn ends and its circles
-/// whole (a table's size is the layout's, and its place is the part's own).
-fn widest_part(board: &Board) -> Option<(f64, usize)> {
-    use crate::protocol::Geom;
-    let steps = board.steps();
-    let mut boxes: Vec<(crate::protocol::Part, [f64; 4], usize)> = Vec::new();
-    for o in board.objects() {
-        let k = (o.step.0 as usize).checked_sub(1)?;
-        let step = steps.get(k)?;
-        if step.part.hidden {
-            continue;
-        }
-        let mut grow = |x: f64, y: f64| {
-            let i = match boxes.iter().position(|(p, ..)| *p == step.part) {
-                Some(i) => i,
-                None => {
-                    boxes.push((step.part, [x, y, x, y], k));
-                    boxes.len() - 1
-                }
-            };
-            let b = &mut boxes[i].1;
-            *b = [b[0].min(x), b[1].min(y), b[2].max(x), b[3].max(y)];
-        };
-        match &o.geom {
-            Geom::Point { at } => grow(at.x, at.y),
-            Geom::Line { line, extent } => {
-                for t in extent {
-                    let p = line.point_at(*t);
-                    grow(p.x, p.y);
-                }
-            }
-            Geom::Segment { segment } | Geom::Vector { segment } => {
-                grow(segment.a.x, segment.a.y);
-                grow(segment.b.x, segment.b.y);
-            }
-            Geom::Circle { circle, .. } => {
-                let (c, r) = (circle.center, circle.radius);
-                grow(c.x - r, c.y - r);
-                grow(c.x + r, c.y + r);
-            }
-            Geom::Arc { arc } => {
-                for f in [0.0, 0.5, 1.0] {
-                    let p = arc.point_at_fraction(f);
-                    grow(p.x, p.y);
-                }
-            }
-            Geom::Curve { points, .. } => points.iter().for_each(|p| grow(p.x, p.y)),
-            Geom::Table { at, .. } => grow(at.x, at.y),
-            Geom::Scalar { .. } => {}
-        }
-    }
-    (boxes.iter())
-        .map(|(_, b, k)| ((b[2] - b[0]).max(b[3] - b[1]), *k))
-        .max_by(|a, b| a.0.total_cmp(&b.0))
-        .map(|(mm, k)| (if mm.is_finite() { mm } else { f64::INFINITY }, k))
-}
-
-/// The refusal of a figure a part of which would be `mm` across, that part begun by step `k`.
-fn too_wide(board: &Board, mm: f64, k: usize) -> ConstructionError {
-    let caption = board.steps().get(k).map_or("", |s| &s.caption);
-    ConstructionError::Unsupported {
-        input: "figure".into(),
-        reason: format!(
-            "its part begun by step {} ({}) would be {} m across on the sheet, more than the {} \
-             m a figure may take: an input is near a degenerate case (a joint nearly on the \
-             line of its members, a support's direction nearly along the load, forces nearly \
-             in balance, a speed far beyond the scene's own) and drives it that far; move it \
-             off (graphostatik check takes the scene: it draws nothing)",
-            k + 1,
-            crate::fmt::clip(caption, 80),
-            if mm < 1e9 {
-                crate::fmt::num(mm / 1000.0, 3)
-            } else {
-                crate::fmt::sci(mm / 1000.0)
-            },
-            crate::fmt::num(super::procedure::MAX_SHEET_MM / 1000.0, 3)
-        ),
-    }
-}
-
 impl<P: Procedure> Debug for ProblemOf<P> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         self.0.fmt(f)
@@ -472,25 +391,6 @@ impl AnyProblem {
     /// The procedure's name.
     pub fn procedure(&self) -> &'static str {
         self.inner.name()
-    }
-
-    /// Whether the figure of `board` (a drawing board of this problem) fits a sheet: the
-    /// limits of a scene are checked on its inputs and scales, but a part derived from them
-    /// can reach far past them near a degenerate case (a truss joint 1e-10 m off the line of
-    /// its members: a force plan 250,000 km long). Every command that draws asks this before
-    /// it draws; a construction studied for its numbers (`check`, `protocol`, a hard case in
-    /// a test) does not.
-    ///
-    /// # Errors
-    /// The part past [`MAX_SHEET_MM`](super::procedure::MAX_SHEET_MM), by the step that
-    /// begins it, as [`ConstructionError::Unsupported`] for the input `figure`.
-    pub fn drawable(&self, board: &Board) -> Result<(), ConstructionError> {
-        match widest_part(board) {
-            Some((mm, step)) if mm > super::procedure::MAX_SHEET_MM => {
-                Err(too_wide(board, mm, step))
-            }
-            _ => Ok(()),
-        }
     }
 
     /// The problem as its own type, if it is one: `problem.get::<TrussScene>()` gives the

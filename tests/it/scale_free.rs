@@ -23,22 +23,28 @@ fn times(v: &mut Value, f: f64) {
 /// Lengths (`*_mm`) × k, weights (`*_kg`, and every weight in a table of them) × k³; an
 /// indicator card is paper, drawn at its own size as the drawing's scales are.
 fn scale(v: &mut Value, k: f64) {
+    scale_also(v, k, &[]);
+}
+
+/// [`scale`], and the numbers under the keys `also` × k.
+fn scale_also(v: &mut Value, k: f64, also: &[&str]) {
     match v {
         Value::Object(m) => {
             for (key, x) in m.iter_mut() {
                 if key == "card" {
                     continue;
                 }
-                if key.ends_with("_mm") && !key.ends_with("per_mm") {
+                let length = key.ends_with("_mm") && !key.ends_with("per_mm");
+                if length || also.contains(&key.as_str()) {
                     times(x, k);
                 } else if key.ends_with("_kg") {
                     times(x, k * k * k);
                 } else {
-                    scale(x, k);
+                    scale_also(x, k, also);
                 }
             }
         }
-        Value::Array(a) => a.iter_mut().for_each(|x| scale(x, k)),
+        Value::Array(a) => a.iter_mut().for_each(|x| scale_also(x, k, also)),
         _ => {}
     }
 }
@@ -115,29 +121,8 @@ fn every_engine_at_a_millionth_and_a_thousand_times_its_size() {
 /// areas, × k², the inertia's far less), the force scale left to its default; an indicator
 /// card is paper, drawn at its own size.
 fn shrunk(base: &Value, k: f64) -> Value {
-    fn walk(v: &mut Value, k: f64) {
-        match v {
-            Value::Object(m) => {
-                for (key, x) in m.iter_mut() {
-                    let length = key.ends_with("_mm") && !key.ends_with("per_mm");
-                    if key == "card" {
-                        continue;
-                    }
-                    if length || matches!(key.as_str(), "km_h" | "m_s" | "length_scale") {
-                        times(x, k);
-                    } else if key.ends_with("_kg") {
-                        times(x, k * k * k);
-                    } else {
-                        walk(x, k);
-                    }
-                }
-            }
-            Value::Array(a) => a.iter_mut().for_each(|x| walk(x, k)),
-            _ => {}
-        }
-    }
     let mut v = base.clone();
-    walk(&mut v, k);
+    scale_also(&mut v, k, &["km_h", "m_s", "length_scale"]);
     let m = v.as_object_mut().unwrap();
     m.remove("book");
     m.remove("preview");

@@ -57,25 +57,8 @@ fn serve_stays_up_under_idle_slow_and_oversized_clients() {
     #[cfg(unix)]
     std::os::unix::fs::symlink(scenes.join("lh_abb24_beam.json"), dir.join("outside.json"))
         .unwrap();
-    let mut child = Command::new(PathBuf::from(env!("CARGO_BIN_EXE_graphostatik")))
-        .args(["serve", "--port", "0"])
-        .arg(&dir)
-        .stdout(Stdio::piped())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
-    let mut first = String::new();
-    std::io::BufReader::new(child.stdout.take().unwrap())
-        .read_line(&mut first)
-        .unwrap();
-    let pid = child.id();
-    let mut server = Server(child);
-    let addr = first
-        .split_whitespace()
-        .find_map(|w| w.strip_prefix("http://"))
-        .unwrap()
-        .trim_end_matches('/')
-        .to_string();
+    let (mut server, addr) = serve(&dir);
+    let pid = server.0.id();
     assert!(get(&addr, "/", "").contains(" 200 "));
     let before = rss_kb(pid);
 
@@ -159,9 +142,15 @@ fn serve_folder(tag: &str, files: &[(&str, &str)]) -> (Server, String, PathBuf) 
     for (name, from) in files {
         std::fs::copy(repo.join(from), dir.join(format!("{name}.json"))).unwrap();
     }
+    let (server, addr) = serve(&dir);
+    (server, addr, dir)
+}
+
+/// `graphostatik serve` on `dir` and the address it says it listens on.
+fn serve(dir: &Path) -> (Server, String) {
     let mut child = Command::new(PathBuf::from(env!("CARGO_BIN_EXE_graphostatik")))
         .args(["serve", "--port", "0"])
-        .arg(&dir)
+        .arg(dir)
         .stdout(Stdio::piped())
         .stderr(Stdio::null())
         .spawn()
@@ -176,7 +165,7 @@ fn serve_folder(tag: &str, files: &[(&str, &str)]) -> (Server, String, PathBuf) 
         .unwrap()
         .trim_end_matches('/')
         .to_string();
-    (Server(child), addr, dir)
+    (Server(child), addr)
 }
 
 /// The peak resident memory of a process (kB).
