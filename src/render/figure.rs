@@ -286,21 +286,30 @@ pub(crate) fn placement(meta: &FigureMeta, board: &Board) -> Placement {
 }
 
 /// The straight strokes the figure draws (lines as clipped, segments, vectors, the sides of
-/// curves and of whole circles), for the lettering to keep clear of.
-fn strokes(board: &Board, f: &Frame) -> Vec<(Point, Point)> {
+/// curves and of whole circles), for the lettering to keep clear of: each with whether it is
+/// drawn with a medium or heavy pen (a given, result or force line, which no letter may
+/// lie on) or a thin one (a construction line, which one may cross where nothing else is
+/// free).
+fn strokes(board: &Board, f: &Frame) -> Vec<labels::Stroke> {
     let mut out = Vec::new();
     for o in board.drawn_objects() {
+        let heavy = labels::is_heavy(o.role);
+        let stroke = |(a, b): (Point, Point)| labels::Stroke { a, b, heavy };
         match &o.geom {
-            Geom::Line { .. } => out.extend(line_ends(o).and_then(|(a, b)| f.clip_segment(a, b))),
-            Geom::Segment { segment } | Geom::Vector { segment } => {
-                out.push((segment.a, segment.b))
+            Geom::Line { .. } => {
+                out.extend((line_ends(o).and_then(|(a, b)| f.clip_segment(a, b))).map(stroke))
             }
-            Geom::Curve { points, .. } => out.extend(points.windows(2).map(|w| (w[0], w[1]))),
+            Geom::Segment { segment } | Geom::Vector { segment } => {
+                out.push(stroke((segment.a, segment.b)))
+            }
+            Geom::Curve { points, .. } => {
+                out.extend(points.windows(2).map(|w| stroke((w[0], w[1]))))
+            }
             Geom::Circle {
                 circle, full: true, ..
             } => {
                 let at = |k: usize| circle.point_at_deg(7.5 * k as f64);
-                out.extend((0..48).map(|k| (at(k), at(k + 1))));
+                out.extend((0..48).map(|k| stroke((at(k), at(k + 1)))));
             }
             _ => {}
         }
@@ -965,6 +974,12 @@ pub struct FigureReport {
     pub on_dots: usize,
     /// Labels that cross the sheet's edge.
     pub off_sheet: usize,
+    /// Labels with a given, result, force or other heavy line through their letters.
+    pub on_heavy_lines: usize,
+    /// Labels with only thin construction lines, axes or transfers through their letters.
+    pub on_thin_lines: usize,
+    /// Labels joined to their point by a leader, standing off.
+    pub leaders: usize,
     /// Pairs of parts ([`crate::protocol::Part`]) that overlap once the sheet is laid out.
     pub part_overlaps: usize,
     /// The side of the largest square of the drawing area (mm) that nothing drawn or written
@@ -975,9 +990,14 @@ pub struct FigureReport {
 }
 
 impl FigureReport {
-    /// Nothing overprints, nothing leaves the sheet, no parts overlap.
+    /// Nothing overprints, no heavy line runs through a letter, nothing leaves the sheet, no
+    /// parts overlap.
     pub fn is_clean(&self) -> bool {
-        self.overprints == 0 && self.on_dots == 0 && self.off_sheet == 0 && self.part_overlaps == 0
+        self.overprints == 0
+            && self.on_dots == 0
+            && self.on_heavy_lines == 0
+            && self.off_sheet == 0
+            && self.part_overlaps == 0
     }
 }
 
@@ -1007,7 +1027,14 @@ pub fn inspect(meta: &FigureMeta, board: &Board) -> FigureReport {
     let region = label_region(&f);
     let at = |o: &Object| placed.get(o.id).map(|p| p.at);
     let o = labels::overprints(&board, &at, Some(region));
+    let (on_heavy_lines, on_thin_lines) = labels::lines_through(&board, &at, &strokes(&board, &f));
+    let leaders = (board.objects().iter())
+        .filter(|o| placed.get(o.id).is_some_and(|p| p.leader.is_some()))
+        .count();
     FigureReport {
+        on_heavy_lines,
+        on_thin_lines,
+        leaders,
         labels: placed.labels,
         left_out: placed.crowded,
         withheld: placed.withheld,
@@ -1051,7 +1078,7 @@ fn emptiest(board: &Board, f: &Frame, placed: &Placement) -> f64 {
             rows += 1;
         }
     };
-    for (a, b) in strokes(board, f) {
+    for labels::Stroke { a, b, .. } in strokes(board, f) {
         let n = ((b - a).norm() / (0.5 * cell)).ceil().min(1e5) as usize;
         for k in 0..=n {
             mark(a + (b - a) * (k as f64 / n.max(1) as f64));

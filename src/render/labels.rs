@@ -1,18 +1,20 @@
 //! Where a figure's lettering goes: every label placed so that it never overprints another
-//! label, a point's dot, a table or the sheet's edge.
+//! label, a point's dot, a table, a heavy line or the sheet's edge.
 //!
 //! The cartographers' model of point labels: each label tries a list of candidate positions
 //! around its point, the one the figure has always used first (up and to the right of the
-//! point, or radially outward on a whole circle), then the eight around it. Of those that are
-//! free, the one that crosses the fewest drawn strokes is taken (the first of equals): a
-//! label in the gap between a joint's members reads better than one across them, and a label
-//! on a line is still legible where one on another label is not. A line's name (a member's
-//! number) whose places beside the middle are all taken slides along its line first. Where
-//! none near is free, rings farther out are tried the same way, and a short leader joins the
-//! label to its point.
-//! Where even those are taken the label is left out (the crowd rule: the books, too, letter
-//! only some of a crowd of crank positions or load positions), and the figure says how many
-//! it left out. Labels are placed in the order their objects were made, so that the
+//! point, or radially outward on a whole circle), then sixteen around it at two distances.
+//! The drawn strokes are weighed as the plates do: no letter stands on a given, result or
+//! force line (drawn with the medium or heavy pen); a thin construction line, an axis or a
+//! transfer may run through a label only where no place within reach is free of every
+//! stroke. So the candidates are tried in two passes, the first allowing no stroke under the
+//! label, the second thin ones; in each, the places near the point come first, then (for a
+//! line's name, a member's number) places along its line, then rings farther out, joined to
+//! the point by a short leader. Of the places a pass allows, the one crossing the fewest
+//! strokes is taken (the first of equals).
+//! Where none is free the label is left out (the crowd rule: the books, too, letter only
+//! some of a crowd of crank positions or load positions), and the figure says how many it
+//! left out. Labels are placed in the order their objects were made, so that the
 //! construction's early letters keep their places and the later ones of a crowd give way.
 //!
 //! What is placed is kept in bounding-volume hierarchies (parry2d's [`Bvh`]): each candidate
@@ -37,10 +39,10 @@ const WIDE: &str = "mwMWΦΨΩ";
 const WIDE_CHAR: f64 = 1.5;
 /// Advance of one figure of a label's subscript (mm): 0.64 em of its 2.4 mm.
 const INDEX_CHAR: f64 = 1.54;
-/// The space the sheet's text sets between a letter and its subscript (mm): the SVG puts
-/// the subscript on a line of its own, which a renderer reads as one word space (with the
-/// italic capitals' overhang, 1.6 mm as usvg lays out "A 3" in DejaVu Serif).
-const INDEX_GAP: f64 = 1.6;
+/// The space between a letter and its subscript (mm): the subscript is set right after its
+/// letter, on one line with it; the italic capital leans over the subscript's start by
+/// less than this (0.2 mm as usvg lays out "A₃" in DejaVu Serif).
+const INDEX_GAP: f64 = 0.2;
 /// How far the italic's last letter leans out past its advance at the top (mm): the
 /// capitals' 2.5 mm at DejaVu Serif Italic's slant of some 11°, as usvg inks K beside O.
 const OVERHANG: f64 = 0.45;
@@ -60,14 +62,33 @@ const MAX_SHEET_COORD: f64 = 1e9;
 /// The grid (mm) the hierarchy's boxes are rounded out to: boxes whose centres differ by
 /// less than a subnormal would make its binning divide by their spread.
 const GRID: f64 = 1e-6;
-/// Rings of candidates farther out, in multiples of the label's offset, each drawn with a
-/// leader.
-const RINGS: [f64; 3] = [2.5, 4.0, 6.0];
+/// Rings of candidates farther out, in multiples of the label's offset (up to 14 mm), each
+/// drawn with a leader: where a label's point is the centre of a star of heavy lines (a
+/// polar diagram's O), the free gaps between the rays open only some way out.
+const RINGS: [f64; 4] = [2.5, 4.0, 6.0, 9.0];
 /// Where along its drawn length a line's name goes when none of the places beside its middle
 /// is free, in this order (fractions of the length): a member's number slides along its
 /// member, as the plates write the numbers of crossed diagonals off their crossing (LH Abb.
 /// 19), before it takes a leader.
 const SLIDE: [f64; 4] = [1.0 / 3.0, 2.0 / 3.0, 0.25, 0.75];
+
+/// A stroke drawn on the sheet, for the lettering to keep clear of: heavy where it is drawn
+/// with a medium or heavy pen ([`is_heavy`]), which no letter may lie on.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Stroke {
+    pub a: Point,
+    pub b: Point,
+    pub heavy: bool,
+}
+
+/// Whether a line of `role` is one no letter may lie on: a given, result, force, velocity,
+/// guide or reduced line, drawn with the medium or heavy pen. A thin construction line, an
+/// axis or a transfer may be crossed by a letter where no free place is within reach, as
+/// the plates do.
+pub(crate) fn is_heavy(role: crate::protocol::Role) -> bool {
+    use crate::protocol::Role;
+    !matches!(role, Role::Construction | Role::Auxiliary | Role::Axis)
+}
 
 /// A placed label: its text's baseline-left point on the sheet (mm), and the leader from its
 /// point where it had to move away.
@@ -245,6 +266,20 @@ fn around(p: Point, d: f64, (w, depth): (f64, f64)) -> [Point; 8] {
     ]
 }
 
+/// The baseline-left points of eight more positions around `p`, between those of
+/// [`around`]: each box's centre out along the directions 22.5°, 67.5° … from `p`, far
+/// enough that the box keeps `d` (mm) from it.
+fn between(p: Point, d: f64, (w, depth): (f64, f64)) -> impl Iterator<Item = Point> {
+    let h = ASCENT + depth;
+    [22.5f64, 157.5, -22.5, -157.5, 67.5, 112.5, -67.5, -112.5]
+        .into_iter()
+        .map(move |deg| {
+            let u = Vector::new(deg.to_radians().cos(), deg.to_radians().sin());
+            let c = p + u * (d + u.x.abs() * w / 2.0 + u.y.abs() * h / 2.0);
+            Point::new(c.x - w / 2.0, c.y - (ASCENT - depth) / 2.0)
+        })
+}
+
 /// What is on the sheet already: the boxes placed and the strokes drawn, each in a
 /// hierarchy for the queries.
 struct Taken {
@@ -252,7 +287,7 @@ struct Taken {
     boxes: Vec<Aabb>,
     sheet: Aabb,
     stroke_bvh: Bvh,
-    strokes: Vec<(Point, Point)>,
+    strokes: Vec<Stroke>,
 }
 
 /// A box rounded out to the [`GRID`]: what the hierarchy keeps (the exact box is tested
@@ -289,14 +324,19 @@ impl Taken {
                 .any(|i| self.boxes[i as usize].intersects(b))
     }
 
-    /// How many strokes pass through `b`.
-    fn crossings(&self, b: &Aabb) -> usize {
-        (self.stroke_bvh.intersect_aabb(b))
-            .filter(|&i| {
-                let (p, q) = self.strokes[i as usize];
-                clip_to_rect(p, q, rect(b)).is_some()
-            })
-            .count()
+    /// How many strokes pass through `b`: (heavy, thin).
+    fn crossings(&self, b: &Aabb) -> (usize, usize) {
+        let mut n = (0, 0);
+        for i in self.stroke_bvh.intersect_aabb(b) {
+            let s = self.strokes[i as usize];
+            if clip_to_rect(s.a, s.b, rect(b)).is_some() {
+                match s.heavy {
+                    true => n.0 += 1,
+                    false => n.1 += 1,
+                }
+            }
+        }
+        n
     }
 }
 
@@ -378,7 +418,7 @@ fn clipped(b: &Aabb, p: Point, q: Point) -> Option<(Point, Point)> {
 pub(crate) fn place(
     board: &Board,
     sheet: [f64; 4],
-    strokes: Vec<(Point, Point)>,
+    strokes: Vec<Stroke>,
     drawn: &dyn Fn(&Point) -> bool,
 ) -> Placement {
     let [x0, y0, x1, y1] = sheet;
@@ -386,13 +426,13 @@ pub(crate) fn place(
         return unplaced(board);
     }
     let region = Aabb::new(PPoint::new(x0, y0), PPoint::new(x1, y1));
-    let strokes: Vec<(Point, Point)> = strokes
+    let strokes: Vec<Stroke> = strokes
         .into_iter()
-        .filter_map(|(p, q)| clipped(&region, p, q))
+        .filter_map(|s| clipped(&region, s.a, s.b).map(|(a, b)| Stroke { a, b, ..s }))
         .collect();
     let stroke_boxes: Vec<Aabb> = strokes
         .iter()
-        .map(|(p, q)| {
+        .map(|Stroke { a: p, b: q, .. }| {
             gridded(&Aabb::new(
                 PPoint::new(p.x.min(q.x), p.y.min(q.y)),
                 PPoint::new(p.x.max(q.x), p.y.max(q.y)),
@@ -575,25 +615,56 @@ fn requests(
     (requests, groups)
 }
 
-/// The best free position of a label: near its point (where it has always stood, then the
-/// eight around it), the one that crosses the fewest strokes (the first of equals); only
-/// where none near is free, the same on the rings farther out, with a leader.
+/// How much a candidate place of a label may cross: the passes of [`place_one`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Crossing {
+    /// No stroke at all.
+    Nothing,
+    /// Thin construction lines, axes and transfers, no heavy line.
+    Thin,
+}
+
+/// The distances (in multiples of the label's offset) of the places close enough to their
+/// point to need no leader: beside it, and one step out.
+const NEAR: [f64; 2] = [0.6, 1.2];
+
+/// The best free position of a label, in passes that allow more and more under it
+/// ([`Crossing`]): first a place on no stroke at all, near its point (where it has always
+/// stood, then the places around it), along its line for a line's name, then on the rings
+/// farther out with a leader; then the same allowing thin construction lines. Of the places
+/// a pass allows, the one that crosses the fewest strokes is taken (the first of equals). A
+/// label never stands on a given, result or force line: where no place within reach is
+/// free of them, it is left out ([`Placement::crowded`]).
 fn place_one(taken: &mut Taken, r: &Request) -> Option<Placed> {
-    let near = std::iter::once(r.first).chain(around(r.anchor, 0.6 * LABEL_OFFSET, r.size));
-    if let Some(at) = least_crossed(taken, r.size, near) {
+    [Crossing::Nothing, Crossing::Thin]
+        .into_iter()
+        .find_map(|allow| place_pass(taken, r, allow))
+}
+
+/// One pass of [`place_one`]: the best place near, along the line, then on the rings, whose
+/// box crosses no more than `allow`.
+fn place_pass(taken: &Taken, r: &Request, allow: Crossing) -> Option<Placed> {
+    let near = std::iter::once(r.first).chain(NEAR.iter().flat_map(|k| {
+        let d = k * LABEL_OFFSET;
+        around(r.anchor, d, r.size)
+            .into_iter()
+            .chain(between(r.anchor, d, r.size))
+    }));
+    if let Some(at) = least_crossed(taken, r.size, near, allow) {
         return Some(Placed { at, leader: None });
     }
     if let Some((a, b)) = r.slide {
         let along = SLIDE
             .iter()
             .flat_map(|t| around(a + (b - a) * *t, 0.6 * LABEL_OFFSET, r.size));
-        if let Some(at) = least_crossed(taken, r.size, along) {
+        if let Some(at) = least_crossed(taken, r.size, along, allow) {
             return Some(Placed { at, leader: None });
         }
     }
     RINGS.iter().find_map(|k| {
-        let ring = around(r.anchor, k * LABEL_OFFSET, r.size);
-        let at = least_crossed(taken, r.size, ring.into_iter())?;
+        let d = k * LABEL_OFFSET;
+        let ring = (around(r.anchor, d, r.size).into_iter()).chain(between(r.anchor, d, r.size));
+        let at = least_crossed(taken, r.size, ring, allow)?;
         let end = nearest_on(&text_box(at, r.size), r.anchor);
         Some(Placed {
             at,
@@ -602,22 +673,28 @@ fn place_one(taken: &mut Taken, r: &Request) -> Option<Placed> {
     })
 }
 
-/// Of the candidates whose box is free, the first that crosses the fewest strokes.
+/// Of the candidates whose box is free and crosses no more than `allow`, the first that
+/// crosses the fewest strokes (heavy ones first, then thin).
 fn least_crossed(
     taken: &Taken,
     size: (f64, f64),
     candidates: impl Iterator<Item = Point>,
+    allow: Crossing,
 ) -> Option<Point> {
-    let mut best: Option<(usize, Point)> = None;
+    let mut best: Option<((usize, usize), Point)> = None;
     for at in candidates {
         let b = text_box(at, size);
         if !taken.free(&b) {
             continue;
         }
         let n = taken.crossings(&b);
-        if best.is_none_or(|(m, _)| n < m) {
+        let allowed = match allow {
+            Crossing::Nothing => n == (0, 0),
+            Crossing::Thin => n.0 == 0,
+        };
+        if allowed && best.is_none_or(|(m, _)| n < m) {
             best = Some((n, at));
-            if n == 0 {
+            if n == (0, 0) {
                 break;
             }
         }
@@ -738,6 +815,51 @@ pub(crate) fn overprints(
         if let Some([x0, y0, x1, y1]) = sheet {
             let within = b.mins.x >= x0 && b.mins.y >= y0 && b.maxs.x <= x1 && b.maxs.y <= y1;
             out.off_sheet += usize::from(!within);
+        }
+    }
+    out
+}
+
+/// How many written labels have a line through their letters (their box without its clear
+/// space): `(heavy, thin)`, a label counted once, as heavy where any heavy line crosses it.
+/// `at` says where each label stands (`None`: not written).
+pub(crate) fn lines_through(
+    board: &Board,
+    at: &dyn Fn(&crate::protocol::Object) -> Option<Point>,
+    strokes: &[Stroke],
+) -> (usize, usize) {
+    let finite = |p: &Point| p.x.abs() <= MAX_SHEET_COORD && p.y.abs() <= MAX_SHEET_COORD;
+    let strokes: Vec<Stroke> = (strokes.iter().copied())
+        .filter(|s| finite(&s.a) && finite(&s.b))
+        .collect();
+    let leaves: Vec<Aabb> = (strokes.iter())
+        .map(|s| {
+            gridded(&Aabb::new(
+                PPoint::new(s.a.x.min(s.b.x), s.a.y.min(s.b.y)),
+                PPoint::new(s.a.x.max(s.b.x), s.a.y.max(s.b.y)),
+            ))
+        })
+        .collect();
+    let bvh = Bvh::from_leaves(Default::default(), &leaves);
+    let mut out = (0, 0);
+    for o in board.drawn_objects() {
+        let Some(p) = at(o).filter(finite) else {
+            continue;
+        };
+        let b = text_box(p, extent(&o.label));
+        let tight = Aabb::new(b.mins + Vector::repeat(PAD), b.maxs - Vector::repeat(PAD));
+        let (mut heavy, mut thin) = (false, false);
+        for i in bvh.intersect_aabb(&gridded(&tight)) {
+            let s = strokes[i as usize];
+            if clip_to_rect(s.a, s.b, rect(&tight)).is_some() {
+                heavy |= s.heavy;
+                thin |= !s.heavy;
+            }
+        }
+        if heavy {
+            out.0 += 1;
+        } else if thin {
+            out.1 += 1;
         }
     }
     out
@@ -897,16 +1019,54 @@ mod tests {
         assert!((at.at.x - 20.0).abs() < 6.0, "a third of the way: {at:?}");
     }
 
+    /// A point at the centre of a star of eight heavy rays (a polar diagram's O) is lettered
+    /// in a gap between two rays, on none of them; with the rays thin, the label stays near
+    /// its point, across a ray rather than on a leader, only where nothing near is free.
+    #[test]
+    fn a_label_keeps_off_heavy_lines_and_crosses_thin_ones_only_where_it_must() {
+        use crate::protocol::{Note, Role, Topic};
+        let n = Note::new("s", Topic::Custom("t"));
+        let mut b = Board::recording();
+        let o = b.point(Point::origin(), Role::Given.named("O"), n.clone());
+        let star = |heavy: bool, k: u32| {
+            let t = f64::from(k) * std::f64::consts::FRAC_PI_4;
+            let a = Point::origin();
+            let b = Point::new(30.0 * t.cos(), 30.0 * t.sin());
+            Stroke { a, b, heavy }
+        };
+        let sheet = [-50.0, -50.0, 50.0, 50.0];
+        for heavy in [true, false] {
+            let strokes: Vec<Stroke> = (0..8).map(|k| star(heavy, k)).collect();
+            let placed = place(&b, sheet, strokes.clone(), &|_| true);
+            let at = placed.get(o.id).expect("O is lettered");
+            let on = |p: &crate::protocol::Object| (p.id == o.id).then_some(at.at);
+            let (on_heavy, on_thin) = lines_through(&b, &on, &strokes);
+            assert_eq!((on_heavy, on_thin), (0, 0), "heavy {heavy}: {at:?}");
+        }
+        // On a sheet too small for a gap between the rays (10 mm square inside its edge), thin rays
+        // are crossed, heavy ones never: the label is left out.
+        for heavy in [true, false] {
+            let strokes: Vec<Stroke> = (0..8).map(|k| star(heavy, k)).collect();
+            let placed = place(&b, [-6.0, -6.0, 6.0, 6.0], strokes.clone(), &|_| true);
+            let at = placed.get(o.id).map(|p| p.at);
+            let on = |p: &crate::protocol::Object| at.filter(|_| p.id == o.id);
+            let (on_heavy, on_thin) = lines_through(&b, &on, &strokes);
+            assert_eq!((on_heavy, on_thin), (0, usize::from(!heavy)), "{at:?}");
+            assert_eq!(placed.crowded, usize::from(heavy));
+        }
+    }
+
     #[test]
     fn degenerate_and_absurd_sheets_are_placed_without_a_panic() {
         use crate::protocol::{Note, Role, Topic};
         let n = Note::new("p", Topic::Custom("t"));
         let mut b = Board::recording();
         let mut strokes = Vec::new();
+        let stroke = |a: Point, b: Point| Stroke { a, b, heavy: true };
         for k in 0..12 {
             let at = Point::new(k as f64 * 1e-310, 0.0);
             b.point(at, Role::Given.named("P"), n.clone());
-            strokes.push((at, Point::new(at.x, 1e-310)));
+            strokes.push(stroke(at, Point::new(at.x, 1e-310)));
         }
         let placed = place(&b, [-50.0, -50.0, 50.0, 50.0], strokes.clone(), &|_| true);
         assert_eq!(
@@ -916,7 +1076,10 @@ mod tests {
                 .count(),
             12
         );
-        strokes.push((Point::new(f64::NAN, 0.0), Point::new(1e308, f64::INFINITY)));
+        strokes.push(stroke(
+            Point::new(f64::NAN, 0.0),
+            Point::new(1e308, f64::INFINITY),
+        ));
         place(&b, [-50.0, -50.0, 50.0, 50.0], strokes.clone(), &|_| true);
         let huge = place(&b, [-1e300, -1e300, 1e300, 1e300], strokes, &|_| true);
         assert_eq!(huge.crowded, 0);

@@ -121,11 +121,14 @@ fn report_labels_and_emptiest_regions() {
         let r = report(&text, &p.display().to_string()).unwrap();
         let [w, h] = r.area_mm;
         println!(
-            "{:45} {:5} labels {:3} left out {:3} withheld  area {:6.0} × {:6.0} mm  emptiest square {:5.0} mm ({:3.0} % of the shorter side)",
+            "{:45} {:5} labels {:3} left out {:3} withheld {:3} on heavy {:3} on thin {:3} leaders  area {:6.0} × {:6.0} mm  emptiest square {:5.0} mm ({:3.0} % of the shorter side)",
             p.file_stem().unwrap().to_string_lossy(),
             r.labels,
             r.left_out,
             r.withheld,
+            r.on_heavy_lines,
+            r.on_thin_lines,
+            r.leaders,
             w,
             h,
             r.emptiest_mm,
