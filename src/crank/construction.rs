@@ -557,6 +557,8 @@ struct Builder<'a> {
     /// The caller's context when the construction began (an engine's cylinder, "HP"): every
     /// angle's context is set within it ("HP, θ = 30°").
     base: Option<std::sync::Arc<str>>,
+    /// The names of the pins at the listed angles ([`pin_names`]).
+    pin_names: Vec<Label>,
 }
 
 /// Constructs the requested slider-crank quantities at every crank angle on `board`.
@@ -596,6 +598,32 @@ pub fn position_name(base: &'static str, k: u32, shown: bool) -> Label {
     } else {
         Label::quiet(base, k)
     }
+}
+
+/// The names of the crank pins at the angles `thetas`: Aₖ for the k-th, written in the
+/// figure once for each place on the circle and as the plates letter a crowd. The pin at
+/// θ = 0 is the dead centre, named A already (not A₀ beside it); a pin of the second turn
+/// (a four-stroke engine's 720°) stands where one of the first does and is not lettered
+/// again; of the places left, every one, second … is lettered ([`Label::crowd_every`]),
+/// and always the position `shown` in full.
+fn pin_names(thetas: &[f64], shown: Option<usize>) -> Vec<Label> {
+    // Places on the circle to a nano-degree: the angles are the scene's or its divisions'.
+    let place = |t: f64| (t.rem_euclid(360.0) * 1e9).round() as i64 % 360_000_000_000;
+    let mut seen = std::collections::HashSet::new();
+    let first: Vec<bool> = thetas.iter().map(|t| seen.insert(place(*t))).collect();
+    let every = Label::crowd_every(seen.len());
+    let mut j = 0;
+    (thetas.iter().zip(&first).enumerate())
+        .map(|(i, (t, first))| {
+            let k = i as u32;
+            let lettered = *first && place(*t) != 0 && (j % every == 0 || shown == Some(i));
+            j += usize::from(*first);
+            match lettered {
+                true => Label::indexed("A", k),
+                false => Label::quiet("A", k),
+            }
+        })
+        .collect()
 }
 
 /// A curve's points over the crank angles `thetas`, closed on the first where they are a
@@ -676,7 +704,9 @@ pub fn construct_at(
         origin,
         cache: (0..n).map(|_| Cache::default()).collect(),
         base: board_context,
+        pin_names: Vec::new(),
     };
+    bl.pin_names = pin_names(&bl.thetas, bl.shown);
     let want_c = request.velocity_parallel || request.velocity_instant_centre;
     // Upper bounds of the steps per angle each output adds (objects: about twice as many).
     let per_angle = 6
@@ -762,7 +792,7 @@ impl Builder<'_> {
                     &circle,
                     &arc,
                     Branch::Near(side),
-                    Label::indexed("A", i as u32),
+                    Label::of_crowd("A", i as u32, 2 * n),
                     N_STROKE_PIN,
                 )?
             } else {
@@ -773,7 +803,7 @@ impl Builder<'_> {
                     &perp,
                     &circle,
                     Branch::Near(side),
-                    Label::indexed("A", i as u32),
+                    Label::of_crowd("A", i as u32, 2 * n),
                     N_STROKE_PIN,
                 )?
             }
@@ -958,7 +988,7 @@ impl Builder<'_> {
             self.b.point_on_circle_dir(
                 &circle,
                 SinCos { sin: s, cos: -c },
-                pen.labelled(Label::indexed("A", i as u32)),
+                pen.labelled(self.pin_names[i].clone()),
                 N_CRANK_AT,
             )
         };
@@ -1502,5 +1532,37 @@ impl Builder<'_> {
             );
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Lettered pins of a list of angles, as the figure writes them.
+    fn lettered(thetas: &[f64], shown: Option<usize>) -> Vec<u32> {
+        (pin_names(thetas, shown).into_iter())
+            .filter(|l| l.shown)
+            .filter_map(|l| l.index)
+            .collect()
+    }
+
+    /// Twelve positions are lettered each but the dead centre; 48 over a four-stroke
+    /// engine's two turns are 24 places on the circle, lettered every second once; the
+    /// position drawn in full is lettered whatever the crowd.
+    #[test]
+    fn a_crowd_of_crank_pins_is_lettered_as_the_plates_letter_it() {
+        let every = |n: usize, step: f64| -> Vec<f64> { (0..n).map(|k| k as f64 * step).collect() };
+        assert_eq!(
+            lettered(&every(12, 30.0), None),
+            (1..12).collect::<Vec<u32>>()
+        );
+        let two_turns = lettered(&every(48, 15.0), None);
+        assert_eq!(two_turns, (1..12).map(|k| 2 * k).collect::<Vec<u32>>());
+        assert_eq!(
+            lettered(&every(48, 15.0), Some(3)),
+            [2, 3, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22]
+        );
+        assert_eq!(lettered(&[0.0, 360.0, 720.0], None), Vec::<u32>::new());
     }
 }

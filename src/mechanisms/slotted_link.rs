@@ -165,6 +165,9 @@ struct Frame {
     guide: H<Line>,
     start: H<Point>,
     base: Option<H<Line>>,
+    /// How many crank positions the figure draws: a crowd of them is lettered every
+    /// second … ([`Label::of_crowd`]).
+    positions: usize,
 }
 
 /// The scales of a slotted link's figure.
@@ -242,6 +245,7 @@ pub fn construct(
         velocity_scale: scales.velocity,
     };
     let mut fr = frame(b, link, u, rq.velocity)?;
+    fr.positions = phis.len();
     let mut res = outer_positions(b, &mut fr, link, u)?;
     let mut curve = Vec::with_capacity(phis.len());
     let shown = shown_index(link, phis);
@@ -321,6 +325,7 @@ fn frame(
         guide,
         start: e0,
         base,
+        positions: 0,
     })
 }
 
@@ -489,8 +494,13 @@ fn lever_at(
     // One position in the result pen, the others thin (the plates' way); the two extra
     // positions of the largest speeds keep their pins' names in the protocol only.
     let pen = crate::crank::position_pen(shown);
+    // The position drawn in full is lettered whatever the crowd.
     let name = if k < 90 {
-        Label::indexed("C", k)
+        let crowd = Label::of_crowd("C", k, fr.positions);
+        Label {
+            shown: crowd.shown || shown,
+            ..crowd
+        }
     } else {
         Label::quiet("C", k)
     };

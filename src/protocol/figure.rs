@@ -90,6 +90,10 @@ pub struct FigureMeta {
     pub source: String,
     /// The scale bars.
     pub scales: Vec<ScaleBar>,
+    /// What the book's plate letters, each as a scene writes a name (`P1` for P₁, `II`,
+    /// `+`): the figure test holds that the figure writes every one
+    /// ([`FigureReport::unnamed`](crate::render::FigureReport::unnamed)).
+    pub plate: Vec<String>,
 }
 
 impl FigureMeta {

@@ -23,6 +23,6 @@ pub use reference::ReferenceRow;
 pub use request::request_set;
 pub use step::{
     note, Check, Drawn, Geom, Ids, Label, Mark, Note, ObjId, Object, Part, Role, Step, StepId,
-    StepKind, Text, Topic, TABLE_BLOCK_ROWS,
+    StepKind, Text, Topic, CROWD_LETTERED, TABLE_BLOCK_ROWS,
 };
 pub use summary::{CheckKind, CheckSummary, LISTED_CHECKS, LISTED_FAILURES};

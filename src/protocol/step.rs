@@ -290,6 +290,10 @@ pub struct Label {
     pub shown: bool,
 }
 
+/// The most positions of a crowd (a divided crank circle) the figure letters each of: more
+/// are lettered every second, third … ([`Label::of_crowd`]).
+pub const CROWD_LETTERED: usize = 12;
+
 impl Label {
     /// A label without index.
     pub const fn plain(base: &'static str) -> Label {
@@ -339,6 +343,28 @@ impl Label {
             index: Some(index),
             shown: true,
         }
+    }
+    /// The k-th of a crowd of `n` positions (crank pins, load positions) named
+    /// `base`, written in the figure only where the books letter it: every position up to
+    /// [`CROWD_LETTERED`] of them, every second up to twice as many, and so on (the plates
+    /// letter 0, 1, 2 … or every second of a finely divided crank circle); the others keep
+    /// their name in the protocol.
+    ///
+    /// ```
+    /// use graphostatik::protocol::Label;
+    /// assert!(Label::of_crowd("A", 5, 12).shown);
+    /// assert!(!Label::of_crowd("A", 5, 24).shown && Label::of_crowd("A", 6, 24).shown);
+    /// assert_eq!(Label::of_crowd("A", 9, 48).to_string(), "A9");
+    /// ```
+    pub fn of_crowd(base: &'static str, k: u32, n: usize) -> Label {
+        Label {
+            shown: (k as usize) % Label::crowd_every(n) == 0,
+            ..Label::indexed(base, k)
+        }
+    }
+    /// Every how many of a crowd of `n` positions one is lettered ([`Label::of_crowd`]).
+    pub fn crowd_every(n: usize) -> usize {
+        n.div_ceil(CROWD_LETTERED).max(1)
     }
     /// A name kept in the protocol but not written in the figure.
     pub const fn quiet(base: &'static str, index: u32) -> Label {

@@ -960,7 +960,7 @@ pub struct Lettering {
 
 /// What the figure test measures of a figure, on the boxes the label placer works with: a
 /// figure reads like a plate when [`FigureReport::is_clean`].
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct FigureReport {
     /// The labels to be written (as [`Lettering::labels`]).
     pub labels: usize,
@@ -980,6 +980,8 @@ pub struct FigureReport {
     pub on_thin_lines: usize,
     /// Labels joined to their point by a leader, standing off.
     pub leaders: usize,
+    /// The names of the book's plate ([`FigureMeta::plate`]) the figure does not write.
+    pub unnamed: Vec<String>,
     /// Pairs of parts ([`crate::protocol::Part`]) that overlap once the sheet is laid out.
     pub part_overlaps: usize,
     /// The side of the largest square of the drawing area (mm) that nothing drawn or written
@@ -990,12 +992,13 @@ pub struct FigureReport {
 }
 
 impl FigureReport {
-    /// Nothing overprints, no heavy line runs through a letter, nothing leaves the sheet, no
-    /// parts overlap.
+    /// Nothing overprints, no heavy line runs through a letter, every name of the plate is
+    /// written, nothing leaves the sheet, no parts overlap.
     pub fn is_clean(&self) -> bool {
         self.overprints == 0
             && self.on_dots == 0
             && self.on_heavy_lines == 0
+            && self.unnamed.is_empty()
             && self.off_sheet == 0
             && self.part_overlaps == 0
     }
@@ -1032,6 +1035,7 @@ pub fn inspect(meta: &FigureMeta, board: &Board) -> FigureReport {
         .filter(|o| placed.get(o.id).is_some_and(|p| p.leader.is_some()))
         .count();
     FigureReport {
+        unnamed: unnamed(meta, &board, &placed),
         on_heavy_lines,
         on_thin_lines,
         leaders,
@@ -1045,6 +1049,26 @@ pub fn inspect(meta: &FigureMeta, board: &Board) -> FigureReport {
         emptiest_mm: emptiest(&board, &f, &placed),
         area_mm: [region[2] - region[0], region[3] - region[1]],
     }
+}
+
+/// The names of the book's plate (`meta.plate`) that the figure does not write: each is
+/// written where a label of that name (`P1` for P₁) stands on the sheet, alone or joined
+/// to another's, or a table's cell reads it (a shear field's `+`).
+fn unnamed(meta: &FigureMeta, board: &Board, placed: &Placement) -> Vec<String> {
+    let mut written = std::collections::HashSet::new();
+    for o in board.drawn_objects() {
+        if placed.get(o.id).is_some() {
+            written.insert(o.label.to_string());
+            written.extend(placed.joined(o.id).iter().map(|l| l.to_string()));
+        }
+        if let Geom::Table { rows, .. } = &o.geom {
+            written.extend(rows.iter().flatten().map(|c| c.trim().to_string()));
+        }
+    }
+    (meta.plate.iter())
+        .filter(|name| !written.contains(name.as_str()))
+        .cloned()
+        .collect()
 }
 
 /// The side (mm) of the largest square of the drawing area that no stroke, point, table or

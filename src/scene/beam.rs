@@ -462,6 +462,7 @@ impl super::Procedure for BeamScene {
                 ScaleBar::force(d.force_scale),
                 ScaleBar::moment(d.length_scale / 1000.0 * d.pole_distance),
             ],
+            plate: Vec::new(),
         }
     }
 }

@@ -208,6 +208,7 @@ impl super::Procedure for CentroidScene {
                 ScaleBar::length(d.length_scale, "m"),
                 ScaleBar::area(d.area_scale),
             ],
+            plate: Vec::new(),
         }
     }
 }

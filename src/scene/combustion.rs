@@ -396,6 +396,7 @@ impl super::Procedure for CombustionScene {
                 ScaleBar::length(p.drawing.length_scale, "m"),
                 ScaleBar::force(p.drawing.force_scale),
             ],
+            plate: Vec::new(),
         }
     }
 }

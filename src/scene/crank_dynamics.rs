@@ -557,6 +557,7 @@ impl super::Procedure for DynamicsScene {
                 ScaleBar::length(problem.drawing.length_scale, "mm"),
                 ScaleBar::force(problem.drawing.force_scale),
             ],
+            plate: Vec::new(),
         }
     }
 }

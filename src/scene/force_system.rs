@@ -352,6 +352,7 @@ impl super::Procedure for ForceSystemScene {
                 ScaleBar::length(d.length_scale, "m"),
                 ScaleBar::force(d.force_scale),
             ],
+            plate: Vec::new(),
         }
     }
 }

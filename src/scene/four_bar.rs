@@ -185,6 +185,7 @@ impl super::Procedure for FourBarScene {
             title: p.title.clone(),
             source: p.source.clone(),
             scales: vec![ScaleBar::length(p.length_scale, "m")],
+            plate: Vec::new(),
         }
     }
 }

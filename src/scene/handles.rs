@@ -10,6 +10,7 @@
 
 use super::{AnyScene, ForceSystemScene, SliderCrankScene, TrussScene};
 use crate::protocol::{Board, Geom, Label, ObjId, Role};
+use crate::statics::funicular::FORCE_LETTER;
 
 /// A given point the page lets the student drag.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -128,7 +129,7 @@ fn force_system(f: &ForceSystemScene, scene: &AnyScene, board: &Board) -> Vec<Ha
             continue;
         };
         out.push(Handle {
-            name: format!("point of application of F{k}"),
+            name: format!("point of application of {FORCE_LETTER}{k}"),
             object: at,
             drag: Drag::Point {
                 field: format!("/forces/{i}/at_m"),
@@ -137,11 +138,11 @@ fn force_system(f: &ForceSystemScene, scene: &AnyScene, board: &Board) -> Vec<Ha
             },
         });
         if force.angle_deg.is_some() && force.kg.is_some() {
-            if let Some(tail) = given_points(board, Label::indexed("F", k)).next() {
+            if let Some(tail) = given_points(board, Label::indexed(FORCE_LETTER, k)).next() {
                 // The arrow runs from its tail to the point of application: the force's angle
                 // is the direction of the centre seen from the tail, φ + 180°.
                 out.push(Handle {
-                    name: format!("direction of F{k}"),
+                    name: format!("direction of {FORCE_LETTER}{k}"),
                     object: tail,
                     drag: Drag::Angle {
                         field: format!("/forces/{i}/angle_deg"),

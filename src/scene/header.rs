@@ -40,6 +40,11 @@ macro_rules! scene_struct {
             /// it stands for: `graphostatik check` shows them as book rows.
             #[serde(default, skip_serializing_if = "Vec::is_empty")]
             pub book: Vec<$crate::scene::BookValue>,
+            /// What the book's plate letters, each written as a scene writes a name (`P1`
+            /// for P₁, `II`, `s`, a shear field's `+`): the figure must write every one
+            /// of them, which the figure test holds for the bundled scenes.
+            #[serde(default, skip_serializing_if = "Vec::is_empty")]
+            pub plate: Vec<String>,
             $($(#[$fm])* pub $field: $ty,)*
         }
 
@@ -61,6 +66,9 @@ macro_rules! scene_struct {
             }
             fn preview(&self) -> Option<&$crate::scene::Preview> {
                 self.preview.as_ref()
+            }
+            fn plate(&self) -> &[String] {
+                &self.plate
             }
         }
     };

@@ -238,6 +238,7 @@ impl super::Procedure for OffsetScene {
             title: p.title.clone(),
             source: p.source.clone(),
             scales,
+            plate: Vec::new(),
         }
     }
 }

@@ -28,6 +28,8 @@ pub trait SceneHeader {
     fn book(&self) -> &[crate::scene::BookValue];
     /// What the live page lets a student move besides the given points.
     fn preview(&self) -> Option<&crate::scene::Preview>;
+    /// What the book's plate letters (the scene's `plate` field).
+    fn plate(&self) -> &[String];
 }
 
 /// A type with a JSON Schema where the `schema` feature is on (the default, with `cli`);

@@ -37,6 +37,7 @@ impl Entry {
                 parse_scene::<P>(text, ctx).map(|(scene, problem)| AnyScene {
                     problem: AnyProblem {
                         book: super::procedure::SceneHeader::book(&scene).into(),
+                        plate: super::procedure::SceneHeader::plate(&scene).into(),
                         inner: Box::new(ProblemOf::<P>(problem)),
                     },
                     scene: Box::new(scene),
@@ -376,6 +377,7 @@ impl AnyScene {
 pub struct AnyProblem {
     inner: Box<dyn DynProblem>,
     book: std::sync::Arc<[super::BookValue]>,
+    plate: std::sync::Arc<[String]>,
 }
 
 impl Clone for AnyProblem {
@@ -383,6 +385,7 @@ impl Clone for AnyProblem {
         AnyProblem {
             inner: self.inner.clone_box(),
             book: self.book.clone(),
+            plate: self.plate.clone(),
         }
     }
 }
@@ -410,9 +413,13 @@ impl AnyProblem {
         Ok(board)
     }
 
-    /// Title, source and scale bars of the figure.
+    /// Title, source and scale bars of the figure, and what the book's plate letters (the
+    /// scene's `plate` field).
     pub fn figure_meta(&self) -> FigureMeta {
-        self.inner.figure_meta()
+        FigureMeta {
+            plate: self.plate.to_vec(),
+            ..self.inner.figure_meta()
+        }
     }
 
     /// The knobs of the procedure that trade time for accuracy

@@ -241,6 +241,7 @@ impl super::Procedure for YokeScene {
             title: problem.title.clone(),
             source: problem.source.clone(),
             scales,
+            plate: Vec::new(),
         }
     }
 }

@@ -294,6 +294,7 @@ impl super::Procedure for ShaftScene {
                 ScaleBar::force(d.force_scale),
                 ScaleBar::moment(ms),
             ],
+            plate: Vec::new(),
         }
     }
 }

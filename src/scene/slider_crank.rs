@@ -569,6 +569,7 @@ impl Procedure for SliderCrankScene {
             title: problem.title.clone(),
             source,
             scales,
+            plate: Vec::new(),
         }
     }
 }

@@ -203,6 +203,7 @@ impl super::Procedure for LinkScene {
             title: p.title.clone(),
             source: p.source.clone(),
             scales,
+            plate: Vec::new(),
         }
     }
 }

@@ -1255,6 +1255,7 @@ impl super::Procedure for TrussScene {
             scales: std::iter::once(ScaleBar::length(d.length_scale, "m"))
                 .chain(cremona::force_scales(&problem.cases, d).map(ScaleBar::force))
                 .collect(),
+            plate: Vec::new(),
         }
     }
 }

@@ -295,7 +295,7 @@ fn an_author_edits_a_scene_and_moves_a_slider_in_the_live_preview() {
     wait_for(&s, ready, &json!(true), "the engine loaded from the server");
     policy_holds(&s, "the live preview");
     assert!(s.text("#wt-count").starts_with("step "));
-    assert!(s.text("#wt-sliders").contains("direction of F2"));
+    assert!(s.text("#wt-sliders").contains("direction of P2"));
     // A slider replays the construction in the page as it moves, on the step shown.
     s.keys("\u{E011}"); // Home
     s.keys("\u{E014}\u{E014}"); // → →

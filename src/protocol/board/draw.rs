@@ -199,9 +199,10 @@ impl Board {
     }
 
     /// Divides a circle into `n` equal parts from `start_deg` (one step, `n` points), the
-    /// points lettered `label` with their index from 0; where `start_named`, the first point
-    /// (at `start_deg`: a point named already, such as a crank's dead centre A) is left
-    /// unlettered, so that it is named once.
+    /// points named `label` with their index from 0 and lettered as a crowd is
+    /// ([`Label::of_crowd`]: each of twelve, every second of 24 …); where `start_named`, the
+    /// first point (at `start_deg`: a point named already, such as a crank's dead centre A)
+    /// is left unlettered, so that it is named once.
     #[allow(clippy::too_many_arguments)]
     pub fn divide_circle(
         &mut self,
@@ -222,7 +223,7 @@ impl Board {
             let name = if k == 0 && start_named {
                 Label::NONE
             } else {
-                Label::indexed(label, k as u32)
+                Label::of_crowd(label, k as u32, n)
             };
             let id = self.add(name, Role::Given, || Geom::Point { at: p });
             if self.recording {

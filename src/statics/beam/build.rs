@@ -373,7 +373,11 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
                 Role::Given.named("I"),
                 N_START,
             );
-            let s = polygon::strings(self.b, &rays, &start, false, StringStyle::RESULT, |_, j| {
+            // A load left of A (an overhang) has the polygon start on its own vertical: the
+            // start is the first corner, I, not a point of its own beside it.
+            let on_first = (self.forces.first()).is_some_and(|f| f.x <= self.beam.supports[0]);
+            let style = StringStyle::RESULT;
+            let s = polygon::strings(self.b, &rays, &start, on_first, style, |_, j| {
                 Ok(verticals[j])
             })?;
             self.funicular = Some(Funicular {
@@ -404,11 +408,21 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
             let fp = self.force_plan()?;
             (fp.load_line, fp.pts[0], fp.pts[fp.pts.len() - 1], fp.pole)
         };
+        // The last string's cut with B's vertical is the polygon's last corner (LH Abb. 24's
+        // V, after I on A's and one on each load's) where every load stands before B; the
+        // first string's cut with A's is I itself where no load stands before A.
+        let n = self.forces.len();
+        let b_last = self.forces.iter().all(|f| f.x < self.beam.supports[1]);
+        let on_first = (self.forces.first()).is_some_and(|f| f.x <= self.beam.supports[0]);
+        let ib_name = match b_last {
+            true => Label::named(polygon::roman(n + 1 + usize::from(!on_first))),
+            false => Label::quiet("IB", 0),
+        };
         let b = &mut *self.b;
         let ia = b.meet_point(&first, &sv[0], Label::quiet("IA", 0), N_END_STRING_CUT)?;
-        let ib = b.meet_point(&last, &sv[1], Label::quiet("IB", 0), N_END_STRING_CUT)?;
-        let s = Label::plain("s");
-        let cl = polygon::closing(b, &ia, &ib, &pole, s, Role::Given, Role::Auxiliary)?;
+        let ib = b.meet_point(&last, &sv[1], ib_name, N_END_STRING_CUT)?;
+        let s = (Label::plain("s"), Role::Given);
+        let cl = polygon::closing(b, &ia, &ib, &pole, s, n + 1, Role::Auxiliary)?;
         let c = b.meet_point(&cl.ray, &load_line, Label::plain("C"), N_C)?;
         let kg = self.kg;
         let a_val = b.measure(&p0, &c, &load_line, kg, Label::quiet("A", 0), N_REACTION_A);

@@ -223,6 +223,12 @@ pub(super) const N_SHEAR_DIAGRAM: Note = note(
     "LH Abb. 25",
     Topic::Shear,
 );
+pub(super) const N_SHEAR_SIGN: Note = note(
+    "the shear's sign: positive up (+), negative down (−)",
+    Some("Vorzeichen der Querkraft"),
+    "LH C.5, Abb. 25",
+    Topic::Shear,
+);
 pub(super) const N_SHEAR_ZERO: Note = note(
     "the sloping shear line cuts the zero line: largest moment",
     Some("Nullpunkt der Querkraft"),

@@ -79,7 +79,13 @@ impl BeamConstruction<'_, '_> {
         let v_max = self.ra.abs().max(self.rb.abs()).max(self.total.abs()) / fs;
         let at = Point::new(self.sx(self.beam.ends[0]), lowest - GAP_MM - v_max);
         let b = &mut *self.b;
-        let base0 = b.point(at, Role::Given.named("V"), N_SHEAR_BASE_START);
+        // The base line's start keeps its name in the protocol: the figure names the
+        // diagram V, once.
+        let base0 = b.point(
+            at,
+            Role::Given.labelled(Label::quiet("V", 0)),
+            N_SHEAR_BASE_START,
+        );
         let x = Vector::new(1.0, 0.0);
         let base = b.line_dir(&base0, x, Role::Axis, N_SHEAR_BASE)?;
         Ok((base0, base))
@@ -168,6 +174,7 @@ impl BeamConstruction<'_, '_> {
             Role::Result.labelled(v),
             N_SHEAR_DIAGRAM,
         );
+        self.shear_signs(&rows, &ordinates);
         self.shear_diagram = Some(ShearDiagram {
             base0,
             base,
@@ -176,6 +183,43 @@ impl BeamConstruction<'_, '_> {
             ordinates,
         });
         Ok(rows)
+    }
+
+    /// The signs of the shear diagram's fields, as LH marks them ("die positiven Querkräfte
+    /// (mit + bezeichnet) nach oben …, die negativen (mit − bezeichnet) nach unten", C.5,
+    /// Abb. 25): in the middle of each field between two events, halfway up its ordinate,
+    /// where the field is wide and high enough for the sign (a heading's 4 mm type).
+    fn shear_signs(&mut self, rows: &[ShearRow], ordinates: &[H<Point>]) {
+        /// The least width and height (mm) of a field that takes a sign.
+        const SIGNED_MM: f64 = 6.0;
+        let fs = self.dr.force_scale;
+        for (e, pair) in rows.windows(2).enumerate() {
+            // The field's two ordinates: right of event e, left of event e + 1; under a
+            // distributed load it runs straight between them and may cross the base line,
+            // where it is two fields, each signed.
+            let (a, b) = (ordinates[2 * e + 1], ordinates[2 * e + 2]);
+            let (v0, v1) = (pair[0].right / fs, pair[1].left / fs);
+            let (x0, x1) = (self.sx(pair[0].x), self.sx(pair[1].x));
+            let base_y = a.g.y - v0;
+            let mut parts = vec![(x0, v0, x1, v1)];
+            if v0 * v1 < 0.0 {
+                let xz = x0 + (x1 - x0) * v0 / (v0 - v1);
+                parts = vec![(x0, v0, xz, 0.0), (xz, 0.0, x1, v1)];
+            }
+            for (xa, va, xb, vb) in parts {
+                // At the part's centroid across, halfway up its ordinate there.
+                let t = (va.abs() + 2.0 * vb.abs()) / (3.0 * (va.abs() + vb.abs()));
+                let (x, v) = (xa + t * (xb - xa), va + t * (vb - va));
+                if xb - xa < SIGNED_MM || v.abs() < SIGNED_MM {
+                    continue;
+                }
+                // A heading's text stands 4 mm under its cell's top, some 2.5 mm wide.
+                let at = Point::new(x - 1.2, base_y + 0.5 * v + 2.6);
+                let sign = if v > 0.0 { "+" } else { "−" };
+                let text = vec![vec![sign.to_string()]];
+                (self.b).table(at, text, &[a.id, b.id], N_SHEAR_SIGN);
+            }
+        }
     }
 
     /// The event at x, if there is one.
@@ -248,7 +292,7 @@ impl BeamConstruction<'_, '_> {
         let metres = Scale::new(1.0 / self.k, "m");
         let b = &mut *self.b;
         let sl = b.line_through(&pa, &pb, Role::Construction, N_SHEAR_ZERO)?;
-        let z = b.meet_point(&sl, &d.base, Label::plain("x0"), N_SHEAR_ZERO)?;
+        let z = b.meet_point(&sl, &d.base, Label::indexed("x", 0), N_SHEAR_ZERO)?;
         let xm = b.measure(&d.base0, &z, &d.base, metres, Label::NONE, N_SHEAR_ZERO_X);
         let x0 = self.beam.ends[0] + xm.g;
         let pp = self.ratio_point(p, (x0 - u.from) / (u.to - u.from))?;

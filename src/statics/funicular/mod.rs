@@ -18,7 +18,7 @@ pub mod polygon;
 mod system;
 
 pub use auxiliary::parallel_pair_by_auxiliary_forces;
-pub use system::construct_system;
+pub use system::{construct_system, FORCE_LETTER};
 
 use crate::kernel::{Line, Point, Vector};
 use crate::protocol::H;

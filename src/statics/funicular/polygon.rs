@@ -73,8 +73,43 @@ pub struct Rays {
     pub rays: Vec<H<Line>>,
 }
 
+/// The number a ray or string is lettered with: LH numbers them from 1 (Abb. 24: "die
+/// Polstrahlen 1, 2, 3 und 4 …, worauf parallel zu diesen das Seilpolygon … gebildet wird"),
+/// a string with its ray's number.
+fn number(k: usize) -> Label {
+    Label::named((k + 1).to_string())
+}
+
+/// The Roman numeral of `k` ≥ 1 (I, II, … XL …), as LH names the corners of a funicular
+/// polygon (Abb. 24: I, II, III, IV and V).
+pub fn roman(k: usize) -> String {
+    const DIGITS: [(usize, &str); 13] = [
+        (1000, "M"),
+        (900, "CM"),
+        (500, "D"),
+        (400, "CD"),
+        (100, "C"),
+        (90, "XC"),
+        (50, "L"),
+        (40, "XL"),
+        (10, "X"),
+        (9, "IX"),
+        (5, "V"),
+        (4, "IV"),
+        (1, "I"),
+    ];
+    let (mut k, mut out) = (k, String::new());
+    for (v, d) in DIGITS {
+        while k >= v {
+            out.push_str(d);
+            k -= v;
+        }
+    }
+    out
+}
+
 /// Places the pole (chosen by the caller's rule) and draws its rays to the corners of the
-/// force polygon.
+/// force polygon, numbered 1, 2, … as LH numbers them.
 ///
 /// # Errors
 /// [`ConstructionError::Unsupported`] on input `pole` where the pole lies on a corner.
@@ -90,7 +125,7 @@ pub fn pole_and_rays(
     for (i, p) in corners.iter().enumerate() {
         b.set_context_within(base.as_deref(), || format!("ray {i}"));
         let ray = b
-            .line_through(&pole, p, Role::Construction, N_RAY)
+            .line_through(&pole, p, Role::Construction.labelled(number(i)), N_RAY)
             .map_err(|_| {
                 ConstructionError::unsupported(
                     "pole",
@@ -106,19 +141,27 @@ pub fn pole_and_rays(
 }
 
 /// How the strings are drawn: as the result (force systems, beams, whose polygon is the
-/// moment area) or as construction lines (truss reactions).
+/// moment area) or as construction lines (truss reactions). Either way each string bears
+/// its ray's number.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct StringStyle {
     /// The role of the strings.
     pub role: Role,
+    /// Whether the polygon's corners are lettered with Roman numerals (LH Abb. 24's I, II,
+    /// …): not where the polygon is drawn over a truss whose joints bear those names.
+    pub corners_named: bool,
 }
 
 impl StringStyle {
-    /// Heavy: the polygon is a result.
-    pub const RESULT: StringStyle = StringStyle { role: Role::Result };
-    /// Thin: the polygon only serves the reactions.
+    /// Heavy: the polygon is a result, its corners named.
+    pub const RESULT: StringStyle = StringStyle {
+        role: Role::Result,
+        corners_named: true,
+    };
+    /// Thin: the polygon only serves the reactions; its corners stay unnamed.
     pub const CONSTRUCTION: StringStyle = StringStyle {
         role: Role::Construction,
+        corners_named: false,
     };
 }
 
@@ -136,7 +179,8 @@ pub struct Strings {
 /// action (made on demand by `line_of_action(board, j)`, so that a caller may draw it just
 /// before its cut) the next string from the corner where the last one cuts it. Where
 /// `start_on_first` the start is the first corner itself (it lies on the first line of
-/// action); otherwise the first string is cut with it too.
+/// action); otherwise the first string is cut with it too. Each string bears its ray's
+/// number; the corners are named on from the start's I (II, III, …) where the style says.
 ///
 /// # Errors
 /// [`ConstructionError::Unsupported`] on input `pole` where a string runs parallel to the
@@ -156,7 +200,8 @@ pub fn strings(
     // which the line of action, the caller's own step, keeps.
     let base = b.context();
     b.set_context_within(base.as_deref(), || "string 0".into());
-    strings.push(b.parallel(&rays[0], start, style.role, N_STRING));
+    let string = |k: usize| style.role.labelled(number(k));
+    strings.push(b.parallel(&rays[0], start, string(0), N_STRING));
     for j in 0..n {
         let corner = if j == 0 && start_on_first {
             *start
@@ -166,7 +211,12 @@ pub fn strings(
             b.set_context_within(base.as_deref(), || {
                 format!("corner {j} of the string polygon")
             });
-            b.meet_point(&strings[j], &line, Label::quiet("II", j as u32), N_CORNER)
+            // The start is I; the corners follow on, II on the first line of action cut.
+            let name = match style.corners_named {
+                true => Label::named(roman(j + 1 + usize::from(!start_on_first))),
+                false => Label::quiet("II", j as u32),
+            };
+            b.meet_point(&strings[j], &line, name, N_CORNER)
                 .map_err(|_| {
                     ConstructionError::unsupported(
                         "pole",
@@ -179,7 +229,7 @@ pub fn strings(
         };
         corners.push(corner);
         b.set_context_within(base.as_deref(), || format!("string {}", j + 1));
-        strings.push(b.parallel(&rays[j + 1], &corner, style.role, N_STRING));
+        strings.push(b.parallel(&rays[j + 1], &corner, string(j + 1), N_STRING));
     }
     b.restore_context(base);
     Ok(Strings { strings, corners })
@@ -196,19 +246,21 @@ pub struct Closing {
 }
 
 /// Draws the closing line from `a` to `z` (the outer strings' points on the two supports'
-/// lines) and its parallel through the pole; `label` and `role` are the caller's drawing
-/// choice for the line, `ray_role` for the parallel.
+/// lines) and its parallel through the pole, numbered after the `rays` rays as LH numbers
+/// it (Abb. 24: "durch O die Parallele I–V = 5"); `label` and `role` are the caller's
+/// drawing choice for the line, `ray_role` for the parallel.
+#[allow(clippy::too_many_arguments)]
 pub fn closing(
     b: &mut Board,
     a: &H<Point>,
     z: &H<Point>,
     pole: &H<Point>,
-    label: Label,
-    role: Role,
+    (label, role): (Label, Role),
+    rays: usize,
     ray_role: Role,
 ) -> Result<Closing, ConstructionError> {
     let line = b.line_through(a, z, role.labelled(label), N_CLOSING)?;
-    let ray = b.parallel(&line, pole, ray_role, N_CLOSING_RAY);
+    let ray = b.parallel(&line, pole, ray_role.labelled(number(rays)), N_CLOSING_RAY);
     Ok(Closing { line, ray })
 }
 
@@ -288,11 +340,12 @@ mod tests {
             &a,
             &z,
             &o,
-            Label::NONE,
-            Role::Given,
+            (Label::NONE, Role::Given),
+            4,
             Role::Auxiliary,
         )
         .unwrap();
+        assert_eq!(b.object(c.ray.id).unwrap().label.to_string(), "5");
         assert!(crate::kernel::cross(&c.line.g.dir, &c.ray.g.dir).abs() < 1e-15);
         assert_eq!(c.ray.g.origin, o.g);
     }

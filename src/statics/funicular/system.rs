@@ -13,6 +13,10 @@ use crate::protocol::{Board, ConstructionError, Cut, Label, Note, Role, Scale, H
 
 mod collinear;
 
+/// The letter of the given forces, numbered from 1: LH's P₁, P₂, … (C.2, Abb. 22: "die
+/// vier Kräfte P₁, P₂, P₃ und P₄").
+pub const FORCE_LETTER: &str = "P";
+
 /// Length of a force's arrow in the position plan (mm): the plan shows place and sense only.
 const ARROW_MM: f64 = 12.0;
 /// Gap between the position plan and the force polygon (mm).
@@ -230,7 +234,7 @@ impl System<'_, '_> {
                 Role::Given.labelled(Label::quiet("a", i as u32 + 1)),
                 N_APPLICATION,
             );
-            let label = Label::indexed("F", i as u32 + 1);
+            let label = Label::indexed(FORCE_LETTER, i as u32 + 1);
             let tail = b.point(
                 a.g - v * (ARROW_MM / len),
                 Role::Given.labelled(label),
