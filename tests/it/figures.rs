@@ -96,6 +96,9 @@ fn figures_of_random_scenes_read_like_plates() {
         for k in 0..6 {
             let mut v = doc.clone();
             vary(&mut v, &mut rng);
+            // The plate's names are the book's figure's: a variant's corner may fall where
+            // the book's does not (off the sheet's lettering region), so they are not held.
+            v.as_object_mut().map(|m| m.remove("plate"));
             let name = format!("{} variant {k}", p.display());
             match report(&v.to_string(), &name) {
                 Some(r) => {
