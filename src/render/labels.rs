@@ -280,6 +280,20 @@ fn between(p: Point, d: f64, (w, depth): (f64, f64)) -> impl Iterator<Item = Poi
         })
 }
 
+/// The sixteen positions around `p` at distance `d`: [`around`]'s eight, then
+/// [`between`]'s.
+fn all_around(p: Point, d: f64, size: (f64, f64)) -> impl Iterator<Item = Point> {
+    around(p, d, size).into_iter().chain(between(p, d, size))
+}
+
+/// The hierarchy's box of a stroke from `a` to `b`.
+fn stroke_box(a: Point, b: Point) -> Aabb {
+    gridded(&Aabb::new(
+        PPoint::new(a.x.min(b.x), a.y.min(b.y)),
+        PPoint::new(a.x.max(b.x), a.y.max(b.y)),
+    ))
+}
+
 /// What is on the sheet already: the boxes placed and the strokes drawn, each in a
 /// hierarchy for the queries.
 struct Taken {
@@ -430,15 +444,7 @@ pub(crate) fn place(
         .into_iter()
         .filter_map(|s| clipped(&region, s.a, s.b).map(|(a, b)| Stroke { a, b, ..s }))
         .collect();
-    let stroke_boxes: Vec<Aabb> = strokes
-        .iter()
-        .map(|Stroke { a: p, b: q, .. }| {
-            gridded(&Aabb::new(
-                PPoint::new(p.x.min(q.x), p.y.min(q.y)),
-                PPoint::new(p.x.max(q.x), p.y.max(q.y)),
-            ))
-        })
-        .collect();
+    let stroke_boxes: Vec<Aabb> = strokes.iter().map(|s| stroke_box(s.a, s.b)).collect();
     let mut taken = Taken {
         bvh: Bvh::new(),
         boxes: Vec::new(),
@@ -644,12 +650,10 @@ fn place_one(taken: &mut Taken, r: &Request) -> Option<Placed> {
 /// One pass of [`place_one`]: the best place near, along the line, then on the rings, whose
 /// box crosses no more than `allow`.
 fn place_pass(taken: &Taken, r: &Request, allow: Crossing) -> Option<Placed> {
-    let near = std::iter::once(r.first).chain(NEAR.iter().flat_map(|k| {
-        let d = k * LABEL_OFFSET;
-        around(r.anchor, d, r.size)
-            .into_iter()
-            .chain(between(r.anchor, d, r.size))
-    }));
+    let near = std::iter::once(r.first).chain(
+        NEAR.iter()
+            .flat_map(|k| all_around(r.anchor, k * LABEL_OFFSET, r.size)),
+    );
     if let Some(at) = least_crossed(taken, r.size, near, allow) {
         return Some(Placed { at, leader: None });
     }
@@ -662,8 +666,7 @@ fn place_pass(taken: &Taken, r: &Request, allow: Crossing) -> Option<Placed> {
         }
     }
     RINGS.iter().find_map(|k| {
-        let d = k * LABEL_OFFSET;
-        let ring = (around(r.anchor, d, r.size).into_iter()).chain(between(r.anchor, d, r.size));
+        let ring = all_around(r.anchor, k * LABEL_OFFSET, r.size);
         let at = least_crossed(taken, r.size, ring, allow)?;
         let end = nearest_on(&text_box(at, r.size), r.anchor);
         Some(Placed {
@@ -832,14 +835,7 @@ pub(crate) fn lines_through(
     let strokes: Vec<Stroke> = (strokes.iter().copied())
         .filter(|s| finite(&s.a) && finite(&s.b))
         .collect();
-    let leaves: Vec<Aabb> = (strokes.iter())
-        .map(|s| {
-            gridded(&Aabb::new(
-                PPoint::new(s.a.x.min(s.b.x), s.a.y.min(s.b.y)),
-                PPoint::new(s.a.x.max(s.b.x), s.a.y.max(s.b.y)),
-            ))
-        })
-        .collect();
+    let leaves: Vec<Aabb> = strokes.iter().map(|s| stroke_box(s.a, s.b)).collect();
     let bvh = Bvh::from_leaves(Default::default(), &leaves);
     let mut out = (0, 0);
     for o in board.drawn_objects() {
