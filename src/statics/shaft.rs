@@ -14,12 +14,12 @@
 //! is laid off by dividing both into eighths and adding three eighths of the one to five
 //! eighths of the other (Abb. 29).
 
-use super::beam::{construct_beam_at, BeamDrawing, BeamRequest, BeamResults};
+use super::beam::{construct_beam_numbered, BeamDrawing, BeamRequest, BeamResults};
 use super::{Beam, PointLoad};
 use crate::kernel::tolerance::REL_POSITION_EPS;
-use crate::kernel::{Point, Vector};
+use crate::kernel::{Line, Point, Vector};
 use crate::protocol::{
-    note, Board, ConstructionError, Label, Note, Role, Scale, Topic, Trace, Weighted, H,
+    note, Board, ConstructionError, Label, Note, Reading, Role, Scale, Topic, Trace, Weighted, H,
 };
 use serde::Serialize;
 
@@ -310,36 +310,22 @@ fn torque_ordinate(
     Ok((x, ax))
 }
 
-/// The torque rectangle CFGH of height `x` mm over the twisted stretch (LH Abb. 28).
+/// The torque rectangle CFGH of height `x` mm over the twisted stretch, above the base of
+/// the moment areas (LH Abb. 28: C where the area begins, H under the pulley).
 fn torque_rectangle(
     b: &mut Board,
-    t: &Torque,
+    (c, h): (&H<Point>, &H<Point>),
+    base: &H<Line>,
     x: f64,
-    dr: &BeamDrawing,
-    base_y: f64,
 ) -> Result<(), ConstructionError> {
-    let k = 1000.0 / dr.length_scale;
-    let c = b.point(
-        Point::new(t.from * k + dr.origin.x, base_y),
-        Role::Given.named("C"),
-        N_TQ_CORNER,
-    );
-    let base = b.line_dir(&c, Vector::new(1.0, 0.0), Role::Axis, N_TQ_CORNER)?;
-    let h = b.lay_off(
-        &c,
-        &base,
-        (t.to - t.from) * k,
-        Role::Construction.named("H"),
-        N_TQ_CORNER,
-    )?;
-    let up_c = b.perpendicular(&base, &c, Role::Construction, N_TQ_CORNER);
-    let up_h = b.perpendicular(&base, &h, Role::Construction, N_TQ_CORNER);
+    let up_c = b.perpendicular(base, c, Role::Construction, N_TQ_CORNER);
+    let up_h = b.perpendicular(base, h, Role::Construction, N_TQ_CORNER);
     // x is laid off upwards: the perpendicular's direction may point either way.
     let sx = if up_c.g.dir.y >= 0.0 { x } else { -x };
-    let f = b.lay_off(&c, &up_c, sx, Role::Construction.named("F"), N_TQ_CORNER)?;
-    let top = b.parallel(&base, &f, Role::Construction, N_TQ_CORNER);
+    let f = b.lay_off(c, &up_c, sx, Role::Construction.named("F"), N_TQ_CORNER)?;
+    let top = b.parallel(base, &f, Role::Construction, N_TQ_CORNER);
     let g = b.meet_point(&top, &up_h, Label::plain("G"), N_TQ_CORNER)?;
-    b.curve(&[c, f, g, h, c], Trace::Polygon, Role::Result, N_TQ_RECT);
+    b.curve(&[*c, f, g, *h, *c], Trace::Polygon, Role::Result, N_TQ_RECT);
     Ok(())
 }
 
@@ -372,7 +358,8 @@ pub fn construct_shaft(
     shaft: &Shaft,
     dr: &BeamDrawing,
 ) -> Result<Vec<ShaftRow>, ConstructionError> {
-    let xs = sections(shaft);
+    let k = 1000.0 / dr.length_scale;
+    let xs = samples(shaft, k);
     let beam = |loads: &[PointLoad]| Beam {
         supports: shaft.supports,
         ends: shaft.ends,
@@ -382,8 +369,9 @@ pub fn construct_shaft(
     let (b1, b2) = (beam(&shaft.plane_1), beam(&shaft.plane_2));
     let ms = dr.length_scale / 1000.0 * dr.pole_distance; // kg·m per mm of ordinate
     let mut y_next = dr.origin.y;
-    let r1 = plane_moments(b, &b1, dr, &xs, &mut y_next)?;
-    let r2 = plane_moments(b, &b2, dr, &xs, &mut y_next)?;
+    let r1 = plane_moments(b, &b1, dr, &xs, &mut y_next, 0)?;
+    let n1 = shaft.plane_1.len() as u32;
+    let r2 = plane_moments(b, &b2, dr, &xs, &mut y_next, n1)?;
     // The triangles of Abb. 27 rise by up to |y1| + |y2| above their base points.
     let largest = |r: &BeamResults| {
         r.sections
@@ -392,19 +380,32 @@ pub fn construct_shaft(
             .fold(0.0, f64::max)
     };
     let rise = (largest(&r1) + largest(&r2)) / ms;
-    let torque_mm = torque(b, shaft, dr, &mut y_next)?;
-    let c = Combine {
+    let torque_mm = torque(b, shaft, dr, y_next)?;
+    // The resultant and ideal moment areas on one base, the torque rectangle above it.
+    let area_y = y_next - torque_mm.map_or(0.0, |(x, _)| x);
+    y_next = area_y - rise - AREA_GAP_MM;
+    // One plane alone, sagging everywhere: its moment area is the bending moment area, read
+    // off at each section already (LH Abb. 28 draws no parallelogram).
+    let sagging = |r: &BeamResults| r.sections.iter().all(|s| s.moment >= 0.0);
+    let single = match (shaft.plane_1.is_empty(), shaft.plane_2.is_empty()) {
+        (false, true) if sagging(&r1) => Some(&r1),
+        (true, false) if sagging(&r2) => Some(&r2),
+        _ => None,
+    };
+    let mut c = Combine {
         shaft,
         dr,
-        k: 1000.0 / dr.length_scale,
+        k,
         ms,
-        y0: y_next - rise,
+        y0: y_next - if single.is_some() { 0.0 } else { rise },
         mref: largest(&r1)
             .max(largest(&r2))
             .max(shaft.torque.map_or(0.0, |t| t.md.abs() * shaft.alpha0)),
         s1: super::closed_form::Sections::new(&b1),
         s2: super::closed_form::Sections::new(&b2),
-        torque_mm,
+        torque_mm: torque_mm.map(|(_, ax)| ax),
+        next_q: f64::NEG_INFINITY,
+        next_r: f64::NEG_INFINITY,
     };
     let tol = REL_POSITION_EPS * (shaft.ends[1] - shaft.ends[0]).max(1.0);
     let at = |rows: &[super::SectionRow], x: f64| {
@@ -412,33 +413,55 @@ pub fn construct_shaft(
             .find(|s| (s.x - x).abs() <= tol)
             .map_or(0.0, |s| s.moment)
     };
+    let read = |x: f64| {
+        let r = single?;
+        let i = r.sections.iter().position(|s| (s.x - x).abs() <= tol)?;
+        r.moment_handles.get(i).copied()
+    };
     let mut rows = Vec::new();
+    let mut area = Vec::new();
     for &x in &xs {
         let (m1, m2) = (at(&r1.sections, x), at(&r2.sections, x));
-        let mb = c.combined(b, x, m1, m2)?;
+        let mb = match read(x) {
+            Some(h) => c.single(b, x, h),
+            None => c.combined(b, x, m1, m2)?,
+        };
+        let mb_value = mb.map_or(0.0, |h| h.g);
         let md = shaft
             .torque
             .filter(|t| x >= t.from - tol && x <= t.to + tol)
             .map_or(0.0, |t| t.md);
         // The ideal moment (Abb. 29), where a torque acts; elsewhere it equals M_b.
         let mi = if md != 0.0 {
-            c.ideal(b, x, mb, md)?
+            Some(c.ideal(b, x, mb_value, md)?)
         } else {
-            mb
+            None
         };
+        let mi_value = mi.map_or(mb_value, |h| h.g);
         let diameter_mm = shaft
             .kb
-            .map(|kb| 10.0 * super::sizing::shaft_diameter_cm(100.0 * mi, kb));
+            .map(|kb| 10.0 * super::sizing::shaft_diameter_cm(100.0 * mi_value, kb));
         rows.push(ShaftRow {
             x,
             m1,
             m2,
-            mb,
+            mb: mb_value,
             md,
-            mi,
+            mi: mi_value,
             diameter_mm,
         });
+        area.push(AreaSection { x, mb, mi });
     }
+    let areas = Areas {
+        shaft,
+        k,
+        ms,
+        origin_x: dr.origin.x,
+        base_y: area_y,
+        events: sections(shaft),
+        tol,
+    };
+    areas.draw(b, &area, torque_mm.map(|(x, _)| x))?;
     Ok(rows)
 }
 
@@ -457,6 +480,45 @@ fn sections(shaft: &Shaft) -> Vec<f64> {
     xs
 }
 
+/// Sheet mm between two sections of a stretch where the resultant or ideal moment is curved
+/// (LH C.7: "durch häufige Wiederholung der Konstruktion"), at most.
+const SAMPLE_MM: f64 = 12.0;
+/// Equal parts a curved stretch between two sections is divided into, at most.
+const MAX_PARTS: usize = 6;
+
+/// The sections the moments are constructed at: the ends, the [`sections`], and, between two
+/// of them where M_b or M_i is curved (loads in both planes at an angle; a torque), equal
+/// parts of at most [`SAMPLE_MM`] on the sheet. Where M_b and M_i are straight between two
+/// sections (one plane, no torque), the two sections give the line.
+fn samples(shaft: &Shaft, k: f64) -> Vec<f64> {
+    let mut events = shaft.ends.to_vec();
+    events.extend(sections(shaft));
+    events.sort_by(f64::total_cmp);
+    let span = shaft.ends[1] - shaft.ends[0];
+    let tol = REL_POSITION_EPS * span.max(1.0);
+    events.dedup_by(|a, b| (*a - *b).abs() <= tol);
+    let both = !shaft.plane_1.is_empty()
+        && !shaft.plane_2.is_empty()
+        && crate::kernel::angle::sin_cos_deg(shaft.angle_deg).0.abs() > REL_POSITION_EPS;
+    let twisted = |a: f64, b: f64| {
+        shaft
+            .torque
+            .is_some_and(|t| t.md != 0.0 && a >= t.from - tol && b <= t.to + tol)
+    };
+    let mut xs = vec![events[0]];
+    for w in events.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        if both || twisted(a, b) {
+            let parts = ((b - a) * k / SAMPLE_MM)
+                .ceil()
+                .clamp(1.0, MAX_PARTS as f64) as usize;
+            xs.extend((1..parts).map(|j| a + (b - a) * j as f64 / parts as f64));
+        }
+        xs.push(b);
+    }
+    xs
+}
+
 /// The moment area of one plane at `y_next` (moved below it), measured at the sections; a
 /// plane without loads has no moment area to draw: its ordinates are zero.
 fn plane_moments(
@@ -465,6 +527,7 @@ fn plane_moments(
     dr: &BeamDrawing,
     xs: &[f64],
     y_next: &mut f64,
+    first_load: u32,
 ) -> Result<BeamResults, ConstructionError> {
     if bm.point_loads.is_empty() {
         return Ok(BeamResults {
@@ -490,7 +553,7 @@ fn plane_moments(
     };
     let mut d = *dr;
     d.origin = Point::new(dr.origin.x, *y_next);
-    let r = construct_beam_at(b, bm, &d, &req, xs)?;
+    let r = construct_beam_numbered(b, bm, &d, &req, xs, first_load)?;
     let ms = dr.length_scale / 1000.0 * dr.pole_distance;
     let depth = r
         .sections
@@ -498,35 +561,32 @@ fn plane_moments(
         .map(|s| s.moment.abs())
         .fold(0.0, f64::max)
         / ms;
-    *y_next -= depth + 90.0;
+    *y_next -= depth + PLANE_GAP_MM;
     Ok(r)
 }
 
-/// The torque: its ordinate by Gl. 12 when the radius is known (else at the moment scale),
-/// and its rectangle, at `y_next` (moved below it). Returns α₀ times the ordinate (mm), the
-/// leg of the ideal moment's triangle.
+/// The torque's ordinate by Gl. 12 when the radius is known (its pole triangle right of the
+/// shaft at `y`), else at the moment scale. Returns the ordinate x and α₀·x (mm), the leg of
+/// the ideal moment's triangle.
 fn torque(
     b: &mut Board,
     shaft: &Shaft,
     dr: &BeamDrawing,
-    y_next: &mut f64,
-) -> Result<Option<f64>, ConstructionError> {
+    y: f64,
+) -> Result<Option<(f64, f64)>, ConstructionError> {
     let Some(t) = shaft.torque.filter(|t| t.md != 0.0) else {
         return Ok(None);
     };
     let ms = dr.length_scale / 1000.0 * dr.pole_distance;
     let k = 1000.0 / dr.length_scale;
     let direct = t.md.abs() / ms;
-    let (x, ax) = match t.radius {
+    Ok(Some(match t.radius {
         Some(r) => {
-            let at = Point::new(shaft.ends[1] * k + dr.origin.x + 40.0, *y_next);
+            let at = Point::new(shaft.ends[1] * k + dr.origin.x + 40.0, y);
             torque_ordinate(b, &t, r, shaft.alpha0, dr, at, Scale::new(ms, "kg·m"))?
         }
         None => (direct, shaft.alpha0 * direct),
-    };
-    torque_rectangle(b, &t, x, dr, *y_next - x)?;
-    *y_next -= x + 40.0;
-    Ok(Some(ax))
+    }))
 }
 
 /// The combination of the two planes and the torque at each section.
@@ -545,7 +605,21 @@ struct Combine<'a> {
     s2: super::closed_form::Sections<'a>,
     /// α₀ × the torque ordinate (mm), where the torque was drawn.
     torque_mm: Option<f64>,
+    /// The leftmost sheet x the next parallelogram (Abb. 27) may take: each stands at its
+    /// section or, where the one before reaches further, a gap right of it.
+    next_q: f64,
+    /// The same for the triangles of Abb. 29.
+    next_r: f64,
 }
+
+/// Sheet mm from the deepest ordinate of one plane's moment area to the next plane's beam,
+/// which carries its load arrows and their letters above it.
+const PLANE_GAP_MM: f64 = 40.0;
+/// Sheet mm from the deepest ordinate of the moment areas to the constructions of Abb. 27.
+const AREA_GAP_MM: f64 = 25.0;
+
+/// Sheet mm between two neighbouring constructions of Abb. 27 or Abb. 29.
+const BESIDE_MM: f64 = 4.0;
 
 impl Combine<'_> {
     /// The closed form of M_b at x.
@@ -553,13 +627,38 @@ impl Combine<'_> {
         combined(self.s1.moment(x), self.s2.moment(x), self.shaft.angle_deg)
     }
 
+    /// The moment of the one loaded plane, read off its moment area, as M_b (no
+    /// parallelogram: LH Abb. 28), none where it is nought.
+    fn single(&mut self, b: &mut Board, x: f64, h: H<f64>) -> Option<H<f64>> {
+        if h.g <= b.tolerance().length * self.ms {
+            return None;
+        }
+        if let Some(kb) = self.shaft.kb {
+            self.diameter(b, x, &h, kb);
+        }
+        Some(h)
+    }
+
     /// The parallelogram of the ordinates (Abb. 27) at the section's base point: y₁ up, y₂
     /// turned through α from it; the diagonal is M_b, read off and checked.
-    fn combined(&self, b: &mut Board, x: f64, m1: f64, m2: f64) -> Result<f64, ConstructionError> {
+    fn combined(
+        &mut self,
+        b: &mut Board,
+        x: f64,
+        m1: f64,
+        m2: f64,
+    ) -> Result<Option<H<f64>>, ConstructionError> {
         let (ms, mscale) = (self.ms, Scale::new(self.ms, "kg·m"));
         let (sin_a, cos_a) = crate::kernel::angle::sin_cos_deg(self.shaft.angle_deg);
-        let at = Point::new(x * self.k + self.dr.origin.x, self.y0);
-        let q = b.point(at, Role::Given.labelled(Label::quiet("Q", 0)), N_BASE);
+        // y₂ reaches -y₂·sin α to the side of the base point.
+        let side = -m2 / ms * sin_a;
+        let qx = (x * self.k + self.dr.origin.x).max(self.next_q - side.min(0.0));
+        self.next_q = qx + side.max(0.0) + BESIDE_MM;
+        let q = b.point(
+            Point::new(qx, self.y0),
+            Role::Given.labelled(Label::quiet("Q", 0)),
+            N_BASE,
+        );
         let (aux, con) = (Role::Auxiliary, Role::Construction);
         let dir1 = b.line_dir(&q, Vector::new(0.0, 1.0), aux, N_DIR1)?;
         let e1 = b.lay_off(&q, &dir1, m1 / ms, con, N_Y1)?;
@@ -567,7 +666,7 @@ impl Combine<'_> {
         let dir2 = b.line_dir(&e1, Vector::new(-sin_a, cos_a), aux, N_DIR2)?;
         let e2 = b.lay_off(&e1, &dir2, m2 / ms, con, N_Y2)?;
         if (e2.g - q.g).norm() <= b.tolerance().length {
-            return Ok(0.0);
+            return Ok(None);
         }
         let yl = b.line_through(&q, &e2, Role::Result, N_Y)?;
         let h = b.measure(&q, &e2, &yl, mscale, Label::quiet("Mb", 0), N_MB);
@@ -577,7 +676,7 @@ impl Combine<'_> {
         if let Some(kb) = self.shaft.kb {
             self.diameter(b, x, &h, kb);
         }
-        Ok(h.g)
+        Ok(Some(h))
     }
 
     /// The diameter the bending moment read off at x needs, d = ∛(M_b / 0.1·k_b) (LH I
@@ -617,16 +716,24 @@ impl Combine<'_> {
     /// The ideal moment by the construction of Abb. 29 (Gl. 13): legs M_b and α₀·M_d, the
     /// hypotenuse, both divided into eighths; 3/8 of the one and 5/8 of the other laid end to
     /// end on the leg, read off and checked.
-    fn ideal(&self, b: &mut Board, x: f64, mb: f64, md: f64) -> Result<f64, ConstructionError> {
+    fn ideal(
+        &mut self,
+        b: &mut Board,
+        x: f64,
+        mb: f64,
+        md: f64,
+    ) -> Result<H<f64>, ConstructionError> {
         let (ms, mscale) = (self.ms, Scale::new(self.ms, "kg·m"));
-        let at = Point::new(x * self.k + self.dr.origin.x + 4.0, self.y0 - 10.0);
+        let rx = (x * self.k + self.dr.origin.x + BESIDE_MM).max(self.next_r);
+        self.next_r = rx + mb.abs() / ms + BESIDE_MM;
+        let tx = self.torque_mm.unwrap_or(self.shaft.alpha0 * md.abs() / ms);
+        let at = Point::new(rx, self.y0 - 10.0 - tx);
         let base = b.point(at, Role::Given.labelled(Label::quiet("R", 0)), N_BASE);
         let (aux, con) = (Role::Auxiliary, Role::Construction);
         let leg = b.line_dir(&base, Vector::new(1.0, 0.0), aux, N_LEG_Y)?;
         let ey = b.lay_off(&base, &leg, mb / ms, con, N_LEG_Y)?;
         let normal = b.perpendicular(&leg, &ey, aux, N_NORMAL);
         let alpha0 = self.shaft.alpha0;
-        let tx = self.torque_mm.unwrap_or(alpha0 * md.abs() / ms);
         let ex = b.lay_off(&ey, &normal, tx, con, N_LEG_X)?;
         // The hypotenuse drawn; its five eighths are taken off it below.
         b.line_through(&base, &ex, con, N_HYP)?;
@@ -644,6 +751,225 @@ impl Combine<'_> {
             self.mref,
             || ideal(self.mb_closed(x), md, alpha0),
         );
-        Ok(yi.g)
+        Ok(yi)
+    }
+}
+
+const N_AREA_BASE: Note = note(
+    "base of the resultant and ideal moment areas",
+    Some("Momentenfläche"),
+    "LH C.7-8, Abb. 26, 28",
+    Topic::Moment,
+);
+const N_AREA_MB: Note = note(
+    "resultant bending ordinate y carried to the section with the dividers",
+    Some("resultierendes Biegungsmoment"),
+    "LH C.7, Abb. 26",
+    Topic::Moment,
+);
+const N_AREA_LINE: Note = note(
+    "the resultant bending moment area",
+    Some("Momentenfläche UVWZ"),
+    "LH C.7, Abb. 26",
+    Topic::Moment,
+);
+const N_AREA_MI: Note = note(
+    "ideal ordinate y_i laid off from the bending line towards the torque",
+    Some("ideelles Moment"),
+    "LH C.8, Gl. 13, Abb. 28",
+    Topic::Moment,
+);
+const N_AREA_CURVE: Note = note(
+    "the curve RN of the ideal moment: the ideal moment area CEDHNR",
+    Some("ideelle Momentenfläche"),
+    "LH C.8, Abb. 28",
+    Topic::Moment,
+);
+
+/// One section of the moment areas: the resultant bending moment read off there (none where
+/// it is zero) and the ideal moment (where a torque acts).
+struct AreaSection {
+    x: f64,
+    mb: Option<H<f64>>,
+    mi: Option<H<f64>>,
+}
+
+/// The resultant bending moment area on a base of its own, its ordinates carried over from
+/// the parallelograms (LH Abb. 26: UVWZ), and, where a torque acts, the torque rectangle CFGH
+/// above the base and the ideal moment laid off from the bending line through the base
+/// towards it: the curve RN, the ideal moment area CEDHNR (LH Abb. 28).
+struct Areas<'a> {
+    shaft: &'a Shaft,
+    k: f64,
+    ms: f64,
+    origin_x: f64,
+    base_y: f64,
+    /// Supports, loads and the ends of the torque.
+    events: Vec<f64>,
+    tol: f64,
+}
+
+impl Areas<'_> {
+    fn at(&self, x: f64, y: f64) -> bool {
+        (x - y).abs() <= self.tol
+    }
+
+    /// The book's letters: on the base U … Z (C, H, E with a torque), at the bending line V, W …
+    /// under the loads (D at the end of the torque).
+    fn names(&self, secs: &[AreaSection]) -> (Vec<Label>, Vec<Label>) {
+        let t = self.shaft.torque.filter(|t| t.md != 0.0);
+        let last = secs.len() - 1;
+        let mut next = ["V", "W", "X", "Y"].into_iter();
+        let loads: Vec<f64> = self
+            .shaft
+            .plane_1
+            .iter()
+            .chain(&self.shaft.plane_2)
+            .map(|l| l.x)
+            .collect();
+        let mut feet = Vec::new();
+        let mut tops = Vec::new();
+        for (i, s) in secs.iter().enumerate() {
+            let foot = match t {
+                Some(t) if self.at(s.x, t.from) => Label::plain("C"),
+                Some(t) if self.at(s.x, t.to) => Label::plain("H"),
+                Some(_) if i == last => Label::plain("E"),
+                None if i == 0 => Label::plain("U"),
+                None if i == last => Label::plain("Z"),
+                _ => Label::NONE,
+            };
+            let top = match t {
+                Some(t) if self.at(s.x, t.to) && s.mb.is_some() => Label::plain("D"),
+                None if s.mb.is_some() && loads.iter().any(|&x| self.at(s.x, x)) => {
+                    next.next().map_or(Label::NONE, Label::plain)
+                }
+                _ => Label::NONE,
+            };
+            feet.push(foot);
+            tops.push(top);
+        }
+        (feet, tops)
+    }
+
+    /// Feet on the base, M_b carried down from each, M_i laid back up from the bending line.
+    fn draw(
+        &self,
+        b: &mut Board,
+        secs: &[AreaSection],
+        torque_x: Option<f64>,
+    ) -> Result<(), ConstructionError> {
+        let (feet_names, top_names) = self.names(secs);
+        let x0 = secs[0].x;
+        let left = b.point(
+            Point::new(x0 * self.k + self.origin_x, self.base_y),
+            Role::Given.labelled(feet_names[0].clone()),
+            N_AREA_BASE,
+        );
+        let base = b.line_dir(&left, Vector::new(1.0, 0.0), Role::Axis, N_AREA_BASE)?;
+        let (aux, con) = (Role::Auxiliary, Role::Construction);
+        let (mut feet, mut tops, mut ideals) = (vec![], vec![], vec![]);
+        for (i, s) in secs.iter().enumerate() {
+            let foot = if i == 0 {
+                left
+            } else {
+                let name = feet_names[i].clone();
+                b.lay_off(
+                    &left,
+                    &base,
+                    (s.x - x0) * self.k,
+                    con.labelled(name),
+                    N_AREA_BASE,
+                )?
+            };
+            let top = match &s.mb {
+                Some(mb) => {
+                    let down = b.line_dir(&foot, Vector::new(0.0, -1.0), aux, N_AREA_MB)?;
+                    let reading = Reading {
+                        value: mb,
+                        per_mm: self.ms,
+                    };
+                    let mark = con.labelled(top_names[i].clone());
+                    b.transfer(&foot, &down, reading, mark, N_AREA_MB)?
+                }
+                None => foot,
+            };
+            if let Some(mi) = &s.mi {
+                let name = if ideals.is_empty() {
+                    Label::plain("R")
+                } else if secs.get(i + 1).is_none_or(|n| n.mi.is_none()) {
+                    Label::plain("N")
+                } else {
+                    Label::NONE
+                };
+                ideals.push((i, self.ideal_point(b, &top, mi, name)?));
+            }
+            feet.push(foot);
+            tops.push(top);
+        }
+        self.outline(b, &tops, Role::Result, N_AREA_LINE);
+        self.ideal_outline(b, &tops, &ideals);
+        if let (Some(t), Some(x)) = (self.shaft.torque, torque_x) {
+            let c = secs.iter().position(|s| self.at(s.x, t.from));
+            let h = secs.iter().position(|s| self.at(s.x, t.to));
+            if let (Some(c), Some(h)) = (c, h) {
+                torque_rectangle(b, (&feet[c], &feet[h]), &base, x)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// The ideal ordinate laid off from the bending line `top` up through the base.
+    fn ideal_point(
+        &self,
+        b: &mut Board,
+        top: &H<Point>,
+        mi: &H<f64>,
+        name: Label,
+    ) -> Result<H<Point>, ConstructionError> {
+        let up = b.line_dir(top, Vector::new(0.0, 1.0), Role::Auxiliary, N_AREA_MI)?;
+        let reading = Reading {
+            value: mi,
+            per_mm: self.ms,
+        };
+        b.transfer(
+            top,
+            &up,
+            reading,
+            Role::Construction.labelled(name),
+            N_AREA_MI,
+        )
+    }
+
+    /// The ideal curve RN through the ideal points, its last point named N, and the verticals
+    /// at its ends, which close the area CEDHNR with the bending line.
+    fn ideal_outline(&self, b: &mut Board, tops: &[H<Point>], ideals: &[(usize, H<Point>)]) {
+        let (Some(&(i0, p0)), Some(&(i1, p1))) = (ideals.first(), ideals.last()) else {
+            return;
+        };
+        if i1 == i0 {
+            return;
+        }
+        let pts: Vec<H<Point>> = ideals.iter().map(|(_, p)| *p).collect();
+        b.curve(&pts, Trace::Smooth, Role::Result, N_AREA_CURVE);
+        b.segment(&tops[i0], &p0, Role::Result, N_AREA_CURVE);
+        b.segment(&tops[i1], &p1, Role::Result, N_AREA_CURVE);
+    }
+
+    /// The bending line through `pts`, smooth between two events (where it is curved), with
+    /// corners at the events.
+    fn outline(&self, b: &mut Board, pts: &[H<Point>], role: Role, note: Note) {
+        let mut from = 0;
+        for i in 1..pts.len() {
+            let x = (pts[i].g.x - self.origin_x) / self.k;
+            if i == pts.len() - 1 || self.events.iter().any(|&e| self.at(x, e)) {
+                let trace = if i - from > 1 {
+                    Trace::Smooth
+                } else {
+                    Trace::Polygon
+                };
+                b.curve(&pts[from..=i], trace, role, note.clone());
+                from = i;
+            }
+        }
     }
 }

@@ -119,6 +119,9 @@ pub(super) struct BeamConstruction<'a, 'b> {
     pub(super) zero_moments: Vec<f64>,
     pub(super) parabolas: Vec<Parabola>,
     pub(super) shear_diagram: Option<ShearDiagram>,
+    /// The number of the first point load less one: a shaft's second plane goes on from the
+    /// first's (LH Abb. 26: P₁ in one plane, P₂ in the other).
+    pub(super) first_load: u32,
 }
 
 impl<'a, 'b> BeamConstruction<'a, 'b> {
@@ -164,6 +167,7 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
             zero_moments: Vec::new(),
             parabolas: Vec::new(),
             shear_diagram: None,
+            first_load: 0,
         }
     }
 
@@ -254,7 +258,7 @@ impl<'a, 'b> BeamConstruction<'a, 'b> {
             Kind::Point(i) => {
                 let y = self.sy(ARROW_MM * f.p.signum());
                 let b = &mut *self.b;
-                let label = Label::indexed("P", i as u32 + 1);
+                let label = Label::indexed("P", self.first_load + i as u32 + 1);
                 let tail = b.point(Point::new(xs, y), Role::Given.labelled(label), N_LOAD_ARROW);
                 b.segment(&tail, &at, Role::Force, N_LOAD_ARROW);
                 None

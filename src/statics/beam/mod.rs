@@ -80,10 +80,24 @@ pub fn construct_beam_at(
     req: &BeamRequest,
     extra_sections: &[f64],
 ) -> Result<BeamResults, ConstructionError> {
+    construct_beam_numbered(b, beam, dr, req, extra_sections, 0)
+}
+
+/// [`construct_beam_at`] with the point loads numbered from `first_load + 1` (a shaft's
+/// second plane goes on from the first's).
+pub(crate) fn construct_beam_numbered(
+    b: &mut Board,
+    beam: &Beam,
+    dr: &BeamDrawing,
+    req: &BeamRequest,
+    extra_sections: &[f64],
+    first_load: u32,
+) -> Result<BeamResults, ConstructionError> {
     let frame = LocalFrame::of(beam);
     if frame.dx != 0.0 {
         let sections: Vec<f64> = extra_sections.iter().map(|x| x - frame.dx).collect();
-        let r = construct_beam_at(b, &frame.to_local(beam), dr, req, &sections)?;
+        let local = frame.to_local(beam);
+        let r = construct_beam_numbered(b, &local, dr, req, &sections, first_load)?;
         return Ok(frame.to_global(r));
     }
     check_sections(beam, extra_sections)?;
@@ -92,6 +106,7 @@ pub fn construct_beam_at(
     let nloads = beam.point_loads.len() + beam.uniform_loads.len() * (dr.parabola_divisions + 4);
     b.reserve(64 + 40 * nloads, 64 + 60 * nloads);
     let mut c = BeamConstruction::new(b, beam, dr);
+    c.first_load = first_load;
     let reactions = c.reactions()?.values;
     if req.moment_area || req.shear_diagram {
         c.moment_area()?;

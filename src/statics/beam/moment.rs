@@ -99,7 +99,11 @@ impl BeamConstruction<'_, '_> {
                     // beam of a million loads names a million sections.
                     let mut what = String::with_capacity(8);
                     what.push('P');
-                    crate::fmt::push_uint_padded(&mut what, i as u64 + 1, 1);
+                    crate::fmt::push_uint_padded(
+                        &mut what,
+                        u64::from(self.first_load) + i as u64 + 1,
+                        1,
+                    );
                     self.push_section(f.x, what, m);
                 }
                 Kind::Uniform(i) => self.parabola(j, i)?,
