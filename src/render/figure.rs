@@ -1055,14 +1055,23 @@ pub fn inspect(meta: &FigureMeta, board: &Board) -> FigureReport {
 /// written where a label of that name (`P1` for P₁) stands on the sheet, alone or joined
 /// to another's, or a table's cell reads it (a shear field's `+`).
 fn unnamed(meta: &FigureMeta, board: &Board, placed: &Placement) -> Vec<String> {
+    // A name set with a subscript digit (B₁) is the scene's "B1".
+    let plain = |s: String| -> String {
+        s.chars()
+            .map(|c| match c {
+                '₀'..='₉' => char::from(b'0' + (c as u32 - '₀' as u32) as u8),
+                _ => c,
+            })
+            .collect()
+    };
     let mut written = std::collections::HashSet::new();
     for o in board.drawn_objects() {
         if placed.get(o.id).is_some() {
-            written.insert(o.label.to_string());
-            written.extend(placed.joined(o.id).iter().map(|l| l.to_string()));
+            written.insert(plain(o.label.to_string()));
+            written.extend(placed.joined(o.id).iter().map(|l| plain(l.to_string())));
         }
         if let Geom::Table { rows, .. } = &o.geom {
-            written.extend(rows.iter().flatten().map(|c| c.trim().to_string()));
+            written.extend(rows.iter().flatten().map(|c| plain(c.trim().to_string())));
         }
     }
     (meta.plate.iter())
