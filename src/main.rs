@@ -78,6 +78,15 @@ enum Command {
         /// Resolution of a PNG, pixels per inch of the sheet.
         #[arg(long, default_value_t = render::export::DEFAULT_DPI)]
         dpi: f32,
+        /// The paper to set each figure on: a4, a3, a2, a1 or fit (the figure's own size, the
+        /// default unless the scene names a `paper`; this overrides the scene's). On A-series
+        /// paper the sheet is reduced at a stated scale (1 : 1 to 1 : 1.4, written under it,
+        /// the scales' names restated) so that labels stay at least 2.5 mm high; a figure
+        /// too large is split into pages by its rows of parts (name-1.svg, name-2.svg, …, one
+        /// PNG a page, one PDF of all pages) or set on larger paper, up to A1, and render
+        /// says which. TikZ is always the sheet at its own size.
+        #[arg(long, value_parser = paper_arg)]
+        paper: Option<graphostatik::protocol::Paper>,
     },
     /// Print the table of every analytic check; exit status 1 if any fails.
     Check {
@@ -350,7 +359,8 @@ fn run(cli: Cli) -> Result<ExitCode, Fail> {
             jobs,
             format,
             dpi,
-        } => render_cmd(&scenes, &out, jobs, &Exports::new(format, dpi)?),
+            paper,
+        } => render_cmd(&scenes, &out, jobs, &Exports::new(format, dpi, paper)?),
         Command::Check {
             scene,
             json,
@@ -425,6 +435,17 @@ fn man_cmd() -> Result<ExitCode, Fail> {
     Ok(ExitCode::SUCCESS)
 }
 
+/// A paper named on the command line (`--paper a4`).
+fn paper_arg(name: &str) -> Result<graphostatik::protocol::Paper, String> {
+    graphostatik::protocol::Paper::parse(name).ok_or_else(|| {
+        format!(
+            "unknown paper `{}`: give one of {}",
+            graphostatik::fmt::clip(name, 20),
+            graphostatik::protocol::Paper::NAMES.join(", ")
+        )
+    })
+}
+
 /// A file format `render` writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, clap::ValueEnum)]
 enum Format {
@@ -432,7 +453,8 @@ enum Format {
     Svg,
     /// PNG at `--dpi` (recorded in the file), text in the shipped DejaVu Serif.
     Png,
-    /// PDF, one page the size of the sheet (true scale), text as the font's outlines.
+    /// PDF, one page the size of the sheet (true scale) or of the paper (a page per page of
+    /// a figure split by `--paper`), text as the font's outlines.
     Pdf,
     /// A TikZ picture for LaTeX, one scope per step.
     Tikz,
@@ -453,16 +475,26 @@ impl Format {
 struct Exports {
     formats: Vec<Format>,
     dpi: f32,
+    /// The paper asked for on the command line, over the scene's own.
+    paper: Option<graphostatik::protocol::Paper>,
 }
 
 impl Exports {
-    fn new(mut formats: Vec<Format>, dpi: f32) -> Result<Exports, Fail> {
+    fn new(
+        mut formats: Vec<Format>,
+        dpi: f32,
+        paper: Option<graphostatik::protocol::Paper>,
+    ) -> Result<Exports, Fail> {
         formats.sort();
         formats.dedup();
         if formats.contains(&Format::Png) {
             render::export::check_dpi(dpi).map_err(|e| Fail(format!("--dpi: {e}")))?;
         }
-        Ok(Exports { formats, dpi })
+        Ok(Exports {
+            formats,
+            dpi,
+            paper,
+        })
     }
 
     /// One constructed scene drawn: its SVG and TikZ (which need the board) and what is to be
@@ -470,9 +502,12 @@ impl Exports {
     /// PNG and PDF are made from the SVG afterwards, each a job of its own.
     fn draw(&self, f: &Path, p: &AnyProblem, board: &Board) -> Result<Drawn, Fail> {
         let meta = p.figure_meta();
-        let (svg, lettering) = render::figure_lettered(&meta, board, None);
+        let paper = self.paper.or(p.paper()).unwrap_or_default();
+        let set = render::paper::on_paper(&meta, board, paper);
+        let lettering = set.lettering;
         // What the crowd rule did, said unless `--quiet` (a failed check is said always).
         let mut said = Vec::new();
+        said.extend(set.said);
         if lettering.left_out > 0 {
             said.push(format!(
                 "{} of {} labels left out, no room for them on the sheet",
@@ -497,19 +532,25 @@ impl Exports {
                 .map_err(|e| Fail(format!("{}: {e}", f.display())))
         });
         Ok(Drawn {
-            svg,
+            svgs: set.pages.into_iter().map(|p| p.svg).collect(),
             tikz,
             note,
             objects: board.object_count(),
         })
     }
 
-    /// The raster and page formats, made from a drawn figure's SVG.
-    fn export(&self, f: &Path, fmt: Format, svg: &str) -> Result<Vec<u8>, Fail> {
+    /// The raster and page formats, made from a drawn figure's pages: a PNG per page, one
+    /// PDF of every page.
+    fn export(&self, f: &Path, fmt: Format, svgs: &[String]) -> Result<Vec<Vec<u8>>, Fail> {
         let failed = |e: render::export::ExportError| Fail(format!("{}: {e}", f.display()));
         match fmt {
-            Format::Png => render::export::png(svg, self.dpi).map_err(failed),
-            Format::Pdf => render::export::pdf(svg).map_err(failed),
+            Format::Png => (svgs.iter())
+                .map(|svg| render::export::png(svg, self.dpi).map_err(failed))
+                .collect(),
+            Format::Pdf => {
+                let pages: Vec<&str> = svgs.iter().map(String::as_str).collect();
+                Ok(vec![render::export::pdf_pages(&pages).map_err(failed)?])
+            }
             Format::Svg | Format::Tikz => unreachable!("drawn with the board"),
         }
     }
@@ -543,11 +584,18 @@ fn render_cmd(
         let stem = f.file_stem().map(|s| s.to_string_lossy().into_owned());
         let written = written?;
         notes.extend(written.note);
-        for (ext, bytes) in written.files {
-            batch.add_bytes(
-                out.join(format!("{}.{ext}", stem.as_deref().unwrap_or_default())),
-                bytes,
-            );
+        for (tail, bytes) in written.files {
+            let target = out.join(format!("{}{tail}", stem.as_deref().unwrap_or_default()));
+            // A page of a figure split into pages (x-1.svg) that another scene writes too.
+            if let Some(first) = seen.insert(target.clone(), f).filter(|&g| g != f.as_path()) {
+                return Err(Fail(format!(
+                    "{}: would write {} as {} does too: rename one of them",
+                    f.display(),
+                    target.display(),
+                    first.display()
+                )));
+            }
+            batch.add_bytes(target, bytes);
         }
     }
     let mut made = MadeDirs::default();
@@ -570,13 +618,18 @@ fn render_cmd(
 /// The files of one scene (its format and bytes, in the order of the formats) and a note for
 /// stderr once they are written.
 struct Written {
-    files: Vec<(&'static str, Vec<u8>)>,
+    /// Each file's name after the scene's (`.svg`, `-2.png` for a figure's second page).
+    files: Vec<(String, Vec<u8>)>,
     note: Option<String>,
 }
 
+/// A PNG per page or one PDF of every page, or why not.
+type Made = Result<Vec<Vec<u8>>, Fail>;
+
 /// A scene constructed and drawn: what needs its board.
 struct Drawn {
-    svg: String,
+    /// The figure's SVG, or its pages' where it is set on paper and split.
+    svgs: Vec<String>,
     tikz: Option<Result<Vec<u8>, Fail>>,
     note: Option<String>,
     /// The board's objects: what a PNG or PDF of it costs (some 76 µs each).
@@ -629,9 +682,9 @@ fn render_all(
     let made =
         graphostatik::jobs::dearest_first_on(&raster, objects, workers, prepare, |&(i, fmt)| {
             let d = drawn[i].as_ref().expect("exports only of drawn scenes");
-            exports.export(&files[i], fmt, &d.svg)
+            exports.export(&files[i], fmt, &d.svgs)
         });
-    let mut made: std::collections::BTreeMap<(usize, Format), Result<Vec<u8>, Fail>> =
+    let mut made: std::collections::BTreeMap<(usize, Format), Made> =
         raster.into_iter().zip(made).collect();
     let written = drawn.into_iter().enumerate().map(|(i, d)| {
         let mut d = d?;
@@ -640,14 +693,24 @@ fn render_all(
         }
         let mut out = Vec::new();
         for &fmt in &exports.formats {
-            let bytes = match fmt {
-                Format::Svg => std::mem::take(&mut d.svg).into_bytes(),
-                Format::Tikz => d.tikz.take().expect("drawn when asked for")?,
+            let files = match fmt {
+                Format::Svg => (d.svgs.iter_mut())
+                    .map(|s| std::mem::take(s).into_bytes())
+                    .collect(),
+                Format::Tikz => vec![d.tikz.take().expect("drawn when asked for")?],
                 _ => made
                     .remove(&(i, fmt))
                     .expect("made for every drawn scene")?,
             };
-            out.push((fmt.extension(), bytes));
+            let paged = files.len() > 1;
+            for (k, bytes) in files.into_iter().enumerate() {
+                let page = if paged {
+                    format!("-{}", k + 1)
+                } else {
+                    String::new()
+                };
+                out.push((format!("{page}.{}", fmt.extension()), bytes));
+            }
         }
         Ok(Written {
             files: out,

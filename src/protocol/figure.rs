@@ -118,6 +118,96 @@ impl FigureMeta {
     }
 }
 
+/// The paper a figure is set on (`render --paper`, a scene's `paper` field): an A-series
+/// sheet (ISO 216), turned portrait or landscape whichever takes the figure at the smaller
+/// reduction, or `fit`, the figure's own size (the default: a sheet exactly as large as its
+/// drawing, at 1 : 1).
+///
+/// ```
+/// use graphostatik::protocol::Paper;
+/// assert_eq!(Paper::A4.size_mm(), Some([210.0, 297.0]));
+/// assert_eq!(Paper::A3.larger(), Some(Paper::A2));
+/// assert_eq!(Paper::parse("a1"), Some(Paper::A1));
+/// assert_eq!(Paper::parse("A5"), None);
+/// ```
+#[derive(
+    Debug,
+    Clone,
+    Copy,
+    PartialEq,
+    Eq,
+    PartialOrd,
+    Ord,
+    Default,
+    serde::Serialize,
+    serde::Deserialize,
+)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(rename_all = "lowercase")]
+pub enum Paper {
+    /// The figure's own size, at 1 : 1 (the default).
+    #[default]
+    Fit,
+    /// A4, 210 × 297 mm.
+    A4,
+    /// A3, 297 × 420 mm.
+    A3,
+    /// A2, 420 × 594 mm.
+    A2,
+    /// A1, 594 × 841 mm: the largest a figure is set on; a figure too large for it at the
+    /// smallest lettering allowed is split into pages.
+    A1,
+}
+
+impl Paper {
+    /// The names a scene or `--paper` gives, in the order of [`Paper::parse`]'s list.
+    pub const NAMES: &'static [&'static str] = &["fit", "a4", "a3", "a2", "a1"];
+
+    /// The paper named `name` (`"a4"`, `"A4"`, `"fit"`), or `None`.
+    pub fn parse(name: &str) -> Option<Paper> {
+        match name.to_ascii_lowercase().as_str() {
+            "fit" => Some(Paper::Fit),
+            "a4" => Some(Paper::A4),
+            "a3" => Some(Paper::A3),
+            "a2" => Some(Paper::A2),
+            "a1" => Some(Paper::A1),
+            _ => None,
+        }
+    }
+
+    /// Width and height of the sheet upright (mm, ISO 216); `None` for [`Paper::Fit`].
+    pub fn size_mm(self) -> Option<[f64; 2]> {
+        match self {
+            Paper::Fit => None,
+            Paper::A4 => Some([210.0, 297.0]),
+            Paper::A3 => Some([297.0, 420.0]),
+            Paper::A2 => Some([420.0, 594.0]),
+            Paper::A1 => Some([594.0, 841.0]),
+        }
+    }
+
+    /// The next larger A-series sheet, up to [`Paper::A1`]; `None` past it and for `Fit`.
+    pub fn larger(self) -> Option<Paper> {
+        match self {
+            Paper::A4 => Some(Paper::A3),
+            Paper::A3 => Some(Paper::A2),
+            Paper::A2 => Some(Paper::A1),
+            Paper::A1 | Paper::Fit => None,
+        }
+    }
+
+    /// The name as a sheet writes it: `A4`, `fit`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Paper::Fit => "fit",
+            Paper::A4 => "A4",
+            Paper::A3 => "A3",
+            Paper::A2 => "A2",
+            Paper::A1 => "A1",
+        }
+    }
+}
+
 /// The next "nice" scale (1, 2, 2.5, 5 × 10ᵏ) at or above `x`: how a drafter picks a scale
 /// for a figure of a wanted size. A non-positive or non-finite `x` gives 1.
 ///

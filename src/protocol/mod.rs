@@ -18,7 +18,7 @@ pub use accuracy::{ErrorModel, WorstCut};
 pub use board::{Board, CheckEntry, Cut, Reading, Scale, Trace, Turning, Weighted, H};
 pub use config::{BoardConfig, Hand, Mode};
 pub use error::{ConstructionError, CutOutcome};
-pub use figure::{nice_at_least, FigureMeta, ScaleBar};
+pub use figure::{nice_at_least, FigureMeta, Paper, ScaleBar};
 pub use reference::ReferenceRow;
 pub use request::request_set;
 pub use step::{

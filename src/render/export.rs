@@ -150,6 +150,93 @@ pub fn pdf(svg: &str) -> Result<Vec<u8>, ExportError> {
     svg2pdf::to_pdf(&t, options, page).map_err(|e| ExportError::Pdf(e.to_string()))
 }
 
+/// Pages as one PDF, each page the size of its SVG (an A4 page of 210 × 297 mm is a PDF page
+/// of 595.28 × 841.89 pt), in order: a figure split into pages (`render --paper`). One page is
+/// exactly what [`pdf`] writes. Each page is converted by svg2pdf as a form XObject and set
+/// on its page; objects are numbered in page order, so the bytes are the same on every run.
+pub fn pdf_pages(svgs: &[&str]) -> Result<Vec<u8>, ExportError> {
+    use pdf_writer::{Content, Name, Pdf, Rect, Ref};
+    if let [one] = svgs {
+        return pdf(one);
+    }
+    let mut alloc = Ref::new(1);
+    let (catalog, tree_ref) = (alloc.bump(), alloc.bump());
+    let mut doc = Pdf::new();
+    let mut kids = Vec::with_capacity(svgs.len());
+    let mut chunks = Vec::with_capacity(svgs.len());
+    for svg in svgs {
+        let t = tree(svg)?;
+        let options = svg2pdf::ConversionOptions {
+            embed_text: false,
+            ..Default::default()
+        };
+        let (chunk, root) =
+            svg2pdf::to_chunk(&t, options).map_err(|e| ExportError::Pdf(e.to_string()))?;
+        let mut map = std::collections::HashMap::new();
+        let chunk = chunk.renumber(|old| *map.entry(old).or_insert_with(|| alloc.bump()));
+        let root = map
+            .get(&root)
+            .copied()
+            .ok_or(ExportError::Pdf("no page".into()))?;
+        let (page, content) = (alloc.bump(), alloc.bump());
+        // usvg's pixels, 96 to the inch, as points, 72 to the inch.
+        let (w, h) = (t.size().width() * 0.75, t.size().height() * 0.75);
+        let mut c = Content::new();
+        c.transform([w, 0.0, 0.0, h, 0.0, 0.0])
+            .x_object(Name(b"S1"));
+        doc.stream(content, &c.finish());
+        let mut p = doc.page(page);
+        p.media_box(Rect::new(0.0, 0.0, w, h));
+        p.parent(tree_ref);
+        p.contents(content);
+        p.resources().x_objects().pair(Name(b"S1"), root);
+        drop(p);
+        kids.push(page);
+        chunks.push(chunk);
+    }
+    doc.catalog(catalog).pages(tree_ref);
+    doc.pages(tree_ref).kids(kids).count(svgs.len() as i32);
+    for c in &chunks {
+        doc.extend(c);
+    }
+    Ok(doc.finish())
+}
+
+/// The box of everything a figure or page draws and writes, `[x0, y0, x1, y1]` in mm from
+/// its top left corner (strokes at their width, text as the shipped font sets it): what
+/// must lie within a page.
+pub fn ink_box(svg: &str) -> Result<[f32; 4], ExportError> {
+    // The leaves' boxes: a group's own box counts its origin in.
+    fn walk(g: &usvg::Group, out: &mut [f32; 4]) {
+        for node in g.children() {
+            let b = match node {
+                usvg::Node::Group(g) => {
+                    walk(g, out);
+                    continue;
+                }
+                usvg::Node::Path(p) => p.abs_stroke_bounding_box(),
+                usvg::Node::Text(t) => t.abs_stroke_bounding_box(),
+                usvg::Node::Image(i) => i.abs_bounding_box(),
+            };
+            *out = [
+                out[0].min(b.left()),
+                out[1].min(b.top()),
+                out[2].max(b.right()),
+                out[3].max(b.bottom()),
+            ];
+        }
+    }
+    let t = tree(svg)?;
+    let mut b = [
+        f32::INFINITY,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::NEG_INFINITY,
+    ];
+    walk(t.root(), &mut b);
+    Ok(b.map(|v| v * MM_PER_PX))
+}
+
 /// Millimetres of the sheet per usvg pixel (usvg works at 96 pixels per inch).
 const MM_PER_PX: f32 = 25.4 / 96.0;
 /// TeX points per millimetre.

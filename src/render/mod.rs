@@ -13,6 +13,7 @@ pub mod forces;
 mod ink;
 mod labels;
 pub mod layout;
+pub mod paper;
 mod plot;
 mod style;
 mod table;

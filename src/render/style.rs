@@ -45,6 +45,12 @@ pub const HATCH: f64 = 2.0;
 pub const DOT: f64 = 0.3;
 /// Offset of a label from its point (mm).
 pub const LABEL_OFFSET: f64 = 1.6;
+/// Height of a label's lettering on the sheet (mm: the font size of `text` in [`css`]), the
+/// size the paper's reduction is held to ([`super::paper`]).
+pub const LABEL_SIZE: f64 = 3.5;
+/// Height of small text on the sheet (mm: `text.small` in [`css`]): the scale bars'
+/// quantities and names, tables.
+pub const SMALL_SIZE: f64 = 2.8;
 /// Colour of the step shown last in a walk-through page.
 pub const CURRENT: &str = "#b0362a";
 
@@ -82,13 +88,15 @@ pub fn css() -> String {
 circle.pt{{fill:#000;stroke:none}}\
 .head{{fill:#000;stroke:none}}\
 .head-open{{fill:none;stroke:#000;stroke-width:0.8}}\
-text{{font-family:Times New Roman,Times,Liberation Serif,serif;font-style:italic;font-size:3.5px;fill:#000;stroke:none}}\
+text{{font-family:Times New Roman,Times,Liberation Serif,serif;font-style:italic;font-size:{label}px;fill:#000;stroke:none}}\
 text.title{{font-style:normal;font-size:6px}}\
-text.small{{font-style:normal;font-size:2.8px}}\
+text.small{{font-style:normal;font-size:{small}px}}\
 text.heading{{font-style:normal;font-size:4px}}\
 .current path,.current line,.current circle{{stroke:{c}}}\
 .current circle.pt,.current text{{fill:{c}}}",
-        c = CURRENT
+        c = CURRENT,
+        label = LABEL_SIZE,
+        small = SMALL_SIZE,
     )
 }
 

@@ -45,6 +45,13 @@ macro_rules! scene_struct {
             /// of them, which the figure test holds for the bundled scenes.
             #[serde(default, skip_serializing_if = "Vec::is_empty")]
             pub plate: Vec<String>,
+            /// The paper `render` sets the figure on: `"a4"`, `"a3"`, `"a2"`, `"a1"` (an
+            /// A-series sheet, the drawing reduced at a stated scale so that its lettering
+            /// stays at least 2.5 mm high, on a larger sheet or split into pages where it
+            /// does not fit) or `"fit"`, the figure's own size (the default).
+            /// `render --paper` overrides it.
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub paper: Option<$crate::protocol::Paper>,
             $($(#[$fm])* pub $field: $ty,)*
         }
 
@@ -69,6 +76,9 @@ macro_rules! scene_struct {
             }
             fn plate(&self) -> &[String] {
                 &self.plate
+            }
+            fn paper(&self) -> Option<$crate::protocol::Paper> {
+                self.paper
             }
         }
     };

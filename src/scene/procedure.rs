@@ -30,6 +30,8 @@ pub trait SceneHeader {
     fn preview(&self) -> Option<&crate::scene::Preview>;
     /// What the book's plate letters (the scene's `plate` field).
     fn plate(&self) -> &[String];
+    /// The paper the figure is set on (the scene's `paper` field), where the scene names one.
+    fn paper(&self) -> Option<crate::protocol::Paper>;
 }
 
 /// A type with a JSON Schema where the `schema` feature is on (the default, with `cli`);

@@ -38,6 +38,7 @@ impl Entry {
                     problem: AnyProblem {
                         book: super::procedure::SceneHeader::book(&scene).into(),
                         plate: super::procedure::SceneHeader::plate(&scene).into(),
+                        paper: super::procedure::SceneHeader::paper(&scene),
                         inner: Box::new(ProblemOf::<P>(problem)),
                     },
                     scene: Box::new(scene),
@@ -378,6 +379,7 @@ pub struct AnyProblem {
     inner: Box<dyn DynProblem>,
     book: std::sync::Arc<[super::BookValue]>,
     plate: std::sync::Arc<[String]>,
+    paper: Option<crate::protocol::Paper>,
 }
 
 impl Clone for AnyProblem {
@@ -386,6 +388,7 @@ impl Clone for AnyProblem {
             inner: self.inner.clone_box(),
             book: self.book.clone(),
             plate: self.plate.clone(),
+            paper: self.paper,
         }
     }
 }
@@ -420,6 +423,11 @@ impl AnyProblem {
             plate: self.plate.to_vec(),
             ..self.inner.figure_meta()
         }
+    }
+
+    /// The paper the scene asks its figure to be set on (its `paper` field), if it names one.
+    pub fn paper(&self) -> Option<crate::protocol::Paper> {
+        self.paper
     }
 
     /// The knobs of the procedure that trade time for accuracy

@@ -23,6 +23,7 @@ mod kernel_fuzz;
 mod lazy_evaluation;
 mod local_frame;
 mod mechanisms;
+mod paper;
 mod properties;
 mod pump;
 mod scale_free;

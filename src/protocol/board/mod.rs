@@ -665,6 +665,29 @@ impl Board {
         r
     }
 
+    /// Hides from the figure the steps of every part `keep` refuses, as [`Board::unseen`]
+    /// hides a part constructed and not drawn: a figure split into pages draws each page
+    /// from the board with the other pages' parts hidden. The steps, numbers and checks stay.
+    ///
+    /// ```
+    /// use graphostatik::kernel::Point;
+    /// use graphostatik::protocol::{Board, Note, Part, Role, Topic};
+    /// let mut b = Board::recording();
+    /// let n = || Note::new("given", Topic::Truss);
+    /// b.point(Point::new(0.0, 0.0), Role::Given.named("A"), n());
+    /// b.set_part(Part::at(1, 0));
+    /// b.point(Point::new(1.0, 0.0), Role::Given.named("B"), n());
+    /// b.show_only(|p| p.row == 1);
+    /// assert_eq!(b.drawn_objects().count(), 1);
+    /// ```
+    pub fn show_only(&mut self, keep: impl Fn(Part) -> bool) {
+        for s in &mut self.steps {
+            if !keep(s.part) {
+                s.part.hidden = true;
+            }
+        }
+    }
+
     /// The objects a figure draws: those of the steps not in a [`Part::hidden`] part.
     pub fn drawn_objects(&self) -> impl Iterator<Item = &Object> + '_ {
         (self.objects.iter()).filter(|o| self.step(o.step).is_none_or(|s| !s.part.hidden))
