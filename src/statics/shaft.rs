@@ -384,14 +384,7 @@ pub fn construct_shaft(
     // The resultant and ideal moment areas on one base, the torque rectangle above it.
     let area_y = y_next - torque_mm.map_or(0.0, |(x, _)| x);
     y_next = area_y - rise - AREA_GAP_MM;
-    // One plane alone, sagging everywhere: its moment area is the bending moment area, read
-    // off at each section already (LH Abb. 28 draws no parallelogram).
-    let sagging = |r: &BeamResults| r.sections.iter().all(|s| s.moment >= 0.0);
-    let single = match (shaft.plane_1.is_empty(), shaft.plane_2.is_empty()) {
-        (false, true) if sagging(&r1) => Some(&r1),
-        (true, false) if sagging(&r2) => Some(&r2),
-        _ => None,
-    };
+    let single = single_plane(shaft, &r1, &r2);
     let mut c = Combine {
         shaft,
         dr,
@@ -421,36 +414,9 @@ pub fn construct_shaft(
     let mut rows = Vec::new();
     let mut area = Vec::new();
     for &x in &xs {
-        let (m1, m2) = (at(&r1.sections, x), at(&r2.sections, x));
-        let mb = match read(x) {
-            Some(h) => c.single(b, x, h),
-            None => c.combined(b, x, m1, m2)?,
-        };
-        let mb_value = mb.map_or(0.0, |h| h.g);
-        let md = shaft
-            .torque
-            .filter(|t| x >= t.from - tol && x <= t.to + tol)
-            .map_or(0.0, |t| t.md);
-        // The ideal moment (Abb. 29), where a torque acts; elsewhere it equals M_b.
-        let mi = if md != 0.0 {
-            Some(c.ideal(b, x, mb_value, md)?)
-        } else {
-            None
-        };
-        let mi_value = mi.map_or(mb_value, |h| h.g);
-        let diameter_mm = shaft
-            .kb
-            .map(|kb| 10.0 * super::sizing::shaft_diameter_cm(100.0 * mi_value, kb));
-        rows.push(ShaftRow {
-            x,
-            m1,
-            m2,
-            mb: mb_value,
-            md,
-            mi: mi_value,
-            diameter_mm,
-        });
-        area.push(AreaSection { x, mb, mi });
+        let (row, sec) = c.section(b, x, (at(&r1.sections, x), at(&r2.sections, x)), read(x))?;
+        rows.push(row);
+        area.push(sec);
     }
     let areas = Areas {
         shaft,
@@ -463,6 +429,21 @@ pub fn construct_shaft(
     };
     areas.draw(b, &area, torque_mm.map(|(x, _)| x))?;
     Ok(rows)
+}
+
+/// One plane alone, sagging everywhere: its moment area is the bending moment area, read off
+/// at each section already (LH Abb. 28 draws no parallelogram).
+fn single_plane<'r>(
+    shaft: &Shaft,
+    r1: &'r BeamResults,
+    r2: &'r BeamResults,
+) -> Option<&'r BeamResults> {
+    let sagging = |r: &BeamResults| r.sections.iter().all(|s| s.moment >= 0.0);
+    match (shaft.plane_1.is_empty(), shaft.plane_2.is_empty()) {
+        (false, true) if sagging(r1) => Some(r1),
+        (true, false) if sagging(r2) => Some(r2),
+        _ => None,
+    }
 }
 
 /// The sections of a shaft: supports, loads of either plane, ends of the torque, ordered,
@@ -625,6 +606,44 @@ impl Combine<'_> {
     /// The closed form of M_b at x.
     fn mb_closed(&self, x: f64) -> f64 {
         combined(self.s1.moment(x), self.s2.moment(x), self.shaft.angle_deg)
+    }
+
+    /// Everything at one section: M_b (read off the one plane's area, or by the
+    /// parallelogram), M_i by Abb. 29 where a torque acts (elsewhere M_i = M_b), the diameter.
+    fn section(
+        &mut self,
+        b: &mut Board,
+        x: f64,
+        (m1, m2): (f64, f64),
+        read: Option<H<f64>>,
+    ) -> Result<(ShaftRow, AreaSection), ConstructionError> {
+        let mb = match read {
+            Some(h) => self.single(b, x, h),
+            None => self.combined(b, x, m1, m2)?,
+        };
+        let mb_value = mb.map_or(0.0, |h| h.g);
+        let tol = REL_POSITION_EPS * (self.shaft.ends[1] - self.shaft.ends[0]).max(1.0);
+        let md = (self.shaft.torque)
+            .filter(|t| x >= t.from - tol && x <= t.to + tol)
+            .map_or(0.0, |t| t.md);
+        let mi = if md != 0.0 {
+            Some(self.ideal(b, x, mb_value, md)?)
+        } else {
+            None
+        };
+        let mi_value = mi.map_or(mb_value, |h| h.g);
+        let diameter_mm =
+            (self.shaft.kb).map(|kb| 10.0 * super::sizing::shaft_diameter_cm(100.0 * mi_value, kb));
+        let row = ShaftRow {
+            x,
+            m1,
+            m2,
+            mb: mb_value,
+            md,
+            mi: mi_value,
+            diameter_mm,
+        };
+        Ok((row, AreaSection { x, mb, mi }))
     }
 
     /// The moment of the one loaded plane, read off its moment area, as M_b (no
