@@ -185,13 +185,13 @@ pub(crate) fn curve(
     a_mm: f64,
     lambda: f64,
     sense: f64,
-    name: &'static str,
+    name: Label,
 ) -> Result<(TolleCurve, H<Point>), ConstructionError> {
     let t = b.lay_off(
         &ax.ends[0],
         &ax.ordinates[0],
         sense * (1.0 + lambda) * a_mm,
-        Role::Construction.labelled(Label::plain(name)),
+        Role::Construction.labelled(name),
         n(
             "(1 + λ)·v²/r at the inner dead centre",
             "Beschleunigung im Totpunkt",

@@ -321,8 +321,9 @@ impl Builder<'_> {
                 let cp = tolle::point_c(self.b, &axis, self.r_mm, k.lambda)?;
                 let curve = |b: &mut Board, sign: f64, name: &'static str| {
                     let stroke = if sign > 0.0 { OUTSTROKE } else { RETURN_STROKE };
-                    let curve =
-                        |b: &mut Board| tolle::curve(b, &axis, &cp, a_mm, k.lambda, sign, name);
+                    let curve = |b: &mut Board| {
+                        tolle::curve(b, &axis, &cp, a_mm, k.lambda, sign, Label::plain(name))
+                    };
                     b.naming(|s| s.push_str(stroke), curve)
                 };
                 let (out, _) = curve(self.b, 1.0, "B₀")?;

@@ -41,8 +41,9 @@ impl Builder<'_> {
             let mut curves = Vec::with_capacity(2);
             let base = self.b.context();
             for (sense, name, stroke) in [
-                (1.0, "T", tolle::OUTSTROKE),
-                (-1.0, "T'", tolle::RETURN_STROKE),
+                // LH II D: T the outer dead centre, T₁ the inner.
+                (1.0, Label::plain("T"), tolle::OUTSTROKE),
+                (-1.0, Label::indexed("T", 1), tolle::RETURN_STROKE),
             ] {
                 // The situation: the caller's (a cylinder), and the stroke.
                 self.b.set_context(|| match &base {
