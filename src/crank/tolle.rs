@@ -474,7 +474,7 @@ mod tests {
         let (half, lam, a) = (20.0, 0.2, 10.0);
         let ax = axis(&mut b, Point::new(0.0, 0.0), half, Topic::Acceleration).unwrap();
         let c = point_c(&mut b, &ax, half, lam).unwrap();
-        let (good, _) = curve(&mut b, &ax, &c, a, lam, 1.0, "T").unwrap();
+        let (good, _) = curve(&mut b, &ax, &c, a, lam, 1.0, Label::plain("T")).unwrap();
         assert!(balance(&mut b, &ax, &good).g.abs() < 1e-12);
         // D at 2λ·a instead of 3λ·a: the lobes no longer balance, and the check says so.
         let note = n("test", "test", "test");
