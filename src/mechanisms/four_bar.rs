@@ -211,6 +211,19 @@ impl FourBar {
         (mu.to_degrees(), moved[0].max(moved[1]).to_degrees())
     }
 
+    /// The transmission angle's extremes (μ_min, μ_max) in degrees, by the law of cosines in
+    /// the triangle P B A with the crank in line with the frame: over it (θ = 0°, PA = |d − r|)
+    /// and on it produced beyond O (θ = 180°, PA = d + r), where PA is shortest and longest:
+    /// cos μ = (L² + ρ² − PA²)/(2Lρ).
+    pub fn transmission_extremes(&self) -> (f64, f64) {
+        let (d, r, l, rho) = (self.frame, self.crank, self.coupler, self.rocker);
+        let by_cosines = |pa: f64| {
+            let c = (l * l + rho * rho - pa * pa) / (2.0 * l * rho);
+            c.clamp(-1.0, 1.0).acos().to_degrees()
+        };
+        (by_cosines((d - r).abs()), by_cosines(d + r))
+    }
+
     /// The rocker's swing between its dead positions and the angle ϑ between the crank lines
     /// there (degrees): the crank takes 180° + ϑ one way and 180° − ϑ the other.
     pub fn dead_positions(&self) -> (f64, f64) {
@@ -257,6 +270,9 @@ pub struct FourBarResults {
     /// The rocker's swing and the angle ϑ of the crank lines at the dead positions (degrees),
     /// if asked for and the rocker swings.
     pub dead: Option<(f64, f64)>,
+    /// The transmission angle's extremes (μ_min, μ_max) as constructed with the crank in
+    /// line with the frame (degrees), if asked for and the rocker swings.
+    pub transmission_extremes: Option<(f64, f64)>,
 }
 
 struct Frame {
@@ -319,23 +335,163 @@ pub fn construct(
         None
     };
     let mut rows = Vec::with_capacity(thetas.len());
-    let mut flagged = Vec::new();
     // One position in the result pen, the others thin (the plates' way).
     let shown = crate::crank::shown_position(thetas);
     for (i, &theta) in thetas.iter().enumerate() {
         b.set_context(|| format!("θ = {}°", crate::fmt::num(theta, 3)));
-        let pen = crate::crank::position_pen(shown == Some(i));
-        let row = position(b, &fr, (fb, length_scale), (i as u32, theta, rq), pen)?;
-        if row.flagged {
-            flagged.push(row);
-        }
-        rows.push(row);
+        let at = (i as u32, theta, rq, shown == Some(i));
+        rows.push(position(b, &fr, (fb, length_scale), at)?);
     }
     b.clear_context();
-    if rq.transmission {
-        flag_table(b, &fr, fb, &flagged);
+    let extremes = if rq.transmission && fb.rocker_swings() {
+        Some(extreme_transmission(b, &fr, fb, length_scale)?)
+    } else {
+        None
+    };
+    if fb.is_parallel() {
+        change_points(b, &fr, fb, length_scale)?;
     }
-    Ok(FourBarResults { rows, dead })
+    if rq.transmission {
+        let drawn = shown.map(|i| rows[i]);
+        flag_table(b, &fr, fb, (&rows, drawn, extremes));
+    }
+    Ok(FourBarResults {
+        rows,
+        dead,
+        transmission_extremes: extremes,
+    })
+}
+
+/// The radius (mm on the sheet) of the arcs that mark the transmission angle at B: 0.15 of
+/// the shorter of coupler and rocker, 4 to 10 mm, at most half of it.
+fn arc_radius(fb: &FourBar, ls: f64) -> f64 {
+    let m = fb.coupler.min(fb.rocker) / ls;
+    (0.15 * m).clamp(4.0, 10.0).min(0.5 * m)
+}
+
+/// Marks the angle at `v` between the rays to `p` and `q` (the one under 180°) with an arc
+/// of `radius` mm lettered `name`.
+fn mark_angle(
+    b: &mut Board,
+    (v, p, q): (&H<Point>, &H<Point>, &H<Point>),
+    radius: f64,
+    name: &'static str,
+    note: Note,
+) {
+    let dir = |x: &H<Point>| (x.g - v.g).y.atan2((x.g - v.g).x).to_degrees();
+    let start = dir(p);
+    let sweep = (dir(q) - start + 540.0).rem_euclid(360.0) - 180.0;
+    b.angle_arc(v, radius, (start, sweep), Role::Given.named(name), note);
+}
+
+/// The transmission angle's extremes of a crank-rocker, each at its own position with the
+/// crank in line with the frame: over OA (θ = 0°, PA = d − r, μ_min) and on AO produced
+/// beyond O (θ = 180°, PA = d + r, μ_max), the angle marked at B and checked against the
+/// law of cosines in the triangle P B A.
+fn extreme_transmission(
+    b: &mut Board,
+    fr: &Frame,
+    fb: &FourBar,
+    ls: f64,
+) -> Result<(f64, f64), ConstructionError> {
+    let (lo, hi) = fb.transmission_extremes();
+    let cases = [
+        (
+            0.0,
+            "μ_min",
+            lo,
+            n(
+                "the crank over the frame OA (θ = 0°): PA = d − r is shortest, μ smallest",
+                Some("kleinster Übertragungswinkel μ_min"),
+            ),
+        ),
+        (
+            180.0,
+            "μ_max",
+            hi,
+            n(
+                "the crank on AO produced beyond O (θ = 180°): PA = d + r is longest, μ largest",
+                Some("größter Übertragungswinkel μ_max"),
+            ),
+        ),
+    ];
+    let mut out = [0.0; 2];
+    for (k, (theta, name, exact, note)) in cases.into_iter().enumerate() {
+        b.set_context(|| format!("{name}, θ = {}°", crate::fmt::num(theta, 3)));
+        let pin = b.point_on_circle(&fr.crank, theta, Role::Construction, note.clone());
+        let arc = b.circle(
+            &pin,
+            fb.coupler / ls,
+            Drawn::Marks,
+            Role::Construction,
+            note.clone(),
+        )?;
+        let branch = fb.branch(pin.g, fr.a.g);
+        let joint = b.cut_circle_circle(&arc, &fr.rocker, branch, Label::NONE, note.clone())?;
+        b.segment(&pin, &joint, Role::Construction, note.clone());
+        b.segment(&fr.a, &joint, Role::Construction, note.clone());
+        let mu = b.measure_angle(
+            &joint,
+            &pin,
+            &fr.a,
+            Label::quiet("μ", k as u32),
+            note.clone(),
+        );
+        let band = fb.transmission_within(theta, b.tolerance().length * ls).1;
+        let formula = match k {
+            0 => "law of cosines: cos μ_min = (L² + ρ² − (d − r)²)/(2Lρ)",
+            _ => "law of cosines: cos μ_max = (L² + ρ² − (d + r)²)/(2Lρ)",
+        };
+        b.check_within(&mu, name, "°", formula, 180.0, || (exact, band));
+        mark_angle(b, (&joint, &pin, &fr.a), arc_radius(fb, ls), name, note);
+        out[k] = mu.g;
+    }
+    b.clear_context();
+    Ok((out[0], out[1]))
+}
+
+/// The parallel crank's change points (Umschlagpunkte), U₁ at θ = 0° and U₂ at θ = 180°:
+/// all four links in one line, the coupler's circle about the pin touching the rocker's
+/// circle, so that the cut is one double point and the linkage may go on as the parallel or
+/// as the antiparallel crank. The transmission angle there is checked to be 0°.
+fn change_points(
+    b: &mut Board,
+    fr: &Frame,
+    fb: &FourBar,
+    ls: f64,
+) -> Result<(), ConstructionError> {
+    let cases = [
+        (0.0, n("first change point U₁ (θ = 0°): crank, coupler, rocker and frame in one line, the coupler’s circle touches the rocker’s", Some("Umschlagpunkt (Verzweigungspunkt)"))),
+        (180.0, n("second change point U₂ (θ = 180°): the links in one line again, the circles touch", Some("Umschlagpunkt (Verzweigungspunkt)"))),
+    ];
+    for (k, (theta, note)) in cases.into_iter().enumerate() {
+        b.set_context(|| format!("U{}, θ = {}°", k + 1, crate::fmt::num(theta, 3)));
+        let pin = b.point_on_circle(&fr.crank, theta, Role::Construction, note.clone());
+        let arc = b.circle(
+            &pin,
+            fb.coupler / ls,
+            Drawn::Marks,
+            Role::Construction,
+            note.clone(),
+        )?;
+        let branch = fb.branch(pin.g, fr.a.g);
+        let label = Label::indexed("U", k as u32 + 1);
+        let joint = b.cut_circle_circle(&arc, &fr.rocker, branch, label, note.clone())?;
+        b.segment(&pin, &joint, Role::Result, note.clone());
+        b.segment(&fr.a, &joint, Role::Result, note.clone());
+        let mu = b.measure_angle(&joint, &pin, &fr.a, Label::quiet("μ", 0), note);
+        let within = fb.transmission_within(theta, b.tolerance().length * ls);
+        b.check_within(
+            &mu,
+            "transmission angle at the change point",
+            "°",
+            "links in one line: μ = 0° (PA = L − ρ) or 180° (PA = L + ρ)",
+            180.0,
+            || within,
+        );
+    }
+    b.clear_context();
+    Ok(())
 }
 
 /// O and A on the frame line, the crank circle about O and the rocker's circle about A.
@@ -445,9 +601,9 @@ fn position(
     b: &mut Board,
     fr: &Frame,
     (fb, ls): (&FourBar, f64),
-    (i, theta, rq): (u32, f64, FourBarRequest),
-    pen: Role,
+    (i, theta, rq, shown): (u32, f64, FourBarRequest, bool),
 ) -> Result<FourBarRow, ConstructionError> {
+    let pen = crate::crank::position_pen(shown);
     let pin = b.point_on_circle(
         &fr.crank,
         theta,
@@ -462,11 +618,17 @@ fn position(
         n("the coupler’s length about the pin", Some("Koppel")),
     )?;
     let branch = fb.branch(pin.g, fr.a.g);
+    // A parallel crank's B at a change point is lettered U there (change_points).
+    let on_line = crate::kernel::angle::wrap_360(theta) % 180.0 == 0.0;
+    let name = match fb.is_parallel() && on_line {
+        true => Label::quiet("B", i),
+        false => Label::indexed("B", i),
+    };
     let joint = b.cut_circle_circle(
         &arc,
         &fr.rocker,
         branch,
-        Label::indexed("B", i),
+        name,
         n(
             "B where the coupler’s circle cuts the rocker’s",
             Some("Gelenkpunkt B: Koppelkreis schneidet Schwingenkreis"),
@@ -501,6 +663,13 @@ fn position(
     if rq.transmission {
         let mu = fb.transmission_within(theta, b.tolerance().length * ls);
         let t = transmission(b, fr, fb, (&pin, &joint), mu);
+        if shown {
+            let note = n(
+                "the transmission angle μ at B marked: the angle between coupler and rocker",
+                Some("Übertragungswinkel μ"),
+            );
+            mark_angle(b, (&joint, &pin, &fr.a), arc_radius(fb, ls), "μ", note);
+        }
         row.transmission = Some(t);
         row.flagged = t.min(180.0 - t) < fb.min_transmission;
     }
@@ -545,30 +714,64 @@ fn transmission(
     t.g
 }
 
-/// The positions whose transmission angle falls below the limit, written on the sheet.
-fn flag_table(b: &mut Board, fr: &Frame, fb: &FourBar, flagged: &[FourBarRow]) {
-    let limit = crate::fmt::num(fb.min_transmission, 3);
-    let mut rows = vec![vec![format!("μ below {limit}° at"), "μ".to_string()]];
-    rows.extend(flagged.iter().map(|r| {
+/// The transmission angle in words on the sheet: at the position drawn, its extremes where
+/// the rocker swings, and the positions where it comes nearer than the limit to 0° or 180°.
+fn flag_table(
+    b: &mut Board,
+    fr: &Frame,
+    fb: &FourBar,
+    (rows, drawn, extremes): (&[FourBarRow], Option<FourBarRow>, Option<(f64, f64)>),
+) {
+    let deg = |x: f64| format!("{}°", crate::fmt::num(x, 2));
+    let at = |theta: f64| format!("θ = {}°", crate::fmt::num(theta, 3));
+    let mut table = vec![vec![
+        "transmission angle μ between coupler and rocker".to_string(),
+        "μ".to_string(),
+    ]];
+    if let Some(r) = drawn {
         let mu = r.transmission.unwrap_or_default();
-        vec![
-            format!("θ = {}°", crate::fmt::num(r.theta, 3)),
-            format!("{}°", crate::fmt::num(mu, 2)),
-        ]
-    }));
-    if flagged.is_empty() {
-        rows.push(vec!["none".to_string(), String::new()]);
+        table.push(vec![
+            format!("at the position drawn, {}", at(r.theta)),
+            deg(mu),
+        ]);
     }
+    if let Some((lo, hi)) = extremes {
+        table.push(vec![
+            "smallest μ_min, crank over OA (θ = 0°)".into(),
+            deg(lo),
+        ]);
+        table.push(vec![
+            "largest μ_max, crank on AO beyond O (θ = 180°)".into(),
+            deg(hi),
+        ]);
+    }
+    let limit = fb.min_transmission;
+    let span = format!(
+        "under {}° or over {}°",
+        crate::fmt::num(limit, 3),
+        crate::fmt::num(180.0 - limit, 3)
+    );
+    let flagged: Vec<&FourBarRow> = rows.iter().filter(|r| r.flagged).collect();
+    if flagged.is_empty() {
+        table.push(vec![format!("{span}: at no position"), String::new()]);
+    } else {
+        table.push(vec![format!("{span} at"), String::new()]);
+    }
+    table.extend(flagged.iter().map(|r| {
+        let mu = r.transmission.unwrap_or_default();
+        let what = if r.change_point { ", change point" } else { "" };
+        vec![format!("  {}{what}", at(r.theta)), deg(mu)]
+    }));
     // In a column of its own: the sheet layout sets it a gap right of the mechanism, level
     // with the foot of the crank circle.
     b.set_part(TABLE);
-    let at = Point::new(fr.a.g.x, -fr.crank.g.radius);
+    let corner = Point::new(fr.a.g.x, -fr.crank.g.radius);
     b.table(
-        at,
-        rows,
+        corner,
+        table,
         &[],
         n(
-            "the positions with too small a transmission angle",
+            "the transmission angle: at the position drawn, its extremes, the positions near 0° or 180°",
             Some("Übertragungswinkel"),
         ),
     );

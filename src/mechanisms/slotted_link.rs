@@ -404,6 +404,7 @@ fn outer_positions(
         180.0,
         || 2.0 * link.beta(),
     );
+    quick_return_angles(b, fr, link, (&touch, &two_beta), u);
     let beta = two_beta.g / 2.0;
     let alpha = 180.0 - beta;
     let ratio = b.reckon(
@@ -454,6 +455,71 @@ fn outer_positions(
         stroke: stroke.g,
         c1_c2: None,
     })
+}
+
+/// The crank's two limiting positions, MK at right angles to the lever's outer positions DA
+/// and DB (KG: "durch Fällen der Lote von M auf die äußersten Lagen des Hebels"), and the
+/// angles they part the crank circle into, each marked at M with its letter: the working
+/// stroke's 2α over the side away from D, the return's 2β over the side of D. 2α = 360° − 2β
+/// is checked against α = 180° − β, cos β = r/e.
+fn quick_return_angles(
+    b: &mut Board,
+    fr: &Frame,
+    link: &SlottedLink,
+    (touch, two_beta): (&[H<Point>; 2], &H<f64>),
+    u: Units,
+) {
+    let limit = n(
+        "the crank in its limiting positions: the perpendiculars from M on the lever’s outer positions DA and DB",
+        Some("Lot von M auf die äußerste Lage des Hebels"),
+    );
+    for t in touch {
+        b.segment(&fr.m, t, Role::Result, limit.clone());
+    }
+    let dir = |x: &H<Point>| (x.g - fr.m.g).y.atan2((x.g - fr.m.g).x).to_degrees();
+    let start = dir(&touch[0]);
+    // The short way round from the first point of contact to the second passes D's side.
+    let ret = (dir(&touch[1]) - start + 540.0).rem_euclid(360.0) - 180.0;
+    let work = ret.signum() * (360.0 - ret.abs());
+    let r = link.crank_radius / u.length_scale;
+    b.angle_arc(
+        &fr.m,
+        0.4 * r,
+        (start, ret),
+        Role::Given.named("2β"),
+        n(
+            "the return stroke’s crank angle 2β, on the side of D",
+            Some("Rücklaufwinkel 2β"),
+        ),
+    );
+    b.angle_arc(
+        &fr.m,
+        0.55 * r,
+        (start + ret, work),
+        Role::Given.named("2α"),
+        n(
+            "the working stroke’s crank angle 2α, on the side away from D",
+            Some("Arbeitswinkel 2α"),
+        ),
+    );
+    let two_alpha = b.reckon(
+        360.0 - two_beta.g,
+        "°",
+        Label::quiet("2α", 0),
+        Weighted {
+            inputs: &[two_beta.id],
+            weight: 1.0,
+        },
+        n("the working angle 2α = 360° − 2β", Some("Arbeitswinkel")),
+    );
+    b.check(
+        &two_alpha,
+        "working angle 2α",
+        "°",
+        "KG Abb. 1071: α = 180° − β, cos β = r/e",
+        360.0,
+        || 2.0 * link.alpha(),
+    );
 }
 
 /// Where the lever stands at one crank angle: the pin C, the lever DC, E on it, F (the foot

@@ -305,6 +305,10 @@ fn strokes(board: &Board, f: &Frame) -> Vec<labels::Stroke> {
             Geom::Curve { points, .. } => {
                 out.extend(points.windows(2).map(|w| stroke((w[0], w[1]))))
             }
+            Geom::Arc { arc } => {
+                let at = |k: usize| arc.point_at_fraction(k as f64 / 16.0);
+                out.extend((0..16).map(|k| stroke((at(k), at(k + 1)))));
+            }
             Geom::Circle {
                 circle, full: true, ..
             } => {
@@ -609,11 +613,14 @@ fn draw_object(f: &Pen, obj: &Object, labels: &Placement, g: El) -> El {
             let b = arc.point_at_fraction(1.0);
             let r = num(arc.circle.radius, 3);
             let large = if arc.sweep_deg.abs() > 180.0 { 1 } else { 0 };
-            let sweep = if arc.sweep_deg > 0.0 { 1 } else { 0 };
+            // Counter-clockwise on the sheet (y up) is counter-clockwise on the page too, which
+            // SVG (y down) writes with the sweep flag 0.
+            let sweep = if arc.sweep_deg > 0.0 { 0 } else { 1 };
             g = g.add(El::new("path").set("class", class).set(
                 "d",
                 format!("M{} A{r},{r} 0 {large},{sweep} {}", f.xy(&a), f.xy(&b)),
             ));
+            g = draw_label(f, obj, labels, g);
         }
         Geom::Curve { points, smooth } => {
             let d = if *smooth {

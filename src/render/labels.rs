@@ -400,6 +400,14 @@ fn where_first(o: &crate::protocol::Object, circles: &[Circle]) -> Option<(Point
         Geom::Curve { points, .. } => (points.iter())
             .max_by(|a, b| a.y.total_cmp(&b.y))
             .map(|top| (*top, top + Vector::new(1.0, 1.5))),
+        // An angle's arc is lettered inside the angle, beside the arc's middle.
+        Geom::Arc { arc } => {
+            let mid = arc.point_at_fraction(0.5);
+            let out = (mid - arc.circle.center) / arc.circle.radius;
+            let (w, depth) = extent(&o.label);
+            let centre = mid + out * (0.6 * LABEL_OFFSET + 0.5 * w.max(ASCENT));
+            Some((mid, centre - Vector::new(0.5 * w, 0.5 * (ASCENT - depth))))
+        }
         // A segment or a force is lettered beside its middle: a member force S₃ in the force
         // plan, a reaction A, a resultant R.
         Geom::Segment { segment } | Geom::Vector { segment } => {

@@ -41,6 +41,19 @@ const N_AREA: Note = note(
     Topic::Forces,
 );
 
+const N_COVER: Note = note(
+    "the cover side’s force p₁·F′ over the outstroke: the line through the heads of the working forces",
+    Some("Kolbendruck der Deckelseite p₁·F′"),
+    "KG B.4a, (296), Abb. 1055",
+    Topic::Forces,
+);
+const N_CRANK: Note = note(
+    "the crank side’s force p₂·F″ over the return: the line through the heads of the working forces",
+    Some("Kolbendruck der Kurbelseite p₂·F″"),
+    "KG B.4a, (296), Abb. 1055",
+    Topic::Forces,
+);
+
 /// A stroke's working and back side on one ray: their effective areas (cm²) and the pressures
 /// their cards give there (at).
 #[derive(Clone, Copy)]
@@ -80,6 +93,7 @@ impl Builder<'_> {
             read.push(self.mean_area_ray(c, k)?);
         }
         for stroke in [cf::Stroke::Out, cf::Stroke::Return] {
+            self.side_force_line(c, stroke);
             self.area_read_back(c, stroke, &read);
         }
         self.b.clear_context();
@@ -169,6 +183,37 @@ impl Builder<'_> {
             by_sides,
             p1,
         })
+    }
+
+    /// The line of the working side's force over `stroke` through the heads of the forces
+    /// laid up on the rays, lettered with the side's area: p₁·F′ on the cover side over the
+    /// outstroke, p₂·F″ on the crank side over the return (KG (296)); the net pressure P lies
+    /// the back side's force under it.
+    fn side_force_line(&mut self, c: usize, stroke: cf::Stroke) {
+        if !self.b.is_recording() {
+            return;
+        }
+        let kin = self.e.kinematics;
+        let mut on: Vec<(f64, H<crate::kernel::Point>)> = (0..self.thetas.len())
+            .filter(|&k| cf::book_angle(self.crank_deg(c, k)).0 == stroke)
+            .filter_map(|k| {
+                let x = kin.x_frac(self.crank_deg(c, k));
+                self.rays[c][k].map(|r| (x, r.work_point))
+            })
+            .collect();
+        on.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let points: Vec<_> = on.into_iter().map(|(_, p)| p).collect();
+        if points.len() < 2 {
+            return;
+        }
+        let (name, note) = match stroke {
+            cf::Stroke::Out => ("p₁·F′", N_COVER),
+            cf::Stroke::Return => ("p₂·F″", N_CRANK),
+        };
+        self.b.clear_context();
+        let mark = crate::protocol::Role::Construction.named(name);
+        self.b
+            .curve(&points, crate::protocol::Trace::Smooth, mark, note);
     }
 
     /// The effective area of the side working on `stroke`, read back as P₁/p₁ on the first

@@ -401,6 +401,39 @@ impl Board {
         }
     }
 
+    /// Marks an angle at `vertex` with an arc of `radius` mm that starts in the direction
+    /// `start_deg` (degrees from +x) and sweeps `sweep_deg` (counter-clockwise where
+    /// positive), lettered by the mark's label beside its middle: the angle a plate names (a
+    /// transmission angle μ, a crank's angle 2α). The angle itself is read with
+    /// [`Board::measure_angle`]; the arc is drawn only, nothing is constructed on it, so a
+    /// board that does not record skips it, and so does an arc too small to be seen.
+    pub fn angle_arc(
+        &mut self,
+        vertex: &H<Point>,
+        radius: f64,
+        (start_deg, sweep_deg): (f64, f64),
+        mark: impl Into<Mark>,
+        note: Note,
+    ) {
+        if !self.recording {
+            return;
+        }
+        let Ok(circle) = Circle::new(vertex.g, radius) else {
+            return;
+        };
+        if !(start_deg.is_finite() && sweep_deg.is_finite()) || sweep_deg.abs() < 1e-6 {
+            return;
+        }
+        let Mark { label, role } = mark.into();
+        self.begin(StepKind::Curve, &note, &[vertex.id]);
+        let arc = crate::kernel::Arc {
+            circle,
+            start_deg,
+            sweep_deg,
+        };
+        self.add_drawing(label, role, || Geom::Arc { arc });
+    }
+
     /// Draws a curve through points, smooth or as their polygon ([`Trace`]).
     pub fn curve(
         &mut self,
