@@ -1082,7 +1082,7 @@ fn unnamed(meta: &FigureMeta, board: &Board, placed: &Placement) -> Vec<String> 
         }
     }
     (meta.plate.iter())
-        .filter(|name| !written.contains(name.as_str()))
+        .filter(|name| !written.contains(&plain(name.to_string())))
         .cloned()
         .collect()
 }

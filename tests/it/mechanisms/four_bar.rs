@@ -129,7 +129,9 @@ fn the_parallel_crank_has_two_change_points() {
         .iter()
         .filter(|s| s.outcome.as_deref() == Some("tangent: one double point"))
         .count();
-    assert_eq!(tangent_steps, 2);
+    // The circles touch at θ = 0° and 180° only: once where the positions are divided, once
+    // where the change points U₁, U₂ are drawn with the links in one line.
+    assert_eq!(tangent_steps, 4);
 }
 
 /// Links that do not close the loop, a four-bar whose crank cannot turn round (Grashof), and
