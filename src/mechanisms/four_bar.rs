@@ -418,16 +418,7 @@ fn extreme_transmission(
     let mut out = [0.0; 2];
     for (k, (theta, name, exact, note)) in cases.into_iter().enumerate() {
         b.set_context(|| format!("{name}, θ = {}°", crate::fmt::num(theta, 3)));
-        let pin = b.point_on_circle(&fr.crank, theta, Role::Construction, note.clone());
-        let arc = b.circle(
-            &pin,
-            fb.coupler / ls,
-            Drawn::Marks,
-            Role::Construction,
-            note.clone(),
-        )?;
-        let branch = fb.branch(pin.g, fr.a.g);
-        let joint = b.cut_circle_circle(&arc, &fr.rocker, branch, Label::NONE, note.clone())?;
+        let (pin, joint) = pin_and_joint(b, fr, fb, ls, (theta, Label::NONE), &note)?;
         b.segment(&pin, &joint, Role::Construction, note.clone());
         b.segment(&fr.a, &joint, Role::Construction, note.clone());
         let mu = b.measure_angle(
@@ -450,6 +441,29 @@ fn extreme_transmission(
     Ok((out[0], out[1]))
 }
 
+/// The crank pin at θ and the joint B where the coupler's circle about it cuts the rocker's
+/// circle, the joint named `label`.
+fn pin_and_joint(
+    b: &mut Board,
+    fr: &Frame,
+    fb: &FourBar,
+    ls: f64,
+    (theta, label): (f64, Label),
+    note: &Note,
+) -> Result<(H<Point>, H<Point>), ConstructionError> {
+    let pin = b.point_on_circle(&fr.crank, theta, Role::Construction, note.clone());
+    let arc = b.circle(
+        &pin,
+        fb.coupler / ls,
+        Drawn::Marks,
+        Role::Construction,
+        note.clone(),
+    )?;
+    let branch = fb.branch(pin.g, fr.a.g);
+    let joint = b.cut_circle_circle(&arc, &fr.rocker, branch, label, note.clone())?;
+    Ok((pin, joint))
+}
+
 /// The parallel crank's change points (Umschlagpunkte), U₁ at θ = 0° and U₂ at θ = 180°:
 /// all four links in one line, the coupler's circle about the pin touching the rocker's
 /// circle, so that the cut is one double point and the linkage may go on as the parallel or
@@ -466,17 +480,8 @@ fn change_points(
     ];
     for (k, (theta, note)) in cases.into_iter().enumerate() {
         b.set_context(|| format!("U{}, θ = {}°", k + 1, crate::fmt::num(theta, 3)));
-        let pin = b.point_on_circle(&fr.crank, theta, Role::Construction, note.clone());
-        let arc = b.circle(
-            &pin,
-            fb.coupler / ls,
-            Drawn::Marks,
-            Role::Construction,
-            note.clone(),
-        )?;
-        let branch = fb.branch(pin.g, fr.a.g);
         let label = Label::indexed("U", k as u32 + 1);
-        let joint = b.cut_circle_circle(&arc, &fr.rocker, branch, label, note.clone())?;
+        let (pin, joint) = pin_and_joint(b, fr, fb, ls, (theta, label), &note)?;
         b.segment(&pin, &joint, Role::Result, note.clone());
         b.segment(&fr.a, &joint, Role::Result, note.clone());
         let mu = b.measure_angle(&joint, &pin, &fr.a, Label::quiet("μ", 0), note);
